@@ -1,0 +1,22 @@
+# Warning and sanitizer flags shared by every Kiln target: call kiln_target_options(<target>).
+
+if(KILN_SANITIZE)
+    string(REPLACE "," ";" _kiln_sanitizers "${KILN_SANITIZE}")
+    foreach(_s IN LISTS _kiln_sanitizers)
+        if(NOT _s MATCHES "^(address|undefined|leak|thread)$")
+            message(FATAL_ERROR "KILN_SANITIZE: unknown sanitizer '${_s}'")
+        endif()
+    endforeach()
+    set(_kiln_san_flags -fsanitize=${KILN_SANITIZE} -fno-omit-frame-pointer
+        -fno-sanitize-recover=all)
+    add_compile_options(${_kiln_san_flags})
+    add_link_options(${_kiln_san_flags})
+endif()
+
+function(kiln_target_options target)
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
+        -Wnon-virtual-dtor -Wconversion -Wno-sign-conversion)
+    if(KILN_WERROR)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+endfunction()

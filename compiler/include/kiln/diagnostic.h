@@ -1,0 +1,126 @@
+// Diagnostics: the library never prints. Every stage appends to a DiagnosticList; the CLI formats
+// it (text or JSON). Codes are stable: once published a code keeps its meaning (docs/diagnostics.md).
+#ifndef KILN_DIAGNOSTIC_H_
+#define KILN_DIAGNOSTIC_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kiln/source.h"
+
+namespace kiln {
+
+enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
+
+// Stable diagnostic codes, printed as K<number>. Ranges:
+//   K0xxx  input/output          K1xxx  ShaderLab lexer
+//   K2xxx  ShaderLab parser      K3xxx  ShaderLab semantic checks
+//   K9xxx  internal compiler errors
+enum class DiagCode : uint16_t {
+    kCannotReadFile = 1,
+    kFileTooLarge = 2,
+
+    kUnterminatedString = 1001,
+    kUnterminatedComment = 1002,
+    kUnterminatedProgramBlock = 1003,
+    kUnexpectedCharacter = 1004,
+    kStrayProgramEnd = 1005,
+
+    kExpectedShader = 2001,
+    kExpectedToken = 2002,
+    kUnexpectedToken = 2003,
+    kUnknownCommand = 2004,
+    kInvalidValue = 2005,
+    kUnclosedBlock = 2006,
+    kNestingTooDeep = 2007,
+    kTooManyErrors = 2008,
+    kTrailingContent = 2009,
+    kExpectedNumber = 2010,
+    kUnknownPropertyType = 2011,
+    kBadPropertyDefault = 2012,
+    kBadAttribute = 2013,
+    kLegacyCommandIgnored = 2014,
+    kDuplicateCommand = 2015,
+    kMisplacedCommand = 2016,
+    kBadRenderTarget = 2017,
+
+    kDuplicateProperty = 3001,
+    kUndeclaredProperty = 3002,
+    kPropertyRefType = 3003,
+    kBadRange = 3004,
+    kDefaultOutOfRange = 3005,
+    kMultiplePrograms = 3006,
+    kUnsupportedGlsl = 3007,
+    kUnsupportedSurfaceShader = 3008,
+    kProgramOutsidePass = 3009,
+    kDuplicateTag = 3010,
+    kUnknownTextureDefault = 3011,
+    kDuplicatePassName = 3012,
+
+    kInternalError = 9001,
+};
+
+// "K1234".
+std::string FormatDiagCode(DiagCode code);
+std::string_view SeverityName(Severity severity);
+
+struct DiagnosticNote {
+    std::string file;
+    SourceRange range;
+    std::string message;
+};
+
+struct Diagnostic {
+    Severity severity = Severity::kError;
+    DiagCode code = DiagCode::kInternalError;
+    std::string file;
+    SourceRange range;
+    std::string message;  // lower-case, one sentence, no trailing period
+    std::vector<DiagnosticNote> notes;
+};
+
+class DiagnosticList {
+public:
+    // Errors past this limit are dropped and replaced by one kTooManyErrors error.
+    static constexpr size_t kDefaultErrorLimit = 100;
+
+    Diagnostic& Add(Severity severity, DiagCode code, std::string file, SourceRange range,
+                    std::string message);
+    Diagnostic& Error(DiagCode code, std::string file, SourceRange range, std::string message) {
+        return Add(Severity::kError, code, std::move(file), range, std::move(message));
+    }
+    Diagnostic& Warning(DiagCode code, std::string file, SourceRange range, std::string message) {
+        return Add(Severity::kWarning, code, std::move(file), range, std::move(message));
+    }
+
+    const std::vector<Diagnostic>& all() const { return diags_; }
+    size_t error_count() const { return errors_; }
+    bool has_errors() const { return errors_ > 0; }
+    bool has_internal_errors() const { return internal_ > 0; }
+    // True once the error limit was hit: callers should stop early.
+    bool saturated() const { return saturated_; }
+    void set_error_limit(size_t limit) { limit_ = limit; }
+    void Append(const DiagnosticList& other);
+
+private:
+    std::vector<Diagnostic> diags_;
+    size_t errors_ = 0;
+    size_t internal_ = 0;
+    size_t limit_ = kDefaultErrorLimit;
+    bool saturated_ = false;
+    Diagnostic overflow_sink_;
+};
+
+// Compiler-style text: "file:line:col: error: message [K1234]" followed by the source line and a
+// caret/underline when `source` is the file the diagnostic points into, then its notes.
+std::string FormatDiagnosticsText(const DiagnosticList& diags,
+                                  const std::vector<const SourceFile*>& sources);
+// A JSON array of diagnostics (format in docs/diagnostics.md).
+std::string FormatDiagnosticsJson(const DiagnosticList& diags);
+
+}  // namespace kiln
+
+#endif  // KILN_DIAGNOSTIC_H_

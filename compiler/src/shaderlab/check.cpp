@@ -1,0 +1,236 @@
+// Semantic checks over a parsed Shader (see Check() in kiln/shaderlab/parse.h).
+#include <cstdio>
+#include <cstring>
+#include <map>
+
+#include "kiln/shaderlab/parse.h"
+#include "parser.h"
+
+namespace kiln::shaderlab {
+namespace {
+
+std::string Num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// The range of a program block's opening marker alone (the block itself may be long).
+SourceRange MarkerRange(const ProgramBlock& block) {
+    const auto len = static_cast<uint32_t>(std::strlen(ProgramKindName(block.kind)));
+    SourceLoc end = block.range.begin;
+    end.offset += len;
+    end.column += len;
+    return {block.range.begin, end};
+}
+
+const Pragma* FindPragma(const ProgramBlock& block, std::string_view name) {
+    for (const Pragma& p : block.pragmas) {
+        if (p.name == name) {
+            return &p;
+        }
+    }
+    return nullptr;
+}
+
+struct State {
+    const Shader& shader;
+    const std::string& file;
+    DiagnosticList& diags;
+    std::map<std::string, const Property*, std::less<>> props;
+
+    Diagnostic& Error(DiagCode code, SourceRange range, std::string message) {
+        return diags.Error(code, file, range, std::move(message));
+    }
+    Diagnostic& Warning(DiagCode code, SourceRange range, std::string message) {
+        return diags.Warning(code, file, range, std::move(message));
+    }
+
+    void CheckProperties();
+    void CheckValue(const StateValue& value);
+    void CheckState(const RenderState& state);
+    void CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pass);
+    void CheckEntries(const std::vector<SubShaderEntry>& entries);
+    void CheckSubShader(const SubShader& sub);
+};
+
+void State::CheckProperties() {
+    static const char* const kTextureDefaults[] = {"white", "black", "gray", "grey",
+                                                   "bump",  "red",   "linearGray", ""};
+    for (const Property& p : shader.properties) {
+        auto [it, inserted] = props.emplace(p.name, &p);
+        if (!inserted) {
+            Diagnostic& d = Error(DiagCode::kDuplicateProperty, p.name_range,
+                                  "duplicate property '" + p.name + "'");
+            d.notes.push_back({file, it->second->name_range, "first declared here"});
+        }
+        if (p.type == PropertyType::kRange) {
+            if (p.range_min > p.range_max) {
+                Error(DiagCode::kBadRange, p.type_range,
+                      "Range minimum " + Num(p.range_min) + " is greater than its maximum " +
+                          Num(p.range_max));
+            } else if (!p.default_value.empty() &&
+                       (p.default_value[0] < p.range_min || p.default_value[0] > p.range_max)) {
+                Warning(DiagCode::kDefaultOutOfRange, p.default_range,
+                        "default " + Num(p.default_value[0]) + " of '" + p.name +
+                            "' is outside its Range(" + Num(p.range_min) + ", " +
+                            Num(p.range_max) + ")");
+            }
+        }
+        if (IsTextureType(p.type)) {
+            bool known = false;
+            for (const char* name : kTextureDefaults) {
+                known = known || EqualsIgnoreCase(p.default_texture, name);
+            }
+            if (!known) {
+                Warning(DiagCode::kUnknownTextureDefault, p.default_range,
+                        "unknown default texture \"" + p.default_texture +
+                            "\" for '" + p.name +
+                            "'; expected white, black, gray, bump, red or \"\"; gray is used");
+            }
+        }
+    }
+}
+
+void State::CheckValue(const StateValue& value) {
+    if (value.kind != StateValue::Kind::kPropertyRef) {
+        return;
+    }
+    auto it = props.find(value.text);
+    if (it == props.end()) {
+        Diagnostic& d = Error(DiagCode::kUndeclaredProperty, value.range,
+                              "reference to undeclared property '" + value.text + "'");
+        if (shader.properties_range) {
+            d.notes.push_back({file, *shader.properties_range, "properties are declared here"});
+        }
+        return;
+    }
+    const PropertyType t = it->second->type;
+    if (t != PropertyType::kFloat && t != PropertyType::kInt && t != PropertyType::kInteger &&
+        t != PropertyType::kRange) {
+        Diagnostic& d = Error(DiagCode::kPropertyRefType, value.range,
+                              "property '" + value.text + "' of type " + PropertyTypeName(t) +
+                                  " cannot set render state; expected a Float, Int, Integer or "
+                                  "Range property");
+        d.notes.push_back({file, it->second->range, "declared here"});
+    }
+}
+
+void State::CheckState(const RenderState& s) {
+    for (const auto* simple : {&s.cull, &s.ztest, &s.zwrite, &s.zclip, &s.alpha_to_mask,
+                               &s.conservative}) {
+        if (*simple) {
+            CheckValue((*simple)->value);
+        }
+    }
+    if (s.offset) {
+        CheckValue(s.offset->factor);
+        CheckValue(s.offset->units);
+    }
+    for (const BlendState& b : s.blend) {
+        if (!b.off) {
+            CheckValue(b.src);
+            CheckValue(b.dst);
+        }
+        if (b.src_alpha) {
+            CheckValue(*b.src_alpha);
+            CheckValue(*b.dst_alpha);
+        }
+    }
+    for (const BlendOpState& b : s.blend_op) {
+        CheckValue(b.op);
+        if (b.op_alpha) {
+            CheckValue(*b.op_alpha);
+        }
+    }
+    for (const ColorMaskState& c : s.color_mask) {
+        CheckValue(c.mask);
+    }
+    if (s.stencil) {
+        for (const StencilEntry& e : s.stencil->entries) {
+            CheckValue(e.value);
+        }
+    }
+}
+
+void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pass) {
+    const ProgramBlock* first_program = nullptr;
+    for (const ProgramBlock& block : programs) {
+        if (block.kind == ProgramKind::kGlslProgram || block.kind == ProgramKind::kGlslInclude) {
+            Error(DiagCode::kUnsupportedGlsl, MarkerRange(block),
+                  std::string(ProgramKindName(block.kind)) +
+                      " blocks are not supported; Kiln compiles HLSL, use CGPROGRAM or HLSLPROGRAM");
+            continue;
+        }
+        if (const Pragma* surface = FindPragma(block, "surface")) {
+            Error(DiagCode::kUnsupportedSurfaceShader, surface->range,
+                  "surface shaders ('#pragma surface') are not supported; write vertex and "
+                  "fragment programs in a Pass");
+            continue;
+        }
+        if (IsIncludeBlock(block.kind)) {
+            continue;
+        }
+        if (!in_pass) {
+            Error(DiagCode::kProgramOutsidePass, MarkerRange(block),
+                  std::string(ProgramKindName(block.kind)) +
+                      " must be inside a Pass; only CGINCLUDE and HLSLINCLUDE may appear here");
+        } else if (first_program != nullptr) {
+            Diagnostic& d = Error(DiagCode::kMultiplePrograms, MarkerRange(block),
+                                  "a Pass has at most one program block");
+            d.notes.push_back({file, MarkerRange(*first_program), "first program block here"});
+        } else {
+            first_program = &block;
+        }
+    }
+}
+
+void State::CheckSubShader(const SubShader& sub) {
+    CheckState(sub.state);
+    CheckPrograms(sub.programs, false);
+    std::map<std::string, const Pass*> names;
+    for (const PassEntry& entry : sub.passes) {
+        const Pass* pass = std::get_if<Pass>(&entry);
+        if (pass == nullptr) {
+            continue;
+        }
+        CheckState(pass->state);
+        CheckPrograms(pass->programs, true);
+        if (pass->name.empty()) {
+            continue;
+        }
+        std::string upper = pass->name;  // pass names are matched case-insensitively (UsePass)
+        for (char& c : upper) {
+            c = (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c;
+        }
+        auto [it, inserted] = names.emplace(upper, pass);
+        if (!inserted) {
+            Diagnostic& d = Warning(DiagCode::kDuplicatePassName, pass->range,
+                                    "duplicate pass name '" + pass->name + "' in this SubShader");
+            d.notes.push_back({file, it->second->range, "first pass with this name"});
+        }
+    }
+}
+
+void State::CheckEntries(const std::vector<SubShaderEntry>& entries) {
+    for (const SubShaderEntry& entry : entries) {
+        if (const SubShader* sub = std::get_if<SubShader>(&entry)) {
+            CheckSubShader(*sub);
+        } else if (const auto* cat = std::get_if<std::unique_ptr<Category>>(&entry)) {
+            CheckState((*cat)->state);
+            CheckPrograms((*cat)->programs, false);
+            CheckEntries((*cat)->children);  // depth bounded by ParseOptions::max_nesting
+        }
+    }
+}
+
+}  // namespace
+
+void Check(const Shader& shader, const std::string& file, DiagnosticList& diags) {
+    State s{shader, file, diags, {}};
+    s.CheckProperties();
+    s.CheckPrograms(shader.programs, false);
+    s.CheckEntries(shader.subshaders);
+}
+
+}  // namespace kiln::shaderlab

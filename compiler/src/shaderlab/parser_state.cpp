@@ -1,0 +1,358 @@
+// Render-state commands: Cull, ZTest, ZWrite, ZClip, AlphaToMask, Conservative, Offset, Blend,
+// BlendOp, ColorMask and Stencil { }. Every value may be a property reference such as [_Cull].
+#include "parser.h"
+
+namespace kiln::shaderlab {
+namespace {
+
+using Words = std::vector<std::string_view>;
+
+const Words kCull = {"Back", "Front", "Off"};
+const Words kCompare = {"Never",   "Less",     "Equal",  "LEqual",
+                        "Greater", "NotEqual", "GEqual", "Always"};
+const Words kOnOff = {"On", "Off"};
+const Words kTrueFalse = {"True", "False"};
+const Words kBlendFactors = {"One",          "Zero",
+                             "SrcColor",     "SrcAlpha",
+                             "DstColor",     "DstAlpha",
+                             "OneMinusSrcColor", "OneMinusSrcAlpha",
+                             "OneMinusDstColor", "OneMinusDstAlpha",
+                             "SrcAlphaSaturate"};
+const Words kBlendOps = {
+    "Add", "Sub", "RevSub", "Min", "Max",
+    "LogicalClear", "LogicalSet", "LogicalCopy", "LogicalCopyInverted", "LogicalNoop",
+    "LogicalInvert", "LogicalAnd", "LogicalNand", "LogicalOr", "LogicalNor", "LogicalXor",
+    "LogicalEquiv", "LogicalAndReverse", "LogicalAndInverted", "LogicalOrReverse",
+    "LogicalOrInverted", "Multiply", "Screen", "Overlay", "Darken", "Lighten", "ColorDodge",
+    "ColorBurn", "HardLight", "SoftLight", "Difference", "Exclusion", "HSLHue", "HSLSaturation",
+    "HSLColor", "HSLLuminosity"};
+const Words kStencilOps = {"Keep",     "Zero",     "Replace", "IncrSat",
+                           "DecrSat",  "Invert",   "IncrWrap", "DecrWrap"};
+
+constexpr int kMaxRenderTargets = 8;
+
+std::string JoinWords(const Words& words, size_t max = 8) {
+    std::string out;
+    const size_t n = std::min(words.size(), max);
+    for (size_t i = 0; i < n; ++i) {
+        out += (i == 0 ? "" : ", ") + std::string(words[i]);
+    }
+    if (words.size() > max) {
+        out += ", ...";
+    }
+    return out;
+}
+
+}  // namespace
+
+bool Parser::TryStateCommand(RenderState& state, bool& ok) {
+    if (!At(TokenKind::kIdentifier)) {
+        return false;
+    }
+    if (AtWord("Cull")) {
+        ok = ParseSimpleState(state.cull, "Cull", kCull);
+    } else if (AtWord("ZTest")) {
+        ok = ParseSimpleState(state.ztest, "ZTest", kCompare);
+    } else if (AtWord("ZWrite")) {
+        ok = ParseSimpleState(state.zwrite, "ZWrite", kOnOff);
+    } else if (AtWord("ZClip")) {
+        ok = ParseSimpleState(state.zclip, "ZClip", kTrueFalse);
+    } else if (AtWord("AlphaToMask")) {
+        ok = ParseSimpleState(state.alpha_to_mask, "AlphaToMask", kOnOff);
+    } else if (AtWord("Conservative")) {
+        ok = ParseSimpleState(state.conservative, "Conservative", kTrueFalse);
+    } else if (AtWord("Offset")) {
+        ok = ParseOffset(state);
+    } else if (AtWord("Blend")) {
+        ok = ParseBlend(state);
+    } else if (AtWord("BlendOp")) {
+        ok = ParseBlendOp(state);
+    } else if (AtWord("ColorMask")) {
+        ok = ParseColorMask(state);
+    } else if (AtWord("Stencil")) {
+        ok = ParseStencil(state);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+std::optional<StateValue> Parser::ParsePropertyRef() {
+    const Token& open = Next();  // '['
+    const Token* name = Expect(TokenKind::kIdentifier, "a property name", "after '['");
+    if (name == nullptr || !Expect(TokenKind::kRBracket, "']'", "after the property name")) {
+        return std::nullopt;
+    }
+    return StateValue{StateValue::Kind::kPropertyRef, std::string(name->text), 0, RangeFrom(open)};
+}
+
+std::optional<StateValue> Parser::ParseEnumValue(std::string_view command, const Words& allowed) {
+    if (At(TokenKind::kLBracket)) {
+        return ParsePropertyRef();
+    }
+    const Token& t = Peek();
+    if (t.kind == TokenKind::kIdentifier) {
+        for (std::string_view word : allowed) {
+            if (EqualsIgnoreCase(t.text, word)) {
+                Next();
+                return StateValue{StateValue::Kind::kLiteral, std::string(word), 0, t.range};
+            }
+        }
+    }
+    Error(DiagCode::kInvalidValue, t.range,
+          "invalid value " + Describe(t) + " for '" + std::string(command) + "'; expected " +
+              JoinWords(allowed) + " or a [property] reference");
+    return std::nullopt;
+}
+
+std::optional<StateValue> Parser::ParseNumberValue(std::string_view command, double min,
+                                                   double max, bool integer) {
+    if (At(TokenKind::kLBracket)) {
+        return ParsePropertyRef();
+    }
+    const Token& first = Peek();
+    const bool negative = Accept(TokenKind::kMinus);
+    const Token& t = Peek();
+    std::optional<double> v = t.kind == TokenKind::kNumber ? ParseDouble(t.text) : std::nullopt;
+    if (v && negative) {
+        *v = -*v;
+    }
+    if (!v || *v < min || *v > max || (integer && *v != static_cast<double>(static_cast<int64_t>(*v)))) {
+        const std::string expected =
+            integer ? "an integer from " + std::to_string(static_cast<int64_t>(min)) + " to " +
+                          std::to_string(static_cast<int64_t>(max))
+                    : std::string("a number");
+        Error(DiagCode::kInvalidValue, t.kind == TokenKind::kNumber ? RangeFrom(first) : t.range,
+              "invalid value " + Describe(t) + " for '" + std::string(command) + "'; expected " +
+                  expected + " or a [property] reference");
+        return std::nullopt;
+    }
+    Next();
+    return StateValue{StateValue::Kind::kNumber, std::string(negative ? "-" : "") + std::string(t.text),
+                      *v, RangeFrom(first)};
+}
+
+bool Parser::ParseSimpleState(std::optional<SimpleState>& slot, std::string_view command,
+                              const Words& allowed) {
+    const Token& kw = Next();
+    const std::optional<StateValue> v = ParseEnumValue(command, allowed);
+    if (!v) {
+        return false;
+    }
+    SimpleState st{RangeFrom(kw), *v};
+    if (slot) {
+        Diagnostic& d = Warning(DiagCode::kDuplicateCommand, st.range,
+                                "duplicate '" + std::string(command) + "' command; the last one wins");
+        d.notes.push_back({source_.path(), slot->range, "previous one here"});
+    }
+    slot = st;
+    return true;
+}
+
+bool Parser::ParseOffset(RenderState& state) {
+    const Token& kw = Next();
+    const std::optional<StateValue> factor = ParseNumberValue("Offset", -1e9, 1e9, false);
+    if (!factor || !Expect(TokenKind::kComma, "','", "between the Offset factor and units")) {
+        return false;
+    }
+    const std::optional<StateValue> units = ParseNumberValue("Offset", -1e9, 1e9, false);
+    if (!units) {
+        return false;
+    }
+    state.offset = OffsetState{RangeFrom(kw), *factor, *units};
+    return true;
+}
+
+std::optional<int> Parser::ParseRenderTarget(std::string_view command) {
+    if (!At(TokenKind::kNumber)) {
+        return -1;
+    }
+    const Token& t = Next();
+    const std::optional<double> v = ParseDouble(t.text);
+    if (!v || *v < 0 || *v >= kMaxRenderTargets || *v != static_cast<double>(static_cast<int>(*v))) {
+        Error(DiagCode::kBadRenderTarget, t.range,
+              "render target index " + std::string(t.text) + " of '" + std::string(command) +
+                  "' is out of range; expected 0 to " + std::to_string(kMaxRenderTargets - 1));
+        return std::nullopt;
+    }
+    return static_cast<int>(*v);
+}
+
+bool Parser::ParseBlend(RenderState& state) {
+    const Token& kw = Next();
+    BlendState b;
+    const std::optional<int> target = ParseRenderTarget("Blend");
+    if (!target) {
+        return false;
+    }
+    b.target = *target;
+    if (AtWord("Off")) {
+        Next();
+        b.off = true;
+    } else {
+        std::optional<StateValue> src = ParseEnumValue("Blend", kBlendFactors);
+        std::optional<StateValue> dst = src ? ParseEnumValue("Blend", kBlendFactors) : std::nullopt;
+        if (!dst) {
+            return false;
+        }
+        b.src = *src;
+        b.dst = *dst;
+        if (Accept(TokenKind::kComma)) {
+            b.src_alpha = ParseEnumValue("Blend", kBlendFactors);
+            b.dst_alpha = b.src_alpha ? ParseEnumValue("Blend", kBlendFactors) : std::nullopt;
+            if (!b.dst_alpha) {
+                return false;
+            }
+        }
+    }
+    b.range = RangeFrom(kw);
+    for (const BlendState& other : state.blend) {
+        if (other.target == b.target) {
+            Diagnostic& d = Warning(DiagCode::kDuplicateCommand, b.range,
+                                    "duplicate 'Blend' command for the same render target; the "
+                                    "last one wins");
+            d.notes.push_back({source_.path(), other.range, "previous one here"});
+        }
+    }
+    state.blend.push_back(std::move(b));
+    return true;
+}
+
+bool Parser::ParseBlendOp(RenderState& state) {
+    const Token& kw = Next();
+    BlendOpState b;
+    const std::optional<int> target = ParseRenderTarget("BlendOp");
+    if (!target) {
+        return false;
+    }
+    b.target = *target;
+    const std::optional<StateValue> op = ParseEnumValue("BlendOp", kBlendOps);
+    if (!op) {
+        return false;
+    }
+    b.op = *op;
+    if (Accept(TokenKind::kComma)) {
+        b.op_alpha = ParseEnumValue("BlendOp", kBlendOps);
+        if (!b.op_alpha) {
+            return false;
+        }
+    }
+    b.range = RangeFrom(kw);
+    state.blend_op.push_back(std::move(b));
+    return true;
+}
+
+bool Parser::ParseColorMask(RenderState& state) {
+    const Token& kw = Next();
+    ColorMaskState cm;
+    const Token& t = Peek();
+    if (At(TokenKind::kLBracket)) {
+        std::optional<StateValue> ref = ParsePropertyRef();
+        if (!ref) {
+            return false;
+        }
+        cm.mask = *ref;
+    } else {
+        // 0, or a set of the letters R, G, B, A in any order, each at most once.
+        bool valid = (t.kind == TokenKind::kNumber && t.text == "0") ||
+                     (t.kind == TokenKind::kIdentifier && t.text.size() <= 4);
+        std::string canonical;
+        if (valid && t.kind == TokenKind::kIdentifier) {
+            for (const char channel : std::string_view("RGBA")) {
+                size_t count = 0;
+                for (const char c : t.text) {
+                    count += (c == channel || c == channel - 'A' + 'a') ? 1 : 0;
+                }
+                valid = valid && count <= 1;
+                canonical += count == 1 ? std::string(1, channel) : "";
+            }
+            valid = valid && canonical.size() == t.text.size();
+        } else if (valid) {
+            canonical = "0";
+        }
+        if (!valid) {
+            Error(DiagCode::kInvalidValue, t.range,
+                  "invalid value " + Describe(t) +
+                      " for 'ColorMask'; expected 0, a combination of R, G, B and A, or a "
+                      "[property] reference");
+            return false;
+        }
+        Next();
+        cm.mask = StateValue{StateValue::Kind::kLiteral, canonical, 0, t.range};
+    }
+    const std::optional<int> target = ParseRenderTarget("ColorMask");
+    if (!target) {
+        return false;
+    }
+    cm.target = *target;
+    cm.range = RangeFrom(kw);
+    state.color_mask.push_back(std::move(cm));
+    return true;
+}
+
+bool Parser::ParseStencil(RenderState& state) {
+    const Token& kw = Next();
+    StencilState st;
+    const bool ok = ParseBlock("'Stencil'", [&] {
+        static const Words kMasks = {"Ref", "ReadMask", "WriteMask"};
+        static const Words kComps = {"Comp", "CompFront", "CompBack"};
+        static const Words kOps = {"Pass",     "Fail",      "ZFail",     "PassFront",
+                                   "FailFront", "ZFailFront", "PassBack", "FailBack",
+                                   "ZFailBack"};
+        const Token& k = Peek();
+        if (k.kind != TokenKind::kIdentifier) {
+            ErrorUnexpected(k, "in a Stencil block");
+            return false;
+        }
+        auto match = [&](const Words& words) -> std::string_view {
+            for (std::string_view w : words) {
+                if (EqualsIgnoreCase(k.text, w)) {
+                    return w;
+                }
+            }
+            return {};
+        };
+        std::optional<StateValue> value;
+        std::string_view key;
+        if (!(key = match(kMasks)).empty()) {
+            Next();
+            value = ParseNumberValue(key, 0, 255, true);
+        } else if (!(key = match(kComps)).empty()) {
+            Next();
+            value = ParseEnumValue(key, kCompare);
+        } else if (!(key = match(kOps)).empty()) {
+            Next();
+            value = ParseEnumValue(key, kStencilOps);
+        } else {
+            Error(DiagCode::kUnknownCommand, k.range,
+                  "unknown stencil command '" + std::string(k.text) +
+                      "'; expected Ref, ReadMask, WriteMask, Comp, Pass, Fail or ZFail (optionally "
+                      "with a Front or Back suffix)");
+            return false;
+        }
+        if (!value) {
+            return false;
+        }
+        StencilEntry entry{std::string(key), *value, RangeFrom(k)};
+        for (const StencilEntry& other : st.entries) {
+            if (other.key == entry.key) {
+                Diagnostic& d = Warning(DiagCode::kDuplicateCommand, entry.range,
+                                        "duplicate stencil '" + entry.key +
+                                            "' command; the last one wins");
+                d.notes.push_back({source_.path(), other.range, "previous one here"});
+            }
+        }
+        st.entries.push_back(std::move(entry));
+        return true;
+    });
+    st.range = RangeFrom(kw);
+    if (state.stencil) {
+        Diagnostic& d = Warning(DiagCode::kDuplicateCommand, st.range,
+                                "duplicate 'Stencil' block; the last one wins");
+        d.notes.push_back({source_.path(), state.stencil->range, "previous one here"});
+    }
+    state.stencil = std::move(st);
+    return ok;
+}
+
+}  // namespace kiln::shaderlab

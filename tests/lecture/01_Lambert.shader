@@ -1,0 +1,48 @@
+// Lecture 06 (Light), Lambert: assembled from the slides as a student would write it.
+Shader "Lecture/Lambert"
+{
+    Properties
+    {
+        _Color ("Color", Color) = (1, 1, 1, 1)
+    }
+    SubShader
+    {
+        Pass
+        {
+            Tags {
+                "LightMode" = "ForwardBase"
+            }
+            CGPROGRAM
+            #pragma vertex MyVertexProgram
+            #pragma fragment MyFragmentProgram
+            #include "UnityStandardBRDF.cginc"
+
+            float4 _Color;
+
+            struct VertexData {
+                float4 position : POSITION;
+                float3 normal : NORMAL;
+            };
+
+            struct VertexToFragment {
+                float4 position : SV_POSITION;
+                float3 normal : NORMAL;
+            };
+
+            VertexToFragment MyVertexProgram(VertexData vert) {
+                VertexToFragment v2f;
+                v2f.position = UnityObjectToClipPos(vert.position);
+                v2f.normal = UnityObjectToWorldNormal(vert.normal);
+                return v2f;
+            }
+
+            float4 MyFragmentProgram(VertexToFragment v2f) : SV_TARGET{
+                float3 lightDir = _WorldSpaceLightPos0.xyz;
+                float4 lightColor = _LightColor0.rgb;
+                return _Color * lightColor * DotClamped(lightDir,
+                                                         normalize(v2f.normal));
+            }
+            ENDCG
+        }
+    }
+}

@@ -1,0 +1,78 @@
+// Lecture 06 (Light), PhysicallyBased: assembled from the slides as a student would write it.
+Shader "Lecture/PhysicallyBased"
+{
+    Properties
+    {
+        _Color("Color", Color) = (1, 1, 1, 1)
+        _Smoothness("Smoothness", Range(0, 1)) = 0.5
+        _SpecularColor("Specular", Color) = (0.5, 0.5, 0.5)
+        _MainTex("Albedo", 2D) = "white" {}
+    }
+    SubShader
+    {
+        Pass
+        {
+            Tags {
+                "LightMode" = "ForwardBase"
+            }
+            CGPROGRAM
+            #pragma vertex MyVertexProgram
+            #pragma fragment MyFragmentProgram
+            #include "UnityPBSLighting.cginc"
+
+            float4 _Color;
+            float _Smoothness;
+            float4 _SpecularColor;
+
+            sampler2D _MainTex;
+            float4 _MainTex_ST;
+
+            struct VertexData {
+                float4 position : POSITION;
+                float3 normal : NORMAL;
+                float2 uv : TEXCOORD0;
+            };
+
+            struct VertexToFragment {
+                float4 position : SV_POSITION;
+                float2 uv : TEXCOORD0;
+                float3 normal : NORMAL;
+                float4 worldpos : TEXCOORD1;
+            };
+
+            VertexToFragment MyVertexProgram(VertexData vert) {
+                VertexToFragment v2f;
+                v2f.position = UnityObjectToClipPos(vert.position);
+                v2f.worldpos = mul(unity_ObjectToWorld, vert.position);
+                v2f.normal = UnityObjectToWorldNormal(vert.normal);
+                v2f.uv = TRANSFORM_TEX(vert.uv, _MainTex);
+                return v2f;
+            }
+
+            float4 MyFragmentProgram(VertexToFragment v2f) :SV_TARGET{
+                float3 lightDir = _WorldSpaceLightPos0.xyz;
+                float3 viewDir = normalize(_WorldSpaceCameraPos - v2f.worldpos);
+                float3 lightColor = _LightColor0.rgb;
+                float3 albedo = tex2D(_MainTex, v2f.uv).rgb * _Color;
+                float oneMinusReflectivity;
+                albedo = EnergyConservationBetweenDiffuseAndSpecular(albedo,
+                                                                     _SpecularColor, oneMinusReflectivity);
+
+                UnityLight light;
+                light.color = lightColor;
+                light.dir = lightDir;
+                light.ndotl = DotClamped(normalize(v2f.normal),
+                                         lightDir);
+
+                UnityIndirect indirectLight;
+                indirectLight.diffuse = 0;
+                indirectLight.specular = 0;
+
+                return UNITY_BRDF_PBS(albedo, _SpecularColor, oneMinusReflectivity,
+                                      _Smoothness, normalize(v2f.normal), viewDir,
+                                      light, indirectLight);
+            }
+            ENDCG
+        }
+    }
+}
