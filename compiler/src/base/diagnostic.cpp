@@ -68,33 +68,68 @@ const SourceFile* FindSource(const std::vector<const SourceFile*>& sources,
     return nullptr;
 }
 
-// Appends "  12 | text\n     |   ^~~~\n" for a range that starts on a known line.
+// Length of the valid UTF-8 sequence starting at s[i], or 0 when it is not valid.
+size_t Utf8Length(std::string_view s, size_t i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    if (n == 0 || i + n > s.size() || c == 0xc0 || c == 0xc1 ||
+        (c == 0xc2 && static_cast<unsigned char>(s[i + 1]) < 0xa0)) {
+        return 0;  // invalid, overlong, or a C1 control character
+    }
+    for (size_t k = 1; k < n; ++k) {
+        if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) {
+            return 0;
+        }
+    }
+    return n;
+}
+
+// Appends " 12 | text\n    |   ^~~~\n" for a range that starts on a known line. Control bytes and
+// invalid UTF-8 are shown as '?', and long lines are cut to a window around the caret, so that
+// binary input never reaches the terminal and the caret stays aligned.
 void AppendSnippet(std::string& out, const SourceFile* source, const SourceRange& range) {
     if (source == nullptr || range.begin.line == 0 || range.begin.line > source->line_count()) {
         return;
     }
-    const std::string_view line = source->Line(range.begin.line);
-    const std::string number = std::to_string(range.begin.line);
-    std::string gutter(number.size(), ' ');
-    out += " " + number + " | ";
-    // Tabs are kept so the caret line can mirror them and stay aligned.
-    for (char c : line) {
-        out += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? ' ' : c;
-    }
-    out += "\n " + gutter + " | ";
-    const size_t col = std::min<size_t>(range.begin.column - 1, line.size());
-    for (size_t i = 0; i < col; ++i) {
-        out += line[i] == '\t' ? '\t' : ' ';
-    }
+    constexpr size_t kWindow = 120;
+    std::string_view line = source->Line(range.begin.line);
+    size_t col = std::min<size_t>(range.begin.column - 1, line.size());
     size_t width = 1;
     if (range.end.line == range.begin.line && range.end.column > range.begin.column) {
         width = range.end.column - range.begin.column;
     } else if (range.end.line > range.begin.line) {
         width = line.size() > col ? line.size() - col : 1;
     }
-    out += '^';
-    out.append(width > 1 ? width - 1 : 0, '~');
-    out += '\n';
+    std::string text;
+    std::string caret;
+    size_t first = 0;
+    if (line.size() > kWindow) {
+        first = col > kWindow / 2 ? col - kWindow / 2 : 0;
+        line = line.substr(first, kWindow);
+        text = first > 0 ? "..." : "";
+        caret = first > 0 ? "   " : "";
+        col -= first;
+    }
+    width = std::min(width, line.size() > col ? line.size() - col : 1);
+    for (size_t i = 0; i < line.size();) {
+        const size_t n = Utf8Length(line, i);
+        const auto c = static_cast<unsigned char>(line[i]);
+        const bool printable = n > 1 || c == '\t' || (c >= 0x20 && c < 0x7f);
+        const size_t step = n > 1 ? n : 1;
+        text += printable ? std::string(line.substr(i, step)) : std::string("?");
+        if (i < col) {
+            caret += c == '\t' ? '\t' : ' ';
+        } else if (i < col + width) {
+            caret += i == col ? '^' : '~';
+        }
+        i += step;
+    }
+    if (caret.find('^') == std::string::npos) {
+        caret += '^';
+    }
+    const std::string number = std::to_string(range.begin.line);
+    out += " " + number + " | " + text + "\n";
+    out += " " + std::string(number.size(), ' ') + " | " + caret + "\n";
 }
 
 void AppendHeader(std::string& out, const std::string& file, const SourceRange& range,

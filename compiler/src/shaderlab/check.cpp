@@ -67,7 +67,7 @@ void State::CheckProperties() {
         if (p.type == PropertyType::kRange) {
             if (p.range_min > p.range_max) {
                 Error(DiagCode::kBadRange, p.type_range,
-                      "Range minimum " + Num(p.range_min) + " is greater than its maximum " +
+                      "range minimum " + Num(p.range_min) + " is greater than its maximum " +
                           Num(p.range_max));
             } else if (!p.default_value.empty() &&
                        (p.default_value[0] < p.range_min || p.default_value[0] > p.range_max)) {
@@ -98,6 +98,9 @@ void State::CheckValue(const StateValue& value) {
     }
     auto it = props.find(value.text);
     if (it == props.end()) {
+        if (shader.properties_incomplete) {
+            return;  // the declaration may be the one that failed to parse
+        }
         Diagnostic& d = Error(DiagCode::kUndeclaredProperty, value.range,
                               "reference to undeclared property '" + value.text + "'");
         if (shader.properties_range) {
@@ -158,8 +161,8 @@ void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
     for (const ProgramBlock& block : programs) {
         if (block.kind == ProgramKind::kGlslProgram || block.kind == ProgramKind::kGlslInclude) {
             Error(DiagCode::kUnsupportedGlsl, MarkerRange(block),
-                  std::string(ProgramKindName(block.kind)) +
-                      " blocks are not supported; Kiln compiles HLSL, use CGPROGRAM or HLSLPROGRAM");
+                  "'" + std::string(ProgramKindName(block.kind)) +
+                      "' blocks are not supported; Kiln compiles HLSL, use CGPROGRAM or HLSLPROGRAM");
             continue;
         }
         if (const Pragma* surface = FindPragma(block, "surface")) {
@@ -173,8 +176,8 @@ void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
         }
         if (!in_pass) {
             Error(DiagCode::kProgramOutsidePass, MarkerRange(block),
-                  std::string(ProgramKindName(block.kind)) +
-                      " must be inside a Pass; only CGINCLUDE and HLSLINCLUDE may appear here");
+                  "'" + std::string(ProgramKindName(block.kind)) +
+                      "' must be inside a Pass; only CGINCLUDE and HLSLINCLUDE may appear here");
         } else if (first_program != nullptr) {
             Diagnostic& d = Error(DiagCode::kMultiplePrograms, MarkerRange(block),
                                   "a Pass has at most one program block");

@@ -83,8 +83,11 @@ bool Parser::ParseProperties(Shader& shader) {
                               "duplicate 'Properties' block; a Shader has at most one");
         d.notes.push_back({source_.path(), *shader.properties_range, "first declared here"});
     }
-    const bool ok =
-        ParseBlock("'Properties'", [&] { return ParseProperty(shader.properties); });
+    const bool ok = ParseBlock("'Properties'", [&] {
+        const bool prop_ok = ParseProperty(shader.properties);
+        shader.properties_incomplete = shader.properties_incomplete || !prop_ok;
+        return prop_ok;
+    });
     if (!shader.properties_range) {
         shader.properties_range = RangeFrom(kw);
     }

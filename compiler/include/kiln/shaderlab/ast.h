@@ -201,6 +201,9 @@ struct Shader {
     SourceRange name_range;
     std::optional<SourceRange> properties_range;
     std::vector<Property> properties;
+    // True when a property declaration failed to parse: references to undeclared properties are
+    // then not reported, since the name may be the one that failed.
+    bool properties_incomplete = false;
     std::vector<ProgramBlock> programs;  // Shader-level CGINCLUDE/HLSLINCLUDE
     std::vector<SubShaderEntry> subshaders;
     std::optional<Fallback> fallback;

@@ -1,0 +1,121 @@
+// The kiln CLI as a user and a build system see it: exit codes, output formats, diagnostics.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+
+struct RunResult {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+
+RunResult RunKiln(const std::string& args) {
+    const std::string dir = testing::TempDir();
+    const std::string out_path = dir + "/kiln_cli_stdout.txt";
+    const std::string err_path = dir + "/kiln_cli_stderr.txt";
+    const std::string cmd = std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
+    const int status = std::system(cmd.c_str());
+    RunResult r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = ReadFile(out_path);
+    r.err = ReadFile(err_path);
+    return r;
+}
+
+std::string WriteTemp(const std::string& name, const std::string& text) {
+    const std::string path = testing::TempDir() + "/" + name;
+    WriteFile(path, text);
+    return path;
+}
+
+TEST(Cli, ParsePrintsTheTreeAndExitsZero) {
+    const RunResult r = RunKiln("parse " + DataPath("lecture/11_SpotLight.shader"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("Shader \"Lecture/SpotLight\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("#pragma multi_compile DIRECTIONAL POINT SPOT"), std::string::npos);
+    EXPECT_EQ(r.err, "");
+}
+
+TEST(Cli, ParseJsonIsValidAndVersioned) {
+    const RunResult r = RunKiln("parse --json " + DataPath("lecture/01_Lambert.shader") + " " +
+                                DataPath("lecture/12_Deferred.shader"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["kiln_ast_version"], 1);
+    ASSERT_EQ(j["files"].size(), 2u);
+    EXPECT_EQ(j["files"][1]["ast"]["name"], "Lecture/Deferred");
+    EXPECT_EQ(j["files"][1]["ast"]["programs"][0]["kind"], "CGINCLUDE");
+}
+
+TEST(Cli, ErrorsAreCompilerStyleWithCaretAndExitOne) {
+    const std::string path =
+        WriteTemp("bad.shader", "Shader \"x\" {\n  SubShader {\n    Cull Sideways\n  }\n}\n");
+    const RunResult r = RunKiln("parse -q " + path);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find(path + ":3:10: error: invalid value 'Sideways' for 'Cull'; expected Back, "
+                                "Front, Off or a [property] reference [K2005]\n"
+                                " 3 |     Cull Sideways\n"
+                                "   |          ^~~~~~~~\n"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.out, "");
+}
+
+TEST(Cli, JsonDiagnostics) {
+    const std::string path = WriteTemp("bad2.shader", "Shader \"x\" {\n  Pass { }\n}\n");
+    const RunResult r = RunKiln("--diagnostics-format=json parse -q " + path);
+    EXPECT_EQ(r.exit_code, 1);
+    const auto j = nlohmann::json::parse(r.err);
+    ASSERT_EQ(j.size(), 1u);
+    EXPECT_EQ(j[0]["code"], "K2016");
+    EXPECT_EQ(j[0]["file"], path);
+    EXPECT_EQ(j[0]["range"]["begin"]["line"], 2);
+    EXPECT_EQ(j[0]["range"]["begin"]["column"], 3);
+}
+
+TEST(Cli, WarningsAloneExitZero) {
+    const std::string path =
+        WriteTemp("warn.shader", "Shader \"x\" { SubShader { Pass { Lighting Off } } }\n");
+    const RunResult r = RunKiln("parse -q " + path);
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.err.find("warning: legacy fixed-function command 'Lighting'"), std::string::npos);
+}
+
+TEST(Cli, ErrorsFromSeveralFilesInOneRun) {
+    const std::string a = WriteTemp("a.shader", "Shader \"a\" { SubShader { Cull No } }");
+    const std::string b = WriteTemp("b.shader", "Shader \"b\" { SubShader { ZWrite No } }");
+    const RunResult r = RunKiln("parse -q " + a + " " + b);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find(a + ":1:31: error"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(b + ":1:33: error"), std::string::npos) << r.err;
+}
+
+TEST(Cli, MissingFileIsAnInputError) {
+    const RunResult r = RunKiln("parse /nonexistent/missing.shader");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("error: cannot open '/nonexistent/missing.shader'"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("[K0001]"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+    EXPECT_EQ(RunKiln("").exit_code, 2);
+    EXPECT_EQ(RunKiln("frobnicate").exit_code, 2);
+    EXPECT_EQ(RunKiln("parse").exit_code, 2);
+    EXPECT_EQ(RunKiln("parse --no-such-flag x.shader").exit_code, 2);
+    EXPECT_EQ(RunKiln("--diagnostics-format=xml parse x.shader").exit_code, 2);
+    EXPECT_EQ(RunKiln("--help").exit_code, 0);
+}
+
+}  // namespace
+}  // namespace kiln::test

@@ -1,0 +1,1 @@
+Shader "x" { SubShader { Pass { Cull [_A] Blend 1 One Zero, One One Stencil { Ref 2 } } } }

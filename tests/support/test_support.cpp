@@ -1,0 +1,85 @@
+#include "support/test_support.h"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace kiln::test {
+
+std::string ReadFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw std::runtime_error("cannot read " + path);
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+void WriteFile(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+std::string DataPath(const std::string& relative) {
+    return std::string(KILN_TEST_DATA_DIR) + "/" + relative;
+}
+
+ParseOutcome ParseText(const std::string& text, const std::string& name) {
+    ParseOutcome out;
+    const SourceFile file(name, text);
+    out.shader = shaderlab::ParseAndCheck(file, out.diags);
+    return out;
+}
+
+std::string Summarize(const DiagnosticList& diags) {
+    std::string s;
+    for (const Diagnostic& d : diags.all()) {
+        s += FormatDiagCode(d.code) + " " + std::to_string(d.range.begin.line) + ":" +
+             std::to_string(d.range.begin.column) + " " + std::string(SeverityName(d.severity)) +
+             ": " + d.message + "\n";
+        for (const DiagnosticNote& n : d.notes) {
+            s += "  note " + std::to_string(n.range.begin.line) + ":" +
+                 std::to_string(n.range.begin.column) + ": " + n.message + "\n";
+        }
+    }
+    return s;
+}
+
+std::string MakeStressShader(size_t min_bytes, size_t depth) {
+    std::string s = "// generated stress input\nShader \"Stress/Big\" {\n  Properties {\n";
+    for (int i = 0; i < 200; ++i) {
+        s += "    [HDR] _Color" + std::to_string(i) + " (\"Color " + std::to_string(i) +
+             "\", Color) = (1, 0.5, 0.25, 1)\n";
+        s += "    [Enum(One, 1, Zero, 0)] _Mode" + std::to_string(i) + " (\"Mode\", Float) = 1\n";
+    }
+    s += "  }\n";
+    for (size_t d = 0; d < depth; ++d) {
+        s += std::string(d * 2 + 2, ' ') + "Category { Cull Back\n";
+    }
+    int pass = 0;
+    while (s.size() < min_bytes) {
+        s += "  SubShader { Tags { \"RenderType\" = \"Opaque\" } LOD 200\n";
+        for (int p = 0; p < 4; ++p, ++pass) {
+            s += "    Pass { Name \"P" + std::to_string(pass) + "\"\n";
+            s += "      Tags { \"LightMode\" = \"ForwardAdd\" }\n";
+            s += "      Blend [_Mode0] One, One Zero\n      ZWrite Off ZTest LEqual\n";
+            s += "      Stencil { Ref 1 Comp Always Pass Replace }\n";
+            s += "      CGPROGRAM\n      #pragma vertex vert\n      #pragma fragment frag\n";
+            s += "      #pragma multi_compile DIRECTIONAL POINT SPOT\n";
+            for (int l = 0; l < 20; ++l) {
+                s += "      float4 f" + std::to_string(l) +
+                     "(float4 x) { return x * 2.0 + float4(1, 2, 3, 4); } // { not a brace }\n";
+            }
+            s += "      ENDCG\n    }\n";
+        }
+        s += "  }\n";
+    }
+    for (size_t d = depth; d > 0; --d) {
+        s += std::string(d * 2, ' ') + "}\n";
+    }
+    s += "  Fallback Off\n}\n";
+    return s;
+}
+
+}  // namespace kiln::test

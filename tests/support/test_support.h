@@ -1,0 +1,35 @@
+// Helpers shared by Kiln's tests.
+#ifndef KILN_TESTS_SUPPORT_TEST_SUPPORT_H_
+#define KILN_TESTS_SUPPORT_TEST_SUPPORT_H_
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kiln/diagnostic.h"
+#include "kiln/shaderlab/parse.h"
+#include "kiln/source.h"
+
+namespace kiln::test {
+
+std::string ReadFile(const std::string& path);
+void WriteFile(const std::string& path, const std::string& text);
+std::string DataPath(const std::string& relative);  // under tests/
+
+// Parses and checks `text` as "test.shader".
+struct ParseOutcome {
+    std::optional<shaderlab::Shader> shader;
+    DiagnosticList diags;
+};
+ParseOutcome ParseText(const std::string& text, const std::string& name = "test.shader");
+
+// One line per diagnostic: "K2003 3:5 error: message" (notes indented below).
+std::string Summarize(const DiagnosticList& diags);
+
+// A deterministic ShaderLab file of at least `min_bytes`: many subshaders and passes with real
+// program blocks, properties, and Category blocks nested `depth` deep.
+std::string MakeStressShader(size_t min_bytes, size_t depth);
+
+}  // namespace kiln::test
+
+#endif  // KILN_TESTS_SUPPORT_TEST_SUPPORT_H_

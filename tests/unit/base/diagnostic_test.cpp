@@ -1,0 +1,91 @@
+#include "kiln/diagnostic.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+namespace kiln::test {
+namespace {
+
+SourceRange Range(const SourceFile& f, uint32_t begin, uint32_t end) {
+    return {f.LocAt(begin), f.LocAt(end)};
+}
+
+TEST(Diagnostics, CodesAreFourDigits) {
+    EXPECT_EQ(FormatDiagCode(DiagCode::kCannotReadFile), "K0001");
+    EXPECT_EQ(FormatDiagCode(DiagCode::kUnclosedBlock), "K2006");
+}
+
+TEST(Diagnostics, TextFormatHasLocationCodeSourceLineAndUnderline) {
+    const SourceFile f("m.shader", "Shader \"x\" {\n    Cull Sideways\n}\n");
+    DiagnosticList diags;
+    Diagnostic& d = diags.Error(DiagCode::kInvalidValue, "m.shader", Range(f, 22, 30),
+                                "invalid value 'Sideways' for 'Cull'");
+    d.notes.push_back({"m.shader", Range(f, 11, 12), "block opened here"});
+    EXPECT_EQ(FormatDiagnosticsText(diags, {&f}),
+              "m.shader:2:10: error: invalid value 'Sideways' for 'Cull' [K2005]\n"
+              " 2 |     Cull Sideways\n"
+              "   |          ^~~~~~~~\n"
+              "m.shader:1:12: note: block opened here\n"
+              " 1 | Shader \"x\" {\n"
+              "   |            ^\n");
+}
+
+TEST(Diagnostics, TextFormatKeepsTabsAlignedAndHidesControlBytes) {
+    const SourceFile f("t.shader", "\tab\x01 cd\n");
+    DiagnosticList diags;
+    diags.Error(DiagCode::kUnknownCommand, "t.shader", Range(f, 5, 7), "x");
+    const std::string text = FormatDiagnosticsText(diags, {&f});
+    EXPECT_NE(text.find(" 1 | \tab? cd\n   | \t    ^~\n"), std::string::npos) << text;
+}
+
+TEST(Diagnostics, LongLinesAreWindowedAroundTheCaret) {
+    const std::string line = std::string(5000, 'a') + "XYZ" + std::string(5000, 'b');
+    const SourceFile f("l.shader", line);
+    DiagnosticList diags;
+    diags.Error(DiagCode::kUnknownCommand, "l.shader", Range(f, 5000, 5003), "x");
+    const std::string text = FormatDiagnosticsText(diags, {&f});
+    EXPECT_LT(text.size(), 400u);
+    EXPECT_NE(text.find("XYZ"), std::string::npos);
+    // The caret sits under the X.
+    const size_t source_line = text.find(" 1 | ");
+    const size_t caret_line = text.find("   | ", source_line + 1);
+    EXPECT_EQ(text.find('X', source_line) - source_line, text.find('^', caret_line) - caret_line);
+}
+
+TEST(Diagnostics, JsonFormat) {
+    const SourceFile f("j.shader", "abc\ndef\n");
+    DiagnosticList diags;
+    diags.Warning(DiagCode::kDuplicateTag, "j.shader", Range(f, 4, 6), "duplicate tag 'A'")
+        .notes.push_back({"j.shader", Range(f, 0, 1), "previous value set here"});
+    const auto j = nlohmann::json::parse(FormatDiagnosticsJson(diags));
+    ASSERT_EQ(j.size(), 1u);
+    EXPECT_EQ(j[0]["severity"], "warning");
+    EXPECT_EQ(j[0]["code"], "K3010");
+    EXPECT_EQ(j[0]["file"], "j.shader");
+    EXPECT_EQ(j[0]["range"]["begin"]["line"], 2);
+    EXPECT_EQ(j[0]["range"]["begin"]["column"], 1);
+    EXPECT_EQ(j[0]["range"]["end"]["column"], 3);
+    EXPECT_EQ(j[0]["notes"][0]["message"], "previous value set here");
+}
+
+TEST(Diagnostics, JsonSurvivesInvalidUtf8InMessages) {
+    DiagnosticList diags;
+    diags.Error(DiagCode::kUnknownCommand, "x", {}, "unknown command '\xff\xfe'");
+    EXPECT_NO_THROW(nlohmann::json::parse(FormatDiagnosticsJson(diags)));
+}
+
+TEST(Diagnostics, ErrorLimitAddsOneTooManyErrorsAndStops) {
+    DiagnosticList diags;
+    diags.set_error_limit(3);
+    for (int i = 0; i < 10; ++i) {
+        diags.Error(DiagCode::kUnknownCommand, "x", {}, "e");
+    }
+    diags.Warning(DiagCode::kDuplicateTag, "x", {}, "w");
+    EXPECT_TRUE(diags.saturated());
+    ASSERT_EQ(diags.all().size(), 4u);
+    EXPECT_EQ(diags.all().back().code, DiagCode::kTooManyErrors);
+}
+
+}  // namespace
+}  // namespace kiln::test

@@ -1,0 +1,71 @@
+// Semantic checks that need the whole tree (kiln::shaderlab::Check).
+#include <gtest/gtest.h>
+
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+
+TEST(Check, DuplicatePropertyHasNoteAtFirstDeclaration) {
+    ParseOutcome out = ParseText(
+        "Shader \"x\" {\nProperties {\n  _A (\"A\", Float) = 0\n  _A (\"B\", Color) = (1,1,1,1)\n}\n}");
+    ASSERT_EQ(out.diags.error_count(), 1u) << Summarize(out.diags);
+    const Diagnostic& d = out.diags.all()[0];
+    EXPECT_EQ(d.code, DiagCode::kDuplicateProperty);
+    EXPECT_EQ(d.range.begin.line, 4u);
+    ASSERT_EQ(d.notes.size(), 1u);
+    EXPECT_EQ(d.notes[0].range.begin.line, 3u);
+}
+
+TEST(Check, EveryStateSlotIsCheckedForReferences) {
+    // Each command references an undeclared property: every one must be reported.
+    ParseOutcome out = ParseText(R"(Shader "x" {
+Properties { _Known ("K", Float) = 0 }
+Category { Cull [_a]
+SubShader { ZTest [_b] ZWrite [_c] ZClip [_d] AlphaToMask [_e] Conservative [_f]
+  Pass { Offset [_g], [_h] Blend [_i] [_j], [_k] [_l] BlendOp [_m], [_n] ColorMask [_o]
+         Stencil { Ref [_p] Comp [_q] } Cull [_Known] }
+} } })");
+    size_t undeclared = 0;
+    for (const Diagnostic& d : out.diags.all()) {
+        undeclared += d.code == DiagCode::kUndeclaredProperty ? 1 : 0;
+    }
+    EXPECT_EQ(undeclared, 17u) << Summarize(out.diags);
+    EXPECT_EQ(out.diags.error_count(), 17u) << Summarize(out.diags);
+}
+
+TEST(Check, UndeclaredReferenceWithoutPropertiesBlockHasNoNote) {
+    ParseOutcome out = ParseText("Shader \"x\" { SubShader { Cull [_C] } }");
+    ASSERT_EQ(out.diags.error_count(), 1u);
+    EXPECT_TRUE(out.diags.all()[0].notes.empty());
+}
+
+TEST(Check, ProgramsAtTheRightLevels) {
+    ParseOutcome ok = ParseText(
+        "Shader \"x\" { CGINCLUDE ENDCG Category { HLSLINCLUDE ENDHLSL SubShader { CGINCLUDE ENDCG "
+        "Pass { CGINCLUDE ENDCG CGPROGRAM ENDCG } } } }");
+    EXPECT_TRUE(ok.diags.all().empty()) << Summarize(ok.diags);
+    ParseOutcome bad = ParseText("Shader \"x\" { HLSLPROGRAM ENDHLSL }");
+    ASSERT_EQ(bad.diags.error_count(), 1u);
+    EXPECT_EQ(bad.diags.all()[0].code, DiagCode::kProgramOutsidePass);
+    EXPECT_EQ(bad.diags.all()[0].range.end.column - bad.diags.all()[0].range.begin.column, 11u);
+}
+
+TEST(Check, SurfacePragmaInsideAPassIsAlsoUnsupported) {
+    ParseOutcome out = ParseText(
+        "Shader \"x\" { SubShader { Pass { CGPROGRAM\n#pragma surface surf Standard\nENDCG } } }");
+    ASSERT_EQ(out.diags.error_count(), 1u);
+    EXPECT_EQ(out.diags.all()[0].code, DiagCode::kUnsupportedSurfaceShader);
+    EXPECT_EQ(out.diags.all()[0].range.begin.line, 2u);
+}
+
+TEST(Check, DuplicatePassNamesAreCaseInsensitive) {
+    ParseOutcome out = ParseText(
+        "Shader \"x\" { SubShader { Pass { Name \"Base\" } Pass { Name \"BASE\" } } }");
+    ASSERT_EQ(out.diags.all().size(), 1u);
+    EXPECT_EQ(out.diags.all()[0].code, DiagCode::kDuplicatePassName);
+    EXPECT_EQ(out.diags.all()[0].severity, Severity::kWarning);
+}
+
+}  // namespace
+}  // namespace kiln::test
