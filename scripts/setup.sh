@@ -5,7 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
     # build tools
-    build-essential cmake ninja-build pkg-config git
+    build-essential cmake ninja-build pkg-config git python3
     clang libclang-rt-14-dev llvm
     # shader toolchain
     glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev

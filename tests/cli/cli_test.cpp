@@ -20,9 +20,13 @@ struct RunResult {
 };
 
 RunResult RunKiln(const std::string& args) {
-    const std::string dir = testing::TempDir();
-    const std::string out_path = dir + "/kiln_cli_stdout.txt";
-    const std::string err_path = dir + "/kiln_cli_stderr.txt";
+    // ctest runs tests in parallel: each test and call gets its own capture files.
+    static int call = 0;
+    const std::string stem = testing::TempDir() + "/kiln_cli_" +
+                             testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                             std::to_string(call++);
+    const std::string out_path = stem + ".out";
+    const std::string err_path = stem + ".err";
     const std::string cmd = std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
     const int status = std::system(cmd.c_str());
     RunResult r;
@@ -33,7 +37,7 @@ RunResult RunKiln(const std::string& args) {
 }
 
 std::string WriteTemp(const std::string& name, const std::string& text) {
-    const std::string path = testing::TempDir() + "/" + name;
+    const std::string path = testing::TempDir() + "/kiln_cli_" + name;
     WriteFile(path, text);
     return path;
 }

@@ -101,6 +101,10 @@ std::vector<ErrorCase> Cases() {
     };
 }
 
+void PrintTo(const ErrorCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
 class ParserErrorTest : public testing::TestWithParam<ErrorCase> {};
 
 TEST_P(ParserErrorTest, ReportsFirstErrorAtExactPosition) {
