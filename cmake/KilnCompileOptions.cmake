@@ -13,6 +13,12 @@ if(KILN_SANITIZE)
     add_link_options(${_kiln_san_flags})
 endif()
 
+if(KILN_FUZZ)
+    # Coverage instrumentation for everything, so libFuzzer sees inside the libraries too; only
+    # the fuzz targets themselves link libFuzzer's main (-fsanitize=fuzzer).
+    add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+
 function(kiln_target_options target)
     target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
         -Wnon-virtual-dtor -Wconversion -Wno-sign-conversion)

@@ -27,7 +27,8 @@ RunResult RunKiln(const std::string& args) {
                              std::to_string(call++);
     const std::string out_path = stem + ".out";
     const std::string err_path = stem + ".err";
-    const std::string cmd = std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
+    const std::string cmd =
+        std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
     const int status = std::system(cmd.c_str());
     RunResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -1,5 +1,6 @@
 // Diagnostics: the library never prints. Every stage appends to a DiagnosticList; the CLI formats
-// it (text or JSON). Codes are stable: once published a code keeps its meaning (docs/diagnostics.md).
+// it (text or JSON). Codes are stable: once published a code keeps its meaning
+// (docs/diagnostics.md).
 #ifndef KILN_DIAGNOSTIC_H_
 #define KILN_DIAGNOSTIC_H_
 
@@ -83,11 +84,14 @@ struct Diagnostic {
 };
 
 class DiagnosticList {
-public:
+  public:
     // Errors past this limit are dropped and replaced by one kTooManyErrors error.
     static constexpr size_t kDefaultErrorLimit = 100;
 
-    Diagnostic& Add(Severity severity, DiagCode code, std::string file, SourceRange range,
+    Diagnostic& Add(Severity severity,
+                    DiagCode code,
+                    std::string file,
+                    SourceRange range,
                     std::string message);
     Diagnostic& Error(DiagCode code, std::string file, SourceRange range, std::string message) {
         return Add(Severity::kError, code, std::move(file), range, std::move(message));
@@ -105,7 +109,7 @@ public:
     void set_error_limit(size_t limit) { limit_ = limit; }
     void Append(const DiagnosticList& other);
 
-private:
+  private:
     std::vector<Diagnostic> diags_;
     size_t errors_ = 0;
     size_t internal_ = 0;

@@ -30,7 +30,7 @@ struct SourceRange {
 
 // An immutable source file with a line index built on construction.
 class SourceFile {
-public:
+  public:
     SourceFile(std::string path, std::string text);
 
     const std::string& path() const { return path_; }
@@ -42,7 +42,7 @@ public:
     std::string_view Line(uint32_t line) const;
     uint32_t line_count() const { return static_cast<uint32_t>(line_starts_.size()); }
 
-private:
+  private:
     std::string path_;
     std::string text_;
     std::vector<uint32_t> line_starts_;

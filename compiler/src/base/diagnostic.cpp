@@ -27,16 +27,21 @@ std::string_view SeverityName(Severity severity) {
     return "error";
 }
 
-Diagnostic& DiagnosticList::Add(Severity severity, DiagCode code, std::string file,
-                                SourceRange range, std::string message) {
+Diagnostic& DiagnosticList::Add(Severity severity,
+                                DiagCode code,
+                                std::string file,
+                                SourceRange range,
+                                std::string message) {
     const bool is_error = severity == Severity::kError || severity == Severity::kInternal;
     if (saturated_ || (is_error && severity != Severity::kInternal && errors_ >= limit_)) {
         if (!saturated_) {
             saturated_ = true;
             ++errors_;
-            diags_.push_back(Diagnostic{Severity::kError, DiagCode::kTooManyErrors, file, range,
-                                        "too many errors; stopping after " +
-                                            std::to_string(limit_),
+            diags_.push_back(Diagnostic{Severity::kError,
+                                        DiagCode::kTooManyErrors,
+                                        file,
+                                        range,
+                                        "too many errors; stopping after " + std::to_string(limit_),
                                         {}});
         }
         overflow_sink_ = Diagnostic{};
@@ -44,8 +49,7 @@ Diagnostic& DiagnosticList::Add(Severity severity, DiagCode code, std::string fi
     }
     errors_ += is_error ? 1 : 0;
     internal_ += severity == Severity::kInternal ? 1 : 0;
-    diags_.push_back(
-        Diagnostic{severity, code, std::move(file), range, std::move(message), {}});
+    diags_.push_back(Diagnostic{severity, code, std::move(file), range, std::move(message), {}});
     return diags_.back();
 }
 
@@ -71,7 +75,11 @@ const SourceFile* FindSource(const std::vector<const SourceFile*>& sources,
 // Length of the valid UTF-8 sequence starting at s[i], or 0 when it is not valid.
 size_t Utf8Length(std::string_view s, size_t i) {
     const auto c = static_cast<unsigned char>(s[i]);
-    const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    const size_t n = c < 0x80           ? 1
+                     : (c >> 5) == 0x6  ? 2
+                     : (c >> 4) == 0xe  ? 3
+                     : (c >> 3) == 0x1e ? 4
+                                        : 0;
     if (n == 0 || i + n > s.size() || c == 0xc0 || c == 0xc1 ||
         (c == 0xc2 && static_cast<unsigned char>(s[i + 1]) < 0xa0)) {
         return 0;  // invalid, overlong, or a C1 control character
@@ -132,8 +140,11 @@ void AppendSnippet(std::string& out, const SourceFile* source, const SourceRange
     out += " " + std::string(number.size(), ' ') + " | " + caret + "\n";
 }
 
-void AppendHeader(std::string& out, const std::string& file, const SourceRange& range,
-                  std::string_view severity, const std::string& message) {
+void AppendHeader(std::string& out,
+                  const std::string& file,
+                  const SourceRange& range,
+                  std::string_view severity,
+                  const std::string& message) {
     out += file.empty() ? "kiln" : file;
     if (range.begin.line > 0) {
         out += ":" + std::to_string(range.begin.line) + ":" + std::to_string(range.begin.column);
@@ -171,7 +182,8 @@ std::string FormatDiagnosticsJson(const DiagnosticList& diags) {
     for (const Diagnostic& d : diags.all()) {
         nlohmann::ordered_json notes = nlohmann::ordered_json::array();
         for (const DiagnosticNote& n : d.notes) {
-            notes.push_back({{"file", n.file}, {"range", RangeJson(n.range)}, {"message", n.message}});
+            notes.push_back(
+                {{"file", n.file}, {"range", RangeJson(n.range)}, {"message", n.message}});
         }
         arr.push_back({{"severity", SeverityName(d.severity)},
                        {"code", FormatDiagCode(d.code)},

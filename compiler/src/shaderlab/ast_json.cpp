@@ -135,7 +135,8 @@ Json PropertyJson(const Property& p) {
         e["range"] = R(a.range);
         attrs.push_back(e);
     }
-    Json j = {{"name", p.name}, {"display_name", p.display_name}, {"type", PropertyTypeName(p.type)}};
+    Json j = {
+        {"name", p.name}, {"display_name", p.display_name}, {"type", PropertyTypeName(p.type)}};
     if (p.type == PropertyType::kRange) {
         j["min"] = p.range_min;
         j["max"] = p.range_max;
@@ -152,16 +153,22 @@ Json PropertyJson(const Property& p) {
 
 Json PassJson(const PassEntry& entry) {
     if (const Pass* p = std::get_if<Pass>(&entry)) {
-        return {{"kind", "Pass"},   {"name", p->name},         {"tags", Tags(p->tags)},
-                {"state", State(p->state)}, {"programs", Programs(p->programs)},
+        return {{"kind", "Pass"},
+                {"name", p->name},
+                {"tags", Tags(p->tags)},
+                {"state", State(p->state)},
+                {"programs", Programs(p->programs)},
                 {"range", R(p->range)}};
     }
     if (const UsePass* u = std::get_if<UsePass>(&entry)) {
         return {{"kind", "UsePass"}, {"target", u->target}, {"range", R(u->range)}};
     }
     const GrabPass& g = std::get<GrabPass>(entry);
-    return {{"kind", "GrabPass"}, {"texture", g.texture_name}, {"name", g.name},
-            {"tags", Tags(g.tags)}, {"range", R(g.range)}};
+    return {{"kind", "GrabPass"},
+            {"texture", g.texture_name},
+            {"name", g.name},
+            {"tags", Tags(g.tags)},
+            {"range", R(g.range)}};
 }
 
 Json Entries(const std::vector<SubShaderEntry>& entries);

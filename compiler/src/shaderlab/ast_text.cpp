@@ -173,7 +173,8 @@ std::string DumpText(const Shader& shader) {
     p.Programs(1, shader.programs);
     p.Entries(1, shader.subshaders);
     if (shader.fallback) {
-        p.Line(1, shader.fallback->off ? "Fallback Off" : "Fallback \"" + shader.fallback->name + "\"");
+        p.Line(1, shader.fallback->off ? "Fallback Off"
+                                       : "Fallback \"" + shader.fallback->name + "\"");
     }
     if (shader.custom_editor) {
         p.Line(1, "CustomEditor \"" + *shader.custom_editor + "\"");

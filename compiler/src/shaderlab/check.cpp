@@ -55,7 +55,7 @@ struct State {
 };
 
 void State::CheckProperties() {
-    static const char* const kTextureDefaults[] = {"white", "black", "gray", "grey",
+    static const char* const kTextureDefaults[] = {"white", "black", "gray",       "grey",
                                                    "bump",  "red",   "linearGray", ""};
     for (const Property& p : shader.properties) {
         auto [it, inserted] = props.emplace(p.name, &p);
@@ -73,8 +73,8 @@ void State::CheckProperties() {
                        (p.default_value[0] < p.range_min || p.default_value[0] > p.range_max)) {
                 Warning(DiagCode::kDefaultOutOfRange, p.default_range,
                         "default " + Num(p.default_value[0]) + " of '" + p.name +
-                            "' is outside its Range(" + Num(p.range_min) + ", " +
-                            Num(p.range_max) + ")");
+                            "' is outside its Range(" + Num(p.range_min) + ", " + Num(p.range_max) +
+                            ")");
             }
         }
         if (IsTextureType(p.type)) {
@@ -84,8 +84,7 @@ void State::CheckProperties() {
             }
             if (!known) {
                 Warning(DiagCode::kUnknownTextureDefault, p.default_range,
-                        "unknown default texture \"" + p.default_texture +
-                            "\" for '" + p.name +
+                        "unknown default texture \"" + p.default_texture + "\" for '" + p.name +
                             "'; expected white, black, gray, bump, red or \"\"; gray is used");
             }
         }
@@ -120,8 +119,8 @@ void State::CheckValue(const StateValue& value) {
 }
 
 void State::CheckState(const RenderState& s) {
-    for (const auto* simple : {&s.cull, &s.ztest, &s.zwrite, &s.zclip, &s.alpha_to_mask,
-                               &s.conservative}) {
+    for (const auto* simple :
+         {&s.cull, &s.ztest, &s.zwrite, &s.zclip, &s.alpha_to_mask, &s.conservative}) {
         if (*simple) {
             CheckValue((*simple)->value);
         }
@@ -160,9 +159,10 @@ void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
     const ProgramBlock* first_program = nullptr;
     for (const ProgramBlock& block : programs) {
         if (block.kind == ProgramKind::kGlslProgram || block.kind == ProgramKind::kGlslInclude) {
-            Error(DiagCode::kUnsupportedGlsl, MarkerRange(block),
-                  "'" + std::string(ProgramKindName(block.kind)) +
-                      "' blocks are not supported; Kiln compiles HLSL, use CGPROGRAM or HLSLPROGRAM");
+            Error(
+                DiagCode::kUnsupportedGlsl, MarkerRange(block),
+                "'" + std::string(ProgramKindName(block.kind)) +
+                    "' blocks are not supported; Kiln compiles HLSL, use CGPROGRAM or HLSLPROGRAM");
             continue;
         }
         if (const Pragma* surface = FindPragma(block, "surface")) {

@@ -228,17 +228,38 @@ std::vector<Token> Lex(const SourceFile& source, DiagnosticList& diags) {
         const char c = s.Peek();
         TokenKind punct = TokenKind::kEof;
         switch (c) {
-            case '{': punct = TokenKind::kLBrace; break;
-            case '}': punct = TokenKind::kRBrace; break;
-            case '(': punct = TokenKind::kLParen; break;
-            case ')': punct = TokenKind::kRParen; break;
-            case '[': punct = TokenKind::kLBracket; break;
-            case ']': punct = TokenKind::kRBracket; break;
-            case ',': punct = TokenKind::kComma; break;
-            case '=': punct = TokenKind::kEquals; break;
-            case '-': punct = TokenKind::kMinus; break;
-            case '+': punct = TokenKind::kPlus; break;
-            default: break;
+            case '{':
+                punct = TokenKind::kLBrace;
+                break;
+            case '}':
+                punct = TokenKind::kRBrace;
+                break;
+            case '(':
+                punct = TokenKind::kLParen;
+                break;
+            case ')':
+                punct = TokenKind::kRParen;
+                break;
+            case '[':
+                punct = TokenKind::kLBracket;
+                break;
+            case ']':
+                punct = TokenKind::kRBracket;
+                break;
+            case ',':
+                punct = TokenKind::kComma;
+                break;
+            case '=':
+                punct = TokenKind::kEquals;
+                break;
+            case '-':
+                punct = TokenKind::kMinus;
+                break;
+            case '+':
+                punct = TokenKind::kPlus;
+                break;
+            default:
+                break;
         }
         if (punct != TokenKind::kEof) {
             s.Advance();

@@ -55,17 +55,28 @@ const char* HomeOf(std::string_view word) {
         const char* home;
     };
     static const Home kHomes[] = {
-        {"Pass", "a SubShader"},          {"UsePass", "a SubShader"},
-        {"GrabPass", "a SubShader"},      {"LOD", "a SubShader or Category"},
-        {"SubShader", "a Shader or Category"}, {"Category", "a Shader or Category"},
-        {"Properties", "the Shader block"}, {"Fallback", "the Shader block"},
-        {"CustomEditor", "the Shader block"}, {"Dependency", "the Shader block"},
-        {"Name", "a Pass or GrabPass"},   {"Tags", "a SubShader, Pass or Category"},
-        {"Cull", "a SubShader, Pass or Category"}, {"ZTest", "a SubShader, Pass or Category"},
-        {"ZWrite", "a SubShader, Pass or Category"}, {"ZClip", "a SubShader, Pass or Category"},
-        {"Blend", "a SubShader, Pass or Category"}, {"BlendOp", "a SubShader, Pass or Category"},
-        {"ColorMask", "a SubShader, Pass or Category"}, {"Offset", "a SubShader, Pass or Category"},
-        {"AlphaToMask", "a SubShader, Pass or Category"}, {"Stencil", "a SubShader, Pass or Category"},
+        {"Pass", "a SubShader"},
+        {"UsePass", "a SubShader"},
+        {"GrabPass", "a SubShader"},
+        {"LOD", "a SubShader or Category"},
+        {"SubShader", "a Shader or Category"},
+        {"Category", "a Shader or Category"},
+        {"Properties", "the Shader block"},
+        {"Fallback", "the Shader block"},
+        {"CustomEditor", "the Shader block"},
+        {"Dependency", "the Shader block"},
+        {"Name", "a Pass or GrabPass"},
+        {"Tags", "a SubShader, Pass or Category"},
+        {"Cull", "a SubShader, Pass or Category"},
+        {"ZTest", "a SubShader, Pass or Category"},
+        {"ZWrite", "a SubShader, Pass or Category"},
+        {"ZClip", "a SubShader, Pass or Category"},
+        {"Blend", "a SubShader, Pass or Category"},
+        {"BlendOp", "a SubShader, Pass or Category"},
+        {"ColorMask", "a SubShader, Pass or Category"},
+        {"Offset", "a SubShader, Pass or Category"},
+        {"AlphaToMask", "a SubShader, Pass or Category"},
+        {"Stencil", "a SubShader, Pass or Category"},
         {"Conservative", "a SubShader, Pass or Category"},
     };
     for (const Home& h : kHomes) {
@@ -77,9 +88,9 @@ const char* HomeOf(std::string_view word) {
 }
 
 bool IsLegacyCommand(std::string_view word) {
-    static const char* const kLegacy[] = {"Lighting",  "SeparateSpecular", "ColorMaterial",
-                                          "AlphaTest", "Fog",              "Material",
-                                          "SetTexture", "BindChannels",    "PackageRequirements"};
+    static const char* const kLegacy[] = {
+        "Lighting", "SeparateSpecular", "ColorMaterial", "AlphaTest",          "Fog",
+        "Material", "SetTexture",       "BindChannels",  "PackageRequirements"};
     for (const char* w : kLegacy) {
         if (EqualsIgnoreCase(word, w)) {
             return true;
@@ -90,7 +101,9 @@ bool IsLegacyCommand(std::string_view word) {
 
 }  // namespace
 
-Parser::Parser(const SourceFile& source, std::vector<Token> tokens, DiagnosticList& diags,
+Parser::Parser(const SourceFile& source,
+               std::vector<Token> tokens,
+               DiagnosticList& diags,
                const ParseOptions& options)
     : source_(source), tokens_(std::move(tokens)), diags_(diags), options_(options) {}
 
@@ -155,7 +168,8 @@ std::string Parser::Describe(const Token& t) {
 
 SourceRange Parser::RangeFrom(const Token& first) const {
     const SourceLoc end = pos_ > 0 ? tokens_[pos_ - 1].range.end : first.range.end;
-    return SourceRange{first.range.begin, end.offset >= first.range.end.offset ? end : first.range.end};
+    return SourceRange{first.range.begin,
+                       end.offset >= first.range.end.offset ? end : first.range.end};
 }
 
 Diagnostic& Parser::Error(DiagCode code, SourceRange range, std::string message) {
@@ -167,8 +181,9 @@ Diagnostic& Parser::Warning(DiagCode code, SourceRange range, std::string messag
 }
 
 void Parser::ErrorUnexpected(const Token& t, std::string_view context) {
-    Error(t.kind == TokenKind::kUnknown ? DiagCode::kUnexpectedCharacter : DiagCode::kUnexpectedToken,
-          t.range, "unexpected " + Describe(t) + " " + std::string(context));
+    Error(
+        t.kind == TokenKind::kUnknown ? DiagCode::kUnexpectedCharacter : DiagCode::kUnexpectedToken,
+        t.range, "unexpected " + Describe(t) + " " + std::string(context));
 }
 
 bool Parser::ParseBlock(std::string_view what, const std::function<bool()>& item) {
@@ -193,11 +208,11 @@ bool Parser::ParseBlock(std::string_view what, const std::function<bool()>& item
         if (At(TokenKind::kEof) || diags_.saturated()) {
             if (!reported_eof_ && !diags_.saturated()) {
                 reported_eof_ = true;
-                Diagnostic& d = Error(DiagCode::kUnclosedBlock, Peek().range,
-                                      "expected '}' to close " + std::string(what) +
-                                          ", found end of file");
-                d.notes.push_back({source_.path(), open_token.range,
-                                   std::string(what) + " block opened here"});
+                Diagnostic& d =
+                    Error(DiagCode::kUnclosedBlock, Peek().range,
+                          "expected '}' to close " + std::string(what) + ", found end of file");
+                d.notes.push_back(
+                    {source_.path(), open_token.range, std::string(what) + " block opened here"});
             }
             pos_ = tokens_.size() - 1;
             break;
@@ -318,8 +333,8 @@ bool Parser::ParseFallback(Shader& shader) {
     if (AtWord("Off")) {
         Next();
         fb.off = true;
-    } else if (const Token* name = Expect(TokenKind::kString, "a shader name or 'Off'",
-                                          "after 'Fallback'")) {
+    } else if (const Token* name =
+                   Expect(TokenKind::kString, "a shader name or 'Off'", "after 'Fallback'")) {
         fb.name = DecodeString(name->text);
     } else {
         return false;
@@ -463,8 +478,10 @@ bool Parser::ParseGrabPass(SubShader& sub) {
     return ok;
 }
 
-bool Parser::TryCommonCommand(std::vector<Tag>& tags, RenderState& state,
-                              std::vector<ProgramBlock>& programs, bool& ok) {
+bool Parser::TryCommonCommand(std::vector<Tag>& tags,
+                              RenderState& state,
+                              std::vector<ProgramBlock>& programs,
+                              bool& ok) {
     if (At(TokenKind::kProgram)) {
         ok = ParseProgram(programs);
         return true;
@@ -563,13 +580,15 @@ bool Parser::ParseProgram(std::vector<ProgramBlock>& programs) {
     return true;
 }
 
-std::optional<Shader> Parse(const SourceFile& source, DiagnosticList& diags,
+std::optional<Shader> Parse(const SourceFile& source,
+                            DiagnosticList& diags,
                             const ParseOptions& options) {
     Parser parser(source, Lex(source, diags), diags, options);
     return parser.ParseFile();
 }
 
-std::optional<Shader> ParseAndCheck(const SourceFile& source, DiagnosticList& diags,
+std::optional<Shader> ParseAndCheck(const SourceFile& source,
+                                    DiagnosticList& diags,
                                     const ParseOptions& options) {
     std::optional<Shader> shader = Parse(source, diags, options);
     if (shader) {

@@ -26,13 +26,15 @@ bool EqualsIgnoreCase(std::string_view a, std::string_view b);
 std::optional<double> ParseDouble(std::string_view text);
 
 class Parser {
-public:
-    Parser(const SourceFile& source, std::vector<Token> tokens, DiagnosticList& diags,
+  public:
+    Parser(const SourceFile& source,
+           std::vector<Token> tokens,
+           DiagnosticList& diags,
            const ParseOptions& options);
 
     std::optional<Shader> ParseFile();
 
-private:
+  private:
     // Where a command appears; decides which commands are allowed.
     enum class Level { kShader, kCategory, kSubShader, kPass, kGrabPass };
 
@@ -42,7 +44,8 @@ private:
     bool At(TokenKind kind) const { return Peek().kind == kind; }
     bool AtWord(std::string_view word) const;
     bool Accept(TokenKind kind);
-    // Consumes a token of `kind` or reports "expected <what> <context>, found ..." and returns null.
+    // Consumes a token of `kind` or reports "expected <what> <context>, found ..." and returns
+    // null.
     const Token* Expect(TokenKind kind, std::string_view what, std::string_view context);
     static std::string Describe(const Token& token);
     SourceRange RangeFrom(const Token& first) const;  // first..last consumed token
@@ -73,8 +76,10 @@ private:
     bool ParseProgram(std::vector<ProgramBlock>& programs);
     bool ParseStringArg(std::string& out, std::string_view command);
     // Shared commands for Category/SubShader/Pass; false when the current token is none of them.
-    bool TryCommonCommand(std::vector<Tag>& tags, RenderState& state,
-                          std::vector<ProgramBlock>& programs, bool& ok);
+    bool TryCommonCommand(std::vector<Tag>& tags,
+                          RenderState& state,
+                          std::vector<ProgramBlock>& programs,
+                          bool& ok);
     bool ReportMisplacedOrUnknown(Level level);
 
     // Properties (parser_properties.cpp).
@@ -88,7 +93,8 @@ private:
     // Render state (parser_state.cpp). TryStateCommand: false when the current token is not a
     // render-state command; otherwise parses it and sets `ok`.
     bool TryStateCommand(RenderState& state, bool& ok);
-    bool ParseSimpleState(std::optional<SimpleState>& slot, std::string_view command,
+    bool ParseSimpleState(std::optional<SimpleState>& slot,
+                          std::string_view command,
                           const std::vector<std::string_view>& allowed);
     bool ParseOffset(RenderState& state);
     bool ParseBlend(RenderState& state);
@@ -98,7 +104,9 @@ private:
     std::optional<int> ParseRenderTarget(std::string_view command);
     std::optional<StateValue> ParseEnumValue(std::string_view command,
                                              const std::vector<std::string_view>& allowed);
-    std::optional<StateValue> ParseNumberValue(std::string_view command, double min, double max,
+    std::optional<StateValue> ParseNumberValue(std::string_view command,
+                                               double min,
+                                               double max,
                                                bool integer);
     std::optional<StateValue> ParsePropertyRef();
 

@@ -10,11 +10,11 @@ struct TypeSpec {
 };
 
 constexpr TypeSpec kTypes[] = {
-    {"Color", PropertyType::kColor},       {"Vector", PropertyType::kVector},
-    {"Float", PropertyType::kFloat},       {"Int", PropertyType::kInt},
-    {"Integer", PropertyType::kInteger},   {"Range", PropertyType::kRange},
-    {"2D", PropertyType::kTexture2D},      {"3D", PropertyType::kTexture3D},
-    {"Cube", PropertyType::kCube},         {"2DArray", PropertyType::kTexture2DArray},
+    {"Color", PropertyType::kColor},         {"Vector", PropertyType::kVector},
+    {"Float", PropertyType::kFloat},         {"Int", PropertyType::kInt},
+    {"Integer", PropertyType::kInteger},     {"Range", PropertyType::kRange},
+    {"2D", PropertyType::kTexture2D},        {"3D", PropertyType::kTexture3D},
+    {"Cube", PropertyType::kCube},           {"2DArray", PropertyType::kTexture2DArray},
     {"CubeArray", PropertyType::kCubeArray},
 };
 
@@ -31,14 +31,22 @@ struct AttributeSpec {
 };
 
 constexpr AttributeSpec kAttributes[] = {
-    {"HDR", 0, 0, false},          {"Gamma", 0, 0, false},
-    {"NoScaleOffset", 0, 0, false}, {"Normal", 0, 0, false},
-    {"MainTexture", 0, 0, false},  {"MainColor", 0, 0, false},
-    {"HideInInspector", 0, 0, false}, {"PerRendererData", 0, 0, false},
-    {"Toggle", 0, 1, false},       {"ToggleOff", 0, 1, false},
-    {"KeywordEnum", 1, 9, false},  {"Enum", 1, -1, false},
-    {"PowerSlider", 1, 1, true},   {"IntRange", 0, 0, false},
-    {"Header", 1, -1, false},      {"Space", 0, 1, true},
+    {"HDR", 0, 0, false},
+    {"Gamma", 0, 0, false},
+    {"NoScaleOffset", 0, 0, false},
+    {"Normal", 0, 0, false},
+    {"MainTexture", 0, 0, false},
+    {"MainColor", 0, 0, false},
+    {"HideInInspector", 0, 0, false},
+    {"PerRendererData", 0, 0, false},
+    {"Toggle", 0, 1, false},
+    {"ToggleOff", 0, 1, false},
+    {"KeywordEnum", 1, 9, false},
+    {"Enum", 1, -1, false},
+    {"PowerSlider", 1, 1, true},
+    {"IntRange", 0, 0, false},
+    {"Header", 1, -1, false},
+    {"Space", 0, 1, true},
 };
 
 std::string Trim(std::string_view s) {
@@ -138,7 +146,8 @@ bool Parser::ParseAttribute(std::vector<Attribute>& out) {
     if (At(TokenKind::kLParen)) {
         const Token& lparen = Next();
         attr.has_parens = true;
-        // Arguments are free text (e.g. [Header(Specular settings)]): take the raw source up to ')'.
+        // Arguments are free text (e.g. [Header(Specular settings)]): take the raw source up to
+        // ')'.
         while (!At(TokenKind::kRParen)) {
             const Token& t = Peek();
             if (t.kind == TokenKind::kEof || t.kind == TokenKind::kRBracket ||
@@ -154,8 +163,8 @@ bool Parser::ParseAttribute(std::vector<Attribute>& out) {
         }
         const Token& rparen = Next();
         const std::string_view text = source_.text();
-        attr.raw_args = std::string(text.substr(lparen.range.end.offset,
-                                                rparen.range.begin.offset - lparen.range.end.offset));
+        attr.raw_args = std::string(text.substr(
+            lparen.range.end.offset, rparen.range.begin.offset - lparen.range.end.offset));
         attr.args = SplitArgs(attr.raw_args);
     }
     if (!Expect(TokenKind::kRBracket, "']'", "to close attribute '" + attr.name + "'")) {
@@ -192,8 +201,7 @@ bool Parser::ParseAttribute(std::vector<Attribute>& out) {
             }
         }
         if (!problem.empty()) {
-            Error(DiagCode::kBadAttribute, attr.range,
-                  "attribute '" + attr.name + "' " + problem);
+            Error(DiagCode::kBadAttribute, attr.range, "attribute '" + attr.name + "' " + problem);
             return false;
         }
         break;
@@ -251,9 +259,9 @@ std::optional<double> Parser::ParseSignedNumber(std::string_view context) {
     }
     if (!v) {
         Error(DiagCode::kExpectedNumber, t.kind == TokenKind::kNumber ? t.range : first.range,
-              (t.kind == TokenKind::kNumber ? "number " + std::string(t.text) + " is out of range "
-                                            : "expected a number " + std::string(context) +
-                                                  ", found " + Describe(t)));
+              (t.kind == TokenKind::kNumber
+                   ? "number " + std::string(t.text) + " is out of range "
+                   : "expected a number " + std::string(context) + ", found " + Describe(t)));
         return std::nullopt;
     }
     Next();
@@ -262,7 +270,8 @@ std::optional<double> Parser::ParseSignedNumber(std::string_view context) {
 
 bool Parser::ParsePropertyDefault(Property& prop) {
     const Token& first = Peek();
-    const std::string what = std::string(PropertyTypeName(prop.type)) + " property '" + prop.name + "'";
+    const std::string what =
+        std::string(PropertyTypeName(prop.type)) + " property '" + prop.name + "'";
     switch (prop.type) {
         case PropertyType::kColor:
         case PropertyType::kVector: {
@@ -293,7 +302,8 @@ bool Parser::ParsePropertyDefault(Property& prop) {
             }
             // Missing components: alpha 1 for colours, 0 for vectors.
             while (values.size() < 4) {
-                values.push_back(prop.type == PropertyType::kColor && values.size() == 3 ? 1.0 : 0.0);
+                values.push_back(prop.type == PropertyType::kColor && values.size() == 3 ? 1.0
+                                                                                         : 0.0);
             }
             prop.default_value = std::move(values);
             break;

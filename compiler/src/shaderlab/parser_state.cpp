@@ -12,22 +12,55 @@ const Words kCompare = {"Never",   "Less",     "Equal",  "LEqual",
                         "Greater", "NotEqual", "GEqual", "Always"};
 const Words kOnOff = {"On", "Off"};
 const Words kTrueFalse = {"True", "False"};
-const Words kBlendFactors = {"One",          "Zero",
-                             "SrcColor",     "SrcAlpha",
-                             "DstColor",     "DstAlpha",
-                             "OneMinusSrcColor", "OneMinusSrcAlpha",
-                             "OneMinusDstColor", "OneMinusDstAlpha",
+const Words kBlendFactors = {"One",
+                             "Zero",
+                             "SrcColor",
+                             "SrcAlpha",
+                             "DstColor",
+                             "DstAlpha",
+                             "OneMinusSrcColor",
+                             "OneMinusSrcAlpha",
+                             "OneMinusDstColor",
+                             "OneMinusDstAlpha",
                              "SrcAlphaSaturate"};
-const Words kBlendOps = {
-    "Add", "Sub", "RevSub", "Min", "Max",
-    "LogicalClear", "LogicalSet", "LogicalCopy", "LogicalCopyInverted", "LogicalNoop",
-    "LogicalInvert", "LogicalAnd", "LogicalNand", "LogicalOr", "LogicalNor", "LogicalXor",
-    "LogicalEquiv", "LogicalAndReverse", "LogicalAndInverted", "LogicalOrReverse",
-    "LogicalOrInverted", "Multiply", "Screen", "Overlay", "Darken", "Lighten", "ColorDodge",
-    "ColorBurn", "HardLight", "SoftLight", "Difference", "Exclusion", "HSLHue", "HSLSaturation",
-    "HSLColor", "HSLLuminosity"};
-const Words kStencilOps = {"Keep",     "Zero",     "Replace", "IncrSat",
-                           "DecrSat",  "Invert",   "IncrWrap", "DecrWrap"};
+const Words kBlendOps = {"Add",
+                         "Sub",
+                         "RevSub",
+                         "Min",
+                         "Max",
+                         "LogicalClear",
+                         "LogicalSet",
+                         "LogicalCopy",
+                         "LogicalCopyInverted",
+                         "LogicalNoop",
+                         "LogicalInvert",
+                         "LogicalAnd",
+                         "LogicalNand",
+                         "LogicalOr",
+                         "LogicalNor",
+                         "LogicalXor",
+                         "LogicalEquiv",
+                         "LogicalAndReverse",
+                         "LogicalAndInverted",
+                         "LogicalOrReverse",
+                         "LogicalOrInverted",
+                         "Multiply",
+                         "Screen",
+                         "Overlay",
+                         "Darken",
+                         "Lighten",
+                         "ColorDodge",
+                         "ColorBurn",
+                         "HardLight",
+                         "SoftLight",
+                         "Difference",
+                         "Exclusion",
+                         "HSLHue",
+                         "HSLSaturation",
+                         "HSLColor",
+                         "HSLLuminosity"};
+const Words kStencilOps = {"Keep",    "Zero",   "Replace",  "IncrSat",
+                           "DecrSat", "Invert", "IncrWrap", "DecrWrap"};
 
 constexpr int kMaxRenderTargets = 8;
 
@@ -105,8 +138,10 @@ std::optional<StateValue> Parser::ParseEnumValue(std::string_view command, const
     return std::nullopt;
 }
 
-std::optional<StateValue> Parser::ParseNumberValue(std::string_view command, double min,
-                                                   double max, bool integer) {
+std::optional<StateValue> Parser::ParseNumberValue(std::string_view command,
+                                                   double min,
+                                                   double max,
+                                                   bool integer) {
     if (At(TokenKind::kLBracket)) {
         return ParsePropertyRef();
     }
@@ -117,7 +152,8 @@ std::optional<StateValue> Parser::ParseNumberValue(std::string_view command, dou
     if (v && negative) {
         *v = -*v;
     }
-    if (!v || *v < min || *v > max || (integer && *v != static_cast<double>(static_cast<int64_t>(*v)))) {
+    if (!v || *v < min || *v > max ||
+        (integer && *v != static_cast<double>(static_cast<int64_t>(*v)))) {
         const std::string expected =
             integer ? "an integer from " + std::to_string(static_cast<int64_t>(min)) + " to " +
                           std::to_string(static_cast<int64_t>(max))
@@ -128,11 +164,12 @@ std::optional<StateValue> Parser::ParseNumberValue(std::string_view command, dou
         return std::nullopt;
     }
     Next();
-    return StateValue{StateValue::Kind::kNumber, std::string(negative ? "-" : "") + std::string(t.text),
-                      *v, RangeFrom(first)};
+    return StateValue{StateValue::Kind::kNumber,
+                      std::string(negative ? "-" : "") + std::string(t.text), *v, RangeFrom(first)};
 }
 
-bool Parser::ParseSimpleState(std::optional<SimpleState>& slot, std::string_view command,
+bool Parser::ParseSimpleState(std::optional<SimpleState>& slot,
+                              std::string_view command,
                               const Words& allowed) {
     const Token& kw = Next();
     const std::optional<StateValue> v = ParseEnumValue(command, allowed);
@@ -141,8 +178,9 @@ bool Parser::ParseSimpleState(std::optional<SimpleState>& slot, std::string_view
     }
     SimpleState st{RangeFrom(kw), *v};
     if (slot) {
-        Diagnostic& d = Warning(DiagCode::kDuplicateCommand, st.range,
-                                "duplicate '" + std::string(command) + "' command; the last one wins");
+        Diagnostic& d =
+            Warning(DiagCode::kDuplicateCommand, st.range,
+                    "duplicate '" + std::string(command) + "' command; the last one wins");
         d.notes.push_back({source_.path(), slot->range, "previous one here"});
     }
     slot = st;
@@ -169,7 +207,8 @@ std::optional<int> Parser::ParseRenderTarget(std::string_view command) {
     }
     const Token& t = Next();
     const std::optional<double> v = ParseDouble(t.text);
-    if (!v || *v < 0 || *v >= kMaxRenderTargets || *v != static_cast<double>(static_cast<int>(*v))) {
+    if (!v || *v < 0 || *v >= kMaxRenderTargets ||
+        *v != static_cast<double>(static_cast<int>(*v))) {
         Error(DiagCode::kBadRenderTarget, t.range,
               "render target index " + std::string(t.text) + " of '" + std::string(command) +
                   "' is out of range; expected 0 to " + std::to_string(kMaxRenderTargets - 1));
@@ -296,9 +335,8 @@ bool Parser::ParseStencil(RenderState& state) {
     const bool ok = ParseBlock("'Stencil'", [&] {
         static const Words kMasks = {"Ref", "ReadMask", "WriteMask"};
         static const Words kComps = {"Comp", "CompFront", "CompBack"};
-        static const Words kOps = {"Pass",     "Fail",      "ZFail",     "PassFront",
-                                   "FailFront", "ZFailFront", "PassBack", "FailBack",
-                                   "ZFailBack"};
+        static const Words kOps = {"Pass",       "Fail",     "ZFail",    "PassFront", "FailFront",
+                                   "ZFailFront", "PassBack", "FailBack", "ZFailBack"};
         const Token& k = Peek();
         if (k.kind != TokenKind::kIdentifier) {
             ErrorUnexpected(k, "in a Stencil block");
@@ -336,9 +374,9 @@ bool Parser::ParseStencil(RenderState& state) {
         StencilEntry entry{std::string(key), *value, RangeFrom(k)};
         for (const StencilEntry& other : st.entries) {
             if (other.key == entry.key) {
-                Diagnostic& d = Warning(DiagCode::kDuplicateCommand, entry.range,
-                                        "duplicate stencil '" + entry.key +
-                                            "' command; the last one wins");
+                Diagnostic& d =
+                    Warning(DiagCode::kDuplicateCommand, entry.range,
+                            "duplicate stencil '" + entry.key + "' command; the last one wins");
                 d.notes.push_back({source_.path(), other.range, "previous one here"});
             }
         }

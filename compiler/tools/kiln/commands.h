@@ -27,7 +27,8 @@ struct GlobalOptions {
 };
 
 // Prints diagnostics to stderr in the chosen format.
-void PrintDiagnostics(const DiagnosticList& diags, const std::vector<const SourceFile*>& sources,
+void PrintDiagnostics(const DiagnosticList& diags,
+                      const std::vector<const SourceFile*>& sources,
                       const GlobalOptions& global);
 int ExitCodeFor(const DiagnosticList& diags);
 

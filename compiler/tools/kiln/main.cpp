@@ -8,7 +8,8 @@
 
 namespace kiln::cli {
 
-void PrintDiagnostics(const DiagnosticList& diags, const std::vector<const SourceFile*>& sources,
+void PrintDiagnostics(const DiagnosticList& diags,
+                      const std::vector<const SourceFile*>& sources,
                       const GlobalOptions& global) {
     if (global.diag_format == DiagFormat::kJson) {
         std::fprintf(stderr, "%s\n", FormatDiagnosticsJson(diags).c_str());

@@ -40,8 +40,9 @@ std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global)
             }
             if (opts->json) {
                 json_files += json_files.empty() ? "" : ",\n";
-                json_files += "{\"file\": " + nlohmann::json(path).dump() + ", \"ast\": " +
-                              (shader ? shaderlab::DumpJson(*shader) : "null") + "}";
+                json_files += "{\"file\": " + nlohmann::json(path).dump() +
+                              ", \"ast\": " + (shader ? shaderlab::DumpJson(*shader) : "null") +
+                              "}";
             } else if (shader) {
                 std::fputs(shaderlab::DumpText(*shader).c_str(), stdout);
             }

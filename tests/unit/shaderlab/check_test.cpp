@@ -8,7 +8,8 @@ namespace {
 
 TEST(Check, DuplicatePropertyHasNoteAtFirstDeclaration) {
     ParseOutcome out = ParseText(
-        "Shader \"x\" {\nProperties {\n  _A (\"A\", Float) = 0\n  _A (\"B\", Color) = (1,1,1,1)\n}\n}");
+        "Shader \"x\" {\nProperties {\n  _A (\"A\", Float) = 0\n  _A (\"B\", Color) = "
+        "(1,1,1,1)\n}\n}");
     ASSERT_EQ(out.diags.error_count(), 1u) << Summarize(out.diags);
     const Diagnostic& d = out.diags.all()[0];
     EXPECT_EQ(d.code, DiagCode::kDuplicateProperty);
@@ -60,8 +61,8 @@ TEST(Check, SurfacePragmaInsideAPassIsAlsoUnsupported) {
 }
 
 TEST(Check, DuplicatePassNamesAreCaseInsensitive) {
-    ParseOutcome out = ParseText(
-        "Shader \"x\" { SubShader { Pass { Name \"Base\" } Pass { Name \"BASE\" } } }");
+    ParseOutcome out =
+        ParseText("Shader \"x\" { SubShader { Pass { Name \"Base\" } Pass { Name \"BASE\" } } }");
     ASSERT_EQ(out.diags.all().size(), 1u);
     EXPECT_EQ(out.diags.all()[0].code, DiagCode::kDuplicatePassName);
     EXPECT_EQ(out.diags.all()[0].severity, Severity::kWarning);

@@ -20,10 +20,10 @@ TEST(Lexer, TokenKindsAndPositions) {
     const auto t = LexText("Shader \"a b\" {\n  _X (\"d\", 2DArray) = -1.5e2, [ ] +\n}", diags);
     EXPECT_TRUE(diags.all().empty());
     const std::vector<TokenKind> kinds = {
-        TokenKind::kIdentifier, TokenKind::kString,     TokenKind::kLBrace,   TokenKind::kIdentifier,
-        TokenKind::kLParen,     TokenKind::kString,     TokenKind::kComma,    TokenKind::kIdentifier,
-        TokenKind::kRParen,     TokenKind::kEquals,     TokenKind::kMinus,    TokenKind::kNumber,
-        TokenKind::kComma,      TokenKind::kLBracket,   TokenKind::kRBracket, TokenKind::kPlus,
+        TokenKind::kIdentifier, TokenKind::kString,   TokenKind::kLBrace,   TokenKind::kIdentifier,
+        TokenKind::kLParen,     TokenKind::kString,   TokenKind::kComma,    TokenKind::kIdentifier,
+        TokenKind::kRParen,     TokenKind::kEquals,   TokenKind::kMinus,    TokenKind::kNumber,
+        TokenKind::kComma,      TokenKind::kLBracket, TokenKind::kRBracket, TokenKind::kPlus,
         TokenKind::kRBrace,     TokenKind::kEof};
     ASSERT_EQ(t.size(), kinds.size());
     for (size_t i = 0; i < kinds.size(); ++i) {

@@ -66,8 +66,8 @@ std::vector<ErrorCase> Cases() {
          DiagCode::kBadAttribute, 3, 1},
         {"duplicate_property", InProperties("_A (\"A\", Float) = 0\n_A (\"A2\", Float) = 1"),
          DiagCode::kDuplicateProperty, 4, 1},
-        {"duplicate_properties_block",
-         "Shader \"x\" {\nProperties { }\nProperties { }\n}\n", DiagCode::kDuplicateCommand, 3, 1},
+        {"duplicate_properties_block", "Shader \"x\" {\nProperties { }\nProperties { }\n}\n",
+         DiagCode::kDuplicateCommand, 3, 1},
         {"bad_cull_value", InPass("  Cull Sideways"), DiagCode::kInvalidValue, 4, 8},
         {"bad_ztest_value", InSubShader("ZTest Sometimes"), DiagCode::kInvalidValue, 3, 7},
         {"bad_blend_factor", InPass("  Blend One Two"), DiagCode::kInvalidValue, 4, 13},
@@ -80,7 +80,8 @@ std::vector<ErrorCase> Cases() {
         {"undeclared_property_ref", InPass("  ZTest [_Missing]"), DiagCode::kUndeclaredProperty, 4,
          9},
         {"texture_property_as_state",
-         "Shader \"x\" {\nProperties { _T (\"T\", 2D) = \"white\" {} }\nSubShader { Cull [_T] }\n}\n",
+         "Shader \"x\" {\nProperties { _T (\"T\", 2D) = \"white\" {} }\nSubShader { Cull [_T] "
+         "}\n}\n",
          DiagCode::kPropertyRefType, 3, 18},
         {"unknown_command", InSubShader("Pas { }"), DiagCode::kUnknownCommand, 3, 1},
         {"pass_at_shader_level", "Shader \"x\" {\n  Pass { }\n}\n", DiagCode::kMisplacedCommand, 2,
@@ -91,8 +92,7 @@ std::vector<ErrorCase> Cases() {
         {"fallback_number", "Shader \"x\" {\nFallback 12\n}\n", DiagCode::kExpectedToken, 2, 10},
         {"glsl_program", InPass("  GLSLPROGRAM\n  void main() {}\n  ENDGLSL"),
          DiagCode::kUnsupportedGlsl, 4, 3},
-        {"surface_shader",
-         InSubShader("CGPROGRAM\n  #pragma surface surf Lambert\nENDCG"),
+        {"surface_shader", InSubShader("CGPROGRAM\n  #pragma surface surf Lambert\nENDCG"),
          DiagCode::kUnsupportedSurfaceShader, 4, 3},
         {"program_outside_pass", InSubShader("CGPROGRAM\nENDCG"), DiagCode::kProgramOutsidePass, 3,
          1},
@@ -125,19 +125,21 @@ TEST_P(ParserErrorTest, ReportsFirstErrorAtExactPosition) {
     EXPECT_EQ(first->file, "test.shader");
     // Messages follow the house style: lower-case start, no trailing period.
     ASSERT_FALSE(first->message.empty());
-    EXPECT_FALSE(first->message.front() >= 'A' && first->message.front() <= 'Z')
-        << first->message;
+    EXPECT_FALSE(first->message.front() >= 'A' && first->message.front() <= 'Z') << first->message;
     EXPECT_NE(first->message.back(), '.') << first->message;
 }
 
-INSTANTIATE_TEST_SUITE_P(Malformed, ParserErrorTest, testing::ValuesIn(Cases()),
+INSTANTIATE_TEST_SUITE_P(Malformed,
+                         ParserErrorTest,
+                         testing::ValuesIn(Cases()),
                          [](const testing::TestParamInfo<ErrorCase>& param) {
                              return std::string(param.param.name);
                          });
 
 TEST(ParserRecovery, ReportsSeveralIndependentErrorsInOneRun) {
-    ParseOutcome out = ParseText(InPass("  Cull Sideways\n  ZWrite Maybe\n  Blend One Two\n"
-                                        "  Name \"OK\""));
+    ParseOutcome out =
+        ParseText(InPass("  Cull Sideways\n  ZWrite Maybe\n  Blend One Two\n"
+                         "  Name \"OK\""));
     EXPECT_EQ(out.diags.error_count(), 3u) << Summarize(out.diags);
     ASSERT_TRUE(out.shader);
     // The valid command after the errors is still in the tree.
@@ -158,7 +160,8 @@ TEST(ParserRecovery, UnclosedBlockNotePointsAtTheOpeningBrace) {
 
 TEST(ParserRecovery, FailedPropertyDoesNotCascadeIntoUndeclaredReferences) {
     ParseOutcome out = ParseText(
-        "Shader \"x\" {\nProperties { _Src (\"S\", Flaot) = 1 }\nSubShader { Blend [_Src] One }\n}\n");
+        "Shader \"x\" {\nProperties { _Src (\"S\", Flaot) = 1 }\nSubShader { Blend [_Src] One "
+        "}\n}\n");
     EXPECT_EQ(out.diags.error_count(), 1u) << Summarize(out.diags);
     EXPECT_EQ(out.diags.all()[0].code, DiagCode::kUnknownPropertyType);
 }

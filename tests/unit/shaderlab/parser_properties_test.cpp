@@ -103,8 +103,9 @@ TEST(Properties, AttributeNamesAreCanonicalised) {
 }
 
 TEST(Properties, LegacyTextureOptionsAreSkipped) {
-    const auto props = ParseProps("_T (\"T\", 2D) = \"white\" { TexGen CubeReflect }\n"
-                                  "_U (\"U\", Float) = 2");
+    const auto props = ParseProps(
+        "_T (\"T\", 2D) = \"white\" { TexGen CubeReflect }\n"
+        "_U (\"U\", Float) = 2");
     ASSERT_EQ(props.size(), 2u);
     EXPECT_EQ(props[1].default_value, std::vector<double>{2});
 }

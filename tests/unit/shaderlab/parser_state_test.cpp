@@ -43,15 +43,16 @@ TEST(RenderStateParse, SimpleCommands) {
 }
 
 TEST(RenderStateParse, EveryZTestFunction) {
-    for (const char* f : {"Less", "Greater", "LEqual", "GEqual", "Equal", "NotEqual", "Always",
-                          "Never"}) {
+    for (const char* f :
+         {"Less", "Greater", "LEqual", "GEqual", "Equal", "NotEqual", "Always", "Never"}) {
         EXPECT_EQ(PassState(std::string("ZTest ") + f).ztest->value.text, f);
     }
 }
 
 TEST(RenderStateParse, BlendForms) {
     const RenderState s = PassState(
-        "Blend Off\nBlend 1 SrcAlpha OneMinusSrcAlpha\nBlend 2 One Zero, DstColor SrcAlphaSaturate\n"
+        "Blend Off\nBlend 1 SrcAlpha OneMinusSrcAlpha\nBlend 2 One Zero, DstColor "
+        "SrcAlphaSaturate\n"
         "Blend 3 Off\nBlend 4 [_Src] [_Dst], One [_Dst]");
     ASSERT_EQ(s.blend.size(), 5u);
     EXPECT_TRUE(s.blend[0].off);

@@ -82,8 +82,9 @@ Shader "Custom/Full" {
 }
 
 TEST(Parser, ProgramBlockKeepsExactStartPosition) {
-    ParseOutcome out = ParseText("Shader \"x\" {\n SubShader {\n  Pass {\n   CGPROGRAM   // c\n"
-                                 "   float4 a;\n   ENDCG\n  }\n }\n}\n");
+    ParseOutcome out = ParseText(
+        "Shader \"x\" {\n SubShader {\n  Pass {\n   CGPROGRAM   // c\n"
+        "   float4 a;\n   ENDCG\n  }\n }\n}\n");
     ASSERT_FALSE(out.diags.has_errors()) << Summarize(out.diags);
     const ProgramBlock& p = std::get<Pass>(Sub(*out.shader, 0).passes[0]).programs.at(0);
     EXPECT_EQ(p.range.begin.line, 4u);
@@ -98,8 +99,8 @@ TEST(Parser, ProgramBlockKeepsExactStartPosition) {
 TEST(Parser, ProgramBodyIsVerbatimIncludingBracesAndLookalikes) {
     // Braces, strings and words that merely contain ENDCG do not end or confuse the block.
     const std::string body = "\n{ } \"}\" int ENDCGX = 1; // MY_ENDCG\n";
-    ParseOutcome out = ParseText("Shader \"x\" { SubShader { Pass { CGPROGRAM" + body +
-                                 "ENDCG } } }");
+    ParseOutcome out =
+        ParseText("Shader \"x\" { SubShader { Pass { CGPROGRAM" + body + "ENDCG } } }");
     ASSERT_FALSE(out.diags.has_errors()) << Summarize(out.diags);
     EXPECT_EQ(std::get<Pass>(Sub(*out.shader, 0).passes[0]).programs.at(0).text, body);
 }
@@ -150,7 +151,8 @@ TEST(Parser, LegacyFixedFunctionCommandsWarnAndAreSkipped) {
 }
 
 TEST(Parser, DuplicateTagWarnsWithNote) {
-    ParseOutcome out = ParseText("Shader \"x\" { SubShader { Tags { \"A\" = \"1\" \"A\" = \"2\" } } }");
+    ParseOutcome out =
+        ParseText("Shader \"x\" { SubShader { Tags { \"A\" = \"1\" \"A\" = \"2\" } } }");
     EXPECT_FALSE(out.diags.has_errors());
     ASSERT_EQ(out.diags.all().size(), 1u);
     EXPECT_EQ(out.diags.all()[0].code, DiagCode::kDuplicateTag);
@@ -159,10 +161,12 @@ TEST(Parser, DuplicateTagWarnsWithNote) {
 
 TEST(Parser, LectureShadersParseWithoutDiagnostics) {
     const char* files[] = {
-        "01_Lambert.shader",         "02_LambertAmbient.shader",   "03_Phong.shader",
-        "04_DiffuseSpecular.shader", "05_Textured.shader",         "06_EnergyConservation.shader",
-        "07_PhysicallyBased.shader", "08_MultipleLights.shader",   "09_PointLight.shader",
-        "10_PointAndDirectional.shader", "11_SpotLight.shader",    "12_Deferred.shader",
+        "01_Lambert.shader",         "02_LambertAmbient.shader",
+        "03_Phong.shader",           "04_DiffuseSpecular.shader",
+        "05_Textured.shader",        "06_EnergyConservation.shader",
+        "07_PhysicallyBased.shader", "08_MultipleLights.shader",
+        "09_PointLight.shader",      "10_PointAndDirectional.shader",
+        "11_SpotLight.shader",       "12_Deferred.shader",
     };
     for (const char* f : files) {
         const std::string path = DataPath(std::string("lecture/") + f);

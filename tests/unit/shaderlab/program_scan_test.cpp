@@ -11,7 +11,8 @@ TEST(ProgramScan, FindsPragmasWithPositions) {
     // The body starts at line 10, column 14 of the .shader file (right after CGPROGRAM).
     const std::string body =
         "\n  #pragma vertex vert\n#  pragma   multi_compile  _ POINT\tSPOT\n"
-        "  // #pragma fragment commented_out\n  /* #pragma x\n  #pragma y */ #pragma after_comment\n"
+        "  // #pragma fragment commented_out\n  /* #pragma x\n  #pragma y */ #pragma "
+        "after_comment\n"
         "  #pragma target 3.0 // trailing comment\n  #pragmaX no\n  #include \"x\"\n";
     const auto pragmas = ScanPragmas(body, SourceLoc{500, 10, 14});
     // A comment counts as whitespace, so a directive may follow one (as in the C preprocessor).

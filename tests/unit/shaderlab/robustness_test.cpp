@@ -100,12 +100,14 @@ TEST(Robustness, TenThousandDeepBracesAndBrackets) {
 TEST(Robustness, UnterminatedEverything) {
     for (const std::string& text :
          {std::string("Shader \"x"), std::string("Shader \"x\" { Properties { _A (\"a"),
-          std::string("Shader \"x\" { /*"), std::string("Shader \"x\" { SubShader { Pass { CGPROGRAM"),
+          std::string("Shader \"x\" { /*"),
+          std::string("Shader \"x\" { SubShader { Pass { CGPROGRAM"),
           std::string("Shader \"x\" { SubShader { Pass { HLSLPROGRAM ENDCG"),
           std::string("Shader \"x\" { Properties { [Header(abc"),
           std::string("Shader \"x\" { Properties { _R (\"r\", Range(0, "),
           std::string("Shader \"x\" { SubShader { Tags { \"a\" = "),
-          std::string("Shader \"x\" { SubShader { Blend 1"), std::string("Shader \"x\" { Fallback")}) {
+          std::string("Shader \"x\" { SubShader { Blend 1"),
+          std::string("Shader \"x\" { Fallback")}) {
         ParseOutcome out = ParseChecked(text);
         EXPECT_TRUE(out.diags.has_errors()) << text;
     }

@@ -39,7 +39,7 @@ struct BlendState {
     SourceRange range;
     int target = -1;  // render target index, -1 = all targets
     bool off = false;
-    StateValue src, dst;                     // unset when off
+    StateValue src, dst;  // unset when off
     std::optional<StateValue> src_alpha, dst_alpha;
 };
 
@@ -57,7 +57,8 @@ struct ColorMaskState {
 };
 
 struct StencilEntry {
-    std::string key;  // canonical: Ref, ReadMask, WriteMask, Comp, Pass, Fail, ZFail, CompFront, ...
+    std::string
+        key;  // canonical: Ref, ReadMask, WriteMask, Comp, Pass, Fail, ZFail, CompFront, ...
     StateValue value;
     SourceRange range;
 };
@@ -96,7 +97,14 @@ struct Pragma {
     SourceRange range;
 };
 
-enum class ProgramKind { kCgProgram, kCgInclude, kHlslProgram, kHlslInclude, kGlslProgram, kGlslInclude };
+enum class ProgramKind {
+    kCgProgram,
+    kCgInclude,
+    kHlslProgram,
+    kHlslInclude,
+    kGlslProgram,
+    kGlslInclude
+};
 
 struct ProgramBlock {
     ProgramKind kind = ProgramKind::kCgProgram;
@@ -110,8 +118,17 @@ bool IsIncludeBlock(ProgramKind kind);
 const char* ProgramKindName(ProgramKind kind);  // "CGPROGRAM", ...
 
 enum class PropertyType {
-    kColor, kVector, kFloat, kInt, kInteger, kRange,
-    kTexture2D, kTexture3D, kCube, kTexture2DArray, kCubeArray,
+    kColor,
+    kVector,
+    kFloat,
+    kInt,
+    kInteger,
+    kRange,
+    kTexture2D,
+    kTexture3D,
+    kCube,
+    kTexture2DArray,
+    kCubeArray,
 };
 
 const char* PropertyTypeName(PropertyType type);  // "Color", "2D", ...

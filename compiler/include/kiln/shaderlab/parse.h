@@ -21,7 +21,8 @@ struct ParseOptions {
 // Parses `source`. Errors are appended to `diags`; the parser recovers and keeps going, so the
 // returned tree holds everything it could make sense of. Returns nullopt only when no
 // `Shader "Name" { ... }` was found at all.
-std::optional<Shader> Parse(const SourceFile& source, DiagnosticList& diags,
+std::optional<Shader> Parse(const SourceFile& source,
+                            DiagnosticList& diags,
                             const ParseOptions& options = {});
 
 // Semantic checks on a parsed shader: duplicate or undeclared properties, property references of
@@ -29,7 +30,8 @@ std::optional<Shader> Parse(const SourceFile& source, DiagnosticList& diags,
 void Check(const Shader& shader, const std::string& file, DiagnosticList& diags);
 
 // Parse followed by Check.
-std::optional<Shader> ParseAndCheck(const SourceFile& source, DiagnosticList& diags,
+std::optional<Shader> ParseAndCheck(const SourceFile& source,
+                                    DiagnosticList& diags,
                                     const ParseOptions& options = {});
 
 // Stable JSON dump of the tree (docs/ast-json.md) and an indented human-readable dump.
