@@ -186,6 +186,12 @@ void Parser::ErrorUnexpected(const Token& t, std::string_view context) {
         t.range, "unexpected " + Describe(t) + " " + std::string(context));
 }
 
+void Parser::WarnDuplicate(DiagCode code, SourceRange range, const std::string& what,
+                           SourceRange previous) {
+    Warning(code, range, "duplicate " + what + "; the last one wins")
+        .notes.push_back({source_.path(), previous, "previous one here"});
+}
+
 bool Parser::ParseBlock(std::string_view what, const std::function<bool()>& item) {
     const Token* open = Expect(TokenKind::kLBrace, "'{'", "after " + std::string(what));
     if (open == nullptr) {
@@ -542,9 +548,8 @@ bool Parser::ParseTags(std::vector<Tag>& tags) {
         Tag tag{DecodeString(key->text), DecodeString(value->text), RangeFrom(first)};
         for (const Tag& other : tags) {
             if (other.key == tag.key) {
-                Diagnostic& d = Warning(DiagCode::kDuplicateTag, tag.range,
-                                        "duplicate tag '" + Clip(tag.key) + "'; the last one wins");
-                d.notes.push_back({source_.path(), other.range, "previous value set here"});
+                WarnDuplicate(DiagCode::kDuplicateTag, tag.range, "tag '" + Clip(tag.key) + "'",
+                              other.range);
             }
         }
         tags.push_back(std::move(tag));

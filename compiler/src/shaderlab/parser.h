@@ -54,6 +54,9 @@ class Parser {
     Diagnostic& Error(DiagCode code, SourceRange range, std::string message);
     Diagnostic& Warning(DiagCode code, SourceRange range, std::string message);
     void ErrorUnexpected(const Token& token, std::string_view context);
+    // "duplicate <what>; the last one wins", with a note at the previous one.
+    void WarnDuplicate(DiagCode code, SourceRange range, const std::string& what,
+                       SourceRange previous);
 
     // Blocks and recovery. ParseBlock expects '{' next; `item` parses one command starting at the
     // current token and returns false after reporting an error (the command is then skipped).

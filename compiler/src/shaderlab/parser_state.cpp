@@ -178,10 +178,8 @@ bool Parser::ParseSimpleState(std::optional<SimpleState>& slot,
     }
     SimpleState st{RangeFrom(kw), *v};
     if (slot) {
-        Diagnostic& d =
-            Warning(DiagCode::kDuplicateCommand, st.range,
-                    "duplicate '" + std::string(command) + "' command; the last one wins");
-        d.notes.push_back({source_.path(), slot->range, "previous one here"});
+        WarnDuplicate(DiagCode::kDuplicateCommand, st.range,
+                      "'" + std::string(command) + "' command", slot->range);
     }
     slot = st;
     return true;
@@ -247,10 +245,8 @@ bool Parser::ParseBlend(RenderState& state) {
     b.range = RangeFrom(kw);
     for (const BlendState& other : state.blend) {
         if (other.target == b.target) {
-            Diagnostic& d = Warning(DiagCode::kDuplicateCommand, b.range,
-                                    "duplicate 'Blend' command for the same render target; the "
-                                    "last one wins");
-            d.notes.push_back({source_.path(), other.range, "previous one here"});
+            WarnDuplicate(DiagCode::kDuplicateCommand, b.range,
+                          "'Blend' command for the same render target", other.range);
         }
     }
     state.blend.push_back(std::move(b));
@@ -277,6 +273,12 @@ bool Parser::ParseBlendOp(RenderState& state) {
         }
     }
     b.range = RangeFrom(kw);
+    for (const BlendOpState& other : state.blend_op) {
+        if (other.target == b.target) {
+            WarnDuplicate(DiagCode::kDuplicateCommand, b.range,
+                          "'BlendOp' command for the same render target", other.range);
+        }
+    }
     state.blend_op.push_back(std::move(b));
     return true;
 }
@@ -325,6 +327,12 @@ bool Parser::ParseColorMask(RenderState& state) {
     }
     cm.target = *target;
     cm.range = RangeFrom(kw);
+    for (const ColorMaskState& other : state.color_mask) {
+        if (other.target == cm.target) {
+            WarnDuplicate(DiagCode::kDuplicateCommand, cm.range,
+                          "'ColorMask' command for the same render target", other.range);
+        }
+    }
     state.color_mask.push_back(std::move(cm));
     return true;
 }
@@ -374,10 +382,8 @@ bool Parser::ParseStencil(RenderState& state) {
         StencilEntry entry{std::string(key), *value, RangeFrom(k)};
         for (const StencilEntry& other : st.entries) {
             if (other.key == entry.key) {
-                Diagnostic& d =
-                    Warning(DiagCode::kDuplicateCommand, entry.range,
-                            "duplicate stencil '" + entry.key + "' command; the last one wins");
-                d.notes.push_back({source_.path(), other.range, "previous one here"});
+                WarnDuplicate(DiagCode::kDuplicateCommand, entry.range,
+                              "stencil '" + entry.key + "' command", other.range);
             }
         }
         st.entries.push_back(std::move(entry));
@@ -385,9 +391,8 @@ bool Parser::ParseStencil(RenderState& state) {
     });
     st.range = RangeFrom(kw);
     if (state.stencil) {
-        Diagnostic& d = Warning(DiagCode::kDuplicateCommand, st.range,
-                                "duplicate 'Stencil' block; the last one wins");
-        d.notes.push_back({source_.path(), state.stencil->range, "previous one here"});
+        WarnDuplicate(DiagCode::kDuplicateCommand, st.range, "'Stencil' block",
+                      state.stencil->range);
     }
     state.stencil = std::move(st);
     return ok;

@@ -144,5 +144,19 @@ TEST(RenderStateParse, DuplicateCommandWarnsAndLastWins) {
     EXPECT_EQ(std::get<Pass>(sub.passes[0]).state.cull->value.text, "Front");
 }
 
+TEST(RenderStateParse, DuplicatesPerRenderTargetWarn) {
+    ParseOutcome out = ParseText(
+        "Shader \"x\" { SubShader { Pass {\nBlendOp Add\nBlendOp 1 Min\nBlendOp Max\n"
+        "ColorMask RGB 1\nColorMask A\nColorMask 0 1\nStencil { Ref 1 Ref 2 }\n} } }");
+    EXPECT_FALSE(out.diags.has_errors());
+    std::vector<uint32_t> lines;
+    for (const Diagnostic& d : out.diags.all()) {
+        EXPECT_EQ(d.code, DiagCode::kDuplicateCommand);
+        EXPECT_EQ(d.notes.size(), 1u);
+        lines.push_back(d.range.begin.line);
+    }
+    EXPECT_EQ(lines, (std::vector<uint32_t>{4, 7, 8})) << Summarize(out.diags);
+}
+
 }  // namespace
 }  // namespace kiln::test
