@@ -21,8 +21,7 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 //   K2xxx  ShaderLab parser      K3xxx  ShaderLab semantic checks
 //   K9xxx  internal compiler errors
 enum class DiagCode : uint16_t {
-    kCannotReadFile = 1,
-    kFileTooLarge = 2,
+    kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,
@@ -38,7 +37,6 @@ enum class DiagCode : uint16_t {
     kUnclosedBlock = 2006,
     kNestingTooDeep = 2007,
     kTooManyErrors = 2008,
-    kTrailingContent = 2009,
     kExpectedNumber = 2010,
     kUnknownPropertyType = 2011,
     kBadPropertyDefault = 2012,
