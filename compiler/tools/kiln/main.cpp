@@ -42,9 +42,8 @@ int main(int argc, char** argv) {
             ->option_text("text|json");
         app.fallthrough();
 
-        std::vector<std::pair<CLI::App*, std::function<int()>>> commands;
-        commands.emplace_back(nullptr, AddParseCommand(app, global));
-        commands.back().first = app.get_subcommands({}).back();
+        const std::map<std::string, std::function<int()>> commands{
+            {"parse", AddParseCommand(app, global)}};
 
         try {
             app.parse(argc, argv);
@@ -52,12 +51,8 @@ int main(int argc, char** argv) {
             const int code = app.exit(e);
             return code == 0 ? kExitOk : kExitUsageError;
         }
-        for (auto& [sub, run] : commands) {
-            if (sub->parsed()) {
-                return run();
-            }
-        }
-        return kExitUsageError;
+        // require_subcommand(1): exactly one subcommand was parsed.
+        return commands.at(app.get_subcommands().front()->get_name())();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "kiln: internal compiler error: %s [K9001]\n", e.what());
         return kExitInternalError;
