@@ -19,9 +19,12 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 // Stable diagnostic codes, printed as K<number>. Ranges:
 //   K0xxx  input/output          K1xxx  ShaderLab lexer
 //   K2xxx  ShaderLab parser      K3xxx  ShaderLab semantic checks
+//   K4xxx  pragmas and variants  K5xxx  HLSL compilation, SPIR-V, reflection, bindings
 //   K9xxx  internal compiler errors
 enum class DiagCode : uint16_t {
     kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
+    kCannotWriteFile = 2,
+    kCacheUnusable = 3,
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,
@@ -58,6 +61,30 @@ enum class DiagCode : uint16_t {
     kDuplicateTag = 3010,
     kUnknownTextureDefault = 3011,
     kDuplicatePassName = 3012,
+
+    kUnknownPragma = 4001,
+    kUnsupportedStage = 4002,
+    kMissingEntryPoint = 4003,
+    kDuplicateEntryPoint = 4004,
+    kBadShaderTarget = 4005,
+    kBadKeyword = 4006,
+    kDuplicateKeyword = 4007,
+    kTooManyVariants = 4008,
+    kPragmaMissingArgument = 4009,
+    kRendererRestricted = 4010,
+    kVariantKeyTooWide = 4011,
+    kUnknownSkipKeyword = 4012,
+    kNoVariantsLeft = 4013,
+
+    kHlslError = 5001,
+    kHlslWarning = 5002,
+    kSpirvInvalid = 5003,
+    kStageInterfaceMismatch = 5004,
+    kPropertyUnused = 5005,
+    kGlobalNotAProperty = 5006,
+    kBlockLayoutMismatch = 5007,
+    kPropertyTypeMismatch = 5008,
+    kTooManyBindings = 5009,
 
     kInternalError = 9001,
 };

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "kiln/compile.h"
 #include "kiln/diagnostic.h"
 
 namespace kiln::cli {
@@ -32,8 +33,25 @@ void PrintDiagnostics(const DiagnosticList& diags,
                       const GlobalOptions& global);
 int ExitCodeFor(const DiagnosticList& diags);
 
-// Registers `kiln parse`; the returned function runs it.
+// Flags shared by `compile` and `variants`.
+struct CompilerFlags {
+    std::vector<std::string> include_dirs;
+    std::vector<std::string> defines;
+    std::vector<std::string> keywords;
+    uint64_t max_variants = 4096;
+    std::string templates_dir;
+    unsigned jobs = 0;
+};
+void AddCompilerOptions(CLI::App& cmd, CompilerFlags& flags);
+CompileOptions ToCompileOptions(const CompilerFlags& flags);
+std::vector<const SourceFile*> Views(const CompileOutput& out);
+
+// Each registers its subcommand; the returned function runs it.
 std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace kiln::cli
 

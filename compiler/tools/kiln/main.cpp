@@ -1,5 +1,6 @@
 // kiln: the command-line driver. A thin layer over the kiln_compiler library: flags in,
 // library calls, diagnostics out.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -27,12 +28,35 @@ int ExitCodeFor(const DiagnosticList& diags) {
 
 }  // namespace kiln::cli
 
+// Compiler-style spellings CLI11 cannot declare: -O0/-O/-Os, -MD, -MF.
+std::vector<std::string> RewriteArgs(int argc, char** argv) {
+    std::vector<std::string> args;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "-O0") {
+            args.push_back("--opt=0");
+        } else if (a == "-O") {
+            args.push_back("--opt=1");
+        } else if (a == "-Os") {
+            args.push_back("--opt=s");
+        } else if (a == "-MD") {
+            args.push_back("--md");
+        } else if (a == "-MF") {
+            args.push_back("--mf");
+        } else {
+            args.push_back(a);
+        }
+    }
+    std::reverse(args.begin(), args.end());  // CLI11 takes them in reverse order
+    return args;
+}
+
 int main(int argc, char** argv) {
     using namespace kiln::cli;
     try {
         CLI::App app{"kiln: shader-variant compiler for Vulkan", "kiln"};
         app.require_subcommand(1);
-        app.set_version_flag("--version", "kiln 0.1.0");
+        app.set_version_flag("--version", "kiln 0.2.0");
         GlobalOptions global;
         const std::map<std::string, DiagFormat> formats{{"text", DiagFormat::kText},
                                                         {"json", DiagFormat::kJson}};
@@ -43,10 +67,15 @@ int main(int argc, char** argv) {
         app.fallthrough();
 
         const std::map<std::string, std::function<int()>> commands{
-            {"parse", AddParseCommand(app, global)}};
+            {"parse", AddParseCommand(app, global)},
+            {"compile", AddCompileCommand(app, global)},
+            {"variants", AddVariantsCommand(app, global)},
+            {"info", AddInfoCommand(app, global)},
+            {"extract", AddExtractCommand(app, global)}};
 
         try {
-            app.parse(argc, argv);
+            std::vector<std::string> args = RewriteArgs(argc, argv);
+            app.parse(args);
         } catch (const CLI::ParseError& e) {
             const int code = app.exit(e);
             return code == 0 ? kExitOk : kExitUsageError;

@@ -1,0 +1,98 @@
+// The variant compiler: .shader files in, a variant pack out (docs/pack-format.md). Every keyword
+// permutation of every pass is assembled (prelude + include blocks + program, with #line),
+// preprocessed, reduced to what each stage's entry point reaches, and each distinct stage text is
+// compiled once: glslang (HLSL, DX9-compatible), SPIRV-Tools legalize/optimize, bindings from
+// docs/binding-model.md, SPIRV-Cross reflection, spirv-val. Results are cached by content.
+#ifndef KILN_COMPILE_H_
+#define KILN_COMPILE_H_
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kiln/diagnostic.h"
+#include "kiln/source.h"
+
+namespace kiln {
+
+enum class OptimizationLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
+
+struct CompileOptions {
+    std::vector<std::string> include_dirs;                    // -I, searched in order
+    std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
+    std::string templates_dir;  // the built-in include library; empty: DefaultTemplatesDir()
+    OptimizationLevel opt_level = OptimizationLevel::kPerformance;
+    bool debug_info = false;  // -g: keep names and debug info in the SPIR-V
+    unsigned jobs = 0;        // 0: all cores
+    // shader_feature keywords asked for; unset: every shader_feature variant is built.
+    std::optional<std::set<std::string>> keywords;
+    uint64_t max_variants = 4096;  // per pass
+    std::string cache_dir;         // empty: no cache
+    // Called from the driver thread as work completes (phase, done, total).
+    std::function<void(const char*, size_t, size_t)> progress;
+};
+
+struct CompileStats {
+    uint64_t permutations = 0;     // product of keyword-set sizes, all passes
+    size_t variants = 0;           // after shader_feature narrowing and skip_variants
+    size_t stage_programs = 0;     // variants x 2 stages
+    size_t unique_programs = 0;    // distinct reduced stage texts (what dedup leaves)
+    size_t glslang_compiles = 0;   // unique programs compiled by glslang in this run
+    size_t cache_hits = 0;         // unique programs taken from the cache
+    size_t modules = 0;            // distinct SPIR-V modules in the pack
+};
+
+struct KeywordSetReport {
+    std::string pragma;                 // "multi_compile", "shader_feature_local", ...
+    std::vector<std::string> keywords;  // "" = no keyword
+    bool shader_feature = false;
+    std::string stage;                  // "", "vertex" or "fragment"
+};
+
+struct PassReport {
+    std::string shader;
+    std::string pass;  // "FORWARD" or "#2" when unnamed
+    std::string light_mode;
+    std::vector<KeywordSetReport> sets;
+    uint64_t permutations = 0;
+    size_t variants = 0;
+    size_t unique_vertex = 0, unique_fragment = 0;
+};
+
+struct CompileOutput {
+    bool ok = false;
+    std::vector<uint8_t> pack;  // empty unless ok and a pack was requested
+    CompileStats stats;
+    std::vector<PassReport> passes;
+    // Every file read (shaders and includes), for diagnostics output and depfiles.
+    std::vector<std::shared_ptr<const SourceFile>> files;
+};
+
+// Compiles to a pack. Diagnostics go to `diags`; `ok` is false when there are errors.
+CompileOutput CompileShaders(const std::vector<std::string>& paths,
+                             const CompileOptions& options,
+                             DiagnosticList& diags);
+
+// Everything up to deduplication, without compiling: keyword sets, counts, unique programs.
+CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
+                              const CompileOptions& options,
+                              DiagnosticList& diags);
+
+// The templates/ directory this build of Kiln uses: $KILN_TEMPLATES_DIR, else the source tree's.
+std::string DefaultTemplatesDir();
+// $KILN_CACHE_DIR, else $XDG_CACHE_HOME/kiln, else $HOME/.cache/kiln; empty if none is set.
+std::string DefaultCacheDir();
+// "kiln 0.2.0; glslang 12.0.0; SPIRV-Tools v2023.1".
+std::string ProducerVersion();
+
+// Writes `bytes` to `path` atomically: a temporary file in the same directory, then rename.
+Result<bool> WriteFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes);
+
+}  // namespace kiln
+
+#endif  // KILN_COMPILE_H_

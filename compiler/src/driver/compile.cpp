@@ -1,0 +1,366 @@
+// The compile driver: parse -> passes -> variants -> assemble -> preprocess -> reduce/dedup ->
+// compile (or cache) -> bindings/reflection/validation -> pack.
+#include "kiln/compile.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "driver/cache.h"
+#include "driver/compile_state.h"
+#include "driver/parallel.h"
+#include "frontend/glslang_messages.h"
+#include "frontend/glslang_stage.h"
+#include "hlsl/assemble.h"
+#include "hlsl/includer.h"
+#include "hlsl/reduce.h"
+#include "kiln/shaderlab/parse.h"
+#include "spirv/optimize.h"
+
+#ifndef KILN_VERSION
+#define KILN_VERSION "0.0.0"
+#endif
+#ifndef KILN_SOURCE_TEMPLATES_DIR
+#define KILN_SOURCE_TEMPLATES_DIR ""
+#endif
+
+namespace kiln {
+namespace fs = std::filesystem;
+using driver::CompileState;
+
+namespace {
+
+spirv::OptLevel ToSpirv(OptimizationLevel level) {
+    switch (level) {
+        case OptimizationLevel::kNone: return spirv::OptLevel::kNone;
+        case OptimizationLevel::kSize: return spirv::OptLevel::kSize;
+        case OptimizationLevel::kPerformance: return spirv::OptLevel::kPerformance;
+    }
+    return spirv::OptLevel::kPerformance;
+}
+
+hlsl::IncludePaths IncludePathsFor(const CompileOptions& o) {
+    return {o.include_dirs, o.templates_dir.empty() ? DefaultTemplatesDir() : o.templates_dir};
+}
+
+std::string LineName(const std::string& path) {
+    return hlsl::IsLineSafeName(path) ? path : std::string("<unprintable path>");
+}
+
+void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
+    if (o.progress) o.progress(phase, done, total);
+}
+
+// Phase 1: read, parse and check every shader; flatten passes.
+void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
+    for (const std::string& path : paths) {
+        driver::ShaderUnit unit;
+        Result<SourceFile> read = ReadSourceFile(path);
+        if (!read) {
+            st.diags.Error(DiagCode::kCannotReadFile, path, {}, read.error().message);
+            continue;
+        }
+        unit.file = std::make_shared<const SourceFile>(std::move(read).value());
+        st.files.Put(unit.file);
+        unit.ast = shaderlab::ParseAndCheck(*unit.file, st.diags);
+        if (unit.ast) unit.passes = driver::FlattenPasses(*unit.ast, path, st.diags);
+        st.shaders.push_back(std::move(unit));
+    }
+}
+
+// Phase 2: pragmas and variant expansion; one StageTask per (variant, stage).
+void ExpandPasses(CompileState& st) {
+    variants::VariantRequest request;
+    request.shader_features = st.options.keywords;
+    request.max_variants = st.options.max_variants;
+    for (size_t s = 0; s < st.shaders.size(); ++s) {
+        const driver::ShaderUnit& unit = st.shaders[s];
+        const std::string& path = unit.file->path();
+        for (size_t f = 0; f < unit.passes.size(); ++f) {
+            const driver::FlatPass& fp = unit.passes[f];
+            driver::PassUnit pu;
+            pu.shader = s;
+            pu.flat = f;
+            const size_t errors_before = st.diags.error_count();
+            pu.pragmas = variants::ReadPassPragmas(fp.blocks, path, fp.pass->range, st.diags);
+            if (st.diags.error_count() != errors_before) continue;
+            auto ex = variants::ExpandVariants(pu.pragmas, request, fp.label, path,
+                                               fp.program->range, st.diags);
+            if (!ex) continue;
+            pu.expansion = std::move(*ex);
+            st.passes.push_back(std::move(pu));
+        }
+    }
+    for (size_t p = 0; p < st.passes.size(); ++p) {
+        driver::PassUnit& pu = st.passes[p];
+        const driver::ShaderUnit& unit = st.shaders[pu.shader];
+        const driver::FlatPass& fp = unit.passes[pu.flat];
+        for (pack::VariantKey key : pu.expansion.keys) {
+            for (pack::Stage stage : {pack::Stage::kVertex, pack::Stage::kFragment}) {
+                hlsl::AssembleInput in;
+                in.file_name = LineName(unit.file->path());
+                in.blocks = fp.blocks;
+                in.stage = stage;
+                in.shader_target = pu.pragmas.shader_target;
+                in.defines = st.options.defines;
+                const uint32_t skip_flag = stage == pack::Stage::kVertex
+                                               ? pack::kKeywordSetFragmentOnly
+                                               : pack::kKeywordSetVertexOnly;
+                for (size_t i = 0; i < pu.pragmas.sets.size(); ++i) {
+                    const auto& set = pu.pragmas.sets[i];
+                    const auto& layout = pu.expansion.layout[i];
+                    const std::string& kw = set.keywords[key.Get(layout.shift, layout.bits)];
+                    if (!kw.empty() && !(set.flags & skip_flag)) in.keywords.push_back(kw);
+                }
+                driver::StageTask task;
+                task.pass = p;
+                task.key = key;
+                task.stage = stage;
+                task.source = hlsl::AssembleSource(in);
+                pu.tasks.push_back(st.tasks.size());
+                st.tasks.push_back(std::move(task));
+            }
+        }
+    }
+}
+
+const std::string& EntryOf(const CompileState& st, const driver::StageTask& t) {
+    const auto& pr = st.passes[t.pass].pragmas;
+    return t.stage == pack::Stage::kVertex ? pr.vertex->name : pr.fragment->name;
+}
+
+// Phase 3: preprocess every task and dedup the reduced texts into jobs.
+void PreprocessAndDedup(CompileState& st) {
+    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
+    driver::ParallelFor(
+        st.tasks.size(), st.options.jobs,
+        [&](size_t i) {
+            driver::StageTask& t = st.tasks[i];
+            hlsl::Includer includer(paths, st.files);
+            const std::string& main = st.shaders[st.passes[t.pass].shader].file->path();
+            frontend::StageOutput out = frontend::Preprocess(t.stage, t.source, main, includer);
+            t.preprocess_ok = out.ok;
+            t.preprocess_log = std::move(out.info_log);
+            if (out.ok) t.reduced = hlsl::ReduceToEntryPoint(out.text, EntryOf(st, t));
+        },
+        [&](size_t done) { Progress(st.options, "preprocessing", done, st.tasks.size()); });
+
+    const std::string versions = ProducerVersion();
+    const std::string options = "O" + std::to_string(int(st.options.opt_level)) +
+                                (st.options.debug_info ? "g" : "");
+    std::map<std::string, size_t> by_key;
+    for (size_t i = 0; i < st.tasks.size(); ++i) {
+        driver::StageTask& t = st.tasks[i];
+        if (!t.preprocess_ok) {
+            // Each failing preprocess is its own job so its messages are reported per variant.
+            driver::Job job;
+            job.stage = t.stage;
+            job.entry = EntryOf(st, t);
+            job.first_task = i;
+            auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
+            for (const auto& m : frontend::ParseInfoLog(t.preprocess_log)) {
+                job.diags.push_back(frontend::ToDiagnostic(m, lookup));
+            }
+            t.job = st.jobs.size();
+            st.jobs.push_back(std::move(job));
+            continue;
+        }
+        const std::string key =
+            driver::HashKey({versions, options, t.stage == pack::Stage::kVertex ? "vert" : "frag",
+                             EntryOf(st, t), t.reduced});
+        auto [it, fresh] = by_key.emplace(key, st.jobs.size());
+        if (fresh) {
+            driver::Job job;
+            job.stage = t.stage;
+            job.entry = EntryOf(st, t);
+            job.first_task = i;
+            job.cache_key = key;
+            st.jobs.push_back(std::move(job));
+        }
+        t.job = it->second;
+    }
+}
+
+// Phase 4: compile each job (or take it from the cache).
+void CompileJobs(CompileState& st, CompileStats& stats) {
+    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
+    const driver::Cache cache(st.options.cache_dir);
+    std::atomic<size_t> compiles{0}, hits{0};
+    auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
+    driver::ParallelFor(
+        st.jobs.size(), st.options.jobs,
+        [&](size_t j) {
+            driver::Job& job = st.jobs[j];
+            const driver::StageTask& task = st.tasks[job.first_task];
+            const std::string& main = st.shaders[st.passes[task.pass].shader].file->path();
+            hlsl::Includer includer(paths, st.files);
+            auto report = [&](const std::string& log) {
+                for (const auto& m : frontend::ParseInfoLog(log)) {
+                    job.diags.push_back(frontend::ToDiagnostic(m, lookup));
+                }
+            };
+            if (!task.preprocess_ok) return;  // reported by PreprocessAndDedup
+            if (auto cached = cache.Load(job.cache_key)) {
+                job.words = std::move(*cached);
+                job.ok = job.from_cache = true;
+                ++hits;
+                return;
+            }
+            ++compiles;
+            frontend::StageOutput out = frontend::Compile(job.stage, task.reduced, main, job.entry,
+                                                          includer, st.options.debug_info);
+            if (!out.ok) {
+                // Positions in the reduced text are lines of the original files but not their
+                // columns: compile the assembled source once more for exact diagnostics.
+                ++compiles;
+                out = frontend::Compile(job.stage, task.source, main, job.entry, includer,
+                                        st.options.debug_info);
+                report(out.info_log);
+                if (out.ok || job.diags.empty()) {
+                    job.diags.push_back({Severity::kInternal, DiagCode::kInternalError, main, {},
+                                         "stage compiles from its source but not after "
+                                         "reduction to its entry point",
+                                         {}});
+                }
+                return;
+            }
+            report(out.info_log);  // warnings
+            std::string messages;
+            if (!spirv::Optimize(out.spirv, ToSpirv(st.options.opt_level), messages)) {
+                job.diags.push_back({Severity::kError, DiagCode::kSpirvInvalid, main, {},
+                                     "SPIR-V legalization failed: " + messages, {}});
+                return;
+            }
+            job.words = std::move(out.spirv);
+            job.ok = true;
+            cache.Store(job.cache_key, job.words);
+        },
+        [&](size_t done) { Progress(st.options, "compiling", done, st.jobs.size()); });
+    stats.glslang_compiles = compiles;
+    stats.cache_hits = hits;
+}
+
+void FillReports(const CompileState& st, CompileOutput& out) {
+    for (const driver::PassUnit& pu : st.passes) {
+        const driver::ShaderUnit& unit = st.shaders[pu.shader];
+        const driver::FlatPass& fp = unit.passes[pu.flat];
+        PassReport r;
+        r.shader = unit.ast->name;
+        r.pass = fp.pass->name.empty() ? fp.label : fp.pass->name;
+        r.light_mode = driver::TagValue(fp, "LightMode");
+        for (const auto& s : pu.pragmas.sets) {
+            KeywordSetReport k;
+            k.pragma = s.pragma;
+            k.keywords = s.keywords;
+            k.shader_feature = s.kind == pack::KeywordSetKind::kShaderFeature;
+            k.stage = (s.flags & pack::kKeywordSetVertexOnly)     ? "vertex"
+                      : (s.flags & pack::kKeywordSetFragmentOnly) ? "fragment"
+                                                                   : "";
+            r.sets.push_back(std::move(k));
+        }
+        r.permutations = pu.expansion.permutations;
+        r.variants = pu.expansion.keys.size();
+        std::set<size_t> vs, fs;
+        for (size_t t : pu.tasks) {
+            (st.tasks[t].stage == pack::Stage::kVertex ? vs : fs).insert(st.tasks[t].job);
+        }
+        r.unique_vertex = vs.size();
+        r.unique_fragment = fs.size();
+        out.passes.push_back(std::move(r));
+        out.stats.permutations += pu.expansion.permutations;
+        out.stats.variants += pu.expansion.keys.size();
+    }
+    out.stats.stage_programs = st.tasks.size();
+    out.stats.unique_programs = st.jobs.size();
+}
+
+CompileOutput Run(const std::vector<std::string>& paths,
+                  const CompileOptions& options,
+                  DiagnosticList& diags,
+                  bool build_pack) {
+    frontend::InitializeGlslang();  // before any thread starts
+    CompileState st{options, diags, {}, {}, {}, {}, {}, {}};
+    CompileOutput out;
+    LoadShaders(st, paths);
+    if (!diags.has_errors()) ExpandPasses(st);
+    if (!diags.has_errors()) PreprocessAndDedup(st);
+    if (!build_pack) {
+        driver::ReportJobDiagnostics(st);
+    } else if (!diags.has_errors()) {
+        CompileJobs(st, out.stats);
+        driver::ReportJobDiagnostics(st);
+        if (!diags.has_errors()) driver::FinishModules(st);
+        if (!diags.has_errors()) driver::CheckInterfaces(st);
+        if (!diags.has_errors()) out.pack = driver::EmitPack(st, out.stats);
+    }
+    FillReports(st, out);
+    out.files = st.files.Files();
+    out.ok = !diags.has_errors();
+    if (!out.ok) out.pack.clear();
+    return out;
+}
+
+}  // namespace
+
+CompileOutput CompileShaders(const std::vector<std::string>& paths,
+                             const CompileOptions& options,
+                             DiagnosticList& diags) {
+    return Run(paths, options, diags, true);
+}
+
+CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
+                              const CompileOptions& options,
+                              DiagnosticList& diags) {
+    return Run(paths, options, diags, false);
+}
+
+std::string DefaultTemplatesDir() {
+    if (const char* env = std::getenv("KILN_TEMPLATES_DIR"); env && *env) return env;
+    return KILN_SOURCE_TEMPLATES_DIR;
+}
+
+std::string DefaultCacheDir() {
+    if (const char* env = std::getenv("KILN_CACHE_DIR"); env && *env) return env;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
+        return (fs::path(xdg) / "kiln").string();
+    }
+    if (const char* home = std::getenv("HOME"); home && *home) {
+        return (fs::path(home) / ".cache" / "kiln").string();
+    }
+    return "";
+}
+
+std::string ProducerVersion() {
+    return std::string("kiln ") + KILN_VERSION + "; glslang " + frontend::GlslangVersion() +
+           "; SPIRV-Tools " + spirv::SpirvToolsVersion();
+}
+
+Result<bool> WriteFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes) {
+    static std::atomic<uint64_t> counter{0};
+    const std::string tmp =
+        path + ".tmp." + std::to_string(getpid()) + "." + std::to_string(counter++);
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) return Error{"cannot create '" + tmp + "'"};
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+        out.flush();
+        if (!out) {
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            return Error{"cannot write '" + tmp + "'"};
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        return Error{"cannot rename the output into place at '" + path + "': " + ec.message()};
+    }
+    return true;
+}
+
+}  // namespace kiln

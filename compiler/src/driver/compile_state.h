@@ -1,0 +1,90 @@
+// State shared by the phases of one compile (driver-private).
+#ifndef KILN_DRIVER_COMPILE_STATE_H_
+#define KILN_DRIVER_COMPILE_STATE_H_
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "driver/shader_passes.h"
+#include "hlsl/file_cache.h"
+#include "kiln/compile.h"
+#include "kiln/pack/variant_key.h"
+#include "kiln/shaderlab/ast.h"
+#include "spirv/reflection.h"
+#include "variants/expand.h"
+#include "variants/pass_pragmas.h"
+
+namespace kiln::driver {
+
+struct ShaderUnit {
+    std::shared_ptr<const SourceFile> file;
+    std::optional<shaderlab::Shader> ast;
+    std::vector<FlatPass> passes;
+};
+
+struct PassUnit {
+    size_t shader = 0;
+    size_t flat = 0;  // index into ShaderUnit::passes
+    variants::PassPragmas pragmas;
+    variants::Expansion expansion;
+    std::vector<size_t> tasks;  // StageTask indices, variant-major (vertex, fragment)
+};
+
+// One (variant, stage) of a pass.
+struct StageTask {
+    size_t pass = 0;
+    pack::VariantKey key;
+    pack::Stage stage = pack::Stage::kVertex;
+    std::string source;   // assembled
+    std::string reduced;  // preprocessed and reduced to the entry point
+    bool preprocess_ok = false;
+    std::string preprocess_log;
+    size_t job = 0;
+};
+
+// One distinct reduced stage program.
+struct Job {
+    pack::Stage stage = pack::Stage::kVertex;
+    std::string entry;
+    size_t first_task = 0;
+    std::string cache_key;
+    bool ok = false;
+    bool from_cache = false;
+    std::vector<uint32_t> words;  // optimized, before bindings
+    std::vector<Diagnostic> diags;  // glslang errors/warnings, or internal errors
+};
+
+// A module as it goes into the pack: bindings applied, reflected, stripped, validated.
+struct FinalModule {
+    bool ok = false;
+    std::vector<uint32_t> words;
+    spirv::Reflection reflection;
+    std::string error;
+};
+
+struct CompileState {
+    const CompileOptions& options;
+    DiagnosticList& diags;
+    hlsl::FileCache files;
+    std::vector<ShaderUnit> shaders;
+    std::vector<PassUnit> passes;
+    std::vector<StageTask> tasks;
+    std::vector<Job> jobs;
+    // Per pass: (job index -> final module), filled by the binding phase.
+    std::vector<std::map<size_t, FinalModule>> finals;
+};
+
+// Phases implemented in pack_emit.cpp.
+void FinishModules(CompileState& st);     // bindings, reflection, strip, validate
+void CheckInterfaces(CompileState& st);   // stage interface, block layouts, properties
+std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats);
+
+// Reports errors shared by many variants once each (error_merge.cpp).
+void ReportJobDiagnostics(CompileState& st);
+
+}  // namespace kiln::driver
+
+#endif  // KILN_DRIVER_COMPILE_STATE_H_

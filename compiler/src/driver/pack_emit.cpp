@@ -1,0 +1,323 @@
+// The late phases of a compile: bindings + reflection + validation per module, cross-stage and
+// Properties checks, and the pack itself.
+#include <algorithm>
+#include <set>
+
+#include "driver/compile_state.h"
+#include "driver/parallel.h"
+#include "kiln/shaderlab/ast.h"
+#include "pack/pack_builder.h"
+#include "spirv/bindings.h"
+#include "spirv/optimize.h"
+#include "spirv/reflect.h"
+
+namespace kiln::driver {
+namespace {
+
+using pack::Stage;
+
+std::string VariantName(const CompileState& st, size_t p, pack::VariantKey key) {
+    const PassUnit& pu = st.passes[p];
+    const ShaderUnit& unit = st.shaders[pu.shader];
+    return "shader \"" + unit.ast->name + "\" pass " + unit.passes[pu.flat].label + ", variant " +
+           variants::DescribeKeywords(
+               variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, key));
+}
+
+const FinalModule& FinalFor(const CompileState& st, size_t p, size_t task) {
+    return st.finals[p].at(st.tasks[task].job);
+}
+
+}  // namespace
+
+void FinishModules(CompileState& st) {
+    st.finals.assign(st.passes.size(), {});
+    std::vector<std::pair<size_t, size_t>> work;  // (pass, job)
+    std::vector<std::map<std::string, spirv::Binding>> tables(st.passes.size());
+    for (size_t p = 0; p < st.passes.size(); ++p) {
+        std::set<size_t> jobs;
+        for (size_t t : st.passes[p].tasks) jobs.insert(st.tasks[t].job);
+        std::set<spirv::DescriptorVar> used;
+        for (size_t j : jobs) {
+            for (const auto& d : spirv::ListDescriptorVars(st.jobs[j].words)) used.insert(d);
+        }
+        std::vector<std::string> texture_props;
+        for (const auto& prop : st.shaders[st.passes[p].shader].ast->properties) {
+            if (shaderlab::IsTextureType(prop.type)) texture_props.push_back(prop.name);
+        }
+        tables[p] = spirv::AssignBindings(used, texture_props);
+        for (size_t j : jobs) {
+            st.finals[p][j];  // create the slot before threads start
+            work.push_back({p, j});
+        }
+    }
+    ParallelFor(work.size(), st.options.jobs, [&](size_t i) {
+        const auto [p, j] = work[i];
+        FinalModule& fm = st.finals[p][j];
+        fm.words = st.jobs[j].words;
+        std::string error;
+        if (!spirv::ApplyBindings(fm.words, tables[p], error) ||
+            !spirv::Reflect(fm.words, fm.reflection, error)) {
+            fm.error = "internal: " + error;
+            return;
+        }
+        if (!spirv::StripReflectionInfo(fm.words, st.options.debug_info, error)) {
+            fm.error = "internal: " + error;
+            return;
+        }
+        if (!spirv::Validate(fm.words, error)) {
+            fm.error = "generated SPIR-V fails validation: " + error;
+            return;
+        }
+        fm.ok = true;
+    });
+    for (size_t p = 0; p < st.passes.size(); ++p) {
+        const PassUnit& pu = st.passes[p];
+        const ShaderUnit& unit = st.shaders[pu.shader];
+        for (const auto& [j, fm] : st.finals[p]) {
+            if (fm.ok) continue;
+            const StageTask& t = st.tasks[st.jobs[j].first_task];
+            const bool internal = fm.error.rfind("internal: ", 0) == 0;
+            st.diags.Add(internal ? Severity::kInternal : Severity::kError,
+                         internal ? DiagCode::kInternalError : DiagCode::kSpirvInvalid,
+                         unit.file->path(), unit.passes[pu.flat].program->range,
+                         fm.error + " (" + VariantName(st, p, t.key) + ", " +
+                             (t.stage == Stage::kVertex ? "vertex" : "fragment") + " stage)");
+        }
+    }
+}
+
+void CheckInterfaces(CompileState& st) {
+    for (size_t p = 0; p < st.passes.size(); ++p) {
+        const PassUnit& pu = st.passes[p];
+        const ShaderUnit& unit = st.shaders[pu.shader];
+        const FlatPass& fp = unit.passes[pu.flat];
+        std::set<std::string> reported;
+        for (size_t v = 0; v < pu.expansion.keys.size(); ++v) {
+            const spirv::Reflection& vs = FinalFor(st, p, pu.tasks[2 * v]).reflection;
+            const spirv::Reflection& fs = FinalFor(st, p, pu.tasks[2 * v + 1]).reflection;
+            for (const spirv::InterfaceVar& in : fs.interface) {
+                if (in.direction != 0 || in.location == ~0u) continue;
+                const spirv::InterfaceVar* match = nullptr;
+                for (const auto& out : vs.interface) {
+                    if (out.direction == 1 && out.location == in.location) match = &out;
+                }
+                std::string msg;
+                if (!match) {
+                    msg = "fragment input " + (in.semantic.empty() ? in.name : in.semantic) +
+                          " (location " + std::to_string(in.location) +
+                          ") is not written by the vertex shader";
+                } else if (!in.semantic.empty() && !match->semantic.empty() &&
+                           in.semantic != match->semantic) {
+                    msg = "fragment input " + in.semantic + " and vertex output " +
+                          match->semantic + " share location " + std::to_string(in.location) +
+                          "; declare the vertex outputs and fragment inputs in the same order";
+                } else if (match->vecsize < in.vecsize) {
+                    msg = "fragment input " + in.semantic + " has " + std::to_string(in.vecsize) +
+                          " components but the vertex shader writes " +
+                          std::to_string(match->vecsize);
+                }
+                if (!msg.empty() && reported.insert(msg).second) {
+                    st.diags.Error(DiagCode::kStageInterfaceMismatch, unit.file->path(),
+                                   pu.pragmas.fragment->range, msg)
+                        .notes.push_back({unit.file->path(), pu.pragmas.vertex->range,
+                                          "in " + VariantName(st, p, pu.expansion.keys[v])});
+                }
+            }
+            for (const spirv::Block& a : vs.blocks) {
+                for (const spirv::Block& b : fs.blocks) {
+                    if (a.kind != b.kind || a.set != b.set || a.binding != b.binding) continue;
+                    if (a.kind == pack::BlockKind::kUniform && a.name != b.name) continue;
+                    bool same = a.size == b.size || a.kind == pack::BlockKind::kPushConstant;
+                    for (const auto& ma : a.members) {
+                        for (const auto& mb : b.members) {
+                            if (ma.name == mb.name && ma.offset != mb.offset) same = false;
+                        }
+                    }
+                    const std::string msg = "uniform block '" + a.name +
+                                            "' has a different layout in the vertex and fragment "
+                                            "stages; declare the same globals for both stages";
+                    if (!same && reported.insert(msg).second) {
+                        st.diags.Error(DiagCode::kBlockLayoutMismatch, unit.file->path(),
+                                       fp.program->range, msg);
+                    }
+                }
+            }
+        }
+    }
+
+    // Properties against shader globals, per shader over every variant of every pass.
+    for (size_t s = 0; s < st.shaders.size(); ++s) {
+        const ShaderUnit& unit = st.shaders[s];
+        if (!unit.ast) continue;
+        std::map<std::string, const spirv::BlockMember*> members;
+        std::map<std::string, const spirv::Resource*> resources;
+        bool any_pass = false;
+        for (size_t p = 0; p < st.passes.size(); ++p) {
+            if (st.passes[p].shader != s) continue;
+            any_pass = true;
+            for (const auto& [j, fm] : st.finals[p]) {
+                for (const auto& b : fm.reflection.blocks) {
+                    if (b.kind != pack::BlockKind::kUniform || b.set != spirv::kMaterialSet) continue;
+                    for (const auto& m : b.members) members.emplace(m.name, &m);
+                }
+                for (const auto& r : fm.reflection.resources) resources.emplace(r.name, &r);
+            }
+        }
+        if (!any_pass) continue;
+        std::set<std::string> declared;
+        const std::string& file = unit.file->path();
+        for (const shaderlab::Property& prop : unit.ast->properties) {
+            declared.insert(prop.name);
+            const bool texture = shaderlab::IsTextureType(prop.type);
+            if (texture) {
+                for (const char* suffix : {"_ST", "_TexelSize", "_HDR"}) {
+                    declared.insert(prop.name + suffix);
+                }
+            }
+            auto m = members.find(prop.name);
+            auto r = resources.find(prop.name);
+            if (m == members.end() && r == resources.end()) {
+                st.diags.Warning(DiagCode::kPropertyUnused, file, prop.name_range,
+                                 "property '" + prop.name +
+                                     "' has no shader variable of that name in any pass");
+                continue;
+            }
+            std::string want;
+            if (m != members.end()) {
+                const spirv::BlockMember& mem = *m->second;
+                using PT = shaderlab::PropertyType;
+                if ((prop.type == PT::kColor || prop.type == PT::kVector) &&
+                    (mem.vecsize != 4 || mem.columns > 1)) {
+                    want = "a 4-component vector";
+                } else if ((prop.type == PT::kFloat || prop.type == PT::kRange ||
+                            prop.type == PT::kInt || prop.type == PT::kInteger) &&
+                           (mem.vecsize != 1 || mem.columns > 1)) {
+                    want = "a scalar";
+                } else if (texture) {
+                    want = "a texture";
+                }
+            } else if (!texture) {
+                want = "a uniform value, not a texture or sampler";
+            }
+            if (!want.empty()) {
+                st.diags.Warning(DiagCode::kPropertyTypeMismatch, file, prop.type_range,
+                                 "property '" + prop.name + "' is a " +
+                                     shaderlab::PropertyTypeName(prop.type) +
+                                     " but the shader does not declare it as " + want);
+            }
+        }
+        // Globals the runtime fills (docs/shader-library.md); not material properties.
+        static const std::set<std::string> kEngineGlobals = {
+            "_LightColor0", "_WorldSpaceLightPos0", "_WorldSpaceCameraPos", "_Time", "_SinTime",
+            "_CosTime", "unity_DeltaTime", "_ProjectionParams", "_ScreenParams", "_ZBufferParams",
+            "_LightMatrix0", "_LightPositionRange", "_LightShadowData", "_SpecColor"};
+        for (const auto& [name, mem] : members) {
+            if (declared.count(name) || kEngineGlobals.count(name) ||
+                name.rfind("unity_", 0) == 0 || name.rfind("UNITY_", 0) == 0) {
+                continue;
+            }
+            st.diags.Warning(DiagCode::kGlobalNotAProperty, file, unit.ast->name_range,
+                             "shader global '" + name +
+                                 "' is not in Properties; materials cannot set it");
+        }
+    }
+}
+
+std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
+    pack_builder::PackBuilder b;
+    for (size_t s = 0; s < st.shaders.size(); ++s) {
+        const ShaderUnit& unit = st.shaders[s];
+        const shaderlab::Shader& ast = *unit.ast;
+        pack::ShaderRec sr;
+        sr.name = b.Str(ast.name);
+        sr.fallback = b.Str(ast.fallback && !ast.fallback->off ? ast.fallback->name : "");
+        sr.first_property = static_cast<uint32_t>(b.properties.size());
+        for (const shaderlab::Property& prop : ast.properties) {
+            pack::PropertyRec pr;
+            pr.name = b.Str(prop.name);
+            pr.display_name = b.Str(prop.display_name);
+            pr.type = uint32_t(prop.type);
+            pr.range_min = static_cast<float>(prop.range_min);
+            pr.range_max = static_cast<float>(prop.range_max);
+            for (size_t i = 0; i < 4 && i < prop.default_value.size(); ++i) {
+                pr.default_value[i] = static_cast<float>(prop.default_value[i]);
+            }
+            pr.texture_default = b.Str(prop.default_texture);
+            pr.first_attribute = static_cast<uint32_t>(b.attributes.size());
+            for (const shaderlab::Attribute& a : prop.attributes) {
+                b.attributes.push_back({b.Str(a.name), b.Str(a.raw_args)});
+            }
+            pr.attribute_count = static_cast<uint32_t>(prop.attributes.size());
+            b.properties.push_back(pr);
+        }
+        sr.property_count = static_cast<uint32_t>(ast.properties.size());
+        sr.first_pass = static_cast<uint32_t>(b.passes.size());
+        for (size_t p = 0; p < st.passes.size(); ++p) {
+            const PassUnit& pu = st.passes[p];
+            if (pu.shader != s) continue;
+            const FlatPass& fp = unit.passes[pu.flat];
+            pack::PassRec rec;
+            rec.name = b.Str(fp.pass->name);
+            rec.shader = static_cast<uint32_t>(b.shaders.size());
+            rec.subshader = fp.subshader;
+            rec.lod = static_cast<uint32_t>(std::max(0, fp.lod));
+            rec.first_tag = static_cast<uint32_t>(b.tags.size());
+            for (const PassTag& t : fp.tags) b.tags.push_back({b.Str(t.key), b.Str(t.value)});
+            rec.tag_count = static_cast<uint32_t>(fp.tags.size());
+            rec.first_state = static_cast<uint32_t>(b.states.size());
+            for (const StateSetting& ss : fp.state) {
+                pack::StateRec r;
+                r.field = uint32_t(ss.field);
+                r.target = ss.target;
+                r.kind = uint32_t(ss.value.kind);
+                r.number = static_cast<float>(ss.value.number);
+                r.text = b.Str(ss.value.text);
+                b.states.push_back(r);
+            }
+            rec.state_count = static_cast<uint32_t>(fp.state.size());
+            rec.first_keyword_set = static_cast<uint32_t>(b.keyword_sets.size());
+            for (size_t k = 0; k < pu.pragmas.sets.size(); ++k) {
+                const auto& set = pu.pragmas.sets[k];
+                pack::KeywordSetRec kr;
+                kr.kind = uint32_t(set.kind);
+                kr.flags = set.flags;
+                kr.first_keyword = static_cast<uint32_t>(b.keywords.size());
+                for (const std::string& kw : set.keywords) b.keywords.push_back(b.Str(kw));
+                kr.keyword_count = static_cast<uint32_t>(set.keywords.size());
+                kr.key_shift = pu.expansion.layout[k].shift;
+                kr.key_bits = pu.expansion.layout[k].bits;
+                b.keyword_sets.push_back(kr);
+            }
+            rec.keyword_set_count = static_cast<uint32_t>(pu.pragmas.sets.size());
+            if (!pu.pragmas.only_renderers.empty()) rec.flags |= pack::kPassOnlyRenderers;
+            if (!pu.pragmas.exclude_renderers.empty()) rec.flags |= pack::kPassExcludeRenderers;
+            rec.first_variant = static_cast<uint32_t>(b.variants.size());
+            const uint32_t pass_index = static_cast<uint32_t>(b.passes.size());
+            for (size_t v = 0; v < pu.expansion.keys.size(); ++v) {
+                const FinalModule& vs = FinalFor(st, p, pu.tasks[2 * v]);
+                const FinalModule& fs = FinalFor(st, p, pu.tasks[2 * v + 1]);
+                pack::VariantRec vr;
+                vr.pass = pass_index;
+                vr.key = pu.expansion.keys[v].bits();
+                vr.vertex_module = b.AddModule(Stage::kVertex, vs.words, vs.reflection);
+                vr.fragment_module = b.AddModule(Stage::kFragment, fs.words, fs.reflection);
+                b.variants.push_back(vr);
+            }
+            rec.variant_count = static_cast<uint32_t>(pu.expansion.keys.size());
+            b.passes.push_back(rec);
+        }
+        sr.pass_count = static_cast<uint32_t>(b.passes.size()) - sr.first_pass;
+        b.shaders.push_back(sr);
+    }
+    pack::MetaRec meta;
+    meta.producer = b.Str(ProducerVersion());
+    meta.opt_level = st.options.opt_level == OptimizationLevel::kNone   ? 0
+                     : st.options.opt_level == OptimizationLevel::kSize ? 2
+                                                                         : 1;
+    meta.flags = st.options.debug_info ? 1u : 0u;
+    stats.modules = b.module_count();
+    return b.Finish(meta);
+}
+
+}  // namespace kiln::driver

@@ -1,0 +1,207 @@
+#include "driver/shader_passes.h"
+
+#include <map>
+
+namespace kiln::driver {
+namespace {
+
+using namespace kiln::shaderlab;
+using pack::StateField;
+
+void Merge(RenderState& into, const RenderState& inner) {
+    auto over = [](auto& a, const auto& b) {
+        if (b) a = b;
+    };
+    over(into.cull, inner.cull);
+    over(into.ztest, inner.ztest);
+    over(into.zwrite, inner.zwrite);
+    over(into.zclip, inner.zclip);
+    over(into.alpha_to_mask, inner.alpha_to_mask);
+    over(into.conservative, inner.conservative);
+    over(into.offset, inner.offset);
+    over(into.stencil, inner.stencil);
+    if (!inner.blend.empty()) into.blend = inner.blend;
+    if (!inner.blend_op.empty()) into.blend_op = inner.blend_op;
+    if (!inner.color_mask.empty()) into.color_mask = inner.color_mask;
+}
+
+void AddTags(std::vector<PassTag>& out, const std::vector<Tag>& tags) {
+    for (const Tag& t : tags) {
+        bool present = false;
+        for (const PassTag& o : out) present = present || o.key == t.key;
+        if (!present) out.push_back({t.key, t.value});
+    }
+}
+
+std::vector<StateSetting> Lower(const RenderState& s) {
+    std::vector<StateSetting> out;
+    auto simple = [&](const std::optional<SimpleState>& v, StateField f) {
+        if (v) out.push_back({f, -1, v->value});
+    };
+    simple(s.cull, StateField::kCull);
+    simple(s.ztest, StateField::kZTest);
+    simple(s.zwrite, StateField::kZWrite);
+    simple(s.zclip, StateField::kZClip);
+    simple(s.alpha_to_mask, StateField::kAlphaToMask);
+    simple(s.conservative, StateField::kConservative);
+    if (s.offset) {
+        out.push_back({StateField::kOffsetFactor, -1, s.offset->factor});
+        out.push_back({StateField::kOffsetUnits, -1, s.offset->units});
+    }
+    for (const BlendState& b : s.blend) {
+        if (b.off) {
+            StateValue off;
+            off.text = "Off";
+            out.push_back({StateField::kBlendOff, b.target, off});
+            continue;
+        }
+        out.push_back({StateField::kBlendSrc, b.target, b.src});
+        out.push_back({StateField::kBlendDst, b.target, b.dst});
+        if (b.src_alpha) out.push_back({StateField::kBlendSrcAlpha, b.target, *b.src_alpha});
+        if (b.dst_alpha) out.push_back({StateField::kBlendDstAlpha, b.target, *b.dst_alpha});
+    }
+    for (const BlendOpState& b : s.blend_op) {
+        out.push_back({StateField::kBlendOp, b.target, b.op});
+        if (b.op_alpha) out.push_back({StateField::kBlendOpAlpha, b.target, *b.op_alpha});
+    }
+    for (const ColorMaskState& c : s.color_mask) {
+        out.push_back({StateField::kColorMask, c.target, c.mask});
+    }
+    if (s.stencil) {
+        static const std::map<std::string, std::vector<StateField>> kStencil = {
+            {"Ref", {StateField::kStencilRef}},
+            {"ReadMask", {StateField::kStencilReadMask}},
+            {"WriteMask", {StateField::kStencilWriteMask}},
+            {"Comp", {StateField::kStencilCompFront, StateField::kStencilCompBack}},
+            {"Pass", {StateField::kStencilPassFront, StateField::kStencilPassBack}},
+            {"Fail", {StateField::kStencilFailFront, StateField::kStencilFailBack}},
+            {"ZFail", {StateField::kStencilZFailFront, StateField::kStencilZFailBack}},
+            {"CompFront", {StateField::kStencilCompFront}},
+            {"PassFront", {StateField::kStencilPassFront}},
+            {"FailFront", {StateField::kStencilFailFront}},
+            {"ZFailFront", {StateField::kStencilZFailFront}},
+            {"CompBack", {StateField::kStencilCompBack}},
+            {"PassBack", {StateField::kStencilPassBack}},
+            {"FailBack", {StateField::kStencilFailBack}},
+            {"ZFailBack", {StateField::kStencilZFailBack}},
+        };
+        for (const StencilEntry& e : s.stencil->entries) {
+            auto it = kStencil.find(e.key);
+            if (it == kStencil.end()) continue;
+            for (StateField f : it->second) out.push_back({f, -1, e.value});
+        }
+    }
+    return out;
+}
+
+struct Walker {
+    const std::string& file;
+    DiagnosticList& diags;
+    std::vector<FlatPass> out;
+    std::vector<const ProgramBlock*> includes;  // outer levels
+    std::vector<const std::vector<Tag>*> outer_tags;
+    RenderState state;
+    int lod = 0;
+    uint32_t subshader_index = 0;
+
+    static void AddIncludes(std::vector<const ProgramBlock*>& to,
+                            const std::vector<ProgramBlock>& blocks) {
+        for (const ProgramBlock& b : blocks) {
+            if (IsIncludeBlock(b.kind)) to.push_back(&b);
+        }
+    }
+
+    void SubShaderLevel(const SubShader& ss) {
+        const auto saved_inc = includes;
+        const RenderState saved_state = state;
+        AddIncludes(includes, ss.programs);
+        Merge(state, ss.state);
+        const int ss_lod = ss.lod.value_or(lod);
+        uint32_t index = 0;
+        for (const PassEntry& entry : ss.passes) {
+            ++index;
+            if (const auto* use = std::get_if<UsePass>(&entry)) {
+                diags.Warning(DiagCode::kMisplacedCommand, file, use->range,
+                              "UsePass is not supported yet; the pass is skipped");
+                continue;
+            }
+            if (const auto* grab = std::get_if<GrabPass>(&entry)) {
+                diags.Warning(DiagCode::kMisplacedCommand, file, grab->range,
+                              "GrabPass is not supported yet; the pass is skipped");
+                continue;
+            }
+            const Pass& p = std::get<Pass>(entry);
+            FlatPass fp;
+            fp.pass = &p;
+            fp.subshader = subshader_index;
+            fp.lod = ss_lod;
+            fp.label = p.name.empty() ? "#" + std::to_string(index) + " of SubShader " +
+                                            std::to_string(subshader_index + 1)
+                                      : "\"" + p.name + "\"";
+            fp.blocks = includes;
+            AddIncludes(fp.blocks, p.programs);
+            for (const ProgramBlock& b : p.programs) {
+                if (!IsIncludeBlock(b.kind) && !fp.program) fp.program = &b;
+            }
+            if (!fp.program) {
+                diags.Error(DiagCode::kMissingEntryPoint, file, p.range,
+                            "pass has no CGPROGRAM or HLSLPROGRAM block; fixed-function passes "
+                            "are not supported");
+                continue;
+            }
+            fp.blocks.push_back(fp.program);
+            AddTags(fp.tags, p.tags);
+            AddTags(fp.tags, ss.tags);
+            for (auto it = outer_tags.rbegin(); it != outer_tags.rend(); ++it) AddTags(fp.tags, **it);
+            RenderState ps = state;
+            Merge(ps, p.state);
+            fp.state = Lower(ps);
+            out.push_back(std::move(fp));
+        }
+        ++subshader_index;
+        includes = saved_inc;
+        state = saved_state;
+    }
+
+    void Entries(const std::vector<SubShaderEntry>& entries) {
+        for (const SubShaderEntry& e : entries) {
+            if (const auto* ss = std::get_if<SubShader>(&e)) {
+                SubShaderLevel(*ss);
+                continue;
+            }
+            const Category& cat = *std::get<std::unique_ptr<Category>>(e);
+            const auto saved_inc = includes;
+            const RenderState saved_state = state;
+            const int saved_lod = lod;
+            AddIncludes(includes, cat.programs);
+            Merge(state, cat.state);
+            lod = cat.lod.value_or(lod);
+            outer_tags.push_back(&cat.tags);
+            Entries(cat.children);
+            outer_tags.pop_back();
+            includes = saved_inc;
+            state = saved_state;
+            lod = saved_lod;
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<FlatPass> FlattenPasses(const Shader& shader,
+                                    const std::string& file,
+                                    DiagnosticList& diags) {
+    Walker w{file, diags, {}, {}, {}, {}, 0, 0};
+    Walker::AddIncludes(w.includes, shader.programs);
+    w.Entries(shader.subshaders);
+    return std::move(w.out);
+}
+
+std::string TagValue(const FlatPass& pass, const std::string& key) {
+    for (const PassTag& t : pass.tags) {
+        if (t.key == key) return t.value;
+    }
+    return "";
+}
+
+}  // namespace kiln::driver

@@ -1,0 +1,201 @@
+#include "frontend/glslang_messages.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <sstream>
+
+namespace kiln::frontend {
+namespace {
+
+bool IsIdentChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+bool IsIdentifier(const std::string& s) {
+    return !s.empty() && !std::isdigit(static_cast<unsigned char>(s[0])) &&
+           std::all_of(s.begin(), s.end(), IsIdentChar);
+}
+
+// Finds "<digits>: " after a ':' and splits "file:line: rest".
+bool SplitLocation(const std::string& s, std::string& file, uint32_t& line, std::string& rest) {
+    for (size_t colon = s.find(':'); colon != std::string::npos; colon = s.find(':', colon + 1)) {
+        size_t i = colon + 1;
+        uint64_t n = 0;
+        while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) && n < 1u << 30) {
+            n = n * 10 + uint64_t(s[i] - '0');
+            ++i;
+        }
+        if (i > colon + 1 && i < s.size() && s[i] == ':') {
+            file = s.substr(0, colon);
+            line = static_cast<uint32_t>(n);
+            rest = s.substr(std::min(s.size(), i + 2));
+            return true;
+        }
+    }
+    return false;
+}
+
+std::string Trim(std::string s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+    size_t b = 0;
+    while (b < s.size() && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+    return s.substr(b);
+}
+
+uint32_t FindToken(std::string_view line, const std::string& token) {
+    if (token.empty()) return 0;
+    const bool word = IsIdentifier(token);
+    for (size_t at = line.find(token); at != std::string_view::npos;
+         at = line.find(token, at + 1)) {
+        const bool left_ok = !word || at == 0 || !IsIdentChar(line[at - 1]);
+        const size_t end = at + token.size();
+        const bool right_ok = !word || end >= line.size() || !IsIdentChar(line[end]);
+        if (left_ok && right_ok) return static_cast<uint32_t>(at + 1);
+    }
+    return 0;
+}
+
+}  // namespace
+
+std::vector<GlslangMessage> ParseInfoLog(const std::string& log) {
+    std::vector<GlslangMessage> out;
+    std::istringstream in(log);
+    std::string raw;
+    while (std::getline(in, raw)) {
+        const std::string line = Trim(raw);
+        if (line.empty()) continue;
+        // "file(12): error at column 7, HLSL parsing failed."
+        const size_t at_col = line.find("): error at column ");
+        if (at_col != std::string::npos) {
+            const size_t open = line.rfind('(', at_col);
+            const uint32_t col = static_cast<uint32_t>(
+                std::strtoul(line.c_str() + at_col + 19, nullptr, 10));
+            if (open != std::string::npos) {
+                const std::string file = line.substr(0, open);
+                const uint32_t ln =
+                    static_cast<uint32_t>(std::strtoul(line.c_str() + open + 1, nullptr, 10));
+                for (auto it = out.rbegin(); it != out.rend(); ++it) {
+                    if (it->file == file && it->line == ln && it->column == 0) {
+                        it->column = col;
+                        break;
+                    }
+                }
+            }
+            continue;
+        }
+        GlslangMessage m;
+        std::string body;
+        if (line.rfind("ERROR: ", 0) == 0) {
+            body = line.substr(7);
+        } else if (line.rfind("WARNING: ", 0) == 0) {
+            m.severity = Severity::kWarning;
+            body = line.substr(9);
+        } else {
+            continue;  // informational lines
+        }
+        if (body.find("compilation errors.") != std::string::npos &&
+            body.find("No code generated") != std::string::npos) {
+            continue;
+        }
+        std::string rest;
+        if (!SplitLocation(body, m.file, m.line, rest)) {
+            m.text = body;  // "Linking fragment stage: ..."
+            out.push_back(std::move(m));
+            continue;
+        }
+        // "'token' : message"
+        if (rest.size() > 1 && rest[0] == '\'') {
+            const size_t close = rest.find("' :");
+            if (close != std::string::npos) {
+                m.token = rest.substr(1, close - 1);
+                rest = rest.substr(close + 3);
+            }
+        }
+        m.text = Trim(rest);
+        out.push_back(std::move(m));
+    }
+    // After the first error glslang's recovery produces cascades: "'declaration' : Expected",
+    // "'' : Could not perform requested binary operation", and preprocessor errors ("'#' :
+    // preprocessor directive cannot be preceded by another token", "missing #endif") caused by
+    // the abandoned parse. Only errors with a real token survive after the first one.
+    std::vector<GlslangMessage> kept;
+    bool seen_error = false;
+    for (const GlslangMessage& m : out) {
+        const bool cascade_token = m.token.empty() || m.token == "declaration" || m.token == "#";
+        if (m.severity == Severity::kError && seen_error && cascade_token && !m.file.empty()) {
+            continue;
+        }
+        if (m.severity == Severity::kError) seen_error = true;
+        kept.push_back(m);
+    }
+    return kept;
+}
+
+std::string RewordMessage(const std::string& token, const std::string& text) {
+    std::string t;
+    // Collapse whitespace and glslang's "' const float'" quoting.
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (std::isspace(static_cast<unsigned char>(c))) {
+            if (!t.empty() && t.back() != ' ') t += ' ';
+            continue;
+        }
+        t += c;
+        if (c == '\'' && (i == 0 || text[i - 1] == ' ')) {
+            while (i + 1 < text.size() && text[i + 1] == ' ') ++i;
+        }
+    }
+    t = Trim(t);
+    while (!t.empty() && t.back() == '.') t.pop_back();
+    if (t == "Expected" || t.empty()) {
+        return token.empty() ? "syntax error" : "expected '" + token + "'";
+    }
+    if (t.size() > 1 && std::isupper(static_cast<unsigned char>(t[0])) &&
+        !std::isupper(static_cast<unsigned char>(t[1]))) {
+        t[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(t[0])));
+    }
+    if (IsIdentifier(token) && t.find("'" + token + "'") == std::string::npos &&
+        token != "declaration") {
+        t += " '" + token + "'";
+    }
+    return t;
+}
+
+Diagnostic ToDiagnostic(const GlslangMessage& m, const SourceLookup& lookup) {
+    Diagnostic d;
+    d.severity = m.severity;
+    d.code = m.severity == Severity::kWarning ? DiagCode::kHlslWarning : DiagCode::kHlslError;
+    d.file = m.file;
+    d.message = RewordMessage(m.token, m.text);
+    if (m.file.empty()) return d;
+    std::shared_ptr<const SourceFile> file = lookup ? lookup(m.file) : nullptr;
+    const uint32_t line = std::max<uint32_t>(m.line, 1);
+    if (file && line > file->line_count()) file = nullptr;
+    uint32_t col = 0, width = 1;
+    if (file) {
+        const std::string_view text = file->Line(line);
+        if (m.column > 0 && (m.text == "Expected" || m.token.empty())) {
+            col = std::min<uint32_t>(m.column, static_cast<uint32_t>(text.size()) + 1);
+        } else if (const uint32_t found = FindToken(text, m.token); found > 0) {
+            col = found;
+            width = static_cast<uint32_t>(m.token.size());
+        } else if (m.column > 0) {
+            col = std::min<uint32_t>(m.column, static_cast<uint32_t>(text.size()) + 1);
+        } else {
+            const size_t first = text.find_first_not_of(" \t");
+            col = first == std::string_view::npos ? 1 : static_cast<uint32_t>(first + 1);
+            width = static_cast<uint32_t>(text.size() - (first == std::string_view::npos ? 0 : first));
+        }
+        const uint32_t line_start = static_cast<uint32_t>(text.data() - file->text().data());
+        d.range.begin = file->LocAt(line_start + col - 1);
+        d.range.end = file->LocAt(line_start + col - 1 + std::max<uint32_t>(width, 1));
+    } else {
+        d.range.begin = SourceLoc{0, line, std::max<uint32_t>(m.column, 1)};
+        d.range.end = d.range.begin;
+        d.range.end.column += 1;
+    }
+    return d;
+}
+
+}  // namespace kiln::frontend

@@ -1,0 +1,68 @@
+#include "hlsl/includer.h"
+
+#include <filesystem>
+
+namespace kiln::hlsl {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string Join(const fs::path& dir, const std::string& name) {
+    return (dir / name).lexically_normal().string();
+}
+
+}  // namespace
+
+std::string Includer::Resolve(const std::string& header,
+                              const std::string& includer,
+                              bool local) const {
+    if (header.empty()) return "";
+    std::vector<std::string> candidates;
+    if (fs::path(header).is_absolute()) {
+        candidates.push_back(fs::path(header).lexically_normal().string());
+    } else {
+        if (local) candidates.push_back(Join(fs::path(includer).parent_path(), header));
+        for (const std::string& dir : paths_.dirs) candidates.push_back(Join(dir, header));
+        if (!paths_.templates_dir.empty()) {
+            candidates.push_back(Join(paths_.templates_dir, header));
+        }
+    }
+    for (const std::string& c : candidates) {
+        if (files_.Get(c)) return c;
+    }
+    return "";
+}
+
+glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& path, size_t depth) {
+    if (depth > kMaxDepth) {
+        // A failed result carries its reason in the data field; glslang reports it at the
+        // #include line.
+        error_text_ = "includes nested more than 64 deep (recursive include without a guard?)";
+        return new IncludeResult("", error_text_.data(), error_text_.size(), nullptr);
+    }
+    if (path.empty()) return nullptr;
+    auto file = files_.Get(path);
+    if (!file) return nullptr;
+    held_.push_back(file);
+    return new IncludeResult(path, file->text().data(), file->text().size(), nullptr);
+}
+
+glslang::TShader::Includer::IncludeResult* Includer::includeLocal(const char* header,
+                                                                  const char* includer,
+                                                                  size_t depth) {
+    const std::string path = Resolve(header, includer ? includer : "", true);
+    return path.empty() && depth <= kMaxDepth ? nullptr : Serve(path, depth);
+}
+
+glslang::TShader::Includer::IncludeResult* Includer::includeSystem(const char* header,
+                                                                   const char* includer,
+                                                                   size_t depth) {
+    const std::string path = Resolve(header, includer ? includer : "", false);
+    return path.empty() && depth <= kMaxDepth ? nullptr : Serve(path, depth);
+}
+
+void Includer::releaseInclude(IncludeResult* result) {
+    delete result;
+}
+
+}  // namespace kiln::hlsl

@@ -1,0 +1,18 @@
+// Reduces preprocessed HLSL to what one entry point can reach, so that stages that do not depend
+// on a keyword give the same text in every variant and are compiled once (dedup). Top-level
+// functions that the entry point does not reach (transitively) are removed, keeping their
+// newlines so line numbers hold; every other declaration (structs, globals, cbuffers, textures)
+// is kept, so uniform block layouts match between the stages of a variant. `#pragma` lines are
+// blanked (they were read from the .shader already) and `#line` directives kept.
+#ifndef KILN_HLSL_REDUCE_H_
+#define KILN_HLSL_REDUCE_H_
+
+#include <string>
+
+namespace kiln::hlsl {
+
+std::string ReduceToEntryPoint(const std::string& preprocessed, const std::string& entry_point);
+
+}  // namespace kiln::hlsl
+
+#endif  // KILN_HLSL_REDUCE_H_

@@ -1,0 +1,56 @@
+// Interprets the `#pragma` lines of a pass's program: entry points, shader target, keyword sets
+// (multi_compile / shader_feature with _local and _vertex/_fragment forms and the built-in
+// shortcuts), skip_variants and renderer restrictions. Keyword-set semantics follow Unity:
+// a variant picks exactly one keyword from every set; `_`, `__`, ... mean "no keyword"; a
+// one-keyword shader_feature means `_ KEYWORD`.
+#ifndef KILN_VARIANTS_PASS_PRAGMAS_H_
+#define KILN_VARIANTS_PASS_PRAGMAS_H_
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kiln/diagnostic.h"
+#include "kiln/pack/format.h"
+#include "kiln/shaderlab/ast.h"
+
+namespace kiln::variants {
+
+struct KeywordSet {
+    pack::KeywordSetKind kind = pack::KeywordSetKind::kMultiCompile;
+    uint32_t flags = 0;                 // pack::KeywordSetFlags
+    std::vector<std::string> keywords;  // "" = no keyword
+    std::string pragma;                 // as written, e.g. "multi_compile_fwdadd"
+    SourceRange range;                  // the pragma line
+};
+
+struct EntryPoint {
+    std::string name;
+    SourceRange range;
+};
+
+struct PassPragmas {
+    std::optional<EntryPoint> vertex, fragment;
+    int shader_target = 25;  // SHADER_TARGET: 25 unless `#pragma target`
+    std::vector<KeywordSet> sets;
+    std::vector<shaderlab::PragmaArg> skip_variants;
+    std::vector<std::string> only_renderers, exclude_renderers;
+};
+
+// Reads the pragmas of `blocks` (include blocks, then the pass program, in that order). Problems
+// are reported into `diags` against `file`.
+PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& blocks,
+                            const std::string& file,
+                            SourceRange pass_range,
+                            DiagnosticList& diags);
+
+// The keyword sets a built-in shortcut (e.g. "multi_compile_fwdadd") expands to; empty when
+// `name` is not a shortcut. Documented in docs/variants.md.
+std::vector<std::vector<std::string>> BuiltinShortcut(const std::string& name);
+
+bool IsNoKeyword(const std::string& word);  // "_", "__", ...
+
+}  // namespace kiln::variants
+
+#endif  // KILN_VARIANTS_PASS_PRAGMAS_H_

@@ -1,0 +1,239 @@
+// kiln info PACK [--json] and kiln extract PACK --shader S --pass P --stage vert|frag -o x.spv.
+#include <cstdio>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "kiln/pack/reader.h"
+
+namespace kiln::cli {
+namespace {
+
+using namespace kiln::pack;
+
+const char* kFieldNames[] = {
+    "Cull", "ZTest", "ZWrite", "ZClip", "AlphaToMask", "Conservative", "OffsetFactor",
+    "OffsetUnits", "BlendOff", "BlendSrc", "BlendDst", "BlendSrcAlpha", "BlendDstAlpha",
+    "BlendOp", "BlendOpAlpha", "ColorMask", "StencilRef", "StencilReadMask", "StencilWriteMask",
+    "StencilCompFront", "StencilPassFront", "StencilFailFront", "StencilZFailFront",
+    "StencilCompBack", "StencilPassBack", "StencilFailBack", "StencilZFailBack"};
+
+// Opens a pack or prints why not; returns false on failure.
+bool OpenPack(const std::string& path, MappedFile& file, Pack& pack) {
+    std::optional<PackError> err = MappedFile::Map(path, file);
+    if (!err) err = Pack::Open(file.bytes(), pack);
+    if (err) {
+        std::fprintf(stderr, "%s: error: %s [%s]\n", path.c_str(), err->message.c_str(),
+                     PackErrorCodeName(err->code));
+        return false;
+    }
+    return true;
+}
+
+nlohmann::json InfoJson(const Pack& p) {
+    nlohmann::json shaders = nlohmann::json::array();
+    for (uint32_t s = 0; s < p.Count(SectionTag::kShaders); ++s) {
+        const ShaderRec sr = p.Shader(s);
+        nlohmann::json props = nlohmann::json::array();
+        for (uint32_t i = sr.first_property; i < sr.first_property + sr.property_count; ++i) {
+            const auto pr = p.Get<PropertyRec>(SectionTag::kProperties, i);
+            props.push_back({{"name", p.String(pr.name)}, {"type", pr.type},
+                             {"default", pr.default_value},
+                             {"texture_default", p.String(pr.texture_default)}});
+        }
+        nlohmann::json passes = nlohmann::json::array();
+        for (uint32_t i = sr.first_pass; i < sr.first_pass + sr.pass_count; ++i) {
+            const PassRec pr = p.Pass(i);
+            nlohmann::json tags = nlohmann::json::object();
+            for (uint32_t t = pr.first_tag; t < pr.first_tag + pr.tag_count; ++t) {
+                const auto tag = p.Get<TagRec>(SectionTag::kTags, t);
+                tags[std::string(p.String(tag.key))] = p.String(tag.value);
+            }
+            nlohmann::json state = nlohmann::json::array();
+            for (uint32_t t = pr.first_state; t < pr.first_state + pr.state_count; ++t) {
+                const auto st = p.Get<StateRec>(SectionTag::kStates, t);
+                nlohmann::json e = {{"field", kFieldNames[st.field]}, {"target", st.target}};
+                if (st.kind == uint32_t(StateKind::kPropertyRef)) {
+                    e["property"] = p.String(st.text);
+                } else if (st.kind == uint32_t(StateKind::kNumber)) {
+                    e["value"] = st.number;
+                } else {
+                    e["value"] = p.String(st.text);
+                }
+                state.push_back(e);
+            }
+            nlohmann::json sets = nlohmann::json::array();
+            for (uint32_t k = pr.first_keyword_set; k < pr.first_keyword_set + pr.keyword_set_count;
+                 ++k) {
+                const KeywordSetRec kr = p.KeywordSet(k);
+                nlohmann::json words = nlohmann::json::array();
+                for (uint32_t w = 0; w < kr.keyword_count; ++w) {
+                    words.push_back(p.Keyword(kr.first_keyword + w));
+                }
+                sets.push_back({{"kind", kr.kind == 0 ? "multi_compile" : "shader_feature"},
+                                {"keywords", words}, {"shift", kr.key_shift}, {"bits", kr.key_bits}});
+            }
+            nlohmann::json variants = nlohmann::json::array();
+            for (uint32_t v = pr.first_variant; v < pr.first_variant + pr.variant_count; ++v) {
+                const VariantRec vr = p.Variant(v);
+                variants.push_back({{"key", vr.key},
+                                    {"keywords", p.KeywordsOf(i, VariantKey(vr.key))},
+                                    {"vertex_module", vr.vertex_module},
+                                    {"fragment_module", vr.fragment_module}});
+            }
+            passes.push_back({{"name", p.String(pr.name)}, {"tags", tags}, {"state", state},
+                              {"keyword_sets", sets}, {"variants", variants}});
+        }
+        shaders.push_back({{"name", p.String(sr.name)}, {"properties", props}, {"passes", passes}});
+    }
+    nlohmann::json modules = nlohmann::json::array();
+    for (uint32_t m = 0; m < p.Count(SectionTag::kModules); ++m) {
+        const ModuleRec mr = p.Module(m);
+        nlohmann::json blocks = nlohmann::json::array();
+        for (uint32_t b = mr.first_block; b < mr.first_block + mr.block_count; ++b) {
+            const auto br = p.Get<BlockRec>(SectionTag::kBlocks, b);
+            nlohmann::json members = nlohmann::json::array();
+            for (uint32_t i = br.first_member; i < br.first_member + br.member_count; ++i) {
+                const auto mem = p.Get<MemberRec>(SectionTag::kMembers, i);
+                members.push_back({{"name", p.String(mem.name)}, {"offset", mem.offset},
+                                   {"size", mem.size}});
+            }
+            blocks.push_back({{"name", p.String(br.name)},
+                              {"kind", br.kind == 0 ? "uniform" : "push_constant"},
+                              {"set", br.set}, {"binding", br.binding}, {"size", br.size},
+                              {"members", members}});
+        }
+        nlohmann::json resources = nlohmann::json::array();
+        for (uint32_t r = mr.first_resource; r < mr.first_resource + mr.resource_count; ++r) {
+            const auto rr = p.Get<ResourceRec>(SectionTag::kResources, r);
+            resources.push_back({{"name", p.String(rr.name)}, {"kind", rr.kind}, {"set", rr.set},
+                                 {"binding", rr.binding}});
+        }
+        nlohmann::json io = nlohmann::json::array();
+        for (uint32_t i = mr.first_interface; i < mr.first_interface + mr.interface_count; ++i) {
+            const auto v = p.Get<InterfaceVarRec>(SectionTag::kInterface, i);
+            io.push_back({{"name", p.String(v.name)}, {"semantic", p.String(v.semantic)},
+                          {"location", v.location}, {"direction", v.direction == 0 ? "in" : "out"},
+                          {"vecsize", v.vecsize}});
+        }
+        modules.push_back({{"stage", mr.stage == 0 ? "vertex" : "fragment"},
+                           {"bytes", mr.spirv_size}, {"interface", io}, {"blocks", blocks},
+                           {"resources", resources}});
+    }
+    const MetaRec meta = p.meta();
+    return {{"format", std::to_string(kFormatMajor) + "." + std::to_string(p.format_minor())},
+            {"producer", p.String(meta.producer)},
+            {"variants", meta.variant_count},
+            {"modules", modules},
+            {"shaders", shaders}};
+}
+
+}  // namespace
+
+std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions&) {
+    struct Options {
+        std::string file;
+        bool json = false;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand("info", "Describe a variant pack");
+    cmd->add_option("pack", o->file, "A .kpack file")->required();
+    cmd->add_flag("--json", o->json, "Print JSON");
+    return [o]() {
+        MappedFile file;
+        Pack pack;
+        if (!OpenPack(o->file, file, pack)) return int(kExitInputError);
+        const nlohmann::json j = InfoJson(pack);
+        if (o->json) {
+            std::printf("%s\n", j.dump(2).c_str());
+            return int(kExitOk);
+        }
+        size_t spirv = 0;
+        for (const auto& m : j["modules"]) spirv += m["bytes"].get<size_t>();
+        std::printf("%s: kiln pack %s, %zu bytes, by %s\n", o->file.c_str(),
+                    j["format"].get<std::string>().c_str(), file.bytes().size(),
+                    j["producer"].get<std::string>().c_str());
+        std::printf("%u variants, %zu unique modules (%zu bytes of SPIR-V)\n",
+                    j["variants"].get<unsigned>(), j["modules"].size(), spirv);
+        for (const auto& s : j["shaders"]) {
+            std::printf("Shader \"%s\": %zu properties\n", s["name"].get<std::string>().c_str(),
+                        s["properties"].size());
+            for (const auto& p : s["passes"]) {
+                std::string sets;
+                for (const auto& k : p["keyword_sets"]) {
+                    std::string words;
+                    for (const auto& w : k["keywords"]) {
+                        const std::string kw = w.get<std::string>();
+                        words += (words.empty() ? "" : " ") + (kw.empty() ? std::string("_") : kw);
+                    }
+                    sets += " [" + words + "]";
+                }
+                std::printf("  pass \"%s\"%s: %zu variants%s\n",
+                            p["name"].get<std::string>().c_str(),
+                            p["tags"].contains("LightMode")
+                                ? (" (LightMode " + p["tags"]["LightMode"].get<std::string>() + ")").c_str()
+                                : "",
+                            p["variants"].size(), sets.c_str());
+            }
+        }
+        return int(kExitOk);
+    };
+}
+
+std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions&) {
+    struct Options {
+        std::string file, shader, pass, stage, output;
+        std::vector<std::string> keywords;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand("extract", "Write one variant's SPIR-V module to a file");
+    cmd->add_option("pack", o->file, "A .kpack file")->required();
+    cmd->add_option("--shader", o->shader, "Shader name")->required();
+    cmd->add_option("--pass", o->pass, "Pass name or LightMode")->required();
+    cmd->add_option("--keywords", o->keywords, "Enabled keywords")->delimiter(',');
+    cmd->add_option("--stage", o->stage, "vert or frag")
+        ->required()
+        ->check(CLI::IsMember({"vert", "frag", "vertex", "fragment"}));
+    cmd->add_option("-o,--output", o->output, "Output .spv")->required();
+    return [o]() {
+        MappedFile file;
+        Pack pack;
+        if (!OpenPack(o->file, file, pack)) return int(kExitInputError);
+        const auto shader = pack.FindShader(o->shader);
+        if (!shader) {
+            std::fprintf(stderr, "%s: error: no shader \"%s\" in the pack\n", o->file.c_str(),
+                         o->shader.c_str());
+            return int(kExitInputError);
+        }
+        const auto pass = pack.FindPass(*shader, o->pass);
+        if (!pass) {
+            std::fprintf(stderr, "%s: error: shader \"%s\" has no pass \"%s\"\n", o->file.c_str(),
+                         o->shader.c_str(), o->pass.c_str());
+            return int(kExitInputError);
+        }
+        const VariantKey key = pack.KeyFor(*pass, o->keywords);
+        const auto variant = pack.FindVariant(*pass, key);
+        if (!variant) {
+            std::string kws;
+            for (const auto& k : o->keywords) kws += " " + k;
+            std::fprintf(stderr,
+                         "%s: error: shader \"%s\" pass \"%s\" has no variant with keywords%s "
+                         "(stripped or never built)\n",
+                         o->file.c_str(), o->shader.c_str(), o->pass.c_str(),
+                         kws.empty() ? " (none)" : kws.c_str());
+            return int(kExitInputError);
+        }
+        const VariantRec v = pack.Variant(*variant);
+        const bool vert = o->stage[0] == 'v';
+        const auto bytes = pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module));
+        Result<bool> written = WriteFileAtomic(o->output, {bytes.begin(), bytes.end()});
+        if (!written) {
+            std::fprintf(stderr, "%s: error: %s\n", o->output.c_str(), written.error().message.c_str());
+            return int(kExitInputError);
+        }
+        return int(kExitOk);
+    };
+}
+
+}  // namespace kiln::cli

@@ -1,0 +1,238 @@
+// The variant pack format, shared by the writer (compiler) and the reader (runtime). The byte
+// layout is specified in docs/pack-format.md; this header is its single definition in code.
+//
+// A pack is a 32-byte header, a section table, then 8-byte-aligned sections. Every section but
+// STRS and SPRV is an array of fixed-size records; each record type below has its encoded size
+// beside it and is written field by field, little-endian, in declaration order (EncodeRecord /
+// DecodeRecord in records.h). Strings are StrRefs into STRS; indices refer to records of other
+// sections and are checked by the reader before any use.
+#ifndef KILN_PACK_FORMAT_H_
+#define KILN_PACK_FORMAT_H_
+
+#include <array>
+#include <cstdint>
+
+namespace kiln::pack {
+
+inline constexpr std::array<char, 4> kMagic = {'K', 'P', 'A', 'K'};
+inline constexpr uint16_t kFormatMajor = 1;  // readers reject another major
+inline constexpr uint16_t kFormatMinor = 0;  // additions readers may ignore
+inline constexpr uint32_t kHeaderSize = 32;
+inline constexpr uint32_t kSectionEntrySize = 24;
+inline constexpr uint32_t kSectionAlignment = 8;
+inline constexpr uint32_t kMaxSections = 64;
+
+constexpr uint32_t FourCC(char a, char b, char c, char d) {
+    return uint32_t(uint8_t(a)) | uint32_t(uint8_t(b)) << 8 | uint32_t(uint8_t(c)) << 16 |
+           uint32_t(uint8_t(d)) << 24;
+}
+
+enum class SectionTag : uint32_t {
+    kStrings = FourCC('S', 'T', 'R', 'S'),      // raw bytes
+    kMeta = FourCC('M', 'E', 'T', 'A'),         // MetaRec x1
+    kShaders = FourCC('S', 'H', 'D', 'R'),      // ShaderRec
+    kProperties = FourCC('P', 'R', 'O', 'P'),   // PropertyRec
+    kAttributes = FourCC('A', 'T', 'T', 'R'),   // AttributeRec
+    kPasses = FourCC('P', 'A', 'S', 'S'),       // PassRec
+    kTags = FourCC('T', 'A', 'G', 'S'),         // TagRec
+    kStates = FourCC('R', 'S', 'T', 'A'),       // StateRec
+    kKeywordSets = FourCC('K', 'S', 'E', 'T'),  // KeywordSetRec
+    kKeywords = FourCC('K', 'W', 'R', 'D'),     // StrRef
+    kVariants = FourCC('V', 'A', 'R', 'I'),     // VariantRec, sorted by (pass, key)
+    kModules = FourCC('M', 'O', 'D', 'L'),      // ModuleRec
+    kSpirv = FourCC('S', 'P', 'R', 'V'),        // raw SPIR-V words, each module 4-aligned
+    kInterface = FourCC('I', 'O', 'V', 'R'),    // InterfaceVarRec
+    kBlocks = FourCC('B', 'L', 'C', 'K'),       // BlockRec
+    kMembers = FourCC('M', 'E', 'M', 'B'),      // MemberRec
+    kResources = FourCC('R', 'S', 'R', 'C'),    // ResourceRec
+};
+
+struct Header {  // 32 bytes
+    std::array<char, 4> magic = kMagic;
+    uint16_t format_major = kFormatMajor;
+    uint16_t format_minor = kFormatMinor;
+    uint32_t header_size = kHeaderSize;
+    uint32_t section_count = 0;
+    uint64_t file_size = 0;
+    uint64_t checksum = 0;  // XXH64 (seed 0) of the whole file with this field zeroed
+};
+inline constexpr uint32_t kChecksumOffset = 24;
+
+struct SectionEntry {  // 24 bytes
+    uint32_t tag = 0;
+    uint32_t record_count = 0;  // records (0 for STRS and SPRV)
+    uint64_t offset = 0;        // from the start of the file, 8-aligned
+    uint64_t size = 0;          // bytes
+};
+
+struct StrRef {  // 8 bytes: a UTF-8 string in STRS, not NUL-terminated
+    uint32_t offset = 0;
+    uint32_t length = 0;
+};
+
+struct MetaRec {  // 24 bytes
+    StrRef producer;  // "kiln 0.2.0; glslang 12.0.0; SPIRV-Tools v2023.1; SPIRV-Cross"
+    uint32_t opt_level = 0;  // 0 = -O0, 1 = -O, 2 = -Os
+    uint32_t flags = 0;      // bit 0: debug info kept (-g)
+    uint32_t variant_count = 0;
+    uint32_t module_count = 0;
+};
+
+struct ShaderRec {  // 32 bytes
+    StrRef name;
+    uint32_t first_property = 0, property_count = 0;
+    uint32_t first_pass = 0, pass_count = 0;
+    StrRef fallback;  // empty: none
+};
+
+enum class PropertyType : uint32_t {
+    kColor, kVector, kFloat, kInt, kInteger, kRange,
+    kTexture2D, kTexture3D, kCube, kTexture2DArray, kCubeArray,
+};
+
+struct PropertyRec {  // 64 bytes
+    StrRef name;
+    StrRef display_name;
+    uint32_t type = 0;  // PropertyType
+    uint32_t first_attribute = 0, attribute_count = 0;
+    float range_min = 0, range_max = 0;
+    std::array<float, 4> default_value{};
+    StrRef texture_default;  // "white", "black", "gray", "bump", ... (textures only)
+    uint32_t reserved = 0;
+};
+
+struct AttributeRec {  // 16 bytes: [Name(args)]
+    StrRef name;
+    StrRef args;  // raw text between the parentheses
+};
+
+enum PassFlags : uint32_t {
+    kPassOnlyRenderers = 1u << 0,     // `#pragma only_renderers` present
+    kPassExcludeRenderers = 1u << 1,  // `#pragma exclude_renderers` present
+};
+
+struct PassRec {  // 56 bytes
+    StrRef name;  // Name "..." (empty when unnamed)
+    uint32_t shader = 0;
+    uint32_t subshader = 0;  // index of its SubShader within the shader
+    uint32_t lod = 0;
+    uint32_t first_tag = 0, tag_count = 0;  // pass tags, then inherited SubShader tags
+    uint32_t first_state = 0, state_count = 0;
+    uint32_t first_keyword_set = 0, keyword_set_count = 0;
+    uint32_t first_variant = 0, variant_count = 0;
+    uint32_t flags = 0;  // PassFlags
+};
+
+struct TagRec {  // 16 bytes
+    StrRef key;
+    StrRef value;
+};
+
+// One resolved render-state setting of a pass (Category, SubShader and Pass levels merged).
+enum class StateField : uint32_t {
+    kCull, kZTest, kZWrite, kZClip, kAlphaToMask, kConservative,
+    kOffsetFactor, kOffsetUnits,
+    kBlendOff, kBlendSrc, kBlendDst, kBlendSrcAlpha, kBlendDstAlpha,
+    kBlendOp, kBlendOpAlpha, kColorMask,
+    kStencilRef, kStencilReadMask, kStencilWriteMask,
+    kStencilCompFront, kStencilPassFront, kStencilFailFront, kStencilZFailFront,
+    kStencilCompBack, kStencilPassBack, kStencilFailBack, kStencilZFailBack,
+};
+inline constexpr uint32_t kStateFieldCount = 27;
+
+enum class StateKind : uint32_t { kLiteral, kNumber, kPropertyRef };
+
+struct StateRec {  // 24 bytes
+    uint32_t field = 0;  // StateField
+    int32_t target = -1;  // render target for Blend/BlendOp/ColorMask; -1 = all
+    uint32_t kind = 0;   // StateKind
+    float number = 0;    // kNumber
+    StrRef text;         // canonical literal ("LEqual") or property name
+};
+
+enum class KeywordSetKind : uint32_t { kMultiCompile, kShaderFeature };
+enum KeywordSetFlags : uint32_t {
+    kKeywordSetLocal = 1u << 0,
+    kKeywordSetVertexOnly = 1u << 1,
+    kKeywordSetFragmentOnly = 1u << 2,
+};
+
+struct KeywordSetRec {  // 24 bytes
+    uint32_t kind = 0;   // KeywordSetKind
+    uint32_t flags = 0;  // KeywordSetFlags
+    uint32_t first_keyword = 0, keyword_count = 0;  // into KWRD; an empty name is "no keyword"
+    uint32_t key_shift = 0, key_bits = 0;           // see variant_key.h
+};
+
+struct VariantRec {  // 24 bytes
+    uint32_t pass = 0;
+    uint32_t reserved = 0;
+    uint64_t key = 0;  // VariantKey bits
+    uint32_t vertex_module = 0, fragment_module = 0;
+};
+
+enum class Stage : uint32_t { kVertex, kFragment };
+
+struct ModuleRec {  // 48 bytes
+    uint32_t spirv_offset = 0;  // within SPRV, 4-aligned
+    uint32_t spirv_size = 0;    // bytes, a multiple of 4
+    uint64_t hash = 0;          // XXH64 of the SPIR-V bytes
+    uint32_t stage = 0;         // Stage
+    uint32_t first_interface = 0, interface_count = 0;
+    uint32_t first_block = 0, block_count = 0;
+    uint32_t first_resource = 0, resource_count = 0;
+    uint32_t reserved = 0;
+};
+
+// Numeric types in reflection.
+enum class BaseType : uint32_t { kUnknown, kBool, kInt, kUInt, kFloat, kHalf, kStruct, kDouble };
+
+struct InterfaceVarRec {  // 32 bytes: a stage input or output
+    StrRef name;
+    StrRef semantic;  // HLSL semantic, upper-case ("POSITION", "TEXCOORD0"); empty for built-ins
+    uint32_t location = 0;  // ~0u for built-ins
+    uint32_t direction = 0;  // 0 input, 1 output
+    uint32_t base_type = 0;  // BaseType
+    uint32_t vecsize = 0;
+};
+
+enum class BlockKind : uint32_t { kUniform, kPushConstant };
+
+struct BlockRec {  // 32 bytes
+    StrRef name;  // "$Global" or the cbuffer's name
+    uint32_t kind = 0;  // BlockKind
+    uint32_t set = 0, binding = 0;  // push constants: 0, 0
+    uint32_t size = 0;              // declared size in bytes
+    uint32_t first_member = 0, member_count = 0;
+};
+
+struct MemberRec {  // 32 bytes
+    StrRef name;
+    uint32_t offset = 0, size = 0;
+    uint32_t base_type = 0;  // BaseType
+    uint32_t vecsize = 0, columns = 0;
+    uint32_t array_size = 0;  // 0: not an array
+};
+
+enum class ResourceKind : uint32_t {
+    kCombinedImageSampler,  // sampler2D (DX9 style)
+    kSeparateImage,         // Texture2D
+    kSeparateSampler,       // SamplerState
+    kStorageImage,
+    kStorageBuffer,
+};
+
+enum class ImageDim : uint32_t { kNone, k1D, k2D, k3D, kCube, kBuffer };
+
+struct ResourceRec {  // 32 bytes
+    StrRef name;
+    uint32_t kind = 0;  // ResourceKind
+    uint32_t set = 0, binding = 0;
+    uint32_t dim = 0;  // ImageDim
+    uint32_t arrayed = 0;
+    uint32_t array_size = 0;  // descriptor count; 1 for a single resource
+};
+
+}  // namespace kiln::pack
+
+#endif  // KILN_PACK_FORMAT_H_

@@ -1,0 +1,107 @@
+// Reading a variant pack. Pack::Open validates everything before the pack is used: magic, format
+// version, checksum, every section bound, every string reference and every cross-record index.
+// After a successful Open no accessor can read outside the bytes. The bytes are not copied: the
+// caller keeps them alive (a MappedFile, or a buffer).
+#ifndef KILN_PACK_READER_H_
+#define KILN_PACK_READER_H_
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kiln/pack/format.h"
+#include "kiln/pack/records.h"
+#include "kiln/pack/variant_key.h"
+
+namespace kiln::pack {
+
+enum class PackErrorCode {
+    kIo,                  // cannot open or map the file
+    kTruncated,           // shorter than its header says
+    kNotAPack,            // wrong magic
+    kUnsupportedVersion,  // another format major version
+    kChecksumMismatch,    // bytes changed after writing
+    kCorrupt,             // structurally invalid (bad bound, index, alignment)
+};
+
+struct PackError {
+    PackErrorCode code = PackErrorCode::kCorrupt;
+    std::string message;  // lower-case, one sentence
+};
+
+const char* PackErrorCodeName(PackErrorCode code);
+
+// A read-only file mapping.
+class MappedFile {
+  public:
+    MappedFile() = default;
+    MappedFile(const MappedFile&) = delete;
+    MappedFile& operator=(const MappedFile&) = delete;
+    MappedFile(MappedFile&& other) noexcept;
+    MappedFile& operator=(MappedFile&& other) noexcept;
+    ~MappedFile();
+
+    static std::optional<PackError> Map(const std::string& path, MappedFile& out);
+    std::span<const uint8_t> bytes() const { return {data_, size_}; }
+
+  private:
+    const uint8_t* data_ = nullptr;
+    size_t size_ = 0;
+};
+
+class Pack {
+  public:
+    static std::optional<PackError> Open(std::span<const uint8_t> bytes, Pack& out);
+
+    uint16_t format_minor() const { return header_.format_minor; }
+    MetaRec meta() const { return Get<MetaRec>(SectionTag::kMeta, 0); }
+    std::string_view String(StrRef ref) const;
+
+    uint32_t Count(SectionTag tag) const { return sections_[Index(tag)].record_count; }
+    template <class Rec>
+    Rec Get(SectionTag tag, uint32_t index) const {
+        const SectionEntry& s = sections_[Index(tag)];
+        const size_t size = RecordSize<Rec>();
+        ByteReader r(bytes_.subspan(s.offset + size_t{index} * size, size));
+        return r.Record<Rec>();
+    }
+    ShaderRec Shader(uint32_t i) const { return Get<ShaderRec>(SectionTag::kShaders, i); }
+    PassRec Pass(uint32_t i) const { return Get<PassRec>(SectionTag::kPasses, i); }
+    ModuleRec Module(uint32_t i) const { return Get<ModuleRec>(SectionTag::kModules, i); }
+    VariantRec Variant(uint32_t i) const { return Get<VariantRec>(SectionTag::kVariants, i); }
+    KeywordSetRec KeywordSet(uint32_t i) const {
+        return Get<KeywordSetRec>(SectionTag::kKeywordSets, i);
+    }
+    std::string_view Keyword(uint32_t i) const {
+        return String(Get<StrRef>(SectionTag::kKeywords, i));
+    }
+    std::span<const uint8_t> Spirv(const ModuleRec& module) const;
+
+    std::optional<uint32_t> FindShader(std::string_view name) const;
+    // A pass by its Name, or else by its LightMode tag (first match in SubShader order).
+    std::optional<uint32_t> FindPass(uint32_t shader, std::string_view name) const;
+    // Binary search of the sorted variant table: O(log n).
+    std::optional<uint32_t> FindVariant(uint32_t pass, VariantKey key) const;
+
+    // The key selecting, in each keyword set, the enabled keyword (or the set's first keyword
+    // when none of its keywords is enabled). Names in no set are ignored.
+    VariantKey KeyFor(uint32_t pass, const std::vector<std::string>& enabled) const;
+    // The keyword names a key selects (no-keyword entries omitted).
+    std::vector<std::string> KeywordsOf(uint32_t pass, VariantKey key) const;
+
+  private:
+    static constexpr size_t kSectionSlots = 17;
+    static size_t Index(SectionTag tag);
+    std::optional<PackError> Validate();
+
+    std::span<const uint8_t> bytes_;
+    Header header_;
+    SectionEntry sections_[kSectionSlots]{};
+};
+
+}  // namespace kiln::pack
+
+#endif  // KILN_PACK_READER_H_

@@ -1,0 +1,414 @@
+#include "kiln/pack/reader.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <utility>
+#include <cerrno>
+#include <cstring>
+
+#include <xxhash.h>
+
+namespace kiln::pack {
+namespace {
+
+constexpr SectionTag kAllTags[] = {
+    SectionTag::kStrings,   SectionTag::kMeta,       SectionTag::kShaders,
+    SectionTag::kProperties, SectionTag::kAttributes, SectionTag::kPasses,
+    SectionTag::kTags,      SectionTag::kStates,     SectionTag::kKeywordSets,
+    SectionTag::kKeywords,  SectionTag::kVariants,   SectionTag::kModules,
+    SectionTag::kSpirv,     SectionTag::kInterface,  SectionTag::kBlocks,
+    SectionTag::kMembers,   SectionTag::kResources,
+};
+
+// Encoded record size per section; 0 for raw byte sections.
+size_t RecordSizeOf(SectionTag tag) {
+    switch (tag) {
+        case SectionTag::kStrings:
+        case SectionTag::kSpirv: return 0;
+        case SectionTag::kMeta: return RecordSize<MetaRec>();
+        case SectionTag::kShaders: return RecordSize<ShaderRec>();
+        case SectionTag::kProperties: return RecordSize<PropertyRec>();
+        case SectionTag::kAttributes: return RecordSize<AttributeRec>();
+        case SectionTag::kPasses: return RecordSize<PassRec>();
+        case SectionTag::kTags: return RecordSize<TagRec>();
+        case SectionTag::kStates: return RecordSize<StateRec>();
+        case SectionTag::kKeywordSets: return RecordSize<KeywordSetRec>();
+        case SectionTag::kKeywords: return RecordSize<StrRef>();
+        case SectionTag::kVariants: return RecordSize<VariantRec>();
+        case SectionTag::kModules: return RecordSize<ModuleRec>();
+        case SectionTag::kInterface: return RecordSize<InterfaceVarRec>();
+        case SectionTag::kBlocks: return RecordSize<BlockRec>();
+        case SectionTag::kMembers: return RecordSize<MemberRec>();
+        case SectionTag::kResources: return RecordSize<ResourceRec>();
+    }
+    return 0;
+}
+
+std::string TagName(uint32_t tag) {
+    std::string s;
+    for (int i = 0; i < 4; ++i) {
+        const char c = static_cast<char>(tag >> (8 * i));
+        s += (c >= 0x20 && c < 0x7f) ? c : '?';
+    }
+    return s;
+}
+
+PackError Corrupt(std::string message) {
+    return PackError{PackErrorCode::kCorrupt, std::move(message)};
+}
+
+bool RangeOk(uint32_t first, uint32_t count, uint32_t total) {
+    return first <= total && count <= total - first;
+}
+
+}  // namespace
+
+const char* PackErrorCodeName(PackErrorCode code) {
+    switch (code) {
+        case PackErrorCode::kIo: return "io";
+        case PackErrorCode::kTruncated: return "truncated";
+        case PackErrorCode::kNotAPack: return "not-a-pack";
+        case PackErrorCode::kUnsupportedVersion: return "unsupported-version";
+        case PackErrorCode::kChecksumMismatch: return "checksum-mismatch";
+        case PackErrorCode::kCorrupt: return "corrupt";
+    }
+    return "corrupt";
+}
+
+MappedFile::MappedFile(MappedFile&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+
+MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
+    if (this != &other) {
+        this->~MappedFile();
+        data_ = std::exchange(other.data_, nullptr);
+        size_ = std::exchange(other.size_, 0);
+    }
+    return *this;
+}
+
+MappedFile::~MappedFile() {
+    if (data_ != nullptr && size_ > 0) {
+        munmap(const_cast<uint8_t*>(data_), size_);
+    }
+}
+
+std::optional<PackError> MappedFile::Map(const std::string& path, MappedFile& out) {
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        return PackError{PackErrorCode::kIo,
+                         "cannot open '" + path + "': " + std::strerror(errno)};
+    }
+    struct stat st {};
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return PackError{PackErrorCode::kIo, "'" + path + "' is not a regular file"};
+    }
+    out = MappedFile();
+    if (st.st_size == 0) {
+        close(fd);
+        return std::nullopt;  // an empty mapping; Pack::Open reports it as truncated
+    }
+    void* p = mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+    close(fd);
+    if (p == MAP_FAILED) {
+        return PackError{PackErrorCode::kIo, "cannot map '" + path + "': " + std::strerror(errno)};
+    }
+    out.data_ = static_cast<const uint8_t*>(p);
+    out.size_ = static_cast<size_t>(st.st_size);
+    return std::nullopt;
+}
+
+size_t Pack::Index(SectionTag tag) {
+    for (size_t i = 0; i < kSectionSlots; ++i) {
+        if (kAllTags[i] == tag) return i;
+    }
+    return 0;
+}
+
+std::string_view Pack::String(StrRef ref) const {
+    const SectionEntry& s = sections_[Index(SectionTag::kStrings)];
+    if (ref.offset > s.size || ref.length > s.size - ref.offset) return {};
+    return {reinterpret_cast<const char*>(bytes_.data() + s.offset + ref.offset), ref.length};
+}
+
+std::span<const uint8_t> Pack::Spirv(const ModuleRec& module) const {
+    const SectionEntry& s = sections_[Index(SectionTag::kSpirv)];
+    if (module.spirv_offset > s.size || module.spirv_size > s.size - module.spirv_offset) return {};
+    return bytes_.subspan(s.offset + module.spirv_offset, module.spirv_size);
+}
+
+std::optional<PackError> Pack::Open(std::span<const uint8_t> bytes, Pack& out) {
+    out = Pack();
+    if (bytes.size() < kHeaderSize) {
+        return PackError{PackErrorCode::kTruncated,
+                         "file is " + std::to_string(bytes.size()) +
+                             " bytes, shorter than a pack header (32 bytes)"};
+    }
+    ByteReader hr(bytes.first(kHeaderSize));
+    const Header h = hr.Record<Header>();
+    if (h.magic != kMagic) {
+        return PackError{PackErrorCode::kNotAPack, "not a kiln pack (bad magic)"};
+    }
+    if (h.format_major != kFormatMajor) {
+        return PackError{PackErrorCode::kUnsupportedVersion,
+                         "pack format " + std::to_string(h.format_major) + "." +
+                             std::to_string(h.format_minor) + " is not supported (reader knows " +
+                             std::to_string(kFormatMajor) + ".x)"};
+    }
+    if (h.file_size > bytes.size()) {
+        return PackError{PackErrorCode::kTruncated,
+                         "pack is truncated: header says " + std::to_string(h.file_size) +
+                             " bytes, file has " + std::to_string(bytes.size())};
+    }
+    if (h.file_size < bytes.size()) {
+        return Corrupt("pack has " + std::to_string(bytes.size() - h.file_size) +
+                       " trailing bytes after its end");
+    }
+    if (h.header_size != kHeaderSize) {
+        return Corrupt("unexpected header size " + std::to_string(h.header_size));
+    }
+    // Checksum over the whole file with the checksum field read as zero.
+    XXH64_state_t* state = XXH64_createState();
+    XXH64_reset(state, 0);
+    XXH64_update(state, bytes.data(), kChecksumOffset);
+    const uint8_t zeros[8] = {};
+    XXH64_update(state, zeros, sizeof zeros);
+    XXH64_update(state, bytes.data() + kHeaderSize, bytes.size() - kHeaderSize);
+    const uint64_t sum = XXH64_digest(state);
+    XXH64_freeState(state);
+    if (sum != h.checksum) {
+        return PackError{PackErrorCode::kChecksumMismatch,
+                         "pack checksum does not match its contents (file corrupted)"};
+    }
+    out.bytes_ = bytes;
+    out.header_ = h;
+    return out.Validate();
+}
+
+std::optional<PackError> Pack::Validate() {
+    const uint64_t size = bytes_.size();
+    if (header_.section_count > kMaxSections ||
+        kHeaderSize + uint64_t{header_.section_count} * kSectionEntrySize > size) {
+        return Corrupt("section table does not fit in the file");
+    }
+    bool seen[kSectionSlots] = {};
+    for (uint32_t i = 0; i < header_.section_count; ++i) {
+        ByteReader r(bytes_.subspan(kHeaderSize + size_t{i} * kSectionEntrySize, kSectionEntrySize));
+        const SectionEntry e = r.Record<SectionEntry>();
+        const auto* known = std::find(std::begin(kAllTags), std::end(kAllTags),
+                                      static_cast<SectionTag>(e.tag));
+        if (known == std::end(kAllTags)) continue;  // unknown sections are skipped (minor additions)
+        const size_t slot = static_cast<size_t>(known - std::begin(kAllTags));
+        const std::string name = TagName(e.tag);
+        if (seen[slot]) return Corrupt("section " + name + " appears twice");
+        seen[slot] = true;
+        if (e.offset % kSectionAlignment != 0 || e.offset < kHeaderSize || e.offset > size ||
+            e.size > size - e.offset) {
+            return Corrupt("section " + name + " lies outside the file or is misaligned");
+        }
+        const size_t rec = RecordSizeOf(*known);
+        if (rec == 0 ? e.record_count != 0 : uint64_t{e.record_count} * rec != e.size) {
+            return Corrupt("section " + name + " size does not match its record count");
+        }
+        sections_[slot] = e;
+    }
+    for (size_t i = 0; i < kSectionSlots; ++i) {
+        if (!seen[i]) return Corrupt("section " + TagName(uint32_t(kAllTags[i])) + " is missing");
+    }
+    if (Count(SectionTag::kMeta) != 1) return Corrupt("META must hold exactly one record");
+
+    const uint32_t strings = static_cast<uint32_t>(sections_[Index(SectionTag::kStrings)].size);
+    auto str_ok = [&](StrRef s) { return s.offset <= strings && s.length <= strings - s.offset; };
+    auto fail = [](const char* what, uint32_t i) {
+        return Corrupt(std::string(what) + " record " + std::to_string(i) + " is out of bounds");
+    };
+    const uint32_t n_props = Count(SectionTag::kProperties), n_attrs = Count(SectionTag::kAttributes),
+                   n_passes = Count(SectionTag::kPasses), n_tags = Count(SectionTag::kTags),
+                   n_states = Count(SectionTag::kStates), n_sets = Count(SectionTag::kKeywordSets),
+                   n_kw = Count(SectionTag::kKeywords), n_vars = Count(SectionTag::kVariants),
+                   n_mods = Count(SectionTag::kModules), n_io = Count(SectionTag::kInterface),
+                   n_blocks = Count(SectionTag::kBlocks), n_members = Count(SectionTag::kMembers),
+                   n_res = Count(SectionTag::kResources), n_shaders = Count(SectionTag::kShaders);
+    if (!str_ok(meta().producer)) return fail("META", 0);
+    for (uint32_t i = 0; i < n_shaders; ++i) {
+        const ShaderRec s = Shader(i);
+        if (!str_ok(s.name) || !str_ok(s.fallback) ||
+            !RangeOk(s.first_property, s.property_count, n_props) ||
+            !RangeOk(s.first_pass, s.pass_count, n_passes)) {
+            return fail("SHDR", i);
+        }
+    }
+    for (uint32_t i = 0; i < n_props; ++i) {
+        const auto p = Get<PropertyRec>(SectionTag::kProperties, i);
+        if (!str_ok(p.name) || !str_ok(p.display_name) || !str_ok(p.texture_default) ||
+            p.type > uint32_t(PropertyType::kCubeArray) ||
+            !RangeOk(p.first_attribute, p.attribute_count, n_attrs)) {
+            return fail("PROP", i);
+        }
+    }
+    for (uint32_t i = 0; i < n_attrs; ++i) {
+        const auto a = Get<AttributeRec>(SectionTag::kAttributes, i);
+        if (!str_ok(a.name) || !str_ok(a.args)) return fail("ATTR", i);
+    }
+    for (uint32_t i = 0; i < n_tags; ++i) {
+        const auto t = Get<TagRec>(SectionTag::kTags, i);
+        if (!str_ok(t.key) || !str_ok(t.value)) return fail("TAGS", i);
+    }
+    for (uint32_t i = 0; i < n_states; ++i) {
+        const auto s = Get<StateRec>(SectionTag::kStates, i);
+        if (!str_ok(s.text) || s.field >= kStateFieldCount ||
+            s.kind > uint32_t(StateKind::kPropertyRef)) {
+            return fail("RSTA", i);
+        }
+    }
+    for (uint32_t i = 0; i < n_kw; ++i) {
+        if (!str_ok(Get<StrRef>(SectionTag::kKeywords, i))) return fail("KWRD", i);
+    }
+    for (uint32_t i = 0; i < n_sets; ++i) {
+        const KeywordSetRec k = KeywordSet(i);
+        if (!RangeOk(k.first_keyword, k.keyword_count, n_kw) || k.keyword_count == 0 ||
+            k.key_bits > 32 || k.key_shift > 64 - k.key_bits ||
+            k.key_bits != BitsForCount(k.keyword_count)) {
+            return fail("KSET", i);
+        }
+    }
+    for (uint32_t i = 0; i < n_passes; ++i) {
+        const PassRec p = Pass(i);
+        if (!str_ok(p.name) || p.shader >= n_shaders || !RangeOk(p.first_tag, p.tag_count, n_tags) ||
+            !RangeOk(p.first_state, p.state_count, n_states) ||
+            !RangeOk(p.first_keyword_set, p.keyword_set_count, n_sets) ||
+            !RangeOk(p.first_variant, p.variant_count, n_vars)) {
+            return fail("PASS", i);
+        }
+        for (uint32_t v = p.first_variant; v < p.first_variant + p.variant_count; ++v) {
+            if (Variant(v).pass != i) return fail("PASS", i);
+        }
+    }
+    for (uint32_t i = 0; i < n_vars; ++i) {
+        const VariantRec v = Variant(i);
+        if (v.pass >= n_passes || v.vertex_module >= n_mods || v.fragment_module >= n_mods) {
+            return fail("VARI", i);
+        }
+        if (i > 0) {
+            const VariantRec prev = Variant(i - 1);
+            if (prev.pass > v.pass || (prev.pass == v.pass && prev.key >= v.key)) {
+                return Corrupt("variant table is not sorted at record " + std::to_string(i));
+            }
+        }
+    }
+    const uint64_t spirv_size = sections_[Index(SectionTag::kSpirv)].size;
+    for (uint32_t i = 0; i < n_mods; ++i) {
+        const ModuleRec m = Module(i);
+        if (m.spirv_offset % 4 != 0 || m.spirv_size % 4 != 0 || m.spirv_size == 0 ||
+            m.spirv_offset > spirv_size || m.spirv_size > spirv_size - m.spirv_offset ||
+            m.stage > uint32_t(Stage::kFragment) ||
+            !RangeOk(m.first_interface, m.interface_count, n_io) ||
+            !RangeOk(m.first_block, m.block_count, n_blocks) ||
+            !RangeOk(m.first_resource, m.resource_count, n_res)) {
+            return fail("MODL", i);
+        }
+    }
+    for (uint32_t i = 0; i < n_io; ++i) {
+        const auto v = Get<InterfaceVarRec>(SectionTag::kInterface, i);
+        if (!str_ok(v.name) || !str_ok(v.semantic)) return fail("IOVR", i);
+    }
+    for (uint32_t i = 0; i < n_blocks; ++i) {
+        const auto b = Get<BlockRec>(SectionTag::kBlocks, i);
+        if (!str_ok(b.name) || !RangeOk(b.first_member, b.member_count, n_members)) {
+            return fail("BLCK", i);
+        }
+    }
+    for (uint32_t i = 0; i < n_members; ++i) {
+        if (!str_ok(Get<MemberRec>(SectionTag::kMembers, i).name)) return fail("MEMB", i);
+    }
+    for (uint32_t i = 0; i < n_res; ++i) {
+        if (!str_ok(Get<ResourceRec>(SectionTag::kResources, i).name)) return fail("RSRC", i);
+    }
+    return std::nullopt;
+}
+
+std::optional<uint32_t> Pack::FindShader(std::string_view name) const {
+    for (uint32_t i = 0; i < Count(SectionTag::kShaders); ++i) {
+        if (String(Shader(i).name) == name) return i;
+    }
+    return std::nullopt;
+}
+
+std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) const {
+    if (shader >= Count(SectionTag::kShaders)) return std::nullopt;
+    const ShaderRec s = Shader(shader);
+    auto equal_ci = [](std::string_view a, std::string_view b) {
+        return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+                   return std::tolower(static_cast<unsigned char>(x)) ==
+                          std::tolower(static_cast<unsigned char>(y));
+               });
+    };
+    for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
+        if (equal_ci(String(Pass(i).name), name)) return i;
+    }
+    for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
+        const PassRec p = Pass(i);
+        for (uint32_t t = p.first_tag; t < p.first_tag + p.tag_count; ++t) {
+            const auto tag = Get<TagRec>(SectionTag::kTags, t);
+            if (String(tag.key) == "LightMode" && equal_ci(String(tag.value), name)) return i;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<uint32_t> Pack::FindVariant(uint32_t pass, VariantKey key) const {
+    if (pass >= Count(SectionTag::kPasses)) return std::nullopt;
+    const PassRec p = Pass(pass);
+    uint32_t lo = p.first_variant, hi = p.first_variant + p.variant_count;
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        const uint64_t k = Variant(mid).key;
+        if (k == key.bits()) return mid;
+        if (k < key.bits()) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return std::nullopt;
+}
+
+VariantKey Pack::KeyFor(uint32_t pass, const std::vector<std::string>& enabled) const {
+    VariantKey key;
+    if (pass >= Count(SectionTag::kPasses)) return key;
+    const PassRec p = Pass(pass);
+    for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
+        const KeywordSetRec set = KeywordSet(s);
+        for (uint32_t k = 0; k < set.keyword_count; ++k) {
+            const std::string_view kw = Keyword(set.first_keyword + k);
+            if (!kw.empty() && std::find(enabled.begin(), enabled.end(), kw) != enabled.end()) {
+                key.Set(set.key_shift, set.key_bits, k);
+                break;
+            }
+        }
+    }
+    return key;
+}
+
+std::vector<std::string> Pack::KeywordsOf(uint32_t pass, VariantKey key) const {
+    std::vector<std::string> out;
+    if (pass >= Count(SectionTag::kPasses)) return out;
+    const PassRec p = Pass(pass);
+    for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
+        const KeywordSetRec set = KeywordSet(s);
+        const uint32_t index = key.Get(set.key_shift, set.key_bits);
+        if (index < set.keyword_count) {
+            const std::string_view kw = Keyword(set.first_keyword + index);
+            if (!kw.empty()) out.emplace_back(kw);
+        }
+    }
+    return out;
+}
+
+}  // namespace kiln::pack
