@@ -1,0 +1,276 @@
+// The variant compiler end to end through the library API: variants, dedup, determinism, cache,
+// diagnostics mapped to .shader and include positions, and cross-stage checks.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "kiln/pack/reader.h"
+#include "spirv/optimize.h"
+#include "support/compile_support.h"
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::string MultiLight() {
+    return DataPath("data/compile/multi_light.shader");
+}
+
+TEST(Compile, ThreeLightTypesGiveThreeValidVariantsAndOneVertexProgram) {
+    CompileRun run = Compile({MultiLight()});
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    ASSERT_EQ(run.out.passes.size(), 1u);
+    EXPECT_EQ(run.out.passes[0].variants, 3u);
+    EXPECT_EQ(run.out.passes[0].unique_vertex, 1u);    // no keyword reaches the vertex stage
+    EXPECT_EQ(run.out.passes[0].unique_fragment, 2u);  // POINT and SPOT share their code
+    EXPECT_EQ(run.out.stats.stage_programs, 6u);
+    EXPECT_EQ(run.out.stats.unique_programs, 3u);
+    EXPECT_EQ(run.out.stats.glslang_compiles, 3u);
+
+    pack::Pack p;
+    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    ASSERT_EQ(p.Count(pack::SectionTag::kVariants), 3u);
+    for (uint32_t m = 0; m < p.Count(pack::SectionTag::kModules); ++m) {
+        const auto bytes = p.Spirv(p.Module(m));
+        std::vector<uint32_t> words(bytes.size() / 4);
+        std::memcpy(words.data(), bytes.data(), bytes.size());
+        std::string msg;
+        EXPECT_TRUE(spirv::Validate(words, msg)) << msg;
+    }
+}
+
+TEST(Compile, PacksAreByteIdenticalWhateverTheJobCount) {
+    CompileOptions one;
+    one.jobs = 1;
+    CompileOptions many;
+    many.jobs = 8;
+    CompileRun a = Compile({MultiLight(), DataPath("../materials/Unlit.shader")}, one);
+    CompileRun b = Compile({MultiLight(), DataPath("../materials/Unlit.shader")}, many);
+    ASSERT_TRUE(a.out.ok && b.out.ok) << Brief(a.diags) << Brief(b.diags);
+    EXPECT_EQ(a.out.pack, b.out.pack);
+}
+
+TEST(Compile, WarmCacheRebuildDoesNoGlslangWork) {
+    ScratchDir dir;
+    CompileOptions o;
+    o.cache_dir = dir.path() + "/cache";
+    CompileRun cold = Compile({MultiLight()}, o);
+    ASSERT_TRUE(cold.out.ok) << Brief(cold.diags);
+    EXPECT_EQ(cold.out.stats.glslang_compiles, 3u);
+    EXPECT_EQ(cold.out.stats.cache_hits, 0u);
+    CompileRun warm = Compile({MultiLight()}, o);
+    ASSERT_TRUE(warm.out.ok);
+    EXPECT_EQ(warm.out.stats.glslang_compiles, 0u);
+    EXPECT_EQ(warm.out.stats.cache_hits, 3u);
+    EXPECT_EQ(cold.out.pack, warm.out.pack);
+
+    // Another optimization level is another key: nothing is reused.
+    o.opt_level = OptimizationLevel::kNone;
+    CompileRun o0 = Compile({MultiLight()}, o);
+    EXPECT_EQ(o0.out.stats.glslang_compiles, 3u);
+
+    // A damaged entry is a miss, not a failure.
+    for (const auto& e : fs::recursive_directory_iterator(o.cache_dir)) {
+        if (e.is_regular_file()) fs::resize_file(e.path(), 10);
+    }
+    CompileRun damaged = Compile({MultiLight()}, o);
+    ASSERT_TRUE(damaged.out.ok) << Brief(damaged.diags);
+    EXPECT_EQ(damaged.out.stats.glslang_compiles, 3u);
+}
+
+// Documented in docs/variants.md: a stage is compiled from what its entry point reaches, so a
+// function neither entry point calls is not compiled (glslang drops uncalled functions too).
+TEST(Compile, FunctionsNoEntryPointReachesAreNotCompiled) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "dead.shader", PassShader("", "            float3 broken() { return undefined_name; }\n"));
+    CompileRun run = Compile({path});
+    EXPECT_TRUE(run.out.ok);
+    EXPECT_EQ(Brief(run.diags), "");
+}
+
+TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "bad.shader",
+        "Shader \"Test/Bad\" {\n"
+        "    SubShader { Pass {\n"
+        "        CGPROGRAM\n"
+        "        #pragma vertex vert\n"
+        "        #pragma fragment frag\n"
+        "        float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n"
+        "        float4 frag() : SV_Target {\n"
+        "            float4 c = float3(1, 2, 3);\n"
+        "            return c + undefined_name;\n"
+        "        }\n"
+        "        ENDCG\n"
+        "    } }\n"
+        "}\n");
+    CompileRun run = Compile({path});
+    EXPECT_FALSE(run.out.ok);
+    EXPECT_TRUE(run.out.pack.empty());
+    EXPECT_EQ(Brief(run.diags),
+              "bad.shader:8:22 K5001 cannot convert from 'const 3-component vector of float' to "
+              "'temp 4-component vector of float'\n")
+        << "glslang stops at the first error of a declaration; the next line is not reported";
+}
+
+TEST(Compile, ErrorInCgIncludeIsReportedAtItsOwnLine) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "inc.shader",
+        "Shader \"Test/Inc\" {\n"
+        "    CGINCLUDE\n"
+        "    float4 Helper(float4 x) {\n"
+        "        return x * missing_factor;\n"
+        "    }\n"
+        "    ENDCG\n"
+        "    SubShader { Pass {\n"
+        "        CGPROGRAM\n"
+        "        #pragma vertex vert\n"
+        "        #pragma fragment frag\n"
+        "        float4 vert(float4 p : POSITION) : SV_POSITION { return Helper(p); }\n"
+        "        float4 frag() : SV_Target { return 1; }\n"
+        "        ENDCG\n"
+        "    } }\n"
+        "}\n");
+    CompileRun run = Compile({path});
+    EXPECT_EQ(Brief(run.diags), "inc.shader:4:20 K5001 unknown variable 'missing_factor'\n");
+}
+
+TEST(Compile, ErrorInIncludedFileIsReportedInThatFile) {
+    ScratchDir dir;
+    dir.Write("lib/helpers.cginc",
+              "#ifndef HELPERS\n#define HELPERS\n\nfloat3 Shade(float3 n) {\n"
+              "    return n *  not_declared;\n}\n#endif\n");
+    const std::string path = dir.Write(
+        "use.shader",
+        Replace(PassShader("", "            float3 unused_helper() { return Shade(1); }\n",
+                   "            #include \"lib/helpers.cginc\"\n            #include \"lib/helpers.cginc\""), "return _Tint; }", "return float4(Shade(_Tint.xyz), 1); }"));
+    CompileRun run = Compile({path});
+    EXPECT_EQ(Brief(run.diags), "helpers.cginc:5:17 K5001 unknown variable 'not_declared'\n");
+    EXPECT_EQ(run.diags.all()[0].file, dir.path() + "/lib/helpers.cginc");
+}
+
+TEST(Compile, SharedErrorIsReportedOnceWithTheKeywordsItFailsIn) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "kw.shader",
+        Replace(PassShader("            #pragma multi_compile DIRECTIONAL POINT SPOT\n"
+                   "            #pragma multi_compile _ SHADOWS",
+                   ""), "return _Tint; }",
+                     "\n#ifdef SPOT\n        return spot_only;\n#endif\n        return _Tint; }"));
+    CompileRun run = Compile({path});
+    EXPECT_EQ(Brief(run.diags),
+              "kw.shader:16:16 K5001 unknown variable 'spot_only'\n"
+              "  note: fails in 2 of 6 variants of shader \"Test/Pass\" pass \"FORWARD\": SPOT\n"
+              "  note: smallest failing keyword combination: SPOT\n");
+}
+
+TEST(Compile, IncludeResolutionOrderIsIncluderThenDashIThenTemplates) {
+    ScratchDir dir;
+    const std::string shader = dir.Write(
+        "s/order.shader", PassShader("", "", "            #include \"which.cginc\""));
+    const std::string local = dir.Write("s/which.cginc", "#define WHICH 1\n");
+    const std::string dash_i = dir.Write("inc/which.cginc", "#define WHICH 2\n");
+    const std::string templ = dir.Write("templates/which.cginc", "#define WHICH 3\n");
+    CompileOptions o;
+    o.include_dirs = {dir.path() + "/inc"};
+    o.templates_dir = dir.path() + "/templates";
+    auto read = [&](const CompileRun& r, const std::string& f) {
+        for (const auto& file : r.out.files) {
+            if (file->path() == f) return true;
+        }
+        return false;
+    };
+    CompileRun a = Compile({shader}, o);
+    ASSERT_TRUE(a.out.ok) << Brief(a.diags);
+    EXPECT_TRUE(read(a, local));
+    EXPECT_FALSE(read(a, dash_i));
+    fs::remove(local);
+    CompileRun b = Compile({shader}, o);
+    EXPECT_TRUE(read(b, dash_i));
+    EXPECT_FALSE(read(b, templ));
+    fs::remove(dash_i);
+    CompileRun c = Compile({shader}, o);
+    EXPECT_TRUE(read(c, templ));
+    fs::remove(templ);
+    CompileRun d = Compile({shader}, o);
+    EXPECT_FALSE(d.out.ok);
+    EXPECT_NE(Brief(d.diags).find("order.shader:10:13 K5001"), std::string::npos) << Brief(d.diags);
+}
+
+TEST(Compile, StageInterfaceMismatchIsAnError) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "io.shader",
+        "Shader \"Test/IO\" {\n"
+        "    SubShader { Pass {\n"
+        "        CGPROGRAM\n"
+        "        #pragma vertex vert\n"
+        "        #pragma fragment frag\n"
+        "        struct VOut { float4 pos : SV_POSITION; float2 uv : TEXCOORD0; };\n"
+        "        struct FIn { float4 pos : SV_POSITION; float4 color : COLOR0; };\n"
+        "        VOut vert(float4 p : POSITION) { VOut o; o.pos = p; o.uv = p.xy; return o; }\n"
+        "        float4 frag(FIn i) : SV_Target { return i.color; }\n"
+        "        ENDCG\n"
+        "    } }\n"
+        "}\n");
+    CompileRun run = Compile({path});
+    EXPECT_EQ(Brief(run.diags),
+              "io.shader:5:9 K5004 fragment input COLOR0 and vertex output TEXCOORD0 share "
+              "location 0; declare the vertex outputs and fragment inputs in the same order\n"
+              "  note: in shader \"Test/IO\" pass #1 of SubShader 1, variant (no keywords)\n");
+}
+
+TEST(Compile, PropertiesAreCheckedAgainstShaderGlobals) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "props.shader",
+        Replace(Replace(PassShader("", "            float3 _Wrong;\n            float _Loose;\n"), "_Tint (\"Tint\", Color) = (1, 1, 1, 1)",
+                     "_Tint (\"Tint\", Color) = (1, 1, 1, 1)\n"
+                     "        _Unused (\"Unused\", Float) = 0\n"
+                     "        _Wrong (\"Wrong\", Color) = (1, 1, 1, 1)"), "return _Tint; }", "return _Tint * _Loose + _Wrong.x; }"));
+    CompileRun run = Compile({path});
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    EXPECT_EQ(Brief(run.diags),
+              "props.shader:3:9 K5005 property '_Unused' has no shader variable of that name in "
+              "any pass\n"
+              "props.shader:4:26 K5008 property '_Wrong' is a Color but the shader does not "
+              "declare it as a 4-component vector\n"
+              "props.shader:1:8 K5006 shader global '_Loose' is not in Properties; materials "
+              "cannot set it\n");
+}
+
+TEST(Compile, BindingsFollowTheBindingModel) {
+    CompileRun run = Compile({DataPath("../materials/Unlit.shader")});
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    pack::Pack p;
+    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    const pack::VariantRec v = p.Variant(0);
+    const pack::ModuleRec vs = p.Module(v.vertex_module), fs = p.Module(v.fragment_module);
+    bool saw_per_frame = false, saw_push = false, saw_global = false, saw_tex = false;
+    for (const auto& m : {vs, fs}) {
+        for (uint32_t b = m.first_block; b < m.first_block + m.block_count; ++b) {
+            const auto br = p.Get<pack::BlockRec>(pack::SectionTag::kBlocks, b);
+            const std::string name(p.String(br.name));
+            if (name == "UnityPerFrame") saw_per_frame = br.set == 0 && br.binding == 1;
+            if (name == "UnityPerDraw") {
+                saw_push = br.kind == uint32_t(pack::BlockKind::kPushConstant) && br.size == 128;
+            }
+            if (name == "$Global") saw_global = br.set == 1 && br.binding == 0;
+        }
+        for (uint32_t r = m.first_resource; r < m.first_resource + m.resource_count; ++r) {
+            const auto rr = p.Get<pack::ResourceRec>(pack::SectionTag::kResources, r);
+            if (p.String(rr.name) == "_MainTex") saw_tex = rr.set == 1 && rr.binding == 1;
+        }
+    }
+    EXPECT_TRUE(saw_per_frame);
+    EXPECT_TRUE(saw_push);
+    EXPECT_TRUE(saw_global);
+    EXPECT_TRUE(saw_tex);
+}
+
+}  // namespace
+}  // namespace kiln::test

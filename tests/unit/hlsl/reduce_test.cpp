@@ -1,0 +1,51 @@
+#include "hlsl/reduce.h"
+
+#include <gtest/gtest.h>
+
+namespace kiln::hlsl {
+namespace {
+
+TEST(Reduce, DropsFunctionsTheEntryPointDoesNotReachAndKeepsLines) {
+    const std::string text =
+        "#line 1 \"a.shader\"\n"
+        "#pragma vertexvert\n"
+        "struct S { float4 p : POSITION; };\n"
+        "float4 _Color;\n"
+        "float helper(float x) { return x * 2; }\n"
+        "float unused(float x)\n{\n  return x;\n}\n"
+        "float4 vert(S s) : SV_POSITION { return s.p * helper(1); }\n"
+        "float4 frag() : SV_Target { return _Color; }\n";
+    const std::string reduced = ReduceToEntryPoint(text, "vert");
+    EXPECT_EQ(reduced,
+              "#line 1 \"a.shader\"\n"
+              "\n"
+              "struct S { float4 p : POSITION; };\n"
+              "float4 _Color;\n"
+              "float helper(float x) { return x * 2; }\n"
+              "\n\n\n\n"
+              "float4 vert(S s) : SV_POSITION { return s.p * helper(1); }\n"
+              "\n");
+}
+
+TEST(Reduce, VariantsDifferingOnlyInUnreachedCodeGiveTheSameText) {
+    const std::string a = "cbuffer C : register(b0) { float4 x; }\n"
+                          "float4 frag() : SV_Target { return 1; }\n"
+                          "float4 vert() : SV_POSITION { return x; }\n";
+    const std::string b = "cbuffer C : register(b0) { float4 x; }\n"
+                          "float4 frag() : SV_Target { return 2 * x; }\n"
+                          "float4 vert() : SV_POSITION { return x; }\n";
+    EXPECT_EQ(ReduceToEntryPoint(a, "vert"), ReduceToEntryPoint(b, "vert"));
+    EXPECT_NE(ReduceToEntryPoint(a, "frag"), ReduceToEntryPoint(b, "frag"));
+}
+
+TEST(Reduce, TransitiveCallsAndGlobalInitializersAreKept) {
+    const std::string text = "float c() { return 1; }\n"
+                             "static const float k = c();\n"
+                             "float b() { return 2; }\n"
+                             "float a() { return b(); }\n"
+                             "float4 main() : SV_Target { return a() + k; }\n";
+    EXPECT_EQ(ReduceToEntryPoint(text, "main"), text);
+}
+
+}  // namespace
+}  // namespace kiln::hlsl
