@@ -2,7 +2,8 @@
 # Runs every Kiln check from a clean checkout: installs dependencies, then
 #   1. the -Werror build and its full test suite (unit, golden, CLI, fuzz-corpus replay),
 #   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (KILN_SANITIZE),
-#   3. the libFuzzer parser target (clang) on its corpus, then a bounded fuzz run,
+#   3. the libFuzzer targets (clang: ShaderLab parser, pack reader) on their corpora, then bounded
+#      fuzz runs,
 #   4. the benchmarks, checked against the speed targets in bench/check_targets.py.
 # Environment: KILN_FUZZ_SECONDS (default 60) bounds step 3.
 set -euo pipefail
@@ -30,7 +31,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 step "fuzz (libFuzzer, clang, address,undefined)"
 CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DKILN_WERROR=ON -DKILN_FUZZ=ON -DKILN_SANITIZE=address,undefined
-cmake --build build/fuzz --target kiln_fuzz_shaderlab
+cmake --build build/fuzz --target kiln_fuzz_shaderlab kiln_fuzz_pack
 # New inputs go to a scratch folder; the checked-in corpus is only read.
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
@@ -38,6 +39,11 @@ build/fuzz/bin/kiln_fuzz_shaderlab -runs=0 tests/fuzz/corpus/shaderlab tests/gol
 build/fuzz/bin/kiln_fuzz_shaderlab -max_total_time="${KILN_FUZZ_SECONDS:-60}" -timeout=10 \
     -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$scratch/" \
     "$scratch" tests/fuzz/corpus/shaderlab tests/golden/parse tests/lecture
+
+build/fuzz/bin/kiln_fuzz_pack -runs=0 tests/fuzz/corpus/pack
+build/fuzz/bin/kiln_fuzz_pack -max_total_time="${KILN_FUZZ_SECONDS:-60}" -timeout=10 \
+    -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$scratch/" \
+    "$scratch" tests/fuzz/corpus/pack
 
 step "benchmarks"
 build/release/bin/kiln_bench --benchmark_out="$ROOT/build/release/bench.json" \

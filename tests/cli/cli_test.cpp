@@ -122,5 +122,88 @@ TEST(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(RunKiln("--help").exit_code, 0);
 }
 
+
+TEST(Cli, CompileWritesPackAndDepfileListingEveryFileRead) {
+    const std::string dir = testing::TempDir() + "/kiln_cli_compile";
+    std::filesystem::create_directories(dir);
+    const std::string pack = dir + "/out.kpack";
+    const RunResult r = RunKiln("compile " + DataPath("data/compile/multi_light.shader") + " -o " +
+                                pack + " -MD -MF " + dir + "/out.d -O -j 2 --no-cache --stats");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("variants 3, stage programs 6, unique programs 3"), std::string::npos)
+        << r.out;
+    const std::string dep = ReadFile(dir + "/out.d");
+    const std::string shader = std::filesystem::canonical(DataPath("data/compile/multi_light.shader"));
+    const std::string include = std::filesystem::canonical(DataPath("data/compile/light.cginc"));
+    EXPECT_EQ(dep, pack + ": \\\n  " + include + " \\\n  " + shader + "\n");
+    EXPECT_TRUE(std::filesystem::exists(pack));
+
+    const RunResult info = RunKiln("info " + pack);
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_NE(info.out.find("pass \"FORWARD_DELTA\" (LightMode ForwardAdd): 3 variants "
+                            "[DIRECTIONAL POINT SPOT]"),
+              std::string::npos)
+        << info.out;
+    const RunResult json = RunKiln("info --json " + pack);
+    ASSERT_EQ(json.exit_code, 0);
+    EXPECT_EQ(nlohmann::json::parse(json.out)["shaders"][0]["passes"][0]["variants"].size(), 3u);
+
+    const RunResult ex = RunKiln("extract " + pack +
+                                 " --shader Test/MultiLight --pass ForwardAdd --keywords SPOT "
+                                 "--stage frag -o " + dir + "/spot.spv");
+    EXPECT_EQ(ex.exit_code, 0) << ex.err;
+    EXPECT_GT(std::filesystem::file_size(dir + "/spot.spv"), 100u);
+    const RunResult missing = RunKiln("extract " + pack +
+                                      " --shader Test/MultiLight --pass NOPE --stage vert -o x.spv");
+    EXPECT_EQ(missing.exit_code, 1);
+    EXPECT_NE(missing.err.find("has no pass \"NOPE\""), std::string::npos);
+}
+
+TEST(Cli, CompileErrorsLeaveNoOutputAndExitOne) {
+    const std::string dir = testing::TempDir() + "/kiln_cli_compile_err";
+    std::filesystem::create_directories(dir);
+    const std::string bad = WriteTemp(
+        "bad_hlsl.shader",
+        "Shader \"B\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex v\n#pragma fragment f\n"
+        "float4 v() : SV_POSITION { return oops; }\nfloat4 f() : SV_Target { return 1; }\n"
+        "ENDCG\n} } }\n");
+    const RunResult r = RunKiln("compile " + bad + " -o " + dir + "/bad.kpack --no-cache");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("bad_hlsl.shader:5:35: error: unknown variable 'oops' [K5001]"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/bad.kpack"));
+    const RunResult many = RunKiln("compile " + DataPath("data/compile/multi_light.shader") +
+                                   " -o " + dir + "/x.kpack --max-variants 2 --no-cache");
+    EXPECT_EQ(many.exit_code, 1);
+    EXPECT_NE(many.err.find("3 = 3 variants in pass \"FORWARD_DELTA\", over the limit of 2"),
+              std::string::npos)
+        << many.err;
+}
+
+TEST(Cli, InfoRejectsDamagedPacks) {
+    const std::string good = DataPath("fuzz/corpus/pack/multi_light.kpack");
+    std::string bytes = ReadFile(good);
+    const std::string truncated = WriteTemp("trunc.kpack", bytes.substr(0, bytes.size() / 2));
+    RunResult r = RunKiln("info " + truncated);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("pack is truncated"), std::string::npos) << r.err;
+    bytes[bytes.size() / 2] ^= 0x10;
+    const std::string flipped = WriteTemp("flip.kpack", bytes);
+    r = RunKiln("info " + flipped);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("checksum does not match"), std::string::npos) << r.err;
+    r = RunKiln("info " + DataPath("data/compile/light.cginc"));
+    EXPECT_NE(r.err.find("not a kiln pack"), std::string::npos) << r.err;
+}
+
+TEST(Cli, VariantsReportsDedup) {
+    const RunResult r = RunKiln("variants " + DataPath("data/compile/multi_light.shader"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("3 permutations, 3 variants; unique programs: vertex 1, fragment 2"),
+              std::string::npos)
+        << r.out;
+}
+
 }  // namespace
 }  // namespace kiln::test

@@ -24,7 +24,6 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 enum class DiagCode : uint16_t {
     kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
     kCannotWriteFile = 2,
-    kCacheUnusable = 3,
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,
@@ -84,7 +83,6 @@ enum class DiagCode : uint16_t {
     kGlobalNotAProperty = 5006,
     kBlockLayoutMismatch = 5007,
     kPropertyTypeMismatch = 5008,
-    kTooManyBindings = 5009,
 
     kInternalError = 9001,
 };
