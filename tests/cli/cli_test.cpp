@@ -182,7 +182,11 @@ TEST(Cli, CompileErrorsLeaveNoOutputAndExitOne) {
 }
 
 TEST(Cli, InfoRejectsDamagedPacks) {
-    const std::string good = DataPath("fuzz/corpus/pack/multi_light.kpack");
+    const std::string good = testing::TempDir() + "/kiln_cli_good.kpack";
+    ASSERT_EQ(RunKiln("compile " + DataPath("data/compile/multi_light.shader") + " -o " + good +
+                      " --no-cache")
+                  .exit_code,
+              0);
     std::string bytes = ReadFile(good);
     const std::string truncated = WriteTemp("trunc.kpack", bytes.substr(0, bytes.size() / 2));
     RunResult r = RunKiln("info " + truncated);
