@@ -122,7 +122,6 @@ TEST(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(RunKiln("--help").exit_code, 0);
 }
 
-
 TEST(Cli, CompileWritesPackAndDepfileListingEveryFileRead) {
     const std::string dir = testing::TempDir() + "/kiln_cli_compile";
     std::filesystem::create_directories(dir);
@@ -133,7 +132,8 @@ TEST(Cli, CompileWritesPackAndDepfileListingEveryFileRead) {
     EXPECT_NE(r.out.find("variants 3, stage programs 6, unique programs 3"), std::string::npos)
         << r.out;
     const std::string dep = ReadFile(dir + "/out.d");
-    const std::string shader = std::filesystem::canonical(DataPath("data/compile/multi_light.shader"));
+    const std::string shader =
+        std::filesystem::canonical(DataPath("data/compile/multi_light.shader"));
     const std::string include = std::filesystem::canonical(DataPath("data/compile/light.cginc"));
     EXPECT_EQ(dep, pack + ": \\\n  " + include + " \\\n  " + shader + "\n");
     EXPECT_TRUE(std::filesystem::exists(pack));
@@ -150,11 +150,12 @@ TEST(Cli, CompileWritesPackAndDepfileListingEveryFileRead) {
 
     const RunResult ex = RunKiln("extract " + pack +
                                  " --shader Test/MultiLight --pass ForwardAdd --keywords SPOT "
-                                 "--stage frag -o " + dir + "/spot.spv");
+                                 "--stage frag -o " +
+                                 dir + "/spot.spv");
     EXPECT_EQ(ex.exit_code, 0) << ex.err;
     EXPECT_GT(std::filesystem::file_size(dir + "/spot.spv"), 100u);
-    const RunResult missing = RunKiln("extract " + pack +
-                                      " --shader Test/MultiLight --pass NOPE --stage vert -o x.spv");
+    const RunResult missing =
+        RunKiln("extract " + pack + " --shader Test/MultiLight --pass NOPE --stage vert -o x.spv");
     EXPECT_EQ(missing.exit_code, 1);
     EXPECT_NE(missing.err.find("has no pass \"NOPE\""), std::string::npos);
 }

@@ -13,12 +13,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace kiln::pack;
     std::vector<uint8_t> bytes(data, data + size);
     if (bytes.size() >= kHeaderSize) {
-        for (uint32_t i = 0; i < 8; ++i) bytes[kChecksumOffset + i] = 0;
+        for (uint32_t i = 0; i < 8; ++i)
+            bytes[kChecksumOffset + i] = 0;
         const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
-        for (uint32_t i = 0; i < 8; ++i) bytes[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
+        for (uint32_t i = 0; i < 8; ++i)
+            bytes[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
     }
     Pack pack;
-    if (Pack::Open(bytes, pack)) return 0;
+    if (Pack::Open(bytes, pack))
+        return 0;
     for (uint32_t s = 0; s < pack.Count(SectionTag::kShaders); ++s) {
         const ShaderRec sr = pack.Shader(s);
         (void)pack.String(sr.name);

@@ -34,10 +34,11 @@ CompileRun Compile(const std::vector<std::string>& files, CompileOptions options
 std::string Brief(const DiagnosticList& diags) {
     std::string s;
     for (const Diagnostic& d : diags.all()) {
-        s += fs::path(d.file).filename().string() + ":" + std::to_string(d.range.begin.line) +
-             ":" + std::to_string(d.range.begin.column) + " " + FormatDiagCode(d.code) + " " +
-             d.message + "\n";
-        for (const DiagnosticNote& n : d.notes) s += "  note: " + n.message + "\n";
+        s += fs::path(d.file).filename().string() + ":" + std::to_string(d.range.begin.line) + ":" +
+             std::to_string(d.range.begin.column) + " " + FormatDiagCode(d.code) + " " + d.message +
+             "\n";
+        for (const DiagnosticNote& n : d.notes)
+            s += "  note: " + n.message + "\n";
     }
     return s;
 }
@@ -68,7 +69,8 @@ std::string PassShader(const std::string& pragmas,
 std::string Replace(std::string text, const std::string& from, const std::string& to) {
     const size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) text.replace(at, from.size(), to);
+    if (at != std::string::npos)
+        text.replace(at, from.size(), to);
     return text;
 }
 

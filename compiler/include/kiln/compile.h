@@ -23,7 +23,7 @@ namespace kiln {
 enum class OptimizationLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
 
 struct CompileOptions {
-    std::vector<std::string> include_dirs;                    // -I, searched in order
+    std::vector<std::string> include_dirs;                     // -I, searched in order
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
     std::string templates_dir;  // the built-in include library; empty: DefaultTemplatesDir()
     OptimizationLevel opt_level = OptimizationLevel::kPerformance;
@@ -38,20 +38,20 @@ struct CompileOptions {
 };
 
 struct CompileStats {
-    uint64_t permutations = 0;     // product of keyword-set sizes, all passes
-    size_t variants = 0;           // after shader_feature narrowing and skip_variants
-    size_t stage_programs = 0;     // variants x 2 stages
-    size_t unique_programs = 0;    // distinct reduced stage texts (what dedup leaves)
-    size_t glslang_compiles = 0;   // unique programs compiled by glslang in this run
-    size_t cache_hits = 0;         // unique programs taken from the cache
-    size_t modules = 0;            // distinct SPIR-V modules in the pack
+    uint64_t permutations = 0;    // product of keyword-set sizes, all passes
+    size_t variants = 0;          // after shader_feature narrowing and skip_variants
+    size_t stage_programs = 0;    // variants x 2 stages
+    size_t unique_programs = 0;   // distinct reduced stage texts (what dedup leaves)
+    size_t glslang_compiles = 0;  // unique programs compiled by glslang in this run
+    size_t cache_hits = 0;        // unique programs taken from the cache
+    size_t modules = 0;           // distinct SPIR-V modules in the pack
 };
 
 struct KeywordSetReport {
     std::string pragma;                 // "multi_compile", "shader_feature_local", ...
     std::vector<std::string> keywords;  // "" = no keyword
     bool shader_feature = false;
-    std::string stage;                  // "", "vertex" or "fragment"
+    std::string stage;  // "", "vertex" or "fragment"
 };
 
 struct PassReport {

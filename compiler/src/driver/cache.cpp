@@ -19,11 +19,13 @@ constexpr uint32_t kEntryMagic = 0x4341434B;  // "KCAC"
 constexpr uint32_t kEntryVersion = 1;
 
 void PutU32(std::string& s, uint32_t x) {
-    for (int i = 0; i < 4; ++i) s += static_cast<char>(x >> (8 * i));
+    for (int i = 0; i < 4; ++i)
+        s += static_cast<char>(x >> (8 * i));
 }
 uint32_t GetU32(const std::string& s, size_t at) {
     uint32_t x = 0;
-    for (int i = 0; i < 4; ++i) x |= uint32_t(uint8_t(s[at + i])) << (8 * i);
+    for (int i = 0; i < 4; ++i)
+        x |= uint32_t(uint8_t(s[at + i])) << (8 * i);
     return x;
 }
 
@@ -50,30 +52,37 @@ std::string Cache::PathFor(const std::string& key) const {
 }
 
 std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
-    if (!enabled()) return std::nullopt;
+    if (!enabled())
+        return std::nullopt;
     std::ifstream in(PathFor(key), std::ios::binary);
-    if (!in) return std::nullopt;
+    if (!in)
+        return std::nullopt;
     const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (data.size() < 20 || GetU32(data, 0) != kEntryMagic || GetU32(data, 4) != kEntryVersion) {
         return std::nullopt;
     }
     const uint32_t words = GetU32(data, 8);
-    if (data.size() != 20 + uint64_t{words} * 4 || words == 0) return std::nullopt;
+    if (data.size() != 20 + uint64_t{words} * 4 || words == 0)
+        return std::nullopt;
     const uint64_t hash = uint64_t{GetU32(data, 12)} | uint64_t{GetU32(data, 16)} << 32;
-    if (XXH64(data.data() + 20, data.size() - 20, 0) != hash) return std::nullopt;
+    if (XXH64(data.data() + 20, data.size() - 20, 0) != hash)
+        return std::nullopt;
     std::vector<uint32_t> out(words);
-    for (uint32_t i = 0; i < words; ++i) out[i] = GetU32(data, 20 + size_t{i} * 4);
+    for (uint32_t i = 0; i < words; ++i)
+        out[i] = GetU32(data, 20 + size_t{i} * 4);
     return out;
 }
 
 bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) const {
-    if (!enabled()) return false;
+    if (!enabled())
+        return false;
     std::string data;
     PutU32(data, kEntryMagic);
     PutU32(data, kEntryVersion);
     PutU32(data, static_cast<uint32_t>(words.size()));
     std::string payload;
-    for (uint32_t w : words) PutU32(payload, w);
+    for (uint32_t w : words)
+        PutU32(payload, w);
     const uint64_t hash = XXH64(payload.data(), payload.size(), 0);
     PutU32(data, static_cast<uint32_t>(hash));
     PutU32(data, static_cast<uint32_t>(hash >> 32));
@@ -83,11 +92,12 @@ bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) co
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
     static std::atomic<uint64_t> counter{0};
-    const fs::path tmp = path.string() + ".tmp." + std::to_string(getpid()) + "." +
-                         std::to_string(counter++);
+    const fs::path tmp =
+        path.string() + ".tmp." + std::to_string(getpid()) + "." + std::to_string(counter++);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return false;
+        if (!out)
+            return false;
         out.write(data.data(), static_cast<std::streamsize>(data.size()));
         if (!out) {
             fs::remove(tmp, ec);
@@ -95,7 +105,8 @@ bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) co
         }
     }
     fs::rename(tmp, path, ec);  // atomic on POSIX: readers see the old entry or the new one
-    if (ec) fs::remove(tmp, ec);
+    if (ec)
+        fs::remove(tmp, ec);
     return !ec;
 }
 

@@ -35,9 +35,12 @@ namespace {
 
 spirv::OptLevel ToSpirv(OptimizationLevel level) {
     switch (level) {
-        case OptimizationLevel::kNone: return spirv::OptLevel::kNone;
-        case OptimizationLevel::kSize: return spirv::OptLevel::kSize;
-        case OptimizationLevel::kPerformance: return spirv::OptLevel::kPerformance;
+        case OptimizationLevel::kNone:
+            return spirv::OptLevel::kNone;
+        case OptimizationLevel::kSize:
+            return spirv::OptLevel::kSize;
+        case OptimizationLevel::kPerformance:
+            return spirv::OptLevel::kPerformance;
     }
     return spirv::OptLevel::kPerformance;
 }
@@ -50,8 +53,16 @@ std::string LineName(const std::string& path) {
     return hlsl::IsLineSafeName(path) ? path : std::string("<unprintable path>");
 }
 
+// glslang's info log as Kiln diagnostics (positions resolved against the files read).
+void AppendLog(CompileState& st, const std::string& log, std::vector<Diagnostic>& out) {
+    auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
+    for (const auto& m : frontend::ParseInfoLog(log))
+        out.push_back(frontend::ToDiagnostic(m, lookup));
+}
+
 void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
-    if (o.progress) o.progress(phase, done, total);
+    if (o.progress)
+        o.progress(phase, done, total);
 }
 
 // Phase 1: read, parse and check every shader; flatten passes.
@@ -66,7 +77,8 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
         unit.file = std::make_shared<const SourceFile>(std::move(read).value());
         st.files.Put(unit.file);
         unit.ast = shaderlab::ParseAndCheck(*unit.file, st.diags);
-        if (unit.ast) unit.passes = driver::FlattenPasses(*unit.ast, path, st.diags);
+        if (unit.ast)
+            unit.passes = driver::FlattenPasses(*unit.ast, path, st.diags);
         st.shaders.push_back(std::move(unit));
     }
 }
@@ -86,10 +98,12 @@ void ExpandPasses(CompileState& st) {
             pu.flat = f;
             const size_t errors_before = st.diags.error_count();
             pu.pragmas = variants::ReadPassPragmas(fp.blocks, path, fp.pass->range, st.diags);
-            if (st.diags.error_count() != errors_before) continue;
+            if (st.diags.error_count() != errors_before)
+                continue;
             auto ex = variants::ExpandVariants(pu.pragmas, request, fp.label, path,
                                                fp.program->range, st.diags);
-            if (!ex) continue;
+            if (!ex)
+                continue;
             pu.expansion = std::move(*ex);
             st.passes.push_back(std::move(pu));
         }
@@ -113,7 +127,8 @@ void ExpandPasses(CompileState& st) {
                     const auto& set = pu.pragmas.sets[i];
                     const auto& layout = pu.expansion.layout[i];
                     const std::string& kw = set.keywords[key.Get(layout.shift, layout.bits)];
-                    if (!kw.empty() && !(set.flags & skip_flag)) in.keywords.push_back(kw);
+                    if (!kw.empty() && !(set.flags & skip_flag))
+                        in.keywords.push_back(kw);
                 }
                 driver::StageTask task;
                 task.pass = p;
@@ -144,13 +159,14 @@ void PreprocessAndDedup(CompileState& st) {
             frontend::StageOutput out = frontend::Preprocess(t.stage, t.source, main, includer);
             t.preprocess_ok = out.ok;
             t.preprocess_log = std::move(out.info_log);
-            if (out.ok) t.reduced = hlsl::ReduceToEntryPoint(out.text, EntryOf(st, t));
+            if (out.ok)
+                t.reduced = hlsl::ReduceToEntryPoint(out.text, EntryOf(st, t));
         },
         [&](size_t done) { Progress(st.options, "preprocessing", done, st.tasks.size()); });
 
     const std::string versions = ProducerVersion();
-    const std::string options = "O" + std::to_string(int(st.options.opt_level)) +
-                                (st.options.debug_info ? "g" : "");
+    const std::string options =
+        "O" + std::to_string(int(st.options.opt_level)) + (st.options.debug_info ? "g" : "");
     std::map<std::string, size_t> by_key;
     for (size_t i = 0; i < st.tasks.size(); ++i) {
         driver::StageTask& t = st.tasks[i];
@@ -160,10 +176,7 @@ void PreprocessAndDedup(CompileState& st) {
             job.stage = t.stage;
             job.entry = EntryOf(st, t);
             job.first_task = i;
-            auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
-            for (const auto& m : frontend::ParseInfoLog(t.preprocess_log)) {
-                job.diags.push_back(frontend::ToDiagnostic(m, lookup));
-            }
+            AppendLog(st, t.preprocess_log, job.diags);
             t.job = st.jobs.size();
             st.jobs.push_back(std::move(job));
             continue;
@@ -189,7 +202,6 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
     const hlsl::IncludePaths paths = IncludePathsFor(st.options);
     const driver::Cache cache(st.options.cache_dir);
     std::atomic<size_t> compiles{0}, hits{0};
-    auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
     driver::ParallelFor(
         st.jobs.size(), st.options.jobs,
         [&](size_t j) {
@@ -197,12 +209,8 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
             const driver::StageTask& task = st.tasks[job.first_task];
             const std::string& main = st.shaders[st.passes[task.pass].shader].file->path();
             hlsl::Includer includer(paths, st.files);
-            auto report = [&](const std::string& log) {
-                for (const auto& m : frontend::ParseInfoLog(log)) {
-                    job.diags.push_back(frontend::ToDiagnostic(m, lookup));
-                }
-            };
-            if (!task.preprocess_ok) return;  // reported by PreprocessAndDedup
+            if (!task.preprocess_ok)
+                return;  // reported by PreprocessAndDedup
             if (auto cached = cache.Load(job.cache_key)) {
                 job.words = std::move(*cached);
                 job.ok = job.from_cache = true;
@@ -218,20 +226,27 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
                 ++compiles;
                 out = frontend::Compile(job.stage, task.source, main, job.entry, includer,
                                         st.options.debug_info);
-                report(out.info_log);
+                AppendLog(st, out.info_log, job.diags);
                 if (out.ok || job.diags.empty()) {
-                    job.diags.push_back({Severity::kInternal, DiagCode::kInternalError, main, {},
+                    job.diags.push_back({Severity::kInternal,
+                                         DiagCode::kInternalError,
+                                         main,
+                                         {},
                                          "stage compiles from its source but not after "
                                          "reduction to its entry point",
                                          {}});
                 }
                 return;
             }
-            report(out.info_log);  // warnings
+            AppendLog(st, out.info_log, job.diags);  // warnings
             std::string messages;
             if (!spirv::Optimize(out.spirv, ToSpirv(st.options.opt_level), messages)) {
-                job.diags.push_back({Severity::kError, DiagCode::kSpirvInvalid, main, {},
-                                     "SPIR-V legalization failed: " + messages, {}});
+                job.diags.push_back({Severity::kError,
+                                     DiagCode::kSpirvInvalid,
+                                     main,
+                                     {},
+                                     "SPIR-V legalization failed: " + messages,
+                                     {}});
                 return;
             }
             job.words = std::move(out.spirv);
@@ -258,7 +273,7 @@ void FillReports(const CompileState& st, CompileOutput& out) {
             k.shader_feature = s.kind == pack::KeywordSetKind::kShaderFeature;
             k.stage = (s.flags & pack::kKeywordSetVertexOnly)     ? "vertex"
                       : (s.flags & pack::kKeywordSetFragmentOnly) ? "fragment"
-                                                                   : "";
+                                                                  : "";
             r.sets.push_back(std::move(k));
         }
         r.permutations = pu.expansion.permutations;
@@ -285,21 +300,27 @@ CompileOutput Run(const std::vector<std::string>& paths,
     CompileState st{options, diags, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
     LoadShaders(st, paths);
-    if (!diags.has_errors()) ExpandPasses(st);
-    if (!diags.has_errors()) PreprocessAndDedup(st);
+    if (!diags.has_errors())
+        ExpandPasses(st);
+    if (!diags.has_errors())
+        PreprocessAndDedup(st);
     if (!build_pack) {
         driver::ReportJobDiagnostics(st);
     } else if (!diags.has_errors()) {
         CompileJobs(st, out.stats);
         driver::ReportJobDiagnostics(st);
-        if (!diags.has_errors()) driver::FinishModules(st);
-        if (!diags.has_errors()) driver::CheckInterfaces(st);
-        if (!diags.has_errors()) out.pack = driver::EmitPack(st, out.stats);
+        if (!diags.has_errors())
+            driver::FinishModules(st);
+        if (!diags.has_errors())
+            driver::CheckInterfaces(st);
+        if (!diags.has_errors())
+            out.pack = driver::EmitPack(st, out.stats);
     }
     FillReports(st, out);
     out.files = st.files.Files();
     out.ok = !diags.has_errors();
-    if (!out.ok) out.pack.clear();
+    if (!out.ok)
+        out.pack.clear();
     return out;
 }
 
@@ -318,12 +339,14 @@ CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
 }
 
 std::string DefaultTemplatesDir() {
-    if (const char* env = std::getenv("KILN_TEMPLATES_DIR"); env && *env) return env;
+    if (const char* env = std::getenv("KILN_TEMPLATES_DIR"); env && *env)
+        return env;
     return KILN_SOURCE_TEMPLATES_DIR;
 }
 
 std::string DefaultCacheDir() {
-    if (const char* env = std::getenv("KILN_CACHE_DIR"); env && *env) return env;
+    if (const char* env = std::getenv("KILN_CACHE_DIR"); env && *env)
+        return env;
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
         return (fs::path(xdg) / "kiln").string();
     }
@@ -344,7 +367,8 @@ Result<bool> WriteFileAtomic(const std::string& path, const std::vector<uint8_t>
         path + ".tmp." + std::to_string(getpid()) + "." + std::to_string(counter++);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return Error{"cannot create '" + tmp + "'"};
+        if (!out)
+            return Error{"cannot create '" + tmp + "'"};
         out.write(reinterpret_cast<const char*>(bytes.data()),
                   static_cast<std::streamsize>(bytes.size()));
         out.flush();

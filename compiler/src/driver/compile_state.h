@@ -53,7 +53,7 @@ struct Job {
     std::string cache_key;
     bool ok = false;
     bool from_cache = false;
-    std::vector<uint32_t> words;  // optimized, before bindings
+    std::vector<uint32_t> words;    // optimized, before bindings
     std::vector<Diagnostic> diags;  // glslang errors/warnings, or internal errors
 };
 
@@ -78,8 +78,8 @@ struct CompileState {
 };
 
 // Phases implemented in pack_emit.cpp.
-void FinishModules(CompileState& st);     // bindings, reflection, strip, validate
-void CheckInterfaces(CompileState& st);   // stage interface, block layouts, properties
+void FinishModules(CompileState& st);    // bindings, reflection, strip, validate
+void CheckInterfaces(CompileState& st);  // stage interface, block layouts, properties
 std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats);
 
 // Reports errors shared by many variants once each (error_merge.cpp).

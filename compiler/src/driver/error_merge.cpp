@@ -24,14 +24,16 @@ void ReportJobDiagnostics(CompileState& st) {
     std::map<Signature, size_t> index;
     std::vector<Group> groups;
     std::vector<std::vector<size_t>> tasks_of_job(st.jobs.size());
-    for (size_t t = 0; t < st.tasks.size(); ++t) tasks_of_job[st.tasks[t].job].push_back(t);
+    for (size_t t = 0; t < st.tasks.size(); ++t)
+        tasks_of_job[st.tasks[t].job].push_back(t);
 
     for (size_t j = 0; j < st.jobs.size(); ++j) {
         for (const Diagnostic& d : st.jobs[j].diags) {
-            const Signature sig{int(d.severity), int(d.code), d.file, d.range.begin.line,
-                                d.range.begin.column, d.message};
+            const Signature sig{int(d.severity),    int(d.code),          d.file,
+                                d.range.begin.line, d.range.begin.column, d.message};
             auto [it, fresh] = index.emplace(sig, groups.size());
-            if (fresh) groups.push_back({d, {}});
+            if (fresh)
+                groups.push_back({d, {}});
             for (size_t t : tasks_of_job[j]) {
                 groups[it->second].variants.insert({st.tasks[t].pass, st.tasks[t].key.bits()});
             }
@@ -41,7 +43,8 @@ void ReportJobDiagnostics(CompileState& st) {
     for (Group& g : groups) {
         Diagnostic d = g.diag;
         std::map<size_t, std::vector<uint64_t>> by_pass;
-        for (const auto& [pass, key] : g.variants) by_pass[pass].push_back(key);
+        for (const auto& [pass, key] : g.variants)
+            by_pass[pass].push_back(key);
         for (const auto& [p, keys] : by_pass) {
             const PassUnit& pu = st.passes[p];
             const ShaderUnit& unit = st.shaders[pu.shader];
@@ -64,7 +67,8 @@ void ReportJobDiagnostics(CompileState& st) {
                 }
                 std::vector<std::string> keep;
                 for (const auto& c : common) {
-                    if (std::find(kws.begin(), kws.end(), c) != kws.end()) keep.push_back(c);
+                    if (std::find(kws.begin(), kws.end(), c) != kws.end())
+                        keep.push_back(c);
                 }
                 common = std::move(keep);
                 if (kws.size() < smallest.size() ||
@@ -75,16 +79,19 @@ void ReportJobDiagnostics(CompileState& st) {
             }
             const std::string where = "shader \"" + unit.ast->name + "\" pass " + fp.label;
             if (d.severity == Severity::kInternal) {
-                d.message += " (" + where + ", variant " + variants::DescribeKeywords(smallest) + ")";
+                d.message +=
+                    " (" + where + ", variant " + variants::DescribeKeywords(smallest) + ")";
             }
-            if (total <= 1) continue;
+            if (total <= 1)
+                continue;
             std::string note;
             if (keys.size() == total) {
                 note = verb + " in all " + std::to_string(total) + " variants of " + where;
             } else {
                 note = verb + " in " + std::to_string(keys.size()) + " of " +
                        std::to_string(total) + " variants of " + where;
-                if (!common.empty()) note += ": " + variants::DescribeKeywords(common);
+                if (!common.empty())
+                    note += ": " + variants::DescribeKeywords(common);
             }
             d.notes.push_back({unit.file->path(), fp.program->range, note});
             if (keys.size() < total) {

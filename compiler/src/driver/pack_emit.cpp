@@ -36,14 +36,17 @@ void FinishModules(CompileState& st) {
     std::vector<std::map<std::string, spirv::Binding>> tables(st.passes.size());
     for (size_t p = 0; p < st.passes.size(); ++p) {
         std::set<size_t> jobs;
-        for (size_t t : st.passes[p].tasks) jobs.insert(st.tasks[t].job);
+        for (size_t t : st.passes[p].tasks)
+            jobs.insert(st.tasks[t].job);
         std::set<spirv::DescriptorVar> used;
         for (size_t j : jobs) {
-            for (const auto& d : spirv::ListDescriptorVars(st.jobs[j].words)) used.insert(d);
+            for (const auto& d : spirv::ListDescriptorVars(st.jobs[j].words))
+                used.insert(d);
         }
         std::vector<std::string> texture_props;
         for (const auto& prop : st.shaders[st.passes[p].shader].ast->properties) {
-            if (shaderlab::IsTextureType(prop.type)) texture_props.push_back(prop.name);
+            if (shaderlab::IsTextureType(prop.type))
+                texture_props.push_back(prop.name);
         }
         tables[p] = spirv::AssignBindings(used, texture_props);
         for (size_t j : jobs) {
@@ -75,7 +78,8 @@ void FinishModules(CompileState& st) {
         const PassUnit& pu = st.passes[p];
         const ShaderUnit& unit = st.shaders[pu.shader];
         for (const auto& [j, fm] : st.finals[p]) {
-            if (fm.ok) continue;
+            if (fm.ok)
+                continue;
             const StageTask& t = st.tasks[st.jobs[j].first_task];
             const bool internal = fm.error.rfind("internal: ", 0) == 0;
             st.diags.Add(internal ? Severity::kInternal : Severity::kError,
@@ -97,10 +101,12 @@ void CheckInterfaces(CompileState& st) {
             const spirv::Reflection& vs = FinalFor(st, p, pu.tasks[2 * v]).reflection;
             const spirv::Reflection& fs = FinalFor(st, p, pu.tasks[2 * v + 1]).reflection;
             for (const spirv::InterfaceVar& in : fs.interface) {
-                if (in.direction != 0 || in.location == ~0u) continue;
+                if (in.direction != 0 || in.location == ~0u)
+                    continue;
                 const spirv::InterfaceVar* match = nullptr;
                 for (const auto& out : vs.interface) {
-                    if (out.direction == 1 && out.location == in.location) match = &out;
+                    if (out.direction == 1 && out.location == in.location)
+                        match = &out;
                 }
                 std::string msg;
                 if (!match) {
@@ -118,20 +124,24 @@ void CheckInterfaces(CompileState& st) {
                           std::to_string(match->vecsize);
                 }
                 if (!msg.empty() && reported.insert(msg).second) {
-                    st.diags.Error(DiagCode::kStageInterfaceMismatch, unit.file->path(),
-                                   pu.pragmas.fragment->range, msg)
+                    st.diags
+                        .Error(DiagCode::kStageInterfaceMismatch, unit.file->path(),
+                               pu.pragmas.fragment->range, msg)
                         .notes.push_back({unit.file->path(), pu.pragmas.vertex->range,
                                           "in " + VariantName(st, p, pu.expansion.keys[v])});
                 }
             }
             for (const spirv::Block& a : vs.blocks) {
                 for (const spirv::Block& b : fs.blocks) {
-                    if (a.kind != b.kind || a.set != b.set || a.binding != b.binding) continue;
-                    if (a.kind == pack::BlockKind::kUniform && a.name != b.name) continue;
+                    if (a.kind != b.kind || a.set != b.set || a.binding != b.binding)
+                        continue;
+                    if (a.kind == pack::BlockKind::kUniform && a.name != b.name)
+                        continue;
                     bool same = a.size == b.size || a.kind == pack::BlockKind::kPushConstant;
                     for (const auto& ma : a.members) {
                         for (const auto& mb : b.members) {
-                            if (ma.name == mb.name && ma.offset != mb.offset) same = false;
+                            if (ma.name == mb.name && ma.offset != mb.offset)
+                                same = false;
                         }
                     }
                     const std::string msg = "uniform block '" + a.name +
@@ -149,22 +159,28 @@ void CheckInterfaces(CompileState& st) {
     // Properties against shader globals, per shader over every variant of every pass.
     for (size_t s = 0; s < st.shaders.size(); ++s) {
         const ShaderUnit& unit = st.shaders[s];
-        if (!unit.ast) continue;
+        if (!unit.ast)
+            continue;
         std::map<std::string, const spirv::BlockMember*> members;
         std::map<std::string, const spirv::Resource*> resources;
         bool any_pass = false;
         for (size_t p = 0; p < st.passes.size(); ++p) {
-            if (st.passes[p].shader != s) continue;
+            if (st.passes[p].shader != s)
+                continue;
             any_pass = true;
             for (const auto& [j, fm] : st.finals[p]) {
                 for (const auto& b : fm.reflection.blocks) {
-                    if (b.kind != pack::BlockKind::kUniform || b.set != spirv::kMaterialSet) continue;
-                    for (const auto& m : b.members) members.emplace(m.name, &m);
+                    if (b.kind != pack::BlockKind::kUniform || b.set != spirv::kMaterialSet)
+                        continue;
+                    for (const auto& m : b.members)
+                        members.emplace(m.name, &m);
                 }
-                for (const auto& r : fm.reflection.resources) resources.emplace(r.name, &r);
+                for (const auto& r : fm.reflection.resources)
+                    resources.emplace(r.name, &r);
             }
         }
-        if (!any_pass) continue;
+        if (!any_pass)
+            continue;
         std::set<std::string> declared;
         const std::string& file = unit.file->path();
         for (const shaderlab::Property& prop : unit.ast->properties) {
@@ -178,9 +194,9 @@ void CheckInterfaces(CompileState& st) {
             auto m = members.find(prop.name);
             auto r = resources.find(prop.name);
             if (m == members.end() && r == resources.end()) {
-                st.diags.Warning(DiagCode::kPropertyUnused, file, prop.name_range,
-                                 "property '" + prop.name +
-                                     "' has no shader variable of that name in any pass");
+                st.diags.Warning(
+                    DiagCode::kPropertyUnused, file, prop.name_range,
+                    "property '" + prop.name + "' has no shader variable of that name in any pass");
                 continue;
             }
             std::string want;
@@ -208,18 +224,28 @@ void CheckInterfaces(CompileState& st) {
             }
         }
         // Globals the runtime fills (docs/shader-library.md); not material properties.
-        static const std::set<std::string> kEngineGlobals = {
-            "_LightColor0", "_WorldSpaceLightPos0", "_WorldSpaceCameraPos", "_Time", "_SinTime",
-            "_CosTime", "unity_DeltaTime", "_ProjectionParams", "_ScreenParams", "_ZBufferParams",
-            "_LightMatrix0", "_LightPositionRange", "_LightShadowData", "_SpecColor"};
+        static const std::set<std::string> kEngineGlobals = {"_LightColor0",
+                                                             "_WorldSpaceLightPos0",
+                                                             "_WorldSpaceCameraPos",
+                                                             "_Time",
+                                                             "_SinTime",
+                                                             "_CosTime",
+                                                             "unity_DeltaTime",
+                                                             "_ProjectionParams",
+                                                             "_ScreenParams",
+                                                             "_ZBufferParams",
+                                                             "_LightMatrix0",
+                                                             "_LightPositionRange",
+                                                             "_LightShadowData",
+                                                             "_SpecColor"};
         for (const auto& [name, mem] : members) {
             if (declared.count(name) || kEngineGlobals.count(name) ||
                 name.rfind("unity_", 0) == 0 || name.rfind("UNITY_", 0) == 0) {
                 continue;
             }
-            st.diags.Warning(DiagCode::kGlobalNotAProperty, file, unit.ast->name_range,
-                             "shader global '" + name +
-                                 "' is not in Properties; materials cannot set it");
+            st.diags.Warning(
+                DiagCode::kGlobalNotAProperty, file, unit.ast->name_range,
+                "shader global '" + name + "' is not in Properties; materials cannot set it");
         }
     }
 }
@@ -255,7 +281,8 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
         sr.first_pass = static_cast<uint32_t>(b.passes.size());
         for (size_t p = 0; p < st.passes.size(); ++p) {
             const PassUnit& pu = st.passes[p];
-            if (pu.shader != s) continue;
+            if (pu.shader != s)
+                continue;
             const FlatPass& fp = unit.passes[pu.flat];
             pack::PassRec rec;
             rec.name = b.Str(fp.pass->name);
@@ -263,7 +290,8 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
             rec.subshader = fp.subshader;
             rec.lod = static_cast<uint32_t>(std::max(0, fp.lod));
             rec.first_tag = static_cast<uint32_t>(b.tags.size());
-            for (const PassTag& t : fp.tags) b.tags.push_back({b.Str(t.key), b.Str(t.value)});
+            for (const PassTag& t : fp.tags)
+                b.tags.push_back({b.Str(t.key), b.Str(t.value)});
             rec.tag_count = static_cast<uint32_t>(fp.tags.size());
             rec.first_state = static_cast<uint32_t>(b.states.size());
             for (const StateSetting& ss : fp.state) {
@@ -283,15 +311,18 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
                 kr.kind = uint32_t(set.kind);
                 kr.flags = set.flags;
                 kr.first_keyword = static_cast<uint32_t>(b.keywords.size());
-                for (const std::string& kw : set.keywords) b.keywords.push_back(b.Str(kw));
+                for (const std::string& kw : set.keywords)
+                    b.keywords.push_back(b.Str(kw));
                 kr.keyword_count = static_cast<uint32_t>(set.keywords.size());
                 kr.key_shift = pu.expansion.layout[k].shift;
                 kr.key_bits = pu.expansion.layout[k].bits;
                 b.keyword_sets.push_back(kr);
             }
             rec.keyword_set_count = static_cast<uint32_t>(pu.pragmas.sets.size());
-            if (!pu.pragmas.only_renderers.empty()) rec.flags |= pack::kPassOnlyRenderers;
-            if (!pu.pragmas.exclude_renderers.empty()) rec.flags |= pack::kPassExcludeRenderers;
+            if (!pu.pragmas.only_renderers.empty())
+                rec.flags |= pack::kPassOnlyRenderers;
+            if (!pu.pragmas.exclude_renderers.empty())
+                rec.flags |= pack::kPassExcludeRenderers;
             rec.first_variant = static_cast<uint32_t>(b.variants.size());
             const uint32_t pass_index = static_cast<uint32_t>(b.passes.size());
             for (size_t v = 0; v < pu.expansion.keys.size(); ++v) {
@@ -314,7 +345,7 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
     meta.producer = b.Str(ProducerVersion());
     meta.opt_level = st.options.opt_level == OptimizationLevel::kNone   ? 0
                      : st.options.opt_level == OptimizationLevel::kSize ? 2
-                                                                         : 1;
+                                                                        : 1;
     meta.flags = st.options.debug_info ? 1u : 0u;
     stats.modules = b.module_count();
     return b.Finish(meta);

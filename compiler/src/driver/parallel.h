@@ -14,7 +14,8 @@
 namespace kiln::driver {
 
 inline unsigned ResolveJobs(unsigned jobs) {
-    if (jobs > 0) return jobs;
+    if (jobs > 0)
+        return jobs;
     return std::max(1u, std::thread::hardware_concurrency());
 }
 
@@ -32,7 +33,8 @@ inline void ParallelFor(size_t n,
     };
     const unsigned threads = static_cast<unsigned>(std::min<size_t>(ResolveJobs(jobs), n));
     std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    for (unsigned t = 1; t < threads; ++t)
+        pool.emplace_back(worker);
     if (!done) {
         worker();
     } else {
@@ -44,7 +46,8 @@ inline void ParallelFor(size_t n,
         last.join();
         done(n);
     }
-    for (std::thread& t : pool) t.join();
+    for (std::thread& t : pool)
+        t.join();
 }
 
 }  // namespace kiln::driver

@@ -10,7 +10,8 @@ using pack::StateField;
 
 void Merge(RenderState& into, const RenderState& inner) {
     auto over = [](auto& a, const auto& b) {
-        if (b) a = b;
+        if (b)
+            a = b;
     };
     over(into.cull, inner.cull);
     over(into.ztest, inner.ztest);
@@ -20,23 +21,29 @@ void Merge(RenderState& into, const RenderState& inner) {
     over(into.conservative, inner.conservative);
     over(into.offset, inner.offset);
     over(into.stencil, inner.stencil);
-    if (!inner.blend.empty()) into.blend = inner.blend;
-    if (!inner.blend_op.empty()) into.blend_op = inner.blend_op;
-    if (!inner.color_mask.empty()) into.color_mask = inner.color_mask;
+    if (!inner.blend.empty())
+        into.blend = inner.blend;
+    if (!inner.blend_op.empty())
+        into.blend_op = inner.blend_op;
+    if (!inner.color_mask.empty())
+        into.color_mask = inner.color_mask;
 }
 
 void AddTags(std::vector<PassTag>& out, const std::vector<Tag>& tags) {
     for (const Tag& t : tags) {
         bool present = false;
-        for (const PassTag& o : out) present = present || o.key == t.key;
-        if (!present) out.push_back({t.key, t.value});
+        for (const PassTag& o : out)
+            present = present || o.key == t.key;
+        if (!present)
+            out.push_back({t.key, t.value});
     }
 }
 
 std::vector<StateSetting> Lower(const RenderState& s) {
     std::vector<StateSetting> out;
     auto simple = [&](const std::optional<SimpleState>& v, StateField f) {
-        if (v) out.push_back({f, -1, v->value});
+        if (v)
+            out.push_back({f, -1, v->value});
     };
     simple(s.cull, StateField::kCull);
     simple(s.ztest, StateField::kZTest);
@@ -57,12 +64,15 @@ std::vector<StateSetting> Lower(const RenderState& s) {
         }
         out.push_back({StateField::kBlendSrc, b.target, b.src});
         out.push_back({StateField::kBlendDst, b.target, b.dst});
-        if (b.src_alpha) out.push_back({StateField::kBlendSrcAlpha, b.target, *b.src_alpha});
-        if (b.dst_alpha) out.push_back({StateField::kBlendDstAlpha, b.target, *b.dst_alpha});
+        if (b.src_alpha)
+            out.push_back({StateField::kBlendSrcAlpha, b.target, *b.src_alpha});
+        if (b.dst_alpha)
+            out.push_back({StateField::kBlendDstAlpha, b.target, *b.dst_alpha});
     }
     for (const BlendOpState& b : s.blend_op) {
         out.push_back({StateField::kBlendOp, b.target, b.op});
-        if (b.op_alpha) out.push_back({StateField::kBlendOpAlpha, b.target, *b.op_alpha});
+        if (b.op_alpha)
+            out.push_back({StateField::kBlendOpAlpha, b.target, *b.op_alpha});
     }
     for (const ColorMaskState& c : s.color_mask) {
         out.push_back({StateField::kColorMask, c.target, c.mask});
@@ -87,8 +97,10 @@ std::vector<StateSetting> Lower(const RenderState& s) {
         };
         for (const StencilEntry& e : s.stencil->entries) {
             auto it = kStencil.find(e.key);
-            if (it == kStencil.end()) continue;
-            for (StateField f : it->second) out.push_back({f, -1, e.value});
+            if (it == kStencil.end())
+                continue;
+            for (StateField f : it->second)
+                out.push_back({f, -1, e.value});
         }
     }
     return out;
@@ -107,7 +119,8 @@ struct Walker {
     static void AddIncludes(std::vector<const ProgramBlock*>& to,
                             const std::vector<ProgramBlock>& blocks) {
         for (const ProgramBlock& b : blocks) {
-            if (IsIncludeBlock(b.kind)) to.push_back(&b);
+            if (IsIncludeBlock(b.kind))
+                to.push_back(&b);
         }
     }
 
@@ -141,7 +154,8 @@ struct Walker {
             fp.blocks = includes;
             AddIncludes(fp.blocks, p.programs);
             for (const ProgramBlock& b : p.programs) {
-                if (!IsIncludeBlock(b.kind) && !fp.program) fp.program = &b;
+                if (!IsIncludeBlock(b.kind) && !fp.program)
+                    fp.program = &b;
             }
             if (!fp.program) {
                 diags.Error(DiagCode::kMissingEntryPoint, file, p.range,
@@ -152,7 +166,8 @@ struct Walker {
             fp.blocks.push_back(fp.program);
             AddTags(fp.tags, p.tags);
             AddTags(fp.tags, ss.tags);
-            for (auto it = outer_tags.rbegin(); it != outer_tags.rend(); ++it) AddTags(fp.tags, **it);
+            for (auto it = outer_tags.rbegin(); it != outer_tags.rend(); ++it)
+                AddTags(fp.tags, **it);
             RenderState ps = state;
             Merge(ps, p.state);
             fp.state = Lower(ps);
@@ -199,7 +214,8 @@ std::vector<FlatPass> FlattenPasses(const Shader& shader,
 
 std::string TagValue(const FlatPass& pass, const std::string& key) {
     for (const PassTag& t : pass.tags) {
-        if (t.key == key) return t.value;
+        if (t.key == key)
+            return t.value;
     }
     return "";
 }

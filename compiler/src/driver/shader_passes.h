@@ -29,7 +29,7 @@ struct FlatPass {
     const shaderlab::Pass* pass = nullptr;
     uint32_t subshader = 0;
     int lod = 0;
-    std::string label;  // `"FORWARD"` or `#2 of SubShader 1`
+    std::string label;                                   // `"FORWARD"` or `#2 of SubShader 1`
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program
     const shaderlab::ProgramBlock* program = nullptr;
     std::vector<PassTag> tags;

@@ -37,21 +37,25 @@ bool SplitLocation(const std::string& s, std::string& file, uint32_t& line, std:
 }
 
 std::string Trim(std::string s) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())))
+        s.pop_back();
     size_t b = 0;
-    while (b < s.size() && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+    while (b < s.size() && std::isspace(static_cast<unsigned char>(s[b])))
+        ++b;
     return s.substr(b);
 }
 
 uint32_t FindToken(std::string_view line, const std::string& token) {
-    if (token.empty()) return 0;
+    if (token.empty())
+        return 0;
     const bool word = IsIdentifier(token);
     for (size_t at = line.find(token); at != std::string_view::npos;
          at = line.find(token, at + 1)) {
         const bool left_ok = !word || at == 0 || !IsIdentChar(line[at - 1]);
         const size_t end = at + token.size();
         const bool right_ok = !word || end >= line.size() || !IsIdentChar(line[end]);
-        if (left_ok && right_ok) return static_cast<uint32_t>(at + 1);
+        if (left_ok && right_ok)
+            return static_cast<uint32_t>(at + 1);
     }
     return 0;
 }
@@ -64,13 +68,14 @@ std::vector<GlslangMessage> ParseInfoLog(const std::string& log) {
     std::string raw;
     while (std::getline(in, raw)) {
         const std::string line = Trim(raw);
-        if (line.empty()) continue;
+        if (line.empty())
+            continue;
         // "file(12): error at column 7, HLSL parsing failed."
         const size_t at_col = line.find("): error at column ");
         if (at_col != std::string::npos) {
             const size_t open = line.rfind('(', at_col);
-            const uint32_t col = static_cast<uint32_t>(
-                std::strtoul(line.c_str() + at_col + 19, nullptr, 10));
+            const uint32_t col =
+                static_cast<uint32_t>(std::strtoul(line.c_str() + at_col + 19, nullptr, 10));
             if (open != std::string::npos) {
                 const std::string file = line.substr(0, open);
                 const uint32_t ln =
@@ -126,7 +131,8 @@ std::vector<GlslangMessage> ParseInfoLog(const std::string& log) {
         if (m.severity == Severity::kError && seen_error && cascade_token && !m.file.empty()) {
             continue;
         }
-        if (m.severity == Severity::kError) seen_error = true;
+        if (m.severity == Severity::kError)
+            seen_error = true;
         kept.push_back(m);
     }
     return kept;
@@ -138,16 +144,19 @@ std::string RewordMessage(const std::string& token, const std::string& text) {
     for (size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
         if (std::isspace(static_cast<unsigned char>(c))) {
-            if (!t.empty() && t.back() != ' ') t += ' ';
+            if (!t.empty() && t.back() != ' ')
+                t += ' ';
             continue;
         }
         t += c;
         if (c == '\'' && (i == 0 || text[i - 1] == ' ')) {
-            while (i + 1 < text.size() && text[i + 1] == ' ') ++i;
+            while (i + 1 < text.size() && text[i + 1] == ' ')
+                ++i;
         }
     }
     t = Trim(t);
-    while (!t.empty() && t.back() == '.') t.pop_back();
+    while (!t.empty() && t.back() == '.')
+        t.pop_back();
     if (t == "Expected" || t.empty()) {
         return token.empty() ? "syntax error" : "expected '" + token + "'";
     }
@@ -168,10 +177,12 @@ Diagnostic ToDiagnostic(const GlslangMessage& m, const SourceLookup& lookup) {
     d.code = m.severity == Severity::kWarning ? DiagCode::kHlslWarning : DiagCode::kHlslError;
     d.file = m.file;
     d.message = RewordMessage(m.token, m.text);
-    if (m.file.empty()) return d;
+    if (m.file.empty())
+        return d;
     std::shared_ptr<const SourceFile> file = lookup ? lookup(m.file) : nullptr;
     const uint32_t line = std::max<uint32_t>(m.line, 1);
-    if (file && line > file->line_count()) file = nullptr;
+    if (file && line > file->line_count())
+        file = nullptr;
     uint32_t col = 0, width = 1;
     if (file) {
         const std::string_view text = file->Line(line);
@@ -185,7 +196,8 @@ Diagnostic ToDiagnostic(const GlslangMessage& m, const SourceLookup& lookup) {
         } else {
             const size_t first = text.find_first_not_of(" \t");
             col = first == std::string_view::npos ? 1 : static_cast<uint32_t>(first + 1);
-            width = static_cast<uint32_t>(text.size() - (first == std::string_view::npos ? 0 : first));
+            width =
+                static_cast<uint32_t>(text.size() - (first == std::string_view::npos ? 0 : first));
         }
         const uint32_t line_start = static_cast<uint32_t>(text.data() - file->text().data());
         d.range.begin = file->LocAt(line_start + col - 1);

@@ -23,12 +23,17 @@ EShMessages Messages() {
                                     EShMsgHlslDX9Compatible | EShMsgEnhanced);
 }
 
-void Configure(glslang::TShader& shader,
-               pack::Stage stage,
-               const char* const* text,
-               const int* length,
-               const char* const* name) {
-    shader.setStringsWithLengthsAndNames(text, length, name, 1);
+// glslang keeps pointers to these until the shader is parsed: the Input lives beside the shader.
+struct Input {
+    Input(const std::string& source, const std::string& name)
+        : text(source.c_str()), length(static_cast<int>(source.size())), file(name.c_str()) {}
+    const char* text;
+    int length;
+    const char* file;
+};
+
+void Configure(glslang::TShader& shader, pack::Stage stage, const Input& in) {
+    shader.setStringsWithLengthsAndNames(&in.text, &in.length, &in.file, 1);
     shader.setEnvInput(glslang::EShSourceHlsl, Language(stage), glslang::EShClientVulkan,
                        kDefaultVersion);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
@@ -56,10 +61,8 @@ StageOutput Preprocess(pack::Stage stage,
     InitializeGlslang();
     StageOutput out;
     glslang::TShader shader(Language(stage));
-    const char* text = source.c_str();
-    const int length = static_cast<int>(source.size());
-    const char* file = name.c_str();
-    Configure(shader, stage, &text, &length, &file);
+    const Input input(source, name);
+    Configure(shader, stage, input);
     out.ok = shader.preprocess(GetDefaultResources(), kDefaultVersion, ENoProfile, false, false,
                                Messages(), &out.text, includer);
     out.info_log = shader.getInfoLog();
@@ -75,19 +78,18 @@ StageOutput Compile(pack::Stage stage,
     InitializeGlslang();
     StageOutput out;
     glslang::TShader shader(Language(stage));
-    const char* text = source.c_str();
-    const int length = static_cast<int>(source.size());
-    const char* file = name.c_str();
-    Configure(shader, stage, &text, &length, &file);
+    const Input input(source, name);
+    Configure(shader, stage, input);
     shader.setEntryPoint(entry_point.c_str());
     shader.setSourceEntryPoint(entry_point.c_str());
     EShMessages messages = Messages();
-    if (debug_info) messages = static_cast<EShMessages>(messages | EShMsgDebugInfo);
-    if (!shader.parse(GetDefaultResources(), kDefaultVersion, false, messages, includer)) {
-        out.info_log = shader.getInfoLog();
-        return out;
-    }
+    if (debug_info)
+        messages = static_cast<EShMessages>(messages | EShMsgDebugInfo);
+    const bool parsed =
+        shader.parse(GetDefaultResources(), kDefaultVersion, false, messages, includer);
     out.info_log = shader.getInfoLog();
+    if (!parsed)
+        return out;
     glslang::TProgram program;
     program.addShader(&shader);
     if (!program.link(messages)) {
@@ -101,7 +103,8 @@ StageOutput Compile(pack::Stage stage,
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(*program.getIntermediate(Language(stage)), out.spirv, &logger, &options);
     const std::string extra = logger.getAllMessages();
-    if (!extra.empty()) out.info_log += extra;
+    if (!extra.empty())
+        out.info_log += extra;
     out.ok = !out.spirv.empty();
     return out;
 }

@@ -27,9 +27,9 @@ std::string GlslangVersion();
 
 struct StageOutput {
     bool ok = false;
-    std::string text;              // Preprocess: the preprocessed source
-    std::vector<uint32_t> spirv;   // Compile: unoptimized SPIR-V
-    std::string info_log;          // glslang's messages, converted by glslang_messages.h
+    std::string text;             // Preprocess: the preprocessed source
+    std::vector<uint32_t> spirv;  // Compile: unoptimized SPIR-V
+    std::string info_log;         // glslang's messages, converted by glslang_messages.h
 };
 
 // `name` is the main file's name (an include's "including file" for the first level).

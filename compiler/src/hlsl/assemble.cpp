@@ -4,7 +4,8 @@ namespace kiln::hlsl {
 
 bool IsLineSafeName(const std::string& path) {
     for (char c : path) {
-        if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) return false;
+        if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20)
+            return false;
     }
     return !path.empty();
 }
@@ -26,7 +27,8 @@ std::string Prelude(const AssembleInput& in) {
     for (const auto& [name, value] : in.defines) {
         s += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
     }
-    for (const std::string& kw : in.keywords) s += "#define " + kw + " 1\n";
+    for (const std::string& kw : in.keywords)
+        s += "#define " + kw + " 1\n";
     return s;
 }
 

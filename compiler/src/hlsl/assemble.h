@@ -19,11 +19,11 @@ inline constexpr const char* kPreludeName = "<kiln prelude>";
 inline constexpr int kUnityVersion = 201940;  // the Unity API level the templates follow
 
 struct AssembleInput {
-    std::string file_name;  // as given in #line (see LineName)
+    std::string file_name;                               // as given in #line (see LineName)
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program
     pack::Stage stage = pack::Stage::kVertex;
     int shader_target = 25;
-    std::vector<std::string> keywords;  // enabled in this variant and stage
+    std::vector<std::string> keywords;                         // enabled in this variant and stage
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME=VALUE
 };
 

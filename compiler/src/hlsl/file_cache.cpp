@@ -8,13 +8,15 @@ std::shared_ptr<const SourceFile> FileCache::Get(const std::string& path) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         auto it = files_.find(path);
-        if (it != files_.end()) return it->second;
+        if (it != files_.end())
+            return it->second;
     }
     std::shared_ptr<const SourceFile> file;
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) {
         auto read = ReadSourceFile(path);
-        if (read.ok()) file = std::make_shared<const SourceFile>(std::move(read).value());
+        if (read.ok())
+            file = std::make_shared<const SourceFile>(std::move(read).value());
     }
     std::lock_guard<std::mutex> lock(mu_);
     return files_.emplace(path, std::move(file)).first->second;
@@ -29,7 +31,8 @@ std::vector<std::shared_ptr<const SourceFile>> FileCache::Files() const {
     std::lock_guard<std::mutex> lock(mu_);
     std::vector<std::shared_ptr<const SourceFile>> out;
     for (const auto& [path, file] : files_) {
-        if (file) out.push_back(file);
+        if (file)
+            out.push_back(file);
     }
     return out;
 }

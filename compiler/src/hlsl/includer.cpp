@@ -16,19 +16,23 @@ std::string Join(const fs::path& dir, const std::string& name) {
 std::string Includer::Resolve(const std::string& header,
                               const std::string& includer,
                               bool local) const {
-    if (header.empty()) return "";
+    if (header.empty())
+        return "";
     std::vector<std::string> candidates;
     if (fs::path(header).is_absolute()) {
         candidates.push_back(fs::path(header).lexically_normal().string());
     } else {
-        if (local) candidates.push_back(Join(fs::path(includer).parent_path(), header));
-        for (const std::string& dir : paths_.dirs) candidates.push_back(Join(dir, header));
+        if (local)
+            candidates.push_back(Join(fs::path(includer).parent_path(), header));
+        for (const std::string& dir : paths_.dirs)
+            candidates.push_back(Join(dir, header));
         if (!paths_.templates_dir.empty()) {
             candidates.push_back(Join(paths_.templates_dir, header));
         }
     }
     for (const std::string& c : candidates) {
-        if (files_.Get(c)) return c;
+        if (files_.Get(c))
+            return c;
     }
     return "";
 }
@@ -40,9 +44,11 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
         error_text_ = "includes nested more than 64 deep (recursive include without a guard?)";
         return new IncludeResult("", error_text_.data(), error_text_.size(), nullptr);
     }
-    if (path.empty()) return nullptr;
+    if (path.empty())
+        return nullptr;  // not found: glslang reports it at the #include
     auto file = files_.Get(path);
-    if (!file) return nullptr;
+    if (!file)
+        return nullptr;
     held_.push_back(file);
     return new IncludeResult(path, file->text().data(), file->text().size(), nullptr);
 }
@@ -50,15 +56,13 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
 glslang::TShader::Includer::IncludeResult* Includer::includeLocal(const char* header,
                                                                   const char* includer,
                                                                   size_t depth) {
-    const std::string path = Resolve(header, includer ? includer : "", true);
-    return path.empty() && depth <= kMaxDepth ? nullptr : Serve(path, depth);
+    return Serve(Resolve(header, includer ? includer : "", true), depth);
 }
 
 glslang::TShader::Includer::IncludeResult* Includer::includeSystem(const char* header,
                                                                    const char* includer,
                                                                    size_t depth) {
-    const std::string path = Resolve(header, includer ? includer : "", false);
-    return path.empty() && depth <= kMaxDepth ? nullptr : Serve(path, depth);
+    return Serve(Resolve(header, includer ? includer : "", false), depth);
 }
 
 void Includer::releaseInclude(IncludeResult* result) {

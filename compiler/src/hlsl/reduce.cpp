@@ -8,14 +8,18 @@ namespace kiln::hlsl {
 namespace {
 
 struct Item {
-    size_t begin = 0, end = 0;        // byte range in the text
+    size_t begin = 0, end = 0;  // byte range in the text
     bool is_function = false;
-    std::string name;                 // function name
-    std::set<std::string> idents;     // identifiers used (for functions: excluding its name)
+    std::string name;              // function name
+    std::set<std::string> idents;  // identifiers used (for functions: excluding its name)
 };
 
-bool IdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool IdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool IdentStart(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+}
+bool IdentChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
 
 // Marks the bytes of directive lines (first non-blank character '#').
 std::vector<bool> DirectiveMask(const std::string& s) {
@@ -23,11 +27,14 @@ std::vector<bool> DirectiveMask(const std::string& s) {
     size_t i = 0;
     while (i < s.size()) {
         size_t j = i;
-        while (j < s.size() && (s[j] == ' ' || s[j] == '\t')) ++j;
+        while (j < s.size() && (s[j] == ' ' || s[j] == '\t'))
+            ++j;
         size_t eol = s.find('\n', i);
-        if (eol == std::string::npos) eol = s.size();
+        if (eol == std::string::npos)
+            eol = s.size();
         if (j < s.size() && s[j] == '#') {
-            for (size_t k = i; k < eol; ++k) mask[k] = true;
+            for (size_t k = i; k < eol; ++k)
+                mask[k] = true;
         }
         i = eol + 1;
     }
@@ -38,15 +45,17 @@ std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& dire
     std::vector<Item> items;
     Item cur;
     bool open = false;
-    int depth = 0;              // {} () [] nesting
-    bool saw_paren = false;     // a '(' at depth 0 before the first '{'
+    int depth = 0;           // {} () [] nesting
+    bool saw_paren = false;  // a '(' at depth 0 before the first '{'
     bool saw_brace = false;
-    bool type_decl = false;     // struct/cbuffer/...: not a function
+    bool type_decl = false;  // struct/cbuffer/...: not a function
     std::string last_ident, first_word;
     for (size_t i = 0; i < s.size(); ++i) {
-        if (directive[i]) continue;
+        if (directive[i])
+            continue;
         const char c = s[i];
-        if (std::isspace(static_cast<unsigned char>(c))) continue;
+        if (std::isspace(static_cast<unsigned char>(c)))
+            continue;
         if (!open) {
             cur = Item{};
             cur.begin = i;
@@ -57,7 +66,8 @@ std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& dire
         }
         if (IdentStart(c)) {
             size_t j = i;
-            while (j < s.size() && IdentChar(s[j])) ++j;
+            while (j < s.size() && IdentChar(s[j]))
+                ++j;
             std::string word = s.substr(i, j - i);
             if (first_word.empty()) {
                 first_word = word;
@@ -71,11 +81,13 @@ std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& dire
             continue;
         }
         if (std::isdigit(static_cast<unsigned char>(c))) {
-            while (i + 1 < s.size() && (IdentChar(s[i + 1]) || s[i + 1] == '.')) ++i;
+            while (i + 1 < s.size() && (IdentChar(s[i + 1]) || s[i + 1] == '.'))
+                ++i;
             continue;
         }
         if (c == '"') {
-            while (i + 1 < s.size() && s[i + 1] != '"' && s[i + 1] != '\n') ++i;
+            while (i + 1 < s.size() && s[i + 1] != '"' && s[i + 1] != '\n')
+                ++i;
             ++i;
             continue;
         }
@@ -83,18 +95,22 @@ std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& dire
             saw_paren = true;
             cur.name = last_ident;
         }
-        if (c == '{' && depth == 0) saw_brace = true;
-        if (c == '{' || c == '(' || c == '[') ++depth;
-        if ((c == '}' || c == ')' || c == ']') && depth > 0) --depth;
+        if (c == '{' && depth == 0)
+            saw_brace = true;
+        if (c == '{' || c == '(' || c == '[')
+            ++depth;
+        if ((c == '}' || c == ')' || c == ']') && depth > 0)
+            --depth;
         const bool ends_block = c == '}' && depth == 0;
         const bool is_function_end = ends_block && saw_paren && !type_decl;
-        const bool cbuffer_end = ends_block && type_decl &&
-                                 (first_word == "cbuffer" || first_word == "tbuffer" ||
-                                  first_word == "namespace");
+        const bool cbuffer_end =
+            ends_block && type_decl &&
+            (first_word == "cbuffer" || first_word == "tbuffer" || first_word == "namespace");
         if ((c == ';' && depth == 0) || is_function_end || cbuffer_end) {
             cur.end = i + 1;
             cur.is_function = is_function_end;
-            if (cur.is_function) cur.idents.erase(cur.name);
+            if (cur.is_function)
+                cur.idents.erase(cur.name);
             items.push_back(std::move(cur));
             open = false;
         }
@@ -114,14 +130,17 @@ std::string ReduceToEntryPoint(const std::string& text, const std::string& entry
 
     std::set<std::string> reachable = {entry_point};
     for (const Item& it : items) {
-        if (!it.is_function) reachable.insert(it.idents.begin(), it.idents.end());
+        if (!it.is_function)
+            reachable.insert(it.idents.begin(), it.idents.end());
     }
     std::vector<bool> keep(items.size(), false);
-    for (size_t i = 0; i < items.size(); ++i) keep[i] = !items[i].is_function;
+    for (size_t i = 0; i < items.size(); ++i)
+        keep[i] = !items[i].is_function;
     for (bool changed = true; changed;) {
         changed = false;
         for (size_t i = 0; i < items.size(); ++i) {
-            if (keep[i] || !reachable.count(items[i].name)) continue;
+            if (keep[i] || !reachable.count(items[i].name))
+                continue;
             keep[i] = true;
             changed = true;
             reachable.insert(items[i].idents.begin(), items[i].idents.end());
@@ -130,8 +149,10 @@ std::string ReduceToEntryPoint(const std::string& text, const std::string& entry
 
     std::vector<bool> drop(text.size(), false);
     for (size_t i = 0; i < items.size(); ++i) {
-        if (keep[i]) continue;
-        for (size_t k = items[i].begin; k < items[i].end; ++k) drop[k] = true;
+        if (keep[i])
+            continue;
+        for (size_t k = items[i].begin; k < items[i].end; ++k)
+            drop[k] = true;
     }
     std::string out;
     out.reserve(text.size());
@@ -140,10 +161,12 @@ std::string ReduceToEntryPoint(const std::string& text, const std::string& entry
         const char c = text[i];
         if (i == line_begin && directive[i]) {
             size_t eol = text.find('\n', i);
-            if (eol == std::string::npos) eol = text.size();
+            if (eol == std::string::npos)
+                eol = text.size();
             std::string_view line(text.data() + i, eol - i);
             const size_t hash = line.find('#');
-            if (line.substr(hash + 1).find("pragma") != 0) out.append(line);
+            if (line.substr(hash + 1).find("pragma") != 0)
+                out.append(line);
             i = eol - 1;
             continue;
         }
@@ -152,7 +175,8 @@ std::string ReduceToEntryPoint(const std::string& text, const std::string& entry
             line_begin = i + 1;
             continue;
         }
-        if (!drop[i]) out += c;
+        if (!drop[i])
+            out += c;
     }
     return out;
 }

@@ -1,5 +1,7 @@
 #include "pack/pack_builder.h"
 
+#include <cstring>
+
 #include <xxhash.h>
 
 #include "kiln/pack/records.h"
@@ -30,33 +32,8 @@ uint32_t PackBuilder::AddModule(Stage stage,
             std::memcmp(spirv_.data() + m.spirv_offset, words.data(), words.size_bytes()) != 0) {
             continue;
         }
-        spirv::Reflection existing;
-        for (uint32_t i = 0; i < m.interface_count; ++i) {
-            const InterfaceVarRec& r = interface_[m.first_interface + i];
-            existing.interface.push_back(
-                {std::string(strings_.substr(r.name.offset, r.name.length)),
-                 std::string(strings_.substr(r.semantic.offset, r.semantic.length)), r.location,
-                 r.direction, BaseType(r.base_type), r.vecsize});
-        }
-        for (uint32_t i = 0; i < m.block_count; ++i) {
-            const BlockRec& b = blocks_[m.first_block + i];
-            spirv::Block block{std::string(strings_.substr(b.name.offset, b.name.length)),
-                               BlockKind(b.kind), b.set, b.binding, b.size, {}};
-            for (uint32_t j = 0; j < b.member_count; ++j) {
-                const MemberRec& mr = members_[b.first_member + j];
-                block.members.push_back(
-                    {std::string(strings_.substr(mr.name.offset, mr.name.length)), mr.offset,
-                     mr.size, BaseType(mr.base_type), mr.vecsize, mr.columns, mr.array_size});
-            }
-            existing.blocks.push_back(std::move(block));
-        }
-        for (uint32_t i = 0; i < m.resource_count; ++i) {
-            const ResourceRec& r = resources_[m.first_resource + i];
-            existing.resources.push_back(
-                {std::string(strings_.substr(r.name.offset, r.name.length)), ResourceKind(r.kind),
-                 r.set, r.binding, ImageDim(r.dim), r.arrayed != 0, r.array_size});
-        }
-        if (existing == reflection) return it->second;
+        if (reflections_[it->second] == reflection)
+            return it->second;
     }
 
     ModuleRec m;
@@ -91,6 +68,7 @@ uint32_t PackBuilder::AddModule(Stage stage,
     m.resource_count = static_cast<uint32_t>(reflection.resources.size());
     const uint32_t index = static_cast<uint32_t>(modules_.size());
     modules_.push_back(m);
+    reflections_.push_back(reflection);
     module_by_hash_.emplace(hash, index);
     return index;
 }
@@ -106,7 +84,8 @@ struct SectionData {
 template <class Rec>
 SectionData Records(SectionTag tag, const std::vector<Rec>& recs) {
     ByteWriter w;
-    for (const Rec& r : recs) w.Record(r);
+    for (const Rec& r : recs)
+        w.Record(r);
     return {tag, static_cast<uint32_t>(recs.size()), std::move(w.bytes())};
 }
 
@@ -148,14 +127,16 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
 
     ByteWriter w;
     w.Record(header);
-    for (const SectionEntry& e : table) w.Record(e);
+    for (const SectionEntry& e : table)
+        w.Record(e);
     for (const SectionData& s : sections) {
         w.PadTo(kSectionAlignment);
         w.PutBytes(s.bytes);
     }
     std::vector<uint8_t> out = std::move(w.bytes());
     const uint64_t sum = XXH64(out.data(), out.size(), 0);  // checksum field is still zero
-    for (int i = 0; i < 8; ++i) out[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
+    for (int i = 0; i < 8; ++i)
+        out[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
     return out;
 }
 

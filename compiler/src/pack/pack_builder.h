@@ -46,6 +46,7 @@ class PackBuilder {
     std::unordered_map<std::string, uint32_t> string_offsets_;
     std::vector<uint8_t> spirv_;
     std::vector<pack::ModuleRec> modules_;
+    std::vector<spirv::Reflection> reflections_;  // per module, for the dedup comparison
     std::multimap<uint64_t, uint32_t> module_by_hash_;
     std::vector<pack::InterfaceVarRec> interface_;
     std::vector<pack::BlockRec> blocks_;

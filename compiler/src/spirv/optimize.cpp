@@ -10,9 +10,11 @@ constexpr spv_target_env kEnv = SPV_ENV_VULKAN_1_1;
 
 spvtools::MessageConsumer Collect(std::string& out) {
     return [&out](spv_message_level_t, const char*, const spv_position_t& pos, const char* msg) {
-        if (!out.empty()) out += '\n';
+        if (!out.empty())
+            out += '\n';
         out += msg;
-        if (pos.index > 0) out += " (word " + std::to_string(pos.index) + ")";
+        if (pos.index > 0)
+            out += " (word " + std::to_string(pos.index) + ")";
     };
 }
 
@@ -26,25 +28,32 @@ bool Optimize(std::vector<uint32_t>& words, OptLevel level, std::string& message
     spvtools::Optimizer opt(kEnv);
     opt.SetMessageConsumer(Collect(messages));
     opt.RegisterLegalizationPasses();
-    if (level == OptLevel::kPerformance) opt.RegisterPerformancePasses();
-    if (level == OptLevel::kSize) opt.RegisterSizePasses();
+    if (level == OptLevel::kPerformance)
+        opt.RegisterPerformancePasses();
+    if (level == OptLevel::kSize)
+        opt.RegisterSizePasses();
     spvtools::OptimizerOptions options;
     options.set_run_validator(false);  // validated once at the end, after every change
     std::vector<uint32_t> out;
-    if (!opt.Run(words.data(), words.size(), &out, options)) return false;
+    if (!opt.Run(words.data(), words.size(), &out, options))
+        return false;
     words = std::move(out);
     return true;
 }
 
-bool StripReflectionInfo(std::vector<uint32_t>& words, bool keep_debug_info, std::string& messages) {
+bool StripReflectionInfo(std::vector<uint32_t>& words,
+                         bool keep_debug_info,
+                         std::string& messages) {
     spvtools::Optimizer opt(kEnv);
     opt.SetMessageConsumer(Collect(messages));
     opt.RegisterPass(spvtools::CreateStripReflectInfoPass());
-    if (!keep_debug_info) opt.RegisterPass(spvtools::CreateStripDebugInfoPass());
+    if (!keep_debug_info)
+        opt.RegisterPass(spvtools::CreateStripDebugInfoPass());
     spvtools::OptimizerOptions options;
     options.set_run_validator(false);
     std::vector<uint32_t> out;
-    if (!opt.Run(words.data(), words.size(), &out, options)) return false;
+    if (!opt.Run(words.data(), words.size(), &out, options))
+        return false;
     words = std::move(out);
     return true;
 }

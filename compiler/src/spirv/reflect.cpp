@@ -14,30 +14,45 @@ using spirv_cross::SPIRType;
 
 pack::BaseType BaseTypeOf(const SPIRType& t) {
     switch (t.basetype) {
-        case SPIRType::Boolean: return pack::BaseType::kBool;
-        case SPIRType::Int: return pack::BaseType::kInt;
-        case SPIRType::UInt: return pack::BaseType::kUInt;
-        case SPIRType::Float: return pack::BaseType::kFloat;
-        case SPIRType::Half: return pack::BaseType::kHalf;
-        case SPIRType::Double: return pack::BaseType::kDouble;
-        case SPIRType::Struct: return pack::BaseType::kStruct;
-        default: return pack::BaseType::kUnknown;
+        case SPIRType::Boolean:
+            return pack::BaseType::kBool;
+        case SPIRType::Int:
+            return pack::BaseType::kInt;
+        case SPIRType::UInt:
+            return pack::BaseType::kUInt;
+        case SPIRType::Float:
+            return pack::BaseType::kFloat;
+        case SPIRType::Half:
+            return pack::BaseType::kHalf;
+        case SPIRType::Double:
+            return pack::BaseType::kDouble;
+        case SPIRType::Struct:
+            return pack::BaseType::kStruct;
+        default:
+            return pack::BaseType::kUnknown;
     }
 }
 
 pack::ImageDim DimOf(const SPIRType& t) {
     switch (t.image.dim) {
-        case spv::Dim1D: return pack::ImageDim::k1D;
-        case spv::Dim2D: return pack::ImageDim::k2D;
-        case spv::Dim3D: return pack::ImageDim::k3D;
-        case spv::DimCube: return pack::ImageDim::kCube;
-        case spv::DimBuffer: return pack::ImageDim::kBuffer;
-        default: return pack::ImageDim::kNone;
+        case spv::Dim1D:
+            return pack::ImageDim::k1D;
+        case spv::Dim2D:
+            return pack::ImageDim::k2D;
+        case spv::Dim3D:
+            return pack::ImageDim::k3D;
+        case spv::DimCube:
+            return pack::ImageDim::kCube;
+        case spv::DimBuffer:
+            return pack::ImageDim::kBuffer;
+        default:
+            return pack::ImageDim::kNone;
     }
 }
 
 std::string Upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    for (char& c : s)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return s;
 }
 
@@ -47,14 +62,17 @@ struct State {
 
     std::string NameOf(const spirv_cross::Resource& r) {
         std::string name = c.get_name(r.id);
-        if (name.empty()) name = c.get_name(r.base_type_id);
-        if (name.empty()) name = r.name;
+        if (name.empty())
+            name = c.get_name(r.base_type_id);
+        if (name.empty())
+            name = r.name;
         return name;
     }
 
     void Interface(const spirv_cross::SmallVector<spirv_cross::Resource>& list, uint32_t dir) {
         for (const auto& r : list) {
-            if (c.has_decoration(r.id, spv::DecorationBuiltIn)) continue;
+            if (c.has_decoration(r.id, spv::DecorationBuiltIn))
+                continue;
             const SPIRType& t = c.get_type(r.type_id);
             InterfaceVar v;
             v.name = c.get_name(r.id);
@@ -137,10 +155,12 @@ bool Reflect(const std::vector<uint32_t>& words, Reflection& out, std::string& e
         return false;
     }
     std::stable_sort(out.interface.begin(), out.interface.end(), [](const auto& a, const auto& b) {
-        return std::tie(a.direction, a.location, a.name) < std::tie(b.direction, b.location, b.name);
+        return std::tie(a.direction, a.location, a.name) <
+               std::tie(b.direction, b.location, b.name);
     });
     std::stable_sort(out.blocks.begin(), out.blocks.end(), [](const auto& a, const auto& b) {
-        return std::tie(a.kind, a.set, a.binding, a.name) < std::tie(b.kind, b.set, b.binding, b.name);
+        return std::tie(a.kind, a.set, a.binding, a.name) <
+               std::tie(b.kind, b.set, b.binding, b.name);
     });
     std::stable_sort(out.resources.begin(), out.resources.end(), [](const auto& a, const auto& b) {
         return std::tie(a.set, a.binding, a.name) < std::tie(b.set, b.binding, b.name);

@@ -9,7 +9,8 @@ std::optional<std::vector<SetLayout>> LayoutSets(const std::vector<KeywordSet>& 
     uint32_t shift = 0;
     for (const KeywordSet& s : sets) {
         const uint32_t bits = pack::BitsForCount(s.keywords.size());
-        if (shift + bits > 64) return std::nullopt;
+        if (shift + bits > 64)
+            return std::nullopt;
         layout.push_back({shift, bits});
         shift += bits;
     }
@@ -30,9 +31,11 @@ std::vector<std::string> EnabledKeywords(const std::vector<KeywordSet>& sets,
 }
 
 std::string DescribeKeywords(const std::vector<std::string>& keywords) {
-    if (keywords.empty()) return "(no keywords)";
+    if (keywords.empty())
+        return "(no keywords)";
     std::string s;
-    for (const std::string& k : keywords) s += (s.empty() ? "" : " ") + k;
+    for (const std::string& k : keywords)
+        s += (s.empty() ? "" : " ") + k;
     return s;
 }
 
@@ -45,9 +48,10 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
     Expansion ex;
     auto layout = LayoutSets(pragmas.sets);
     if (!layout) {
-        diags.Error(DiagCode::kVariantKeyTooWide, file, pass_range,
-                    "keyword sets of pass " + pass_label +
-                        " need more than 64 bits of variant key; split the pass or use fewer keywords");
+        diags.Error(
+            DiagCode::kVariantKeyTooWide, file, pass_range,
+            "keyword sets of pass " + pass_label +
+                " need more than 64 bits of variant key; split the pass or use fewer keywords");
         return std::nullopt;
     }
     ex.layout = *layout;
@@ -77,16 +81,17 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
         } else {
             product *= c.size();
         }
-        if (c.size() > 1) formula += (formula.empty() ? "" : " x ") + std::to_string(c.size());
+        if (c.size() > 1)
+            formula += (formula.empty() ? "" : " x ") + std::to_string(c.size());
     }
     ex.permutations = overflow ? UINT64_MAX : product;
     if (overflow || product > request.max_variants) {
-        auto& d = diags.Error(
-            DiagCode::kTooManyVariants, file, pass_range,
-            (formula.empty() ? std::string("1") : formula) + " = " +
-                (overflow ? std::string("more than 2^64") : std::to_string(product)) +
-                " variants in pass " + pass_label + ", over the limit of " +
-                std::to_string(request.max_variants) + " (--max-variants)");
+        auto& d =
+            diags.Error(DiagCode::kTooManyVariants, file, pass_range,
+                        (formula.empty() ? std::string("1") : formula) + " = " +
+                            (overflow ? std::string("more than 2^64") : std::to_string(product)) +
+                            " variants in pass " + pass_label + ", over the limit of " +
+                            std::to_string(request.max_variants) + " (--max-variants)");
         for (const KeywordSet& s : pragmas.sets) {
             if (s.keywords.size() > 1) {
                 d.notes.push_back({file, s.range,
@@ -98,7 +103,8 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
     }
 
     std::set<std::string> skip;
-    for (const auto& a : pragmas.skip_variants) skip.insert(a.text);
+    for (const auto& a : pragmas.skip_variants)
+        skip.insert(a.text);
     std::vector<uint32_t> index(choices.size(), 0);
     while (true) {
         pack::VariantKey key;
@@ -108,13 +114,16 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
             key.Set(ex.layout[s].shift, ex.layout[s].bits, k);
             skipped = skipped || skip.count(pragmas.sets[s].keywords[k]) > 0;
         }
-        if (!skipped) ex.keys.push_back(key);
+        if (!skipped)
+            ex.keys.push_back(key);
         size_t s = 0;
         for (; s < choices.size(); ++s) {
-            if (++index[s] < choices[s].size()) break;
+            if (++index[s] < choices[s].size())
+                break;
             index[s] = 0;
         }
-        if (s == choices.size()) break;
+        if (s == choices.size())
+            break;
     }
     std::sort(ex.keys.begin(), ex.keys.end());
     if (ex.keys.empty()) {

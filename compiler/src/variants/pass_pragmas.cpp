@@ -10,15 +10,24 @@ namespace {
 using shaderlab::Pragma;
 
 // Unity pragmas Kiln accepts and ignores: they change nothing for Vulkan.
-const std::set<std::string> kIgnoredPragmas = {
-    "fragmentoption", "glsl_no_auto_normalization", "enable_d3d11_debug_symbols",
-    "hardware_tier_variants", "require", "editor_sync_compilation", "instancing_options",
-    "multi_compile_prepassfinal", "prefer_hlslcc", "pack_matrix", "warning", "once",
-    "debug", "vertex_format"};
+const std::set<std::string> kIgnoredPragmas = {"fragmentoption",
+                                               "glsl_no_auto_normalization",
+                                               "enable_d3d11_debug_symbols",
+                                               "hardware_tier_variants",
+                                               "require",
+                                               "editor_sync_compilation",
+                                               "instancing_options",
+                                               "multi_compile_prepassfinal",
+                                               "prefer_hlslcc",
+                                               "pack_matrix",
+                                               "warning",
+                                               "once",
+                                               "debug",
+                                               "vertex_format"};
 
 // Entry-point pragmas of stages Kiln does not compile.
-const std::set<std::string> kOtherStages = {"geometry", "hull", "domain", "surface", "kernel",
-                                            "raytracing"};
+const std::set<std::string> kOtherStages = {"geometry", "hull",   "domain",
+                                            "surface",  "kernel", "raytracing"};
 
 bool IsIdentifier(const std::string& s) {
     if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) {
@@ -42,8 +51,9 @@ struct State {
             return;
         }
         if (slot) {
-            diags.Error(DiagCode::kDuplicateEntryPoint, file, p.range,
-                        "second '#pragma " + p.name + "' in one program")
+            diags
+                .Error(DiagCode::kDuplicateEntryPoint, file, p.range,
+                       "second '#pragma " + p.name + "' in one program")
                 .notes.push_back({file, slot->range, "first entry point given here"});
             return;
         }
@@ -52,8 +62,8 @@ struct State {
 
     void Target(const Pragma& p) {
         static const std::map<std::string, int> kTargets = {
-            {"2.0", 20}, {"2.5", 25}, {"3.0", 30}, {"3.5", 35}, {"4.0", 40},
-            {"4.5", 45}, {"4.6", 46}, {"5.0", 50}, {"gl4.1", 46}, {"es3.0", 35}, {"es3.1", 45}};
+            {"2.0", 20}, {"2.5", 25}, {"3.0", 30},   {"3.5", 35},   {"4.0", 40},  {"4.5", 45},
+            {"4.6", 46}, {"5.0", 50}, {"gl4.1", 46}, {"es3.0", 35}, {"es3.1", 45}};
         if (p.args.empty()) {
             diags.Error(DiagCode::kPragmaMissingArgument, file, p.range,
                         "'#pragma target' needs a shader model such as 3.0");
@@ -75,7 +85,8 @@ struct State {
         for (size_t i = 0; i < set.keywords.size(); ++i) {
             std::string kw = set.keywords[i];
             const SourceRange r = i < p.args.size() ? p.args[i].range : p.range;
-            if (IsNoKeyword(kw)) kw.clear();
+            if (IsNoKeyword(kw))
+                kw.clear();
             if (!kw.empty() && !IsIdentifier(kw)) {
                 diags.Error(DiagCode::kBadKeyword, file, r,
                             "keyword '" + kw + "' is not an identifier");
@@ -90,15 +101,18 @@ struct State {
             if (!kw.empty()) {
                 auto [it, fresh] = keyword_origin.emplace(kw, r);
                 if (!fresh) {
-                    diags.Error(DiagCode::kDuplicateKeyword, file, r,
-                                "keyword '" + kw + "' is already in another keyword set of this pass")
+                    diags
+                        .Error(
+                            DiagCode::kDuplicateKeyword, file, r,
+                            "keyword '" + kw + "' is already in another keyword set of this pass")
                         .notes.push_back({file, it->second, "first declared here"});
                     continue;
                 }
             }
             cleaned.push_back(kw);
         }
-        if (cleaned.empty()) return;
+        if (cleaned.empty())
+            return;
         // shader_feature A means shader_feature _ A.
         if (set.kind == pack::KeywordSetKind::kShaderFeature && cleaned.size() == 1 &&
             !cleaned[0].empty()) {
@@ -148,32 +162,40 @@ struct State {
                         "'#pragma " + p.name + "' needs at least one keyword");
             return true;
         }
-        for (const auto& a : p.args) set.keywords.push_back(a.text);
+        for (const auto& a : p.args)
+            set.keywords.push_back(a.text);
         AddSet(std::move(set), p);
         return true;
     }
 
     void Renderers(const Pragma& p, std::vector<std::string>& list) {
-        for (const auto& a : p.args) list.push_back(a.text);
+        for (const auto& a : p.args)
+            list.push_back(a.text);
     }
 
     void One(const Pragma& p) {
-        if (p.name == "vertex") return Entry(p, out.vertex);
-        if (p.name == "fragment") return Entry(p, out.fragment);
-        if (p.name == "target") return Target(p);
+        if (p.name == "vertex")
+            return Entry(p, out.vertex);
+        if (p.name == "fragment")
+            return Entry(p, out.fragment);
+        if (p.name == "target")
+            return Target(p);
         if (p.name == "skip_variants") {
             out.skip_variants.insert(out.skip_variants.end(), p.args.begin(), p.args.end());
             return;
         }
-        if (p.name == "only_renderers") return Renderers(p, out.only_renderers);
-        if (p.name == "exclude_renderers") return Renderers(p, out.exclude_renderers);
+        if (p.name == "only_renderers")
+            return Renderers(p, out.only_renderers);
+        if (p.name == "exclude_renderers")
+            return Renderers(p, out.exclude_renderers);
         if (kOtherStages.count(p.name)) {
             diags.Error(DiagCode::kUnsupportedStage, file, p.range,
                         "'#pragma " + p.name +
                             "' is not supported: Kiln compiles vertex and fragment stages only");
             return;
         }
-        if (KeywordPragma(p) || kIgnoredPragmas.count(p.name)) return;
+        if (KeywordPragma(p) || kIgnoredPragmas.count(p.name))
+            return;
         diags.Warning(DiagCode::kUnknownPragma, file, p.range,
                       "unknown pragma '" + p.name + "' is ignored");
     }
@@ -213,7 +235,8 @@ PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& b
                             DiagnosticList& diags) {
     State st{file, diags, {}, {}};
     for (const shaderlab::ProgramBlock* block : blocks) {
-        for (const Pragma& p : block->pragmas) st.One(p);
+        for (const Pragma& p : block->pragmas)
+            st.One(p);
     }
     const SourceRange where = blocks.empty() ? pass_range : blocks.back()->range;
     if (!st.out.vertex) {

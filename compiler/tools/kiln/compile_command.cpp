@@ -15,8 +15,10 @@ namespace {
 std::string DepfileEscape(const std::string& path) {
     std::string out;
     for (char c : path) {
-        if (c == ' ' || c == '#' || c == '\\') out += '\\';
-        if (c == '$') out += '$';
+        if (c == ' ' || c == '#' || c == '\\')
+            out += '\\';
+        if (c == '$')
+            out += '$';
         out += c;
     }
     return out;
@@ -46,7 +48,8 @@ CompileOptions ToCompileOptions(const CompilerFlags& f) {
                                 ? std::make_pair(d, std::string("1"))
                                 : std::make_pair(d.substr(0, eq), d.substr(eq + 1)));
     }
-    if (!f.keywords.empty()) o.keywords = std::set<std::string>(f.keywords.begin(), f.keywords.end());
+    if (!f.keywords.empty())
+        o.keywords = std::set<std::string>(f.keywords.begin(), f.keywords.end());
     o.max_variants = f.max_variants;
     o.templates_dir = f.templates_dir;
     o.jobs = f.jobs;
@@ -55,7 +58,8 @@ CompileOptions ToCompileOptions(const CompilerFlags& f) {
 
 std::vector<const SourceFile*> Views(const CompileOutput& out) {
     std::vector<const SourceFile*> views;
-    for (const auto& f : out.files) views.push_back(f.get());
+    for (const auto& f : out.files)
+        views.push_back(f.get());
     return views;
 }
 
@@ -92,12 +96,14 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                             : o->opt == "s" ? OptimizationLevel::kSize
                                             : OptimizationLevel::kPerformance;
         options.debug_info = o->debug;
-        options.cache_dir = o->no_cache ? "" : (o->cache_dir.empty() ? DefaultCacheDir() : o->cache_dir);
+        options.cache_dir =
+            o->no_cache ? "" : (o->cache_dir.empty() ? DefaultCacheDir() : o->cache_dir);
         const bool tty = isatty(STDERR_FILENO) && global.diag_format == DiagFormat::kText;
         if (tty) {
             options.progress = [](const char* phase, size_t done, size_t total) {
                 std::fprintf(stderr, "\r\033[Kkiln: %s %zu/%zu", phase, done, total);
-                if (done == total) std::fputs("\r\033[K", stderr);
+                if (done == total)
+                    std::fputs("\r\033[K", stderr);
             };
         }
         DiagnosticList diags;
@@ -112,7 +118,9 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
             const std::string dep_path = o->mf.empty() ? o->output + ".d" : o->mf;
             std::string text = DepfileEscape(o->output) + ":";
             for (const auto& f : out.files) {
-                text += " \\\n  " + DepfileEscape(std::filesystem::absolute(f->path()).lexically_normal().string());
+                text +=
+                    " \\\n  " +
+                    DepfileEscape(std::filesystem::absolute(f->path()).lexically_normal().string());
             }
             text += "\n";
             Result<bool> written =

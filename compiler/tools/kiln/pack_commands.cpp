@@ -12,17 +12,39 @@ namespace {
 
 using namespace kiln::pack;
 
-const char* kFieldNames[] = {
-    "Cull", "ZTest", "ZWrite", "ZClip", "AlphaToMask", "Conservative", "OffsetFactor",
-    "OffsetUnits", "BlendOff", "BlendSrc", "BlendDst", "BlendSrcAlpha", "BlendDstAlpha",
-    "BlendOp", "BlendOpAlpha", "ColorMask", "StencilRef", "StencilReadMask", "StencilWriteMask",
-    "StencilCompFront", "StencilPassFront", "StencilFailFront", "StencilZFailFront",
-    "StencilCompBack", "StencilPassBack", "StencilFailBack", "StencilZFailBack"};
+const char* kFieldNames[] = {"Cull",
+                             "ZTest",
+                             "ZWrite",
+                             "ZClip",
+                             "AlphaToMask",
+                             "Conservative",
+                             "OffsetFactor",
+                             "OffsetUnits",
+                             "BlendOff",
+                             "BlendSrc",
+                             "BlendDst",
+                             "BlendSrcAlpha",
+                             "BlendDstAlpha",
+                             "BlendOp",
+                             "BlendOpAlpha",
+                             "ColorMask",
+                             "StencilRef",
+                             "StencilReadMask",
+                             "StencilWriteMask",
+                             "StencilCompFront",
+                             "StencilPassFront",
+                             "StencilFailFront",
+                             "StencilZFailFront",
+                             "StencilCompBack",
+                             "StencilPassBack",
+                             "StencilFailBack",
+                             "StencilZFailBack"};
 
 // Opens a pack or prints why not; returns false on failure.
 bool OpenPack(const std::string& path, MappedFile& file, Pack& pack) {
     std::optional<PackError> err = MappedFile::Map(path, file);
-    if (!err) err = Pack::Open(file.bytes(), pack);
+    if (!err)
+        err = Pack::Open(file.bytes(), pack);
     if (err) {
         std::fprintf(stderr, "%s: error: %s [%s]\n", path.c_str(), err->message.c_str(),
                      PackErrorCodeName(err->code));
@@ -38,7 +60,8 @@ nlohmann::json InfoJson(const Pack& p) {
         nlohmann::json props = nlohmann::json::array();
         for (uint32_t i = sr.first_property; i < sr.first_property + sr.property_count; ++i) {
             const auto pr = p.Get<PropertyRec>(SectionTag::kProperties, i);
-            props.push_back({{"name", p.String(pr.name)}, {"type", pr.type},
+            props.push_back({{"name", p.String(pr.name)},
+                             {"type", pr.type},
                              {"default", pr.default_value},
                              {"texture_default", p.String(pr.texture_default)}});
         }
@@ -72,7 +95,9 @@ nlohmann::json InfoJson(const Pack& p) {
                     words.push_back(p.Keyword(kr.first_keyword + w));
                 }
                 sets.push_back({{"kind", kr.kind == 0 ? "multi_compile" : "shader_feature"},
-                                {"keywords", words}, {"shift", kr.key_shift}, {"bits", kr.key_bits}});
+                                {"keywords", words},
+                                {"shift", kr.key_shift},
+                                {"bits", kr.key_bits}});
             }
             nlohmann::json variants = nlohmann::json::array();
             for (uint32_t v = pr.first_variant; v < pr.first_variant + pr.variant_count; ++v) {
@@ -82,8 +107,11 @@ nlohmann::json InfoJson(const Pack& p) {
                                     {"vertex_module", vr.vertex_module},
                                     {"fragment_module", vr.fragment_module}});
             }
-            passes.push_back({{"name", p.String(pr.name)}, {"tags", tags}, {"state", state},
-                              {"keyword_sets", sets}, {"variants", variants}});
+            passes.push_back({{"name", p.String(pr.name)},
+                              {"tags", tags},
+                              {"state", state},
+                              {"keyword_sets", sets},
+                              {"variants", variants}});
         }
         shaders.push_back({{"name", p.String(sr.name)}, {"properties", props}, {"passes", passes}});
     }
@@ -96,29 +124,37 @@ nlohmann::json InfoJson(const Pack& p) {
             nlohmann::json members = nlohmann::json::array();
             for (uint32_t i = br.first_member; i < br.first_member + br.member_count; ++i) {
                 const auto mem = p.Get<MemberRec>(SectionTag::kMembers, i);
-                members.push_back({{"name", p.String(mem.name)}, {"offset", mem.offset},
-                                   {"size", mem.size}});
+                members.push_back(
+                    {{"name", p.String(mem.name)}, {"offset", mem.offset}, {"size", mem.size}});
             }
             blocks.push_back({{"name", p.String(br.name)},
                               {"kind", br.kind == 0 ? "uniform" : "push_constant"},
-                              {"set", br.set}, {"binding", br.binding}, {"size", br.size},
+                              {"set", br.set},
+                              {"binding", br.binding},
+                              {"size", br.size},
                               {"members", members}});
         }
         nlohmann::json resources = nlohmann::json::array();
         for (uint32_t r = mr.first_resource; r < mr.first_resource + mr.resource_count; ++r) {
             const auto rr = p.Get<ResourceRec>(SectionTag::kResources, r);
-            resources.push_back({{"name", p.String(rr.name)}, {"kind", rr.kind}, {"set", rr.set},
+            resources.push_back({{"name", p.String(rr.name)},
+                                 {"kind", rr.kind},
+                                 {"set", rr.set},
                                  {"binding", rr.binding}});
         }
         nlohmann::json io = nlohmann::json::array();
         for (uint32_t i = mr.first_interface; i < mr.first_interface + mr.interface_count; ++i) {
             const auto v = p.Get<InterfaceVarRec>(SectionTag::kInterface, i);
-            io.push_back({{"name", p.String(v.name)}, {"semantic", p.String(v.semantic)},
-                          {"location", v.location}, {"direction", v.direction == 0 ? "in" : "out"},
+            io.push_back({{"name", p.String(v.name)},
+                          {"semantic", p.String(v.semantic)},
+                          {"location", v.location},
+                          {"direction", v.direction == 0 ? "in" : "out"},
                           {"vecsize", v.vecsize}});
         }
         modules.push_back({{"stage", mr.stage == 0 ? "vertex" : "fragment"},
-                           {"bytes", mr.spirv_size}, {"interface", io}, {"blocks", blocks},
+                           {"bytes", mr.spirv_size},
+                           {"interface", io},
+                           {"blocks", blocks},
                            {"resources", resources}});
     }
     const MetaRec meta = p.meta();
@@ -143,14 +179,16 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions&) {
     return [o]() {
         MappedFile file;
         Pack pack;
-        if (!OpenPack(o->file, file, pack)) return int(kExitInputError);
+        if (!OpenPack(o->file, file, pack))
+            return int(kExitInputError);
         const nlohmann::json j = InfoJson(pack);
         if (o->json) {
             std::printf("%s\n", j.dump(2).c_str());
             return int(kExitOk);
         }
         size_t spirv = 0;
-        for (const auto& m : j["modules"]) spirv += m["bytes"].get<size_t>();
+        for (const auto& m : j["modules"])
+            spirv += m["bytes"].get<size_t>();
         std::printf("%s: kiln pack %s, %zu bytes, by %s\n", o->file.c_str(),
                     j["format"].get<std::string>().c_str(), file.bytes().size(),
                     j["producer"].get<std::string>().c_str());
@@ -169,12 +207,12 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions&) {
                     }
                     sets += " [" + words + "]";
                 }
-                std::printf("  pass \"%s\"%s: %zu variants%s\n",
-                            p["name"].get<std::string>().c_str(),
-                            p["tags"].contains("LightMode")
-                                ? (" (LightMode " + p["tags"]["LightMode"].get<std::string>() + ")").c_str()
-                                : "",
-                            p["variants"].size(), sets.c_str());
+                std::printf(
+                    "  pass \"%s\"%s: %zu variants%s\n", p["name"].get<std::string>().c_str(),
+                    p["tags"].contains("LightMode")
+                        ? (" (LightMode " + p["tags"]["LightMode"].get<std::string>() + ")").c_str()
+                        : "",
+                    p["variants"].size(), sets.c_str());
             }
         }
         return int(kExitOk);
@@ -199,7 +237,8 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions&) {
     return [o]() {
         MappedFile file;
         Pack pack;
-        if (!OpenPack(o->file, file, pack)) return int(kExitInputError);
+        if (!OpenPack(o->file, file, pack))
+            return int(kExitInputError);
         const auto shader = pack.FindShader(o->shader);
         if (!shader) {
             std::fprintf(stderr, "%s: error: no shader \"%s\" in the pack\n", o->file.c_str(),
@@ -216,7 +255,8 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions&) {
         const auto variant = pack.FindVariant(*pass, key);
         if (!variant) {
             std::string kws;
-            for (const auto& k : o->keywords) kws += " " + k;
+            for (const auto& k : o->keywords)
+                kws += " " + k;
             std::fprintf(stderr,
                          "%s: error: shader \"%s\" pass \"%s\" has no variant with keywords%s "
                          "(stripped or never built)\n",
@@ -229,7 +269,8 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions&) {
         const auto bytes = pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module));
         Result<bool> written = WriteFileAtomic(o->output, {bytes.begin(), bytes.end()});
         if (!written) {
-            std::fprintf(stderr, "%s: error: %s\n", o->output.c_str(), written.error().message.c_str());
+            std::fprintf(stderr, "%s: error: %s\n", o->output.c_str(),
+                         written.error().message.c_str());
             return int(kExitInputError);
         }
         return int(kExitOk);

@@ -53,18 +53,21 @@ std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& glob
             std::printf("%s\n", j.dump(2).c_str());
         } else {
             for (const PassReport& p : out.passes) {
-                std::printf("Shader \"%s\" pass %s%s\n", p.shader.c_str(), p.pass.c_str(),
-                            p.light_mode.empty() ? "" : (" (LightMode " + p.light_mode + ")").c_str());
+                std::printf(
+                    "Shader \"%s\" pass %s%s\n", p.shader.c_str(), p.pass.c_str(),
+                    p.light_mode.empty() ? "" : (" (LightMode " + p.light_mode + ")").c_str());
                 std::string formula;
                 for (const KeywordSetReport& s : p.sets) {
                     std::string words;
-                    for (const std::string& k : s.keywords) words += " " + (k.empty() ? "_" : k);
+                    for (const std::string& k : s.keywords)
+                        words += " " + (k.empty() ? "_" : k);
                     std::printf("  %s:%s\n", s.pragma.c_str(), words.c_str());
                 }
-                std::printf("  %llu permutations, %zu variants; unique programs: vertex %zu, "
-                            "fragment %zu\n",
-                            static_cast<unsigned long long>(p.permutations), p.variants,
-                            p.unique_vertex, p.unique_fragment);
+                std::printf(
+                    "  %llu permutations, %zu variants; unique programs: vertex %zu, "
+                    "fragment %zu\n",
+                    static_cast<unsigned long long>(p.permutations), p.variants, p.unique_vertex,
+                    p.unique_fragment);
             }
             const CompileStats& s = out.stats;
             std::printf("total: %zu variants, %zu stage programs, %zu unique compiles\n",

@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <utility>
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 #include <xxhash.h>
 
@@ -17,34 +17,50 @@ namespace kiln::pack {
 namespace {
 
 constexpr SectionTag kAllTags[] = {
-    SectionTag::kStrings,   SectionTag::kMeta,       SectionTag::kShaders,
+    SectionTag::kStrings,    SectionTag::kMeta,       SectionTag::kShaders,
     SectionTag::kProperties, SectionTag::kAttributes, SectionTag::kPasses,
-    SectionTag::kTags,      SectionTag::kStates,     SectionTag::kKeywordSets,
-    SectionTag::kKeywords,  SectionTag::kVariants,   SectionTag::kModules,
-    SectionTag::kSpirv,     SectionTag::kInterface,  SectionTag::kBlocks,
-    SectionTag::kMembers,   SectionTag::kResources,
+    SectionTag::kTags,       SectionTag::kStates,     SectionTag::kKeywordSets,
+    SectionTag::kKeywords,   SectionTag::kVariants,   SectionTag::kModules,
+    SectionTag::kSpirv,      SectionTag::kInterface,  SectionTag::kBlocks,
+    SectionTag::kMembers,    SectionTag::kResources,
 };
 
 // Encoded record size per section; 0 for raw byte sections.
 size_t RecordSizeOf(SectionTag tag) {
     switch (tag) {
         case SectionTag::kStrings:
-        case SectionTag::kSpirv: return 0;
-        case SectionTag::kMeta: return RecordSize<MetaRec>();
-        case SectionTag::kShaders: return RecordSize<ShaderRec>();
-        case SectionTag::kProperties: return RecordSize<PropertyRec>();
-        case SectionTag::kAttributes: return RecordSize<AttributeRec>();
-        case SectionTag::kPasses: return RecordSize<PassRec>();
-        case SectionTag::kTags: return RecordSize<TagRec>();
-        case SectionTag::kStates: return RecordSize<StateRec>();
-        case SectionTag::kKeywordSets: return RecordSize<KeywordSetRec>();
-        case SectionTag::kKeywords: return RecordSize<StrRef>();
-        case SectionTag::kVariants: return RecordSize<VariantRec>();
-        case SectionTag::kModules: return RecordSize<ModuleRec>();
-        case SectionTag::kInterface: return RecordSize<InterfaceVarRec>();
-        case SectionTag::kBlocks: return RecordSize<BlockRec>();
-        case SectionTag::kMembers: return RecordSize<MemberRec>();
-        case SectionTag::kResources: return RecordSize<ResourceRec>();
+        case SectionTag::kSpirv:
+            return 0;
+        case SectionTag::kMeta:
+            return RecordSize<MetaRec>();
+        case SectionTag::kShaders:
+            return RecordSize<ShaderRec>();
+        case SectionTag::kProperties:
+            return RecordSize<PropertyRec>();
+        case SectionTag::kAttributes:
+            return RecordSize<AttributeRec>();
+        case SectionTag::kPasses:
+            return RecordSize<PassRec>();
+        case SectionTag::kTags:
+            return RecordSize<TagRec>();
+        case SectionTag::kStates:
+            return RecordSize<StateRec>();
+        case SectionTag::kKeywordSets:
+            return RecordSize<KeywordSetRec>();
+        case SectionTag::kKeywords:
+            return RecordSize<StrRef>();
+        case SectionTag::kVariants:
+            return RecordSize<VariantRec>();
+        case SectionTag::kModules:
+            return RecordSize<ModuleRec>();
+        case SectionTag::kInterface:
+            return RecordSize<InterfaceVarRec>();
+        case SectionTag::kBlocks:
+            return RecordSize<BlockRec>();
+        case SectionTag::kMembers:
+            return RecordSize<MemberRec>();
+        case SectionTag::kResources:
+            return RecordSize<ResourceRec>();
     }
     return 0;
 }
@@ -70,12 +86,18 @@ bool RangeOk(uint32_t first, uint32_t count, uint32_t total) {
 
 const char* PackErrorCodeName(PackErrorCode code) {
     switch (code) {
-        case PackErrorCode::kIo: return "io";
-        case PackErrorCode::kTruncated: return "truncated";
-        case PackErrorCode::kNotAPack: return "not-a-pack";
-        case PackErrorCode::kUnsupportedVersion: return "unsupported-version";
-        case PackErrorCode::kChecksumMismatch: return "checksum-mismatch";
-        case PackErrorCode::kCorrupt: return "corrupt";
+        case PackErrorCode::kIo:
+            return "io";
+        case PackErrorCode::kTruncated:
+            return "truncated";
+        case PackErrorCode::kNotAPack:
+            return "not-a-pack";
+        case PackErrorCode::kUnsupportedVersion:
+            return "unsupported-version";
+        case PackErrorCode::kChecksumMismatch:
+            return "checksum-mismatch";
+        case PackErrorCode::kCorrupt:
+            return "corrupt";
     }
     return "corrupt";
 }
@@ -101,8 +123,7 @@ MappedFile::~MappedFile() {
 std::optional<PackError> MappedFile::Map(const std::string& path, MappedFile& out) {
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
-        return PackError{PackErrorCode::kIo,
-                         "cannot open '" + path + "': " + std::strerror(errno)};
+        return PackError{PackErrorCode::kIo, "cannot open '" + path + "': " + std::strerror(errno)};
     }
     struct stat st {};
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
@@ -126,20 +147,23 @@ std::optional<PackError> MappedFile::Map(const std::string& path, MappedFile& ou
 
 size_t Pack::Index(SectionTag tag) {
     for (size_t i = 0; i < kSectionSlots; ++i) {
-        if (kAllTags[i] == tag) return i;
+        if (kAllTags[i] == tag)
+            return i;
     }
     return 0;
 }
 
 std::string_view Pack::String(StrRef ref) const {
     const SectionEntry& s = sections_[Index(SectionTag::kStrings)];
-    if (ref.offset > s.size || ref.length > s.size - ref.offset) return {};
+    if (ref.offset > s.size || ref.length > s.size - ref.offset)
+        return {};
     return {reinterpret_cast<const char*>(bytes_.data() + s.offset + ref.offset), ref.length};
 }
 
 std::span<const uint8_t> Pack::Spirv(const ModuleRec& module) const {
     const SectionEntry& s = sections_[Index(SectionTag::kSpirv)];
-    if (module.spirv_offset > s.size || module.spirv_size > s.size - module.spirv_offset) return {};
+    if (module.spirv_offset > s.size || module.spirv_size > s.size - module.spirv_offset)
+        return {};
     return bytes_.subspan(s.offset + module.spirv_offset, module.spirv_size);
 }
 
@@ -199,14 +223,17 @@ std::optional<PackError> Pack::Validate() {
     }
     bool seen[kSectionSlots] = {};
     for (uint32_t i = 0; i < header_.section_count; ++i) {
-        ByteReader r(bytes_.subspan(kHeaderSize + size_t{i} * kSectionEntrySize, kSectionEntrySize));
+        ByteReader r(
+            bytes_.subspan(kHeaderSize + size_t{i} * kSectionEntrySize, kSectionEntrySize));
         const SectionEntry e = r.Record<SectionEntry>();
-        const auto* known = std::find(std::begin(kAllTags), std::end(kAllTags),
-                                      static_cast<SectionTag>(e.tag));
-        if (known == std::end(kAllTags)) continue;  // unknown sections are skipped (minor additions)
+        const auto* known =
+            std::find(std::begin(kAllTags), std::end(kAllTags), static_cast<SectionTag>(e.tag));
+        if (known == std::end(kAllTags))
+            continue;  // unknown sections are skipped (minor additions)
         const size_t slot = static_cast<size_t>(known - std::begin(kAllTags));
         const std::string name = TagName(e.tag);
-        if (seen[slot]) return Corrupt("section " + name + " appears twice");
+        if (seen[slot])
+            return Corrupt("section " + name + " appears twice");
         seen[slot] = true;
         if (e.offset % kSectionAlignment != 0 || e.offset < kHeaderSize || e.offset > size ||
             e.size > size - e.offset) {
@@ -219,23 +246,27 @@ std::optional<PackError> Pack::Validate() {
         sections_[slot] = e;
     }
     for (size_t i = 0; i < kSectionSlots; ++i) {
-        if (!seen[i]) return Corrupt("section " + TagName(uint32_t(kAllTags[i])) + " is missing");
+        if (!seen[i])
+            return Corrupt("section " + TagName(uint32_t(kAllTags[i])) + " is missing");
     }
-    if (Count(SectionTag::kMeta) != 1) return Corrupt("META must hold exactly one record");
+    if (Count(SectionTag::kMeta) != 1)
+        return Corrupt("META must hold exactly one record");
 
     const uint32_t strings = static_cast<uint32_t>(sections_[Index(SectionTag::kStrings)].size);
     auto str_ok = [&](StrRef s) { return s.offset <= strings && s.length <= strings - s.offset; };
     auto fail = [](const char* what, uint32_t i) {
         return Corrupt(std::string(what) + " record " + std::to_string(i) + " is out of bounds");
     };
-    const uint32_t n_props = Count(SectionTag::kProperties), n_attrs = Count(SectionTag::kAttributes),
-                   n_passes = Count(SectionTag::kPasses), n_tags = Count(SectionTag::kTags),
-                   n_states = Count(SectionTag::kStates), n_sets = Count(SectionTag::kKeywordSets),
-                   n_kw = Count(SectionTag::kKeywords), n_vars = Count(SectionTag::kVariants),
-                   n_mods = Count(SectionTag::kModules), n_io = Count(SectionTag::kInterface),
-                   n_blocks = Count(SectionTag::kBlocks), n_members = Count(SectionTag::kMembers),
-                   n_res = Count(SectionTag::kResources), n_shaders = Count(SectionTag::kShaders);
-    if (!str_ok(meta().producer)) return fail("META", 0);
+    const uint32_t n_props = Count(SectionTag::kProperties),
+                   n_attrs = Count(SectionTag::kAttributes), n_passes = Count(SectionTag::kPasses),
+                   n_tags = Count(SectionTag::kTags), n_states = Count(SectionTag::kStates),
+                   n_sets = Count(SectionTag::kKeywordSets), n_kw = Count(SectionTag::kKeywords),
+                   n_vars = Count(SectionTag::kVariants), n_mods = Count(SectionTag::kModules),
+                   n_io = Count(SectionTag::kInterface), n_blocks = Count(SectionTag::kBlocks),
+                   n_members = Count(SectionTag::kMembers), n_res = Count(SectionTag::kResources),
+                   n_shaders = Count(SectionTag::kShaders);
+    if (!str_ok(meta().producer))
+        return fail("META", 0);
     for (uint32_t i = 0; i < n_shaders; ++i) {
         const ShaderRec s = Shader(i);
         if (!str_ok(s.name) || !str_ok(s.fallback) ||
@@ -254,11 +285,13 @@ std::optional<PackError> Pack::Validate() {
     }
     for (uint32_t i = 0; i < n_attrs; ++i) {
         const auto a = Get<AttributeRec>(SectionTag::kAttributes, i);
-        if (!str_ok(a.name) || !str_ok(a.args)) return fail("ATTR", i);
+        if (!str_ok(a.name) || !str_ok(a.args))
+            return fail("ATTR", i);
     }
     for (uint32_t i = 0; i < n_tags; ++i) {
         const auto t = Get<TagRec>(SectionTag::kTags, i);
-        if (!str_ok(t.key) || !str_ok(t.value)) return fail("TAGS", i);
+        if (!str_ok(t.key) || !str_ok(t.value))
+            return fail("TAGS", i);
     }
     for (uint32_t i = 0; i < n_states; ++i) {
         const auto s = Get<StateRec>(SectionTag::kStates, i);
@@ -268,7 +301,8 @@ std::optional<PackError> Pack::Validate() {
         }
     }
     for (uint32_t i = 0; i < n_kw; ++i) {
-        if (!str_ok(Get<StrRef>(SectionTag::kKeywords, i))) return fail("KWRD", i);
+        if (!str_ok(Get<StrRef>(SectionTag::kKeywords, i)))
+            return fail("KWRD", i);
     }
     for (uint32_t i = 0; i < n_sets; ++i) {
         const KeywordSetRec k = KeywordSet(i);
@@ -280,14 +314,16 @@ std::optional<PackError> Pack::Validate() {
     }
     for (uint32_t i = 0; i < n_passes; ++i) {
         const PassRec p = Pass(i);
-        if (!str_ok(p.name) || p.shader >= n_shaders || !RangeOk(p.first_tag, p.tag_count, n_tags) ||
+        if (!str_ok(p.name) || p.shader >= n_shaders ||
+            !RangeOk(p.first_tag, p.tag_count, n_tags) ||
             !RangeOk(p.first_state, p.state_count, n_states) ||
             !RangeOk(p.first_keyword_set, p.keyword_set_count, n_sets) ||
             !RangeOk(p.first_variant, p.variant_count, n_vars)) {
             return fail("PASS", i);
         }
         for (uint32_t v = p.first_variant; v < p.first_variant + p.variant_count; ++v) {
-            if (Variant(v).pass != i) return fail("PASS", i);
+            if (Variant(v).pass != i)
+                return fail("PASS", i);
         }
     }
     for (uint32_t i = 0; i < n_vars; ++i) {
@@ -316,7 +352,8 @@ std::optional<PackError> Pack::Validate() {
     }
     for (uint32_t i = 0; i < n_io; ++i) {
         const auto v = Get<InterfaceVarRec>(SectionTag::kInterface, i);
-        if (!str_ok(v.name) || !str_ok(v.semantic)) return fail("IOVR", i);
+        if (!str_ok(v.name) || !str_ok(v.semantic))
+            return fail("IOVR", i);
     }
     for (uint32_t i = 0; i < n_blocks; ++i) {
         const auto b = Get<BlockRec>(SectionTag::kBlocks, i);
@@ -325,51 +362,60 @@ std::optional<PackError> Pack::Validate() {
         }
     }
     for (uint32_t i = 0; i < n_members; ++i) {
-        if (!str_ok(Get<MemberRec>(SectionTag::kMembers, i).name)) return fail("MEMB", i);
+        if (!str_ok(Get<MemberRec>(SectionTag::kMembers, i).name))
+            return fail("MEMB", i);
     }
     for (uint32_t i = 0; i < n_res; ++i) {
-        if (!str_ok(Get<ResourceRec>(SectionTag::kResources, i).name)) return fail("RSRC", i);
+        if (!str_ok(Get<ResourceRec>(SectionTag::kResources, i).name))
+            return fail("RSRC", i);
     }
     return std::nullopt;
 }
 
 std::optional<uint32_t> Pack::FindShader(std::string_view name) const {
     for (uint32_t i = 0; i < Count(SectionTag::kShaders); ++i) {
-        if (String(Shader(i).name) == name) return i;
+        if (String(Shader(i).name) == name)
+            return i;
     }
     return std::nullopt;
 }
 
 std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) const {
-    if (shader >= Count(SectionTag::kShaders)) return std::nullopt;
+    if (shader >= Count(SectionTag::kShaders))
+        return std::nullopt;
     const ShaderRec s = Shader(shader);
     auto equal_ci = [](std::string_view a, std::string_view b) {
-        return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+        return a.size() == b.size() &&
+               std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
                    return std::tolower(static_cast<unsigned char>(x)) ==
                           std::tolower(static_cast<unsigned char>(y));
                });
     };
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        if (equal_ci(String(Pass(i).name), name)) return i;
+        if (equal_ci(String(Pass(i).name), name))
+            return i;
     }
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
         const PassRec p = Pass(i);
         for (uint32_t t = p.first_tag; t < p.first_tag + p.tag_count; ++t) {
             const auto tag = Get<TagRec>(SectionTag::kTags, t);
-            if (String(tag.key) == "LightMode" && equal_ci(String(tag.value), name)) return i;
+            if (String(tag.key) == "LightMode" && equal_ci(String(tag.value), name))
+                return i;
         }
     }
     return std::nullopt;
 }
 
 std::optional<uint32_t> Pack::FindVariant(uint32_t pass, VariantKey key) const {
-    if (pass >= Count(SectionTag::kPasses)) return std::nullopt;
+    if (pass >= Count(SectionTag::kPasses))
+        return std::nullopt;
     const PassRec p = Pass(pass);
     uint32_t lo = p.first_variant, hi = p.first_variant + p.variant_count;
     while (lo < hi) {
         const uint32_t mid = lo + (hi - lo) / 2;
         const uint64_t k = Variant(mid).key;
-        if (k == key.bits()) return mid;
+        if (k == key.bits())
+            return mid;
         if (k < key.bits()) {
             lo = mid + 1;
         } else {
@@ -381,7 +427,8 @@ std::optional<uint32_t> Pack::FindVariant(uint32_t pass, VariantKey key) const {
 
 VariantKey Pack::KeyFor(uint32_t pass, const std::vector<std::string>& enabled) const {
     VariantKey key;
-    if (pass >= Count(SectionTag::kPasses)) return key;
+    if (pass >= Count(SectionTag::kPasses))
+        return key;
     const PassRec p = Pass(pass);
     for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
         const KeywordSetRec set = KeywordSet(s);
@@ -398,14 +445,16 @@ VariantKey Pack::KeyFor(uint32_t pass, const std::vector<std::string>& enabled) 
 
 std::vector<std::string> Pack::KeywordsOf(uint32_t pass, VariantKey key) const {
     std::vector<std::string> out;
-    if (pass >= Count(SectionTag::kPasses)) return out;
+    if (pass >= Count(SectionTag::kPasses))
+        return out;
     const PassRec p = Pass(pass);
     for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
         const KeywordSetRec set = KeywordSet(s);
         const uint32_t index = key.Get(set.key_shift, set.key_bits);
         if (index < set.keyword_count) {
             const std::string_view kw = Keyword(set.first_keyword + index);
-            if (!kw.empty()) out.emplace_back(kw);
+            if (!kw.empty())
+                out.emplace_back(kw);
         }
     }
     return out;

@@ -72,7 +72,8 @@ TEST(Compile, WarmCacheRebuildDoesNoGlslangWork) {
 
     // A damaged entry is a miss, not a failure.
     for (const auto& e : fs::recursive_directory_iterator(o.cache_dir)) {
-        if (e.is_regular_file()) fs::resize_file(e.path(), 10);
+        if (e.is_regular_file())
+            fs::resize_file(e.path(), 10);
     }
     CompileRun damaged = Compile({MultiLight()}, o);
     ASSERT_TRUE(damaged.out.ok) << Brief(damaged.diags);
@@ -92,21 +93,21 @@ TEST(Compile, FunctionsNoEntryPointReachesAreNotCompiled) {
 
 TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
     ScratchDir dir;
-    const std::string path = dir.Write(
-        "bad.shader",
-        "Shader \"Test/Bad\" {\n"
-        "    SubShader { Pass {\n"
-        "        CGPROGRAM\n"
-        "        #pragma vertex vert\n"
-        "        #pragma fragment frag\n"
-        "        float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n"
-        "        float4 frag() : SV_Target {\n"
-        "            float4 c = float3(1, 2, 3);\n"
-        "            return c + undefined_name;\n"
-        "        }\n"
-        "        ENDCG\n"
-        "    } }\n"
-        "}\n");
+    const std::string path =
+        dir.Write("bad.shader",
+                  "Shader \"Test/Bad\" {\n"
+                  "    SubShader { Pass {\n"
+                  "        CGPROGRAM\n"
+                  "        #pragma vertex vert\n"
+                  "        #pragma fragment frag\n"
+                  "        float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n"
+                  "        float4 frag() : SV_Target {\n"
+                  "            float4 c = float3(1, 2, 3);\n"
+                  "            return c + undefined_name;\n"
+                  "        }\n"
+                  "        ENDCG\n"
+                  "    } }\n"
+                  "}\n");
     CompileRun run = Compile({path});
     EXPECT_FALSE(run.out.ok);
     EXPECT_TRUE(run.out.pack.empty());
@@ -118,23 +119,23 @@ TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
 
 TEST(Compile, ErrorInCgIncludeIsReportedAtItsOwnLine) {
     ScratchDir dir;
-    const std::string path = dir.Write(
-        "inc.shader",
-        "Shader \"Test/Inc\" {\n"
-        "    CGINCLUDE\n"
-        "    float4 Helper(float4 x) {\n"
-        "        return x * missing_factor;\n"
-        "    }\n"
-        "    ENDCG\n"
-        "    SubShader { Pass {\n"
-        "        CGPROGRAM\n"
-        "        #pragma vertex vert\n"
-        "        #pragma fragment frag\n"
-        "        float4 vert(float4 p : POSITION) : SV_POSITION { return Helper(p); }\n"
-        "        float4 frag() : SV_Target { return 1; }\n"
-        "        ENDCG\n"
-        "    } }\n"
-        "}\n");
+    const std::string path =
+        dir.Write("inc.shader",
+                  "Shader \"Test/Inc\" {\n"
+                  "    CGINCLUDE\n"
+                  "    float4 Helper(float4 x) {\n"
+                  "        return x * missing_factor;\n"
+                  "    }\n"
+                  "    ENDCG\n"
+                  "    SubShader { Pass {\n"
+                  "        CGPROGRAM\n"
+                  "        #pragma vertex vert\n"
+                  "        #pragma fragment frag\n"
+                  "        float4 vert(float4 p : POSITION) : SV_POSITION { return Helper(p); }\n"
+                  "        float4 frag() : SV_Target { return 1; }\n"
+                  "        ENDCG\n"
+                  "    } }\n"
+                  "}\n");
     CompileRun run = Compile({path});
     EXPECT_EQ(Brief(run.diags), "inc.shader:4:20 K5001 unknown variable 'missing_factor'\n");
 }
@@ -147,7 +148,9 @@ TEST(Compile, ErrorInIncludedFileIsReportedInThatFile) {
     const std::string path = dir.Write(
         "use.shader",
         Replace(PassShader("", "            float3 unused_helper() { return Shade(1); }\n",
-                   "            #include \"lib/helpers.cginc\"\n            #include \"lib/helpers.cginc\""), "return _Tint; }", "return float4(Shade(_Tint.xyz), 1); }"));
+                           "            #include \"lib/helpers.cginc\"\n            #include "
+                           "\"lib/helpers.cginc\""),
+                "return _Tint; }", "return float4(Shade(_Tint.xyz), 1); }"));
     CompileRun run = Compile({path});
     EXPECT_EQ(Brief(run.diags), "helpers.cginc:5:17 K5001 unknown variable 'not_declared'\n");
     EXPECT_EQ(run.diags.all()[0].file, dir.path() + "/lib/helpers.cginc");
@@ -158,9 +161,10 @@ TEST(Compile, SharedErrorIsReportedOnceWithTheKeywordsItFailsIn) {
     const std::string path = dir.Write(
         "kw.shader",
         Replace(PassShader("            #pragma multi_compile DIRECTIONAL POINT SPOT\n"
-                   "            #pragma multi_compile _ SHADOWS",
-                   ""), "return _Tint; }",
-                     "\n#ifdef SPOT\n        return spot_only;\n#endif\n        return _Tint; }"));
+                           "            #pragma multi_compile _ SHADOWS",
+                           ""),
+                "return _Tint; }",
+                "\n#ifdef SPOT\n        return spot_only;\n#endif\n        return _Tint; }"));
     CompileRun run = Compile({path});
     EXPECT_EQ(Brief(run.diags),
               "kw.shader:16:16 K5001 unknown variable 'spot_only'\n"
@@ -170,8 +174,8 @@ TEST(Compile, SharedErrorIsReportedOnceWithTheKeywordsItFailsIn) {
 
 TEST(Compile, IncludeResolutionOrderIsIncluderThenDashIThenTemplates) {
     ScratchDir dir;
-    const std::string shader = dir.Write(
-        "s/order.shader", PassShader("", "", "            #include \"which.cginc\""));
+    const std::string shader =
+        dir.Write("s/order.shader", PassShader("", "", "            #include \"which.cginc\""));
     const std::string local = dir.Write("s/which.cginc", "#define WHICH 1\n");
     const std::string dash_i = dir.Write("inc/which.cginc", "#define WHICH 2\n");
     const std::string templ = dir.Write("templates/which.cginc", "#define WHICH 3\n");
@@ -180,7 +184,8 @@ TEST(Compile, IncludeResolutionOrderIsIncluderThenDashIThenTemplates) {
     o.templates_dir = dir.path() + "/templates";
     auto read = [&](const CompileRun& r, const std::string& f) {
         for (const auto& file : r.out.files) {
-            if (file->path() == f) return true;
+            if (file->path() == f)
+                return true;
         }
         return false;
     };
@@ -228,10 +233,12 @@ TEST(Compile, PropertiesAreCheckedAgainstShaderGlobals) {
     ScratchDir dir;
     const std::string path = dir.Write(
         "props.shader",
-        Replace(Replace(PassShader("", "            float3 _Wrong;\n            float _Loose;\n"), "_Tint (\"Tint\", Color) = (1, 1, 1, 1)",
-                     "_Tint (\"Tint\", Color) = (1, 1, 1, 1)\n"
-                     "        _Unused (\"Unused\", Float) = 0\n"
-                     "        _Wrong (\"Wrong\", Color) = (1, 1, 1, 1)"), "return _Tint; }", "return _Tint * _Loose + _Wrong.x; }"));
+        Replace(Replace(PassShader("", "            float3 _Wrong;\n            float _Loose;\n"),
+                        "_Tint (\"Tint\", Color) = (1, 1, 1, 1)",
+                        "_Tint (\"Tint\", Color) = (1, 1, 1, 1)\n"
+                        "        _Unused (\"Unused\", Float) = 0\n"
+                        "        _Wrong (\"Wrong\", Color) = (1, 1, 1, 1)"),
+                "return _Tint; }", "return _Tint * _Loose + _Wrong.x; }"));
     CompileRun run = Compile({path});
     ASSERT_TRUE(run.out.ok) << Brief(run.diags);
     EXPECT_EQ(Brief(run.diags),
@@ -255,15 +262,18 @@ TEST(Compile, BindingsFollowTheBindingModel) {
         for (uint32_t b = m.first_block; b < m.first_block + m.block_count; ++b) {
             const auto br = p.Get<pack::BlockRec>(pack::SectionTag::kBlocks, b);
             const std::string name(p.String(br.name));
-            if (name == "UnityPerFrame") saw_per_frame = br.set == 0 && br.binding == 1;
+            if (name == "UnityPerFrame")
+                saw_per_frame = br.set == 0 && br.binding == 1;
             if (name == "UnityPerDraw") {
                 saw_push = br.kind == uint32_t(pack::BlockKind::kPushConstant) && br.size == 128;
             }
-            if (name == "$Global") saw_global = br.set == 1 && br.binding == 0;
+            if (name == "$Global")
+                saw_global = br.set == 1 && br.binding == 0;
         }
         for (uint32_t r = m.first_resource; r < m.first_resource + m.resource_count; ++r) {
             const auto rr = p.Get<pack::ResourceRec>(pack::SectionTag::kResources, r);
-            if (p.String(rr.name) == "_MainTex") saw_tex = rr.set == 1 && rr.binding == 1;
+            if (p.String(rr.name) == "_MainTex")
+                saw_tex = rr.set == 1 && rr.binding == 1;
         }
     }
     EXPECT_TRUE(saw_per_frame);

@@ -26,8 +26,10 @@ TEST(GlslangMessages, ParsesLocationsTokensAndDropsCascades) {
 TEST(GlslangMessages, RewordsIntoHouseStyle) {
     EXPECT_EQ(RewordMessage(";", "Expected"), "expected ';'");
     EXPECT_EQ(RewordMessage("foo", "undeclared identifier"), "undeclared identifier 'foo'");
-    EXPECT_EQ(RewordMessage("=", " cannot convert from ' const float'  to ' temp 4-component vector of float'"),
-              "cannot convert from 'const float' to 'temp 4-component vector of float'");
+    EXPECT_EQ(
+        RewordMessage(
+            "=", " cannot convert from ' const float'  to ' temp 4-component vector of float'"),
+        "cannot convert from 'const float' to 'temp 4-component vector of float'");
     EXPECT_EQ(RewordMessage("", "Missing entry point."), "missing entry point");
 }
 

@@ -28,22 +28,25 @@ TEST(Reduce, DropsFunctionsTheEntryPointDoesNotReachAndKeepsLines) {
 }
 
 TEST(Reduce, VariantsDifferingOnlyInUnreachedCodeGiveTheSameText) {
-    const std::string a = "cbuffer C : register(b0) { float4 x; }\n"
-                          "float4 frag() : SV_Target { return 1; }\n"
-                          "float4 vert() : SV_POSITION { return x; }\n";
-    const std::string b = "cbuffer C : register(b0) { float4 x; }\n"
-                          "float4 frag() : SV_Target { return 2 * x; }\n"
-                          "float4 vert() : SV_POSITION { return x; }\n";
+    const std::string a =
+        "cbuffer C : register(b0) { float4 x; }\n"
+        "float4 frag() : SV_Target { return 1; }\n"
+        "float4 vert() : SV_POSITION { return x; }\n";
+    const std::string b =
+        "cbuffer C : register(b0) { float4 x; }\n"
+        "float4 frag() : SV_Target { return 2 * x; }\n"
+        "float4 vert() : SV_POSITION { return x; }\n";
     EXPECT_EQ(ReduceToEntryPoint(a, "vert"), ReduceToEntryPoint(b, "vert"));
     EXPECT_NE(ReduceToEntryPoint(a, "frag"), ReduceToEntryPoint(b, "frag"));
 }
 
 TEST(Reduce, TransitiveCallsAndGlobalInitializersAreKept) {
-    const std::string text = "float c() { return 1; }\n"
-                             "static const float k = c();\n"
-                             "float b() { return 2; }\n"
-                             "float a() { return b(); }\n"
-                             "float4 main() : SV_Target { return a() + k; }\n";
+    const std::string text =
+        "float c() { return 1; }\n"
+        "static const float k = c();\n"
+        "float b() { return 2; }\n"
+        "float a() { return b(); }\n"
+        "float4 main() : SV_Target { return a() + k; }\n";
     EXPECT_EQ(ReduceToEntryPoint(text, "main"), text);
 }
 

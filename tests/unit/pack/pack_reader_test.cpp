@@ -15,9 +15,9 @@ namespace {
 const std::vector<uint8_t>& CompiledPack() {
     static const std::vector<uint8_t> bytes = [] {
         DiagnosticList diags;
-        CompileOutput out = CompileShaders(
-            {test::DataPath("data/compile/multi_light.shader"), test::DataPath("../materials/Unlit.shader")},
-            {}, diags);
+        CompileOutput out = CompileShaders({test::DataPath("data/compile/multi_light.shader"),
+                                            test::DataPath("../materials/Unlit.shader")},
+                                           {}, diags);
         EXPECT_TRUE(out.ok) << test::Brief(diags);
         return out.pack;
     }();
@@ -25,9 +25,11 @@ const std::vector<uint8_t>& CompiledPack() {
 }
 
 void Reseal(std::vector<uint8_t>& b) {
-    for (int i = 0; i < 8; ++i) b[kChecksumOffset + i] = 0;
+    for (int i = 0; i < 8; ++i)
+        b[kChecksumOffset + i] = 0;
     const uint64_t sum = XXH64(b.data(), b.size(), 0);
-    for (int i = 0; i < 8; ++i) b[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
+    for (int i = 0; i < 8; ++i)
+        b[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
 }
 
 TEST(PackReader, RoundTripOfACompiledPack) {
@@ -39,7 +41,8 @@ TEST(PackReader, RoundTripOfACompiledPack) {
     ASSERT_TRUE(shader);
     const ShaderRec sr = p.Shader(*shader);
     EXPECT_EQ(sr.property_count, 2u);
-    EXPECT_EQ(p.String(p.Get<PropertyRec>(SectionTag::kProperties, sr.first_property).name), "_Tint");
+    EXPECT_EQ(p.String(p.Get<PropertyRec>(SectionTag::kProperties, sr.first_property).name),
+              "_Tint");
     const auto by_name = p.FindPass(*shader, "forward_delta");
     const auto by_light_mode = p.FindPass(*shader, "ForwardAdd");
     ASSERT_TRUE(by_name && by_light_mode);
@@ -50,7 +53,8 @@ TEST(PackReader, RoundTripOfACompiledPack) {
     bool saw_blend = false;
     for (uint32_t s = pass.first_state; s < pass.first_state + pass.state_count; ++s) {
         const auto st = p.Get<StateRec>(SectionTag::kStates, s);
-        if (st.field == uint32_t(StateField::kBlendSrc)) saw_blend = p.String(st.text) == "One";
+        if (st.field == uint32_t(StateField::kBlendSrc))
+            saw_blend = p.String(st.text) == "One";
     }
     EXPECT_TRUE(saw_blend);
     for (const char* kw : {"DIRECTIONAL", "POINT", "SPOT"}) {
@@ -62,7 +66,8 @@ TEST(PackReader, RoundTripOfACompiledPack) {
         ASSERT_GE(spirv.size(), 20u);
         EXPECT_EQ(spirv.size() % 4, 0u);
         EXPECT_EQ(reinterpret_cast<uintptr_t>(spirv.data()) % 4, 0u);
-        EXPECT_EQ(spirv[0] | spirv[1] << 8 | spirv[2] << 16 | uint32_t(spirv[3]) << 24, 0x07230203u);
+        EXPECT_EQ(spirv[0] | spirv[1] << 8 | spirv[2] << 16 | uint32_t(spirv[3]) << 24,
+                  0x07230203u);
     }
     EXPECT_FALSE(p.FindVariant(*by_name, VariantKey(3)));  // index 3 of a 3-keyword set
     EXPECT_FALSE(p.FindShader("Nope"));

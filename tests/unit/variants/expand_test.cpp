@@ -37,7 +37,8 @@ TEST(Expand, CartesianProductPicksOneKeywordPerSet) {
     EXPECT_EQ(ex->keys.size(), 6u);
     EXPECT_EQ(ex->permutations, 6u);
     std::set<std::string> seen;
-    for (auto k : ex->keys) seen.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+    for (auto k : ex->keys)
+        seen.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
     EXPECT_EQ(seen, (std::set<std::string>{"DIRECTIONAL", "POINT", "SPOT", "DIRECTIONAL SHADOWS",
                                            "POINT SHADOWS", "SPOT SHADOWS"}));
 }
@@ -91,7 +92,8 @@ TEST(Expand, MaxVariantsErrorShowsTheMultiplication) {
 
 TEST(Expand, KeyWiderThan64BitsIsRejected) {
     PassPragmas p;
-    for (int i = 0; i < 65; ++i) p.sets.push_back(Set({"", "K" + std::to_string(i)}));
+    for (int i = 0; i < 65; ++i)
+        p.sets.push_back(Set({"", "K" + std::to_string(i)}));
     DiagnosticList diags;
     EXPECT_FALSE(ExpandVariants(p, {}, "P", "t", {}, diags));
     EXPECT_EQ(diags.all()[0].code, DiagCode::kVariantKeyTooWide);

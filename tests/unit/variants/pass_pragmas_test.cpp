@@ -14,9 +14,10 @@ struct Read {
 
 // Pragma lines start on line 5 of the generated shader.
 Read ReadPragmas(const std::string& lines) {
-    const std::string text = "Shader \"T\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex v\n"
-                             "#pragma fragment f\n" +
-                             lines + "\nENDCG\n} } }\n";
+    const std::string text =
+        "Shader \"T\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex v\n"
+        "#pragma fragment f\n" +
+        lines + "\nENDCG\n} } }\n";
     test::ParseOutcome parsed = test::ParseText(text);
     EXPECT_FALSE(parsed.diags.has_errors()) << test::Summarize(parsed.diags);
     const auto& ss = std::get<shaderlab::SubShader>(parsed.shader->subshaders[0]);
@@ -30,11 +31,15 @@ std::string Sets(const PassPragmas& p) {
     std::string s;
     for (const auto& set : p.sets) {
         s += set.kind == pack::KeywordSetKind::kShaderFeature ? "feature" : "multi";
-        if (set.flags & pack::kKeywordSetLocal) s += "+local";
-        if (set.flags & pack::kKeywordSetVertexOnly) s += "+vertex";
-        if (set.flags & pack::kKeywordSetFragmentOnly) s += "+fragment";
+        if (set.flags & pack::kKeywordSetLocal)
+            s += "+local";
+        if (set.flags & pack::kKeywordSetVertexOnly)
+            s += "+vertex";
+        if (set.flags & pack::kKeywordSetFragmentOnly)
+            s += "+fragment";
         s += ":";
-        for (const auto& k : set.keywords) s += " " + (k.empty() ? std::string("_") : k);
+        for (const auto& k : set.keywords)
+            s += " " + (k.empty() ? std::string("_") : k);
         s += "\n";
     }
     return s;
@@ -81,7 +86,8 @@ TEST(PassPragmas, BuiltinShortcutsExpandToDocumentedSets) {
               "multi: _ VERTEXLIGHT_ON\n");
     EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_fog").pragmas),
               "multi: _ FOG_LINEAR FOG_EXP FOG_EXP2\n");
-    EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_instancing").pragmas), "multi: _ INSTANCING_ON\n");
+    EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_instancing").pragmas),
+              "multi: _ INSTANCING_ON\n");
     EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_shadowcaster").pragmas),
               "multi: SHADOWS_DEPTH SHADOWS_CUBE\n");
     EXPECT_EQ(ReadPragmas("#pragma multi_compile_fwdadd_fullshadows").pragmas.sets.size(), 3u);
@@ -106,9 +112,10 @@ TEST(PassPragmas, Problems) {
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma target 9.9").diags),
               "K4005 5:16 error: unknown shader target '9.9'; expected 2.0, 2.5, 3.0, 3.5, 4.0, "
               "4.5, 4.6 or 5.0\n");
-    EXPECT_EQ(test::Summarize(ReadPragmas("#pragma multi_compile A B\n#pragma multi_compile C A").diags),
-              "K4007 6:25 error: keyword 'A' is already in another keyword set of this pass\n"
-              "  note 5:23: first declared here\n");
+    EXPECT_EQ(
+        test::Summarize(ReadPragmas("#pragma multi_compile A B\n#pragma multi_compile C A").diags),
+        "K4007 6:25 error: keyword 'A' is already in another keyword set of this pass\n"
+        "  note 5:23: first declared here\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma multi_compile A A").diags),
               "K4007 5:25 error: keyword 'A' appears twice in one keyword set\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma multi_compile A 9B").diags),

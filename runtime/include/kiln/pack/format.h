@@ -70,8 +70,8 @@ struct StrRef {  // 8 bytes: a UTF-8 string in STRS, not NUL-terminated
     uint32_t length = 0;
 };
 
-struct MetaRec {  // 24 bytes
-    StrRef producer;  // "kiln 0.2.0; glslang 12.0.0; SPIRV-Tools v2023.1; SPIRV-Cross"
+struct MetaRec {             // 24 bytes
+    StrRef producer;         // "kiln 0.2.0; glslang 12.0.0; SPIRV-Tools v2023.1; SPIRV-Cross"
     uint32_t opt_level = 0;  // 0 = -O0, 1 = -O, 2 = -Os
     uint32_t flags = 0;      // bit 0: debug info kept (-g)
     uint32_t variant_count = 0;
@@ -86,8 +86,17 @@ struct ShaderRec {  // 32 bytes
 };
 
 enum class PropertyType : uint32_t {
-    kColor, kVector, kFloat, kInt, kInteger, kRange,
-    kTexture2D, kTexture3D, kCube, kTexture2DArray, kCubeArray,
+    kColor,
+    kVector,
+    kFloat,
+    kInt,
+    kInteger,
+    kRange,
+    kTexture2D,
+    kTexture3D,
+    kCube,
+    kTexture2DArray,
+    kCubeArray,
 };
 
 struct PropertyRec {  // 64 bytes
@@ -130,24 +139,44 @@ struct TagRec {  // 16 bytes
 
 // One resolved render-state setting of a pass (Category, SubShader and Pass levels merged).
 enum class StateField : uint32_t {
-    kCull, kZTest, kZWrite, kZClip, kAlphaToMask, kConservative,
-    kOffsetFactor, kOffsetUnits,
-    kBlendOff, kBlendSrc, kBlendDst, kBlendSrcAlpha, kBlendDstAlpha,
-    kBlendOp, kBlendOpAlpha, kColorMask,
-    kStencilRef, kStencilReadMask, kStencilWriteMask,
-    kStencilCompFront, kStencilPassFront, kStencilFailFront, kStencilZFailFront,
-    kStencilCompBack, kStencilPassBack, kStencilFailBack, kStencilZFailBack,
+    kCull,
+    kZTest,
+    kZWrite,
+    kZClip,
+    kAlphaToMask,
+    kConservative,
+    kOffsetFactor,
+    kOffsetUnits,
+    kBlendOff,
+    kBlendSrc,
+    kBlendDst,
+    kBlendSrcAlpha,
+    kBlendDstAlpha,
+    kBlendOp,
+    kBlendOpAlpha,
+    kColorMask,
+    kStencilRef,
+    kStencilReadMask,
+    kStencilWriteMask,
+    kStencilCompFront,
+    kStencilPassFront,
+    kStencilFailFront,
+    kStencilZFailFront,
+    kStencilCompBack,
+    kStencilPassBack,
+    kStencilFailBack,
+    kStencilZFailBack,
 };
 inline constexpr uint32_t kStateFieldCount = 27;
 
 enum class StateKind : uint32_t { kLiteral, kNumber, kPropertyRef };
 
-struct StateRec {  // 24 bytes
-    uint32_t field = 0;  // StateField
+struct StateRec {         // 24 bytes
+    uint32_t field = 0;   // StateField
     int32_t target = -1;  // render target for Blend/BlendOp/ColorMask; -1 = all
-    uint32_t kind = 0;   // StateKind
-    float number = 0;    // kNumber
-    StrRef text;         // canonical literal ("LEqual") or property name
+    uint32_t kind = 0;    // StateKind
+    float number = 0;     // kNumber
+    StrRef text;          // canonical literal ("LEqual") or property name
 };
 
 enum class KeywordSetKind : uint32_t { kMultiCompile, kShaderFeature };
@@ -157,9 +186,9 @@ enum KeywordSetFlags : uint32_t {
     kKeywordSetFragmentOnly = 1u << 2,
 };
 
-struct KeywordSetRec {  // 24 bytes
-    uint32_t kind = 0;   // KeywordSetKind
-    uint32_t flags = 0;  // KeywordSetFlags
+struct KeywordSetRec {                              // 24 bytes
+    uint32_t kind = 0;                              // KeywordSetKind
+    uint32_t flags = 0;                             // KeywordSetFlags
     uint32_t first_keyword = 0, keyword_count = 0;  // into KWRD; an empty name is "no keyword"
     uint32_t key_shift = 0, key_bits = 0;           // see variant_key.h
 };
@@ -173,7 +202,7 @@ struct VariantRec {  // 24 bytes
 
 enum class Stage : uint32_t { kVertex, kFragment };
 
-struct ModuleRec {  // 48 bytes
+struct ModuleRec {              // 48 bytes
     uint32_t spirv_offset = 0;  // within SPRV, 4-aligned
     uint32_t spirv_size = 0;    // bytes, a multiple of 4
     uint64_t hash = 0;          // XXH64 of the SPIR-V bytes
@@ -190,7 +219,7 @@ enum class BaseType : uint32_t { kUnknown, kBool, kInt, kUInt, kFloat, kHalf, kS
 struct InterfaceVarRec {  // 32 bytes: a stage input or output
     StrRef name;
     StrRef semantic;  // HLSL semantic, upper-case ("POSITION", "TEXCOORD0"); empty for built-ins
-    uint32_t location = 0;  // ~0u for built-ins
+    uint32_t location = 0;   // ~0u for built-ins
     uint32_t direction = 0;  // 0 input, 1 output
     uint32_t base_type = 0;  // BaseType
     uint32_t vecsize = 0;
@@ -198,9 +227,9 @@ struct InterfaceVarRec {  // 32 bytes: a stage input or output
 
 enum class BlockKind : uint32_t { kUniform, kPushConstant };
 
-struct BlockRec {  // 32 bytes
-    StrRef name;  // "$Global" or the cbuffer's name
-    uint32_t kind = 0;  // BlockKind
+struct BlockRec {                   // 32 bytes
+    StrRef name;                    // "$Global" or the cbuffer's name
+    uint32_t kind = 0;              // BlockKind
     uint32_t set = 0, binding = 0;  // push constants: 0, 0
     uint32_t size = 0;              // declared size in bytes
     uint32_t first_member = 0, member_count = 0;

@@ -15,68 +15,170 @@
 
 namespace kiln::pack {
 
-template <class V> constexpr void Visit(V& v, StrRef& r) { v(r.offset); v(r.length); }
-template <class V> constexpr void Visit(V& v, Header& r) {
-    v(r.magic); v(r.format_major); v(r.format_minor); v(r.header_size); v(r.section_count);
-    v(r.file_size); v(r.checksum);
+template <class V>
+constexpr void Visit(V& v, StrRef& r) {
+    v(r.offset);
+    v(r.length);
 }
-template <class V> constexpr void Visit(V& v, SectionEntry& r) {
-    v(r.tag); v(r.record_count); v(r.offset); v(r.size);
+template <class V>
+constexpr void Visit(V& v, Header& r) {
+    v(r.magic);
+    v(r.format_major);
+    v(r.format_minor);
+    v(r.header_size);
+    v(r.section_count);
+    v(r.file_size);
+    v(r.checksum);
 }
-template <class V> constexpr void Visit(V& v, MetaRec& r) {
-    Visit(v, r.producer); v(r.opt_level); v(r.flags); v(r.variant_count); v(r.module_count);
+template <class V>
+constexpr void Visit(V& v, SectionEntry& r) {
+    v(r.tag);
+    v(r.record_count);
+    v(r.offset);
+    v(r.size);
 }
-template <class V> constexpr void Visit(V& v, ShaderRec& r) {
-    Visit(v, r.name); v(r.first_property); v(r.property_count); v(r.first_pass); v(r.pass_count);
+template <class V>
+constexpr void Visit(V& v, MetaRec& r) {
+    Visit(v, r.producer);
+    v(r.opt_level);
+    v(r.flags);
+    v(r.variant_count);
+    v(r.module_count);
+}
+template <class V>
+constexpr void Visit(V& v, ShaderRec& r) {
+    Visit(v, r.name);
+    v(r.first_property);
+    v(r.property_count);
+    v(r.first_pass);
+    v(r.pass_count);
     Visit(v, r.fallback);
 }
-template <class V> constexpr void Visit(V& v, PropertyRec& r) {
-    Visit(v, r.name); Visit(v, r.display_name); v(r.type); v(r.first_attribute);
-    v(r.attribute_count); v(r.range_min); v(r.range_max); v(r.default_value);
-    Visit(v, r.texture_default); v(r.reserved);
+template <class V>
+constexpr void Visit(V& v, PropertyRec& r) {
+    Visit(v, r.name);
+    Visit(v, r.display_name);
+    v(r.type);
+    v(r.first_attribute);
+    v(r.attribute_count);
+    v(r.range_min);
+    v(r.range_max);
+    v(r.default_value);
+    Visit(v, r.texture_default);
+    v(r.reserved);
 }
-template <class V> constexpr void Visit(V& v, AttributeRec& r) { Visit(v, r.name); Visit(v, r.args); }
-template <class V> constexpr void Visit(V& v, PassRec& r) {
-    Visit(v, r.name); v(r.shader); v(r.subshader); v(r.lod); v(r.first_tag); v(r.tag_count);
-    v(r.first_state); v(r.state_count); v(r.first_keyword_set); v(r.keyword_set_count);
-    v(r.first_variant); v(r.variant_count); v(r.flags);
+template <class V>
+constexpr void Visit(V& v, AttributeRec& r) {
+    Visit(v, r.name);
+    Visit(v, r.args);
 }
-template <class V> constexpr void Visit(V& v, TagRec& r) { Visit(v, r.key); Visit(v, r.value); }
-template <class V> constexpr void Visit(V& v, StateRec& r) {
-    v(r.field); v(r.target); v(r.kind); v(r.number); Visit(v, r.text);
+template <class V>
+constexpr void Visit(V& v, PassRec& r) {
+    Visit(v, r.name);
+    v(r.shader);
+    v(r.subshader);
+    v(r.lod);
+    v(r.first_tag);
+    v(r.tag_count);
+    v(r.first_state);
+    v(r.state_count);
+    v(r.first_keyword_set);
+    v(r.keyword_set_count);
+    v(r.first_variant);
+    v(r.variant_count);
+    v(r.flags);
 }
-template <class V> constexpr void Visit(V& v, KeywordSetRec& r) {
-    v(r.kind); v(r.flags); v(r.first_keyword); v(r.keyword_count); v(r.key_shift); v(r.key_bits);
+template <class V>
+constexpr void Visit(V& v, TagRec& r) {
+    Visit(v, r.key);
+    Visit(v, r.value);
 }
-template <class V> constexpr void Visit(V& v, VariantRec& r) {
-    v(r.pass); v(r.reserved); v(r.key); v(r.vertex_module); v(r.fragment_module);
+template <class V>
+constexpr void Visit(V& v, StateRec& r) {
+    v(r.field);
+    v(r.target);
+    v(r.kind);
+    v(r.number);
+    Visit(v, r.text);
 }
-template <class V> constexpr void Visit(V& v, ModuleRec& r) {
-    v(r.spirv_offset); v(r.spirv_size); v(r.hash); v(r.stage); v(r.first_interface);
-    v(r.interface_count); v(r.first_block); v(r.block_count); v(r.first_resource);
-    v(r.resource_count); v(r.reserved);
+template <class V>
+constexpr void Visit(V& v, KeywordSetRec& r) {
+    v(r.kind);
+    v(r.flags);
+    v(r.first_keyword);
+    v(r.keyword_count);
+    v(r.key_shift);
+    v(r.key_bits);
 }
-template <class V> constexpr void Visit(V& v, InterfaceVarRec& r) {
-    Visit(v, r.name); Visit(v, r.semantic); v(r.location); v(r.direction); v(r.base_type);
+template <class V>
+constexpr void Visit(V& v, VariantRec& r) {
+    v(r.pass);
+    v(r.reserved);
+    v(r.key);
+    v(r.vertex_module);
+    v(r.fragment_module);
+}
+template <class V>
+constexpr void Visit(V& v, ModuleRec& r) {
+    v(r.spirv_offset);
+    v(r.spirv_size);
+    v(r.hash);
+    v(r.stage);
+    v(r.first_interface);
+    v(r.interface_count);
+    v(r.first_block);
+    v(r.block_count);
+    v(r.first_resource);
+    v(r.resource_count);
+    v(r.reserved);
+}
+template <class V>
+constexpr void Visit(V& v, InterfaceVarRec& r) {
+    Visit(v, r.name);
+    Visit(v, r.semantic);
+    v(r.location);
+    v(r.direction);
+    v(r.base_type);
     v(r.vecsize);
 }
-template <class V> constexpr void Visit(V& v, BlockRec& r) {
-    Visit(v, r.name); v(r.kind); v(r.set); v(r.binding); v(r.size); v(r.first_member);
+template <class V>
+constexpr void Visit(V& v, BlockRec& r) {
+    Visit(v, r.name);
+    v(r.kind);
+    v(r.set);
+    v(r.binding);
+    v(r.size);
+    v(r.first_member);
     v(r.member_count);
 }
-template <class V> constexpr void Visit(V& v, MemberRec& r) {
-    Visit(v, r.name); v(r.offset); v(r.size); v(r.base_type); v(r.vecsize); v(r.columns);
+template <class V>
+constexpr void Visit(V& v, MemberRec& r) {
+    Visit(v, r.name);
+    v(r.offset);
+    v(r.size);
+    v(r.base_type);
+    v(r.vecsize);
+    v(r.columns);
     v(r.array_size);
 }
-template <class V> constexpr void Visit(V& v, ResourceRec& r) {
-    Visit(v, r.name); v(r.kind); v(r.set); v(r.binding); v(r.dim); v(r.arrayed);
+template <class V>
+constexpr void Visit(V& v, ResourceRec& r) {
+    Visit(v, r.name);
+    v(r.kind);
+    v(r.set);
+    v(r.binding);
+    v(r.dim);
+    v(r.arrayed);
     v(r.array_size);
 }
 
 // Counts encoded bytes.
 struct SizeVisitor {
     size_t size = 0;
-    template <class T> constexpr void operator()(const T&) { size += sizeof(T); }
+    template <class T>
+    constexpr void operator()(const T&) {
+        size += sizeof(T);
+    }
 };
 
 template <class Rec>
@@ -110,22 +212,40 @@ class ByteWriter {
     std::vector<uint8_t>& bytes() { return bytes_; }
     size_t size() const { return bytes_.size(); }
 
-    template <class T> void operator()(const T& value) { Put(value); }
+    template <class T>
+    void operator()(const T& value) {
+        Put(value);
+    }
     void Put(uint16_t x) { PutLe(x, 2); }
     void Put(uint32_t x) { PutLe(x, 4); }
     void Put(int32_t x) { PutLe(static_cast<uint32_t>(x), 4); }
     void Put(uint64_t x) { PutLe(x, 8); }
     void Put(float x) { PutLe(std::bit_cast<uint32_t>(x), 4); }
-    void Put(const std::array<char, 4>& a) { for (char c : a) bytes_.push_back(uint8_t(c)); }
-    void Put(const std::array<float, 4>& a) { for (float f : a) Put(f); }
-    void PutBytes(std::span<const uint8_t> data) { bytes_.insert(bytes_.end(), data.begin(), data.end()); }
-    void PadTo(size_t alignment) { while (bytes_.size() % alignment) bytes_.push_back(0); }
+    void Put(const std::array<char, 4>& a) {
+        for (char c : a)
+            bytes_.push_back(uint8_t(c));
+    }
+    void Put(const std::array<float, 4>& a) {
+        for (float f : a)
+            Put(f);
+    }
+    void PutBytes(std::span<const uint8_t> data) {
+        bytes_.insert(bytes_.end(), data.begin(), data.end());
+    }
+    void PadTo(size_t alignment) {
+        while (bytes_.size() % alignment)
+            bytes_.push_back(0);
+    }
 
-    template <class Rec> void Record(Rec rec) { Visit(*this, rec); }
+    template <class Rec>
+    void Record(Rec rec) {
+        Visit(*this, rec);
+    }
 
   private:
     void PutLe(uint64_t x, int n) {
-        for (int i = 0; i < n; ++i) bytes_.push_back(uint8_t(x >> (8 * i)));
+        for (int i = 0; i < n; ++i)
+            bytes_.push_back(uint8_t(x >> (8 * i)));
     }
     std::vector<uint8_t> bytes_;
 };
@@ -137,16 +257,30 @@ class ByteReader {
     explicit ByteReader(std::span<const uint8_t> data) : data_(data) {}
     bool ok() const { return ok_; }
 
-    template <class T> void operator()(T& value) { Get(value); }
+    template <class T>
+    void operator()(T& value) {
+        Get(value);
+    }
     void Get(uint16_t& x) { x = static_cast<uint16_t>(GetLe(2)); }
     void Get(uint32_t& x) { x = static_cast<uint32_t>(GetLe(4)); }
     void Get(int32_t& x) { x = static_cast<int32_t>(static_cast<uint32_t>(GetLe(4))); }
     void Get(uint64_t& x) { x = GetLe(8); }
     void Get(float& x) { x = std::bit_cast<float>(static_cast<uint32_t>(GetLe(4))); }
-    void Get(std::array<char, 4>& a) { for (char& c : a) c = static_cast<char>(GetLe(1)); }
-    void Get(std::array<float, 4>& a) { for (float& f : a) Get(f); }
+    void Get(std::array<char, 4>& a) {
+        for (char& c : a)
+            c = static_cast<char>(GetLe(1));
+    }
+    void Get(std::array<float, 4>& a) {
+        for (float& f : a)
+            Get(f);
+    }
 
-    template <class Rec> Rec Record() { Rec rec{}; Visit(*this, rec); return rec; }
+    template <class Rec>
+    Rec Record() {
+        Rec rec{};
+        Visit(*this, rec);
+        return rec;
+    }
 
   private:
     uint64_t GetLe(size_t n) {
@@ -155,7 +289,8 @@ class ByteReader {
             return 0;
         }
         uint64_t x = 0;
-        for (size_t i = 0; i < n; ++i) x |= uint64_t(data_[pos_ + i]) << (8 * i);
+        for (size_t i = 0; i < n; ++i)
+            x |= uint64_t(data_[pos_ + i]) << (8 * i);
         pos_ += n;
         return x;
     }
