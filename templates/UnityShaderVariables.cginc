@@ -20,13 +20,34 @@ CBUFFER_START(UnityPerFrame)
     float4x4 unity_MatrixV;
     float4x4 unity_MatrixVP;
     float4x4 glstate_matrix_projection;
-    float4 unity_AmbientSky;    // linear RGB ambient colour
+    float4 unity_AmbientSky;    // linear RGB constant ambient colour (the lecture's ambient term)
 CBUFFER_END
 
 CBUFFER_START(UnityLighting)
-    // Directional light: (direction towards the light, 0); other lights: (position, 1).
+    // The pixel light of this pass (ForwardBase: the main directional light; ForwardAdd: one light).
+    // Directional light: (unit direction towards the light, 0); other lights: (position, 1).
     float4 _WorldSpaceLightPos0;
-    float4 _LightColor0;        // linear colour x intensity
+    float4 _LightColor0;        // linear colour x intensity (docs/shader-library.md, "Light units")
+    float4 kiln_SpotDirection0; // xyz: unit direction the spot light points in; w: 0
+    float4 kiln_LightParams0;   // x: 1 / range^2 (0 = unlimited), y: cos outer cone, z: cos inner cone, w: 0
+
+    // Up to four per-vertex point lights (ForwardBase with VERTEXLIGHT_ON), structure of arrays.
+    float4 unity_4LightPosX0;   // world x of lights 0..3
+    float4 unity_4LightPosY0;   // world y
+    float4 unity_4LightPosZ0;   // world z
+    float4 unity_4LightAtten0;  // 1 / range^2 of lights 0..3 (0 = unlimited)
+    float4 unity_LightColor[8]; // colours x intensity; 0..3 are the vertex lights
+CBUFFER_END
+
+// Ambient light as order-2 spherical harmonics (KilnSH.cginc has the packing), per frame.
+CBUFFER_START(UnityProbes)
+    float4 unity_SHAr;
+    float4 unity_SHAg;
+    float4 unity_SHAb;
+    float4 unity_SHBr;
+    float4 unity_SHBg;
+    float4 unity_SHBb;
+    float4 unity_SHC;
 CBUFFER_END
 
 // Per object: 128 bytes, the push-constant size every Vulkan device provides.

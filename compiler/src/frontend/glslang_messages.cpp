@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <regex>
 #include <sstream>
 
 namespace kiln::frontend {
@@ -58,6 +59,16 @@ uint32_t FindToken(std::string_view line, const std::string& token) {
             return static_cast<uint32_t>(at + 1);
     }
     return 0;
+}
+
+// glslang names types as "temp 3-component vector of float"; the user wrote float3. Scalars and
+// vectors are respelled in HLSL, storage qualifiers dropped; matrices keep glslang's spelling.
+std::string HlslTypeSpellings(const std::string& text) {
+    static const std::regex kQualifiers(
+        "'((?:temp|const|uniform|in|out|inout|global|smooth|flat) )+");
+    static const std::regex kVector("'([1-4])-component vector of (float|int|uint|bool|double)'");
+    std::string t = std::regex_replace(text, kQualifiers, "'");
+    return std::regex_replace(t, kVector, "'$2$1'");
 }
 
 }  // namespace
@@ -154,7 +165,7 @@ std::string RewordMessage(const std::string& token, const std::string& text) {
                 ++i;
         }
     }
-    t = Trim(t);
+    t = HlslTypeSpellings(Trim(t));
     while (!t.empty() && t.back() == '.')
         t.pop_back();
     if (t == "Expected" || t.empty()) {

@@ -1,0 +1,87 @@
+// KilnBRDF.cginc: the microfacet specular BRDF (GGX / Smith height-correlated / Schlick) and its
+// parameterization, after Filament's "Physically Based Rendering in Filament" (section 4.4-4.6).
+//
+// Conventions: a = roughness = perceptualRoughness^2 (Burley 2012), perceptualRoughness =
+// 1 - smoothness (Unity). Light colours follow the library's convention (pi x radiance), so the
+// rendering equation term is f * C * (n . l) * pi; BRDF_Specular below includes that pi.
+#ifndef KILN_BRDF_INCLUDED
+#define KILN_BRDF_INCLUDED
+
+#include "KilnCommon.cginc"
+
+// Smallest perceptual roughness: GGX at a = 0 is a Dirac delta (D = 0/0 at n . h = 1). 0.045 is
+// Filament's fp32 limit (MIN_PERCEPTUAL_ROUGHNESS); D stays below 1e5.
+#define KILN_MIN_PERCEPTUAL_ROUGHNESS 0.045
+
+float SmoothnessToPerceptualRoughness(float smoothness) {
+    return 1.0 - saturate(smoothness);
+}
+
+// a = perceptualRoughness^2 (Burley 2012, section 5.4), clamped away from the delta.
+float PerceptualRoughnessToRoughness(float perceptualRoughness) {
+    // guard: roughness 0 makes D_GGX 0/0 at n . h = 1 (clamp perceptual roughness)
+    float p = clamp(perceptualRoughness, KILN_MIN_PERCEPTUAL_ROUGHNESS, 1.0);
+    return p * p;
+}
+
+// GGX / Trowbridge-Reitz normal distribution (Walter et al. 2007, eq. 33):
+// D(h) = a^2 / (pi * ((n . h)^2 (a^2 - 1) + 1)^2).
+float D_GGX(float NoH, float a) {
+    float a2 = a * a;
+    float d = (NoH * a2 - NoH) * NoH + 1.0;
+    // guard: d >= a^2 > 0 for n . h in [0, 1] and a > 0; the max only absorbs rounding
+    return a2 / (KILN_PI * max(d * d, 1e-20));
+}
+
+// Height-correlated Smith visibility V = G / (4 (n . l)(n . v)) for GGX (Heitz 2014, eq. 99;
+// Filament eq. 15): V = 0.5 / (n.l sqrt((n.v)^2 (1 - a^2) + a^2) + n.v sqrt((n.l)^2 (1 - a^2) + a^2)).
+float V_SmithGGXCorrelated(float NoV, float NoL, float a) {
+    float a2 = a * a;
+    float lambdaV = NoL * sqrt((NoV * NoV) * (1.0 - a2) + a2);
+    float lambdaL = NoV * sqrt((NoL * NoL) * (1.0 - a2) + a2);
+    // guard: at n . v -> 0 and n . l -> 0 the denominator vanishes (V -> Inf); it is multiplied
+    // by n . l afterwards, so bounding it keeps the product finite and unchanged elsewhere
+    return 0.5 / max(lambdaV + lambdaL, 1e-7);
+}
+
+// Schlick's Fresnel approximation (Schlick 1994, eq. 24): F = F0 + (1 - F0)(1 - v . h)^5.
+float3 F_Schlick(float3 f0, float VoH) {
+    // guard: saturate keeps the base of the fifth power in [0, 1]
+    return f0 + (1.0 - f0) * Pow5(1.0 - saturate(VoH));
+}
+
+// Schlick towards a grazing reflectance f90 instead of 1 (used for the indirect specular).
+float3 F_SchlickLerp(float3 f0, float3 f90, float VoH) {
+    return lerp(f0, f90, Pow5(1.0 - saturate(VoH)));
+}
+
+// Lambertian diffuse BRDF 1/pi, times pi for the library's light convention: 1.
+float Fd_Lambert() {
+    return 1.0;
+}
+
+// The specular term of the rendering equation for one light, with the convention's pi:
+// pi * D * V * F * (n . l).
+float3 BRDF_Specular(float3 f0, float NoV, float NoL, float NoH, float LoH, float a) {
+    float D = D_GGX(NoH, a);
+    float V = V_SmithGGXCorrelated(NoV, NoL, a);
+    float3 F = F_Schlick(f0, LoH);
+    return (KILN_PI * D * V * NoL) * F;
+}
+
+// Reflectance at normal incidence of dielectrics: 4% (glTF 2.0 specification, Appendix B,
+// "dielectric_brdf" with ior 1.5: ((1.5 - 1) / (1.5 + 1))^2 = 0.04).
+#define KILN_DIELECTRIC_F0 0.04
+
+// Metallic-roughness to specular parameters (glTF 2.0, Appendix B.3.5): f0 = lerp(0.04, base,
+// metallic); the diffuse colour keeps the share of light not reflected by the dielectric layer,
+// (1 - 0.04)(1 - metallic), as in Unity's DiffuseAndSpecularFromMetallic.
+float OneMinusReflectivity_Metallic(float metallic) {
+    return (1.0 - KILN_DIELECTRIC_F0) * (1.0 - saturate(metallic));
+}
+float3 SpecularColor_Metallic(float3 baseColor, float metallic) {
+    return lerp(float3(KILN_DIELECTRIC_F0, KILN_DIELECTRIC_F0, KILN_DIELECTRIC_F0), baseColor,
+                saturate(metallic));
+}
+
+#endif  // KILN_BRDF_INCLUDED
