@@ -1,9 +1,9 @@
-// Lambert: c = c_r * c_l * max(0, n . l), the lecture's first lighting model.
+// Lambert: c = c_r * c_l * max(0, n . l), the lecture's first lighting model (directional light).
 Shader "Kiln/Lambert"
 {
     Properties
     {
-        _Color ("Color", Color) = (1, 1, 1, 1)
+        [MainColor] _Color ("Color", Color) = (1, 1, 1, 1)
     }
     SubShader
     {
@@ -14,33 +14,16 @@ Shader "Kiln/Lambert"
             Tags { "LightMode" = "ForwardBase" }
 
             CGPROGRAM
-            #pragma vertex MyVertexProgram
-            #pragma fragment MyFragmentProgram
-            #include "UnityStandardBRDF.cginc"
+            #pragma vertex ForwardVertex
+            #pragma fragment LambertFragment
+            #include "MaterialCommon.cginc"
 
             float4 _Color;
 
-            struct VertexData {
-                float4 position : POSITION;
-                float3 normal : NORMAL;
-            };
-
-            struct VertexToFragment {
-                float4 position : SV_POSITION;
-                float3 normal : NORMAL;
-            };
-
-            VertexToFragment MyVertexProgram(VertexData vert) {
-                VertexToFragment v2f;
-                v2f.position = UnityObjectToClipPos(vert.position);
-                v2f.normal = UnityObjectToWorldNormal(vert.normal);
-                return v2f;
-            }
-
-            float4 MyFragmentProgram(VertexToFragment v2f) : SV_TARGET {
-                float3 lightDir = _WorldSpaceLightPos0.xyz;
-                float3 lightColor = _LightColor0.rgb;
-                return _Color * float4(lightColor * DotClamped(lightDir, normalize(v2f.normal)), 1);
+            float4 LambertFragment(Interpolators i) : SV_TARGET {
+                float3 n = SafeNormalize(i.normal);
+                UnityLight light = PixelLight(i.worldPos, n);
+                return float4(Lambert_Diffuse(_Color.rgb, light.color, n, light.dir), _Color.a);
             }
             ENDCG
         }

@@ -1,0 +1,115 @@
+// Every shipped shader (materials/*.shader) compiles in every variant with no warnings, and the
+// shaders keep the structure the renderer relies on (variant counts, G-buffer outputs,
+// strippable shader_feature keywords).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "kiln/pack/reader.h"
+#include "support/compile_support.h"
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::vector<std::string> ShippedShaders() {
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(DataPath("../materials"))) {
+        if (e.path().extension() == ".shader")
+            files.push_back(e.path().string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+TEST(Materials, TheTenShippedShadersArePresent) {
+    std::set<std::string> names;
+    for (const std::string& f : ShippedShaders())
+        names.insert(fs::path(f).stem().string());
+    EXPECT_EQ(names, (std::set<std::string>{"BlinnPhong", "BlinnPhongTextured", "Deferred",
+                                            "EnergyConserving", "Lambert", "LambertAmbient",
+                                            "MultiLight", "Standard", "StandardMetallic",
+                                            "Unlit"}));
+}
+
+TEST(Materials, EveryShippedShaderCompilesInEveryVariantWithoutWarnings) {
+    for (const std::string& file : ShippedShaders()) {
+        SCOPED_TRACE(file);
+        CompileRun run = Compile({file});
+        ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+        EXPECT_EQ(Brief(run.diags), "");
+        EXPECT_GT(run.out.stats.variants, 0u);
+        EXPECT_EQ(run.out.stats.variants, run.out.stats.permutations);
+    }
+}
+
+uint64_t VariantsOf(const CompileRun& run, const std::string& light_mode) {
+    for (const PassReport& p : run.out.passes) {
+        if (p.light_mode == light_mode)
+            return p.variants;
+    }
+    return 0;
+}
+
+TEST(Materials, StandardMetallicFeaturesAreShaderFeaturesThatStripAway) {
+    const std::string file = DataPath("../materials/StandardMetallic.shader");
+    CompileRun all = Compile({file});
+    ASSERT_TRUE(all.out.ok) << Brief(all.diags);
+    // Base: 2^4 features. Add: DIRECTIONAL/POINT/SPOT x _NORMALMAP x _METALLICGLOSSMAP.
+    EXPECT_EQ(VariantsOf(all, "ForwardBase"), 16u);
+    EXPECT_EQ(VariantsOf(all, "ForwardAdd"), 12u);
+
+    CompileOptions only_normal_map;
+    only_normal_map.keywords = std::set<std::string>{"_NORMALMAP"};
+    CompileRun some = Compile({file}, only_normal_map);
+    ASSERT_TRUE(some.out.ok) << Brief(some.diags);
+    EXPECT_EQ(VariantsOf(some, "ForwardBase"), 2u);
+    EXPECT_EQ(VariantsOf(some, "ForwardAdd"), 6u);
+}
+
+TEST(Materials, MultiLightHasVertexLightsInTheBaseAndThreeLightTypesInTheAddPass) {
+    CompileRun run = Compile({DataPath("../materials/MultiLight.shader")});
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    EXPECT_EQ(VariantsOf(run, "ForwardBase"), 2u);
+    EXPECT_EQ(VariantsOf(run, "ForwardAdd"), 3u);
+    pack::Pack p;
+    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    const auto pass = p.FindPass(0, "ForwardAdd");
+    ASSERT_TRUE(pass.has_value());
+    std::map<uint32_t, std::string> state;
+    const pack::PassRec add = p.Pass(*pass);
+    for (uint32_t s = 0; s < add.state_count; ++s) {
+        const auto rec = p.Get<pack::StateRec>(pack::SectionTag::kStates, add.first_state + s);
+        state[rec.field] = std::string(p.String(rec.text));
+    }
+    EXPECT_EQ(state[uint32_t(pack::StateField::kBlendSrc)], "One");
+    EXPECT_EQ(state[uint32_t(pack::StateField::kBlendDst)], "One");
+    EXPECT_EQ(state[uint32_t(pack::StateField::kZWrite)], "Off");
+}
+
+TEST(Materials, DeferredGBufferPassWritesFourFloat4Targets) {
+    CompileRun run = Compile({DataPath("../materials/Deferred.shader")});
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    pack::Pack p;
+    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    const auto pass = p.FindPass(0, "Deferred");
+    ASSERT_TRUE(pass.has_value());
+    const pack::VariantRec v = p.Variant(p.Pass(*pass).first_variant);
+    const pack::ModuleRec fragment = p.Module(v.fragment_module);
+    std::set<uint32_t> locations;
+    for (uint32_t k = 0; k < fragment.interface_count; ++k) {
+        const auto io = p.Get<pack::InterfaceVarRec>(pack::SectionTag::kInterface,
+                                                     fragment.first_interface + k);
+        if (io.direction == 1) {
+            EXPECT_EQ(io.vecsize, 4u);
+            locations.insert(io.location);
+        }
+    }
+    EXPECT_EQ(locations, (std::set<uint32_t>{0, 1, 2, 3}));
+}
+
+}  // namespace
+}  // namespace kiln::test
