@@ -1,0 +1,81 @@
+#include "kiln/reference/sh.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "kiln/reference/guards.h"
+
+namespace kiln::reference {
+namespace {
+
+// R&H 2001, eq. 13 constants.
+constexpr double kC1 = 0.429043, kC2 = 0.511664, kC3 = 0.743125, kC4 = 0.886227, kC5 = 0.247708;
+
+}  // namespace
+
+std::array<double, 9> SHBasis(const glm::dvec3& d) {
+    const double x = d.x, y = d.y, z = d.z;
+    return {0.282095,
+            0.488603 * y,
+            0.488603 * z,
+            0.488603 * x,
+            1.092548 * x * y,
+            1.092548 * y * z,
+            0.315392 * (3.0 * z * z - 1.0),
+            1.092548 * x * z,
+            0.546274 * (x * x - y * y)};
+}
+
+void AddDirectionalLight(SH9& sh, const glm::dvec3& d, const glm::dvec3& color) {
+    const auto y = SHBasis(SafeNormalize(d));
+    for (size_t i = 0; i < 9; ++i)
+        sh.L[i] += color * y[i];
+}
+
+void AddConstantRadiance(SH9& sh, const glm::dvec3& color) {
+    sh.L[0] += color * std::sqrt(4.0 * kPi);  // integral of Y_00 = 1 / sqrt(4 pi) over 4 pi sr
+}
+
+glm::dvec3 Irradiance(const SH9& sh, const glm::dvec3& n) {
+    const double x = n.x, y = n.y, z = n.z;
+    const auto& L = sh.L;
+    return kC1 * L[8] * (x * x - y * y) + kC3 * L[6] * z * z + kC4 * L[0] - kC5 * L[6] +
+           2.0 * kC1 * (L[4] * x * y + L[7] * x * z + L[5] * y * z) +
+           2.0 * kC2 * (L[3] * x + L[1] * y + L[2] * z);
+}
+
+glm::dvec3 AmbientFromSH(const SH9& sh, const glm::dvec3& n) {
+    return glm::max(Irradiance(sh, n) / kPi, glm::dvec3(0.0));
+}
+
+PackedSH PackSH9(const SH9& sh) {
+    PackedSH p{};
+    const auto& L = sh.L;
+    for (int c = 0; c < 3; ++c) {
+        // A = (x, y, z, 1) coefficients; B = (xy, yz, zz, zx); C = (x^2 - y^2).
+        p[size_t(c)] = {float(2.0 * kC2 * L[3][c] / kPi), float(2.0 * kC2 * L[1][c] / kPi),
+                        float(2.0 * kC2 * L[2][c] / kPi),
+                        float((kC4 * L[0][c] - kC5 * L[6][c]) / kPi)};
+        p[size_t(3 + c)] = {float(2.0 * kC1 * L[4][c] / kPi), float(2.0 * kC1 * L[5][c] / kPi),
+                            float(kC3 * L[6][c] / kPi), float(2.0 * kC1 * L[7][c] / kPi)};
+        p[6][size_t(c)] = float(kC1 * L[8][c] / kPi);
+    }
+    p[6][3] = 1.0f;
+    return p;
+}
+
+glm::dvec3 EvalPackedSH(const PackedSH& packed, const glm::dvec3& n) {
+    const double a[4] = {n.x, n.y, n.z, 1.0};
+    const double b[4] = {n.x * n.y, n.y * n.z, n.z * n.z, n.z * n.x};
+    glm::dvec3 e(0.0);
+    for (int c = 0; c < 3; ++c) {
+        double v = packed[6][size_t(c)] * (n.x * n.x - n.y * n.y);
+        for (size_t k = 0; k < 4; ++k)
+            v += packed[size_t(c)][k] * a[k] + packed[size_t(3 + c)][k] * b[k];
+        e[c] = v;
+    }
+    return glm::max(e, glm::dvec3(0.0));
+}
+
+}  // namespace kiln::reference
