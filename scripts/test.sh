@@ -31,7 +31,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 step "fuzz (libFuzzer, clang, address,undefined)"
 CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DKILN_WERROR=ON -DKILN_FUZZ=ON -DKILN_SANITIZE=address,undefined
-cmake --build build/fuzz --target kiln_fuzz_shaderlab kiln_fuzz_pack
+cmake --build build/fuzz --target kiln_fuzz_shaderlab kiln_fuzz_pack kiln_fuzz_material
 # New inputs go to a scratch folder; the checked-in corpus is only read.
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
@@ -44,6 +44,12 @@ build/fuzz/bin/kiln_fuzz_pack -runs=0 tests/fuzz/corpus/pack
 build/fuzz/bin/kiln_fuzz_pack -max_total_time="${KILN_FUZZ_SECONDS:-60}" -timeout=10 \
     -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$scratch/" \
     "$scratch" tests/fuzz/corpus/pack
+
+mkdir -p "$scratch/material"
+build/fuzz/bin/kiln_fuzz_material -runs=0 tests/fuzz/corpus/material materials
+build/fuzz/bin/kiln_fuzz_material -max_total_time="${KILN_FUZZ_SECONDS:-60}" -timeout=10 \
+    -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 -artifact_prefix="$scratch/" \
+    "$scratch/material" tests/fuzz/corpus/material
 
 step "benchmarks"
 build/release/bin/kiln_bench --benchmark_out="$ROOT/build/release/bench.json" \

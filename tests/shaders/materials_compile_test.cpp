@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "kiln/material/material.h"
 #include "kiln/pack/reader.h"
 #include "support/compile_support.h"
 #include "support/test_support.h"
@@ -109,6 +110,29 @@ TEST(Materials, DeferredGBufferPassWritesFourFloat4Targets) {
         }
     }
     EXPECT_EQ(locations, (std::set<uint32_t>{0, 1, 2, 3}));
+}
+
+TEST(Materials, EveryShippedShaderHasAnInstanceAndEveryInstanceValidates) {
+    CompileRun run = Compile(ShippedShaders());
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    pack::Pack p;
+    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    std::set<std::string> shaders_with_instances;
+    for (const auto& e : fs::directory_iterator(DataPath("../materials"))) {
+        if (e.path().extension() != ".material")
+            continue;
+        SCOPED_TRACE(e.path().string());
+        material::Material m;
+        std::vector<material::MaterialIssue> issues;
+        EXPECT_TRUE(material::ParseMaterial(ReadFile(e.path().string()), m, issues));
+        EXPECT_TRUE(material::ValidateMaterial(m, p, e.path().parent_path().string(), issues));
+        for (const auto& i : issues)
+            ADD_FAILURE() << i.pos.line << ":" << i.pos.column << " " << i.message;
+        shaders_with_instances.insert(m.shader);
+    }
+    EXPECT_EQ(shaders_with_instances.size(), p.Count(pack::SectionTag::kShaders));
+    for (uint32_t i = 0; i < p.Count(pack::SectionTag::kShaders); ++i)
+        EXPECT_TRUE(shaders_with_instances.count(std::string(p.String(p.Shader(i).name))));
 }
 
 }  // namespace

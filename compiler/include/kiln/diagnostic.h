@@ -20,6 +20,7 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 //   K0xxx  input/output          K1xxx  ShaderLab lexer
 //   K2xxx  ShaderLab parser      K3xxx  ShaderLab semantic checks
 //   K4xxx  pragmas and variants  K5xxx  HLSL compilation, SPIR-V, reflection, bindings
+//   K6xxx  material instances (kiln::material::IssueCode, runtime/include/kiln/material)
 //   K9xxx  internal compiler errors
 enum class DiagCode : uint16_t {
     kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
@@ -83,6 +84,10 @@ enum class DiagCode : uint16_t {
     kGlobalNotAProperty = 5006,
     kBlockLayoutMismatch = 5007,
     kPropertyTypeMismatch = 5008,
+
+    // K6xxx: material instances; the values are kiln::material::IssueCode's (runtime).
+    kMaterialFirst = 6001,
+    kMaterialLast = 6099,
 
     kInternalError = 9001,
 };

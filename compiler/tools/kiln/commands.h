@@ -52,6 +52,8 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
 std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace kiln::cli
 

@@ -71,7 +71,9 @@ int main(int argc, char** argv) {
             {"compile", AddCompileCommand(app, global)},
             {"variants", AddVariantsCommand(app, global)},
             {"info", AddInfoCommand(app, global)},
-            {"extract", AddExtractCommand(app, global)}};
+            {"extract", AddExtractCommand(app, global)},
+            {"validate", AddValidateCommand(app, global)},
+            {"new", AddNewCommand(app, global)}};
 
         try {
             std::vector<std::string> args = RewriteArgs(argc, argv);

@@ -1,0 +1,150 @@
+// kiln validate --pack PACK FILE.material... and kiln new --template T NAME.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "commands.h"
+#include "kiln/material/material.h"
+#include "kiln/pack/reader.h"
+#include "kiln/source.h"
+
+namespace kiln::cli {
+namespace {
+namespace fs = std::filesystem;
+
+// The one conversion of material issues into the CLI's diagnostics.
+void AddIssues(std::vector<material::MaterialIssue> issues, const SourceFile& file,
+               DiagnosticList& diags) {
+    std::stable_sort(issues.begin(), issues.end(), [](const auto& a, const auto& b) {
+        return a.pos.offset < b.pos.offset;
+    });
+    for (const material::MaterialIssue& i : issues) {
+        SourceRange range;
+        range.begin = file.LocAt(i.pos.offset);
+        range.end = file.LocAt(i.pos.offset + 1);
+        Diagnostic& d = diags.Add(
+            i.severity == material::IssueSeverity::kError ? Severity::kError : Severity::kWarning,
+            static_cast<DiagCode>(i.code), file.path(), range, i.message);
+        if (!i.note.empty())
+            d.notes.push_back({file.path(), range, i.note});
+    }
+}
+
+}  // namespace
+
+std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global) {
+    auto* cmd = app.add_subcommand(
+        "validate", "Check .material files against their shaders' Properties in a pack");
+    struct Args {
+        std::string pack;
+        std::vector<std::string> files;
+    };
+    auto args = std::make_shared<Args>();
+    cmd->add_option("--pack", args->pack, "The compiled pack holding the materials' shaders")
+        ->required();
+    cmd->add_option("files", args->files, ".material files")->required();
+    return [args, &global] {
+        pack::MappedFile mapped;
+        pack::Pack p;
+        std::optional<pack::PackError> err = pack::MappedFile::Map(args->pack, mapped);
+        if (!err)
+            err = pack::Pack::Open(mapped.bytes(), p);
+        if (err) {
+            std::fprintf(stderr, "%s: error: %s [%s]\n", args->pack.c_str(), err->message.c_str(),
+                         pack::PackErrorCodeName(err->code));
+            return int(kExitInputError);
+        }
+        DiagnosticList diags;
+        std::vector<std::unique_ptr<SourceFile>> files;
+        for (const std::string& path : args->files) {
+            Result<SourceFile> read = ReadSourceFile(path);
+            if (!read) {
+                diags.Error(DiagCode::kCannotReadFile, path, {}, read.error().message);
+                continue;
+            }
+            files.push_back(std::make_unique<SourceFile>(std::move(read).value()));
+            std::vector<material::MaterialIssue> issues;
+            material::Material m;
+            material::ParseMaterial(files.back()->text(), m, issues);
+            const bool is_json = issues.empty() || issues.front().code != material::IssueCode::kJsonSyntax;
+            if (is_json && !m.shader.empty())
+                material::ValidateMaterial(m, p, fs::path(path).parent_path().string(), issues);
+            AddIssues(issues, *files.back(), diags);
+        }
+        std::vector<const SourceFile*> views;
+        for (const auto& f : files)
+            views.push_back(f.get());
+        PrintDiagnostics(diags, views, global);
+        return ExitCodeFor(diags);
+    };
+}
+
+std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& /*global*/) {
+    auto* cmd = app.add_subcommand("new", "Write a new .shader from a templates/ scaffold");
+    struct Args {
+        std::string scaffold;
+        std::string name;
+        std::string output;
+        std::string templates_dir;
+        bool force = false;
+    };
+    auto args = std::make_shared<Args>();
+    const std::map<std::string, std::string> scaffolds{
+        {"lit", "lit"}, {"unlit", "unlit"}, {"pbs", "pbs"}, {"multilight", "multilight"}};
+    cmd->add_option("--template", args->scaffold, "Scaffold: lit, unlit, pbs or multilight")
+        ->required()
+        ->transform(CLI::CheckedTransformer(scaffolds, CLI::ignore_case));
+    cmd->add_option("name", args->name, "Shader name, e.g. MyGame/Rock (file: Rock.shader)")
+        ->required();
+    cmd->add_option("-o,--output", args->output, "Output file (default: <last name part>.shader)");
+    cmd->add_option("--templates", args->templates_dir, "Templates folder (default: built-in)");
+    cmd->add_flag("-f,--force", args->force, "Overwrite an existing file");
+    return [args] {
+        const std::string templates =
+            args->templates_dir.empty() ? DefaultTemplatesDir() : args->templates_dir;
+        const std::string scaffold_path = templates + "/scaffolds/" + args->scaffold + ".shader";
+        Result<SourceFile> scaffold = ReadSourceFile(scaffold_path);
+        if (!scaffold) {
+            std::fprintf(stderr, "%s: error: %s [K0001]\n", scaffold_path.c_str(),
+                         scaffold.error().message.c_str());
+            return int(kExitInputError);
+        }
+        for (char c : args->name) {
+            if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) {
+                std::fprintf(stderr, "kiln new: error: shader name must not contain quotes, "
+                                     "backslashes or control characters\n");
+                return int(kExitUsageError);
+            }
+        }
+        std::string text = scaffold.value().text();
+        const std::string placeholder = "KILN_SHADER_NAME";
+        for (size_t at = text.find(placeholder); at != std::string::npos;
+             at = text.find(placeholder, at + args->name.size())) {
+            text.replace(at, placeholder.size(), args->name);
+        }
+        std::string output = args->output;
+        if (output.empty()) {
+            const size_t slash = args->name.find_last_of('/');
+            output = (slash == std::string::npos ? args->name : args->name.substr(slash + 1)) +
+                     ".shader";
+        }
+        if (fs::exists(output) && !args->force) {
+            std::fprintf(stderr, "%s: error: file exists; pass --force to overwrite [K0002]\n",
+                         output.c_str());
+            return int(kExitInputError);
+        }
+        Result<bool> written =
+            WriteFileAtomic(output, std::vector<uint8_t>(text.begin(), text.end()));
+        if (!written) {
+            std::fprintf(stderr, "%s: error: %s [K0002]\n", output.c_str(),
+                         written.error().message.c_str());
+            return int(kExitInputError);
+        }
+        std::printf("wrote %s (shader \"%s\", %s scaffold)\n", output.c_str(), args->name.c_str(),
+                    args->scaffold.c_str());
+        return int(kExitOk);
+    };
+}
+
+}  // namespace kiln::cli

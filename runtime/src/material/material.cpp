@@ -1,0 +1,308 @@
+#include "kiln/material/material.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <set>
+
+#include "material/json.h"
+
+namespace kiln::material {
+namespace {
+
+using Kind = JsonValue::Kind;
+
+struct State {
+    std::vector<MaterialIssue>* issues;
+    bool ok = true;
+
+    void Error(IssueCode code, TextPos pos, std::string message, std::string note = "") {
+        issues->push_back({IssueSeverity::kError, code, pos, std::move(message), std::move(note)});
+        ok = false;
+    }
+};
+
+std::string Lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+std::string Join(const std::vector<std::string>& names) {
+    std::string s;
+    for (const std::string& n : names)
+        s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+// The canonical spelling of `value` among `allowed` (case-insensitive), or "".
+std::string Canonical(std::string_view value, const std::vector<std::string>& allowed) {
+    for (const std::string& a : allowed) {
+        if (Lower(a) == Lower(value))
+            return a;
+    }
+    return "";
+}
+
+bool NumberArray(const JsonValue& v, size_t min, size_t max, std::vector<double>& out) {
+    if (v.kind != Kind::kArray || v.items.size() < min || v.items.size() > max)
+        return false;
+    for (const JsonValue& item : v.items) {
+        if (item.kind != Kind::kNumber)
+            return false;
+        out.push_back(item.number);
+    }
+    return true;
+}
+
+void ParseTexture(State& s, const JsonValue& v, PropertyValue& p) {
+    p.kind = PropertyValue::Kind::kTexture;
+    if (v.kind == Kind::kString) {
+        p.texture = v.string;
+        return;
+    }
+    for (size_t i = 0; i < v.items.size(); ++i) {
+        const auto& [key, pos] = v.keys[i];
+        const JsonValue& item = v.items[i];
+        std::vector<double> pair;
+        if (key == "path" && item.kind == Kind::kString) {
+            p.texture = item.string;
+        } else if ((key == "scale" || key == "offset") && NumberArray(item, 2, 2, pair)) {
+            (key == "scale" ? p.scale : p.offset) = {pair[0], pair[1]};
+        } else if (key == "path" || key == "scale" || key == "offset") {
+            s.Error(IssueCode::kFieldType, item.pos,
+                    "texture field '" + key + "' must be " +
+                        (key == "path" ? "a string" : "an array of two numbers"));
+        } else {
+            s.Error(IssueCode::kUnknownField, pos, "unknown texture field '" + key + "'",
+                    "texture fields are path, scale and offset");
+        }
+    }
+}
+
+void ParseProperties(State& s, const JsonValue& v, Material& m) {
+    std::set<std::string> seen;
+    for (size_t i = 0; i < v.items.size(); ++i) {
+        const auto& [name, pos] = v.keys[i];
+        const JsonValue& item = v.items[i];
+        if (!seen.insert(name).second) {
+            s.Error(IssueCode::kDuplicate, pos, "property '" + name + "' is set twice");
+            continue;
+        }
+        PropertyValue p;
+        p.name = name;
+        p.pos = pos;
+        if (item.kind == Kind::kNumber) {
+            p.numbers = {item.number};
+        } else if (item.kind == Kind::kString || item.kind == Kind::kObject) {
+            ParseTexture(s, item, p);
+        } else if (!NumberArray(item, 1, 4, p.numbers)) {
+            s.Error(IssueCode::kFieldType, item.pos,
+                    "property '" + name +
+                        "' must be a number, an array of 1 to 4 numbers, or a texture");
+            continue;
+        }
+        m.properties.push_back(std::move(p));
+    }
+}
+
+void ParseKeywords(State& s, const JsonValue& v, Material& m) {
+    std::set<std::string> seen;
+    for (const JsonValue& item : v.items) {
+        if (item.kind != Kind::kString) {
+            s.Error(IssueCode::kFieldType, item.pos, "a keyword must be a string");
+        } else if (!seen.insert(item.string).second) {
+            s.Error(IssueCode::kDuplicate, item.pos, "keyword '" + item.string + "' is listed twice");
+        } else {
+            m.keywords.push_back({item.string, item.pos});
+        }
+    }
+}
+
+const std::map<std::string, std::vector<std::string>>& StateValues() {
+    static const std::map<std::string, std::vector<std::string>> kValues = {
+        {"Cull", {"Back", "Front", "Off"}},
+        {"ZWrite", {"On", "Off"}},
+        {"ZTest",
+         {"Less", "Greater", "LEqual", "GEqual", "Equal", "NotEqual", "Always", "Never",
+          "Disabled"}},
+        {"Blend",
+         {"One", "Zero", "SrcColor", "SrcAlpha", "DstColor", "DstAlpha", "OneMinusSrcColor",
+          "OneMinusSrcAlpha", "OneMinusDstColor", "OneMinusDstAlpha"}},
+    };
+    return kValues;
+}
+
+bool ValidColorMask(std::string_view v) {
+    if (v == "0")
+        return true;
+    const std::string order = "RGBA";
+    size_t last = 0;
+    for (char c : v) {
+        const size_t at = order.find(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+        if (at == std::string::npos || at + 1 <= last)
+            return false;
+        last = at + 1;
+    }
+    return !v.empty();
+}
+
+void ParseRenderState(State& s, const JsonValue& v, Material& m) {
+    for (size_t i = 0; i < v.items.size(); ++i) {
+        const auto& [key, pos] = v.keys[i];
+        const JsonValue& item = v.items[i];
+        RenderStateOverride o;
+        o.pos = pos;
+        o.field = key;
+        if (key == "ColorMask") {
+            if (item.kind != Kind::kString || !ValidColorMask(item.string)) {
+                s.Error(IssueCode::kRenderState, item.pos,
+                        "ColorMask must be \"0\" or channels in RGBA order such as \"RGB\"");
+                continue;
+            }
+            std::string mask;
+            for (char c : item.string)
+                mask += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            o.values = {mask};
+            m.render_state.push_back(std::move(o));
+            continue;
+        }
+        const auto allowed = StateValues().find(key);
+        if (allowed == StateValues().end()) {
+            const std::string near =
+                ClosestName(key, {"Blend", "ColorMask", "Cull", "ZTest", "ZWrite"});
+            s.Error(IssueCode::kRenderState, pos, "unknown render-state field '" + key + "'",
+                    near.empty() ? "overridable: Blend, ColorMask, Cull, ZTest, ZWrite"
+                                 : "did you mean '" + near + "'");
+            continue;
+        }
+        std::vector<const JsonValue*> values;
+        if (item.kind == Kind::kString) {
+            values = {&item};
+        } else if (key == "Blend" && item.kind == Kind::kArray &&
+                   (item.items.size() == 2 || item.items.size() == 4)) {
+            for (const JsonValue& f : item.items)
+                values.push_back(&f);
+        } else {
+            s.Error(IssueCode::kRenderState, item.pos,
+                    key == "Blend" ? "Blend must be \"Off\" or an array of 2 or 4 blend factors"
+                                   : key + " must be a string");
+            continue;
+        }
+        if (key == "Blend" && values.size() == 1 && Lower(item.string) == "off") {
+            o.values = {"Off"};
+            m.render_state.push_back(std::move(o));
+            continue;
+        }
+        for (const JsonValue* f : values) {
+            const std::string c = f->kind == Kind::kString ? Canonical(f->string, allowed->second)
+                                                           : std::string();
+            if (c.empty()) {
+                s.Error(IssueCode::kRenderState, f->pos,
+                        "invalid " + key + " value" +
+                            (f->kind == Kind::kString ? " '" + f->string + "'" : ""),
+                        "allowed: " + Join(allowed->second) + (key == "Blend" ? ", or \"Off\"" : ""));
+            }
+            o.values.push_back(c);
+        }
+        if (key == "Blend" && values.size() == 1) {
+            s.Error(IssueCode::kRenderState, item.pos,
+                    "Blend needs a source and a destination factor, e.g. [\"One\", \"One\"]");
+        }
+        m.render_state.push_back(std::move(o));
+    }
+}
+
+}  // namespace
+
+bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIssue>& issues) {
+    State s{&issues};
+    JsonValue root;
+    MaterialIssue error;
+    if (!ParseJson(text, root, error)) {
+        issues.push_back(error);
+        return false;
+    }
+    if (root.kind != Kind::kObject) {
+        s.Error(IssueCode::kFieldType, root.pos,
+                std::string("a material must be a JSON object, not ") + JsonKindName(root.kind));
+        return false;
+    }
+    static const std::map<std::string, Kind> kFields = {
+        {"kiln_material", Kind::kNumber}, {"shader", Kind::kString},
+        {"description", Kind::kString},   {"properties", Kind::kObject},
+        {"keywords", Kind::kArray},       {"render_state", Kind::kObject}};
+    std::set<std::string> seen;
+    for (size_t i = 0; i < root.items.size(); ++i) {
+        const auto& [key, pos] = root.keys[i];
+        const JsonValue& item = root.items[i];
+        const auto field = kFields.find(key);
+        if (field == kFields.end()) {
+            std::vector<std::string> names;
+            for (const auto& [name, kind] : kFields)
+                names.push_back(name);
+            const std::string near = ClosestName(key, names);
+            s.Error(IssueCode::kUnknownField, pos, "unknown material field '" + key + "'",
+                    near.empty() ? "fields: " + Join(names) : "did you mean '" + near + "'");
+            continue;
+        }
+        if (!seen.insert(key).second) {
+            s.Error(IssueCode::kDuplicate, pos, "field '" + key + "' appears twice");
+            continue;
+        }
+        if (item.kind != field->second) {
+            s.Error(IssueCode::kFieldType, item.pos,
+                    "'" + key + "' must be " + JsonKindName(field->second) + ", not " +
+                        JsonKindName(item.kind));
+            continue;
+        }
+        if (key == "kiln_material") {
+            out.version = static_cast<int>(item.number);
+            if (item.number != kFormatVersion) {
+                s.Error(IssueCode::kUnsupportedVersion, item.pos,
+                        "unsupported material format version", "this build reads version 1");
+            }
+        } else if (key == "shader") {
+            out.shader = item.string;
+            out.shader_pos = item.pos;
+        } else if (key == "properties") {
+            ParseProperties(s, item, out);
+        } else if (key == "keywords") {
+            ParseKeywords(s, item, out);
+        } else if (key == "render_state") {
+            ParseRenderState(s, item, out);
+        }
+    }
+    if (!seen.count("shader"))
+        s.Error(IssueCode::kMissingField, root.pos, "material has no \"shader\" field");
+    return s.ok;
+}
+
+std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t best_distance = std::max<size_t>(1, name.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        // Levenshtein distance, case-insensitive, one row.
+        const std::string a = Lower(name), b = Lower(c);
+        std::vector<size_t> row(b.size() + 1);
+        for (size_t j = 0; j <= b.size(); ++j)
+            row[j] = j;
+        for (size_t i = 1; i <= a.size(); ++i) {
+            size_t diagonal = row[0];
+            row[0] = i;
+            for (size_t j = 1; j <= b.size(); ++j) {
+                const size_t up = row[j];
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+                diagonal = up;
+            }
+        }
+        if (row[b.size()] < best_distance) {
+            best_distance = row[b.size()];
+            best = c;
+        }
+    }
+    return best;
+}
+
+}  // namespace kiln::material

@@ -1,0 +1,220 @@
+// ValidateMaterial: a parsed material against its shader's Properties and keywords in a pack.
+#include "kiln/material/material.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+namespace kiln::material {
+namespace {
+
+using pack::PropertyType;
+
+struct State {
+    const pack::Pack& pack;
+    std::vector<MaterialIssue>& issues;
+    bool ok = true;
+
+    void Add(IssueSeverity severity, IssueCode code, TextPos pos, std::string message,
+             std::string note = "") {
+        issues.push_back({severity, code, pos, std::move(message), std::move(note)});
+        ok = ok && severity != IssueSeverity::kError;
+    }
+};
+
+std::string Number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+const char* TypeName(PropertyType t) {
+    switch (t) {
+        case PropertyType::kColor:
+            return "Color";
+        case PropertyType::kVector:
+            return "Vector";
+        case PropertyType::kFloat:
+            return "Float";
+        case PropertyType::kInt:
+            return "Int";
+        case PropertyType::kInteger:
+            return "Integer";
+        case PropertyType::kRange:
+            return "Range";
+        case PropertyType::kTexture2D:
+            return "2D";
+        case PropertyType::kTexture3D:
+            return "3D";
+        case PropertyType::kCube:
+            return "Cube";
+        case PropertyType::kTexture2DArray:
+            return "2DArray";
+        case PropertyType::kCubeArray:
+            return "CubeArray";
+    }
+    return "unknown";
+}
+
+bool IsTexture(PropertyType t) {
+    return t == PropertyType::kTexture2D || t == PropertyType::kTexture3D ||
+           t == PropertyType::kCube || t == PropertyType::kTexture2DArray ||
+           t == PropertyType::kCubeArray;
+}
+
+void CheckProperty(State& s, const PropertyValue& v, const pack::PropertyRec& rec,
+                   const std::string& material_dir) {
+    const auto type = static_cast<PropertyType>(rec.type);
+    const std::string what = "property '" + v.name + "' is a " + TypeName(type);
+    const bool texture = v.kind == PropertyValue::Kind::kTexture;
+    const size_t n = v.numbers.size();
+    if (IsTexture(type)) {
+        if (!texture) {
+            s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                  what + " texture, not a number",
+                  "write a path string or {\"path\": ..., \"scale\": [x, y], \"offset\": [x, y]}");
+        } else if (!v.texture.empty() && !material_dir.empty() &&
+                   !std::filesystem::exists(std::filesystem::path(material_dir) / v.texture)) {
+            s.Add(IssueSeverity::kWarning, IssueCode::kTextureNotFound, v.pos,
+                  "texture '" + v.texture + "' of property '" + v.name +
+                      "' not found beside the material");
+        }
+        return;
+    }
+    if (texture) {
+        s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+              what + ", not a texture");
+        return;
+    }
+    switch (type) {
+        case PropertyType::kColor:
+            if (n < 3)
+                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                      what + ": give 3 or 4 numbers (r, g, b[, a])");
+            return;
+        case PropertyType::kVector:
+            if (n < 2)
+                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                      what + ": give 2 to 4 numbers");
+            return;
+        case PropertyType::kInt:
+        case PropertyType::kInteger:
+            if (n != 1 || std::trunc(v.numbers[0]) != v.numbers[0])
+                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                      what + ": give one whole number");
+            return;
+        case PropertyType::kFloat:
+        case PropertyType::kRange:
+            if (n != 1) {
+                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                      what + ": give one number");
+            } else if (type == PropertyType::kRange &&
+                       (v.numbers[0] < rec.range_min || v.numbers[0] > rec.range_max)) {
+                s.Add(IssueSeverity::kError, IssueCode::kOutOfRange, v.pos,
+                      "value " + Number(v.numbers[0]) + " of property '" + v.name +
+                          "' is outside its range",
+                      "declared Range(" + Number(rec.range_min) + ", " + Number(rec.range_max) +
+                          ")");
+            }
+            return;
+        default:
+            return;
+    }
+}
+
+struct KeywordUse {
+    uint32_t set;       // global KeywordSetRec index
+    bool multi_compile;
+};
+
+void CheckKeywords(State& s, const Material& m, const pack::ShaderRec& shader) {
+    std::map<std::string, std::vector<KeywordUse>> declared;
+    for (uint32_t p = 0; p < shader.pass_count; ++p) {
+        const pack::PassRec pass = s.pack.Pass(shader.first_pass + p);
+        for (uint32_t k = 0; k < pass.keyword_set_count; ++k) {
+            const uint32_t set_index = pass.first_keyword_set + k;
+            const pack::KeywordSetRec set = s.pack.KeywordSet(set_index);
+            for (uint32_t w = 0; w < set.keyword_count; ++w) {
+                const std::string name(s.pack.Keyword(set.first_keyword + w));
+                if (!name.empty()) {
+                    declared[name].push_back(
+                        {set_index, set.kind == uint32_t(pack::KeywordSetKind::kMultiCompile)});
+                }
+            }
+        }
+    }
+    std::vector<std::string> names;
+    for (const auto& [name, uses] : declared)
+        names.push_back(name);
+    std::map<uint32_t, const Keyword*> set_owner;
+    for (const Keyword& k : m.keywords) {
+        const auto it = declared.find(k.name);
+        if (it == declared.end()) {
+            const std::string near = ClosestName(k.name, names);
+            s.Add(IssueSeverity::kError, IssueCode::kUnknownKeyword, k.pos,
+                  "keyword '" + k.name + "' is not declared by shader '" + m.shader + "'",
+                  near.empty() ? "" : "did you mean '" + near + "'");
+            continue;
+        }
+        bool all_multi_compile = true;
+        for (const KeywordUse& use : it->second) {
+            all_multi_compile = all_multi_compile && use.multi_compile;
+            const auto [owner, inserted] = set_owner.emplace(use.set, &k);
+            if (!inserted && owner->second->name != k.name) {
+                s.Add(IssueSeverity::kError, IssueCode::kConflictingKeywords, k.pos,
+                      "keywords '" + owner->second->name + "' and '" + k.name +
+                          "' are alternatives of one keyword set",
+                      "enable at most one keyword of each set");
+            }
+        }
+        if (all_multi_compile) {
+            s.Add(IssueSeverity::kWarning, IssueCode::kEngineKeyword, k.pos,
+                  "keyword '" + k.name +
+                      "' is a multi_compile keyword the renderer chooses per draw; the material "
+                      "setting is ignored");
+        }
+    }
+}
+
+}  // namespace
+
+bool ValidateMaterial(const Material& m, const pack::Pack& pack, const std::string& material_dir,
+                      std::vector<MaterialIssue>& issues) {
+    State s{pack, issues};
+    const auto shader_index = pack.FindShader(m.shader);
+    if (!shader_index) {
+        std::vector<std::string> names;
+        for (uint32_t i = 0; i < pack.Count(pack::SectionTag::kShaders); ++i)
+            names.emplace_back(pack.String(pack.Shader(i).name));
+        const std::string near = ClosestName(m.shader, names);
+        s.Add(IssueSeverity::kError, IssueCode::kUnknownShader, m.shader_pos,
+              "no shader '" + m.shader + "' in the pack",
+              near.empty() ? "" : "did you mean '" + near + "'");
+        return false;
+    }
+    const pack::ShaderRec shader = pack.Shader(*shader_index);
+    std::map<std::string, pack::PropertyRec> props;
+    std::vector<std::string> names;
+    for (uint32_t i = 0; i < shader.property_count; ++i) {
+        const auto rec = pack.Get<pack::PropertyRec>(pack::SectionTag::kProperties,
+                                                     shader.first_property + i);
+        names.emplace_back(pack.String(rec.name));
+        props.emplace(names.back(), rec);
+    }
+    for (const PropertyValue& v : m.properties) {
+        const auto it = props.find(v.name);
+        if (it == props.end()) {
+            const std::string near = ClosestName(v.name, names);
+            s.Add(IssueSeverity::kError, IssueCode::kUnknownProperty, v.pos,
+                  "shader '" + m.shader + "' has no property '" + v.name + "'",
+                  near.empty() ? "" : "did you mean '" + near + "'");
+            continue;
+        }
+        CheckProperty(s, v, it->second, material_dir);
+    }
+    CheckKeywords(s, m, shader);
+    return s.ok;
+}
+
+}  // namespace kiln::material
