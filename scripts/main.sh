@@ -17,7 +17,17 @@ build/release/bin/kiln compile materials/*.shader -o build/release/materials/mat
     --cache-dir build/release/kiln-cache --stats
 build/release/bin/kiln info build/release/materials/materials.kpack
 echo
-echo "== kiln parse tests/lecture/*.shader (the lecture's shaders, assembled)"
-build/release/bin/kiln parse --quiet tests/lecture/*.shader
-echo "all $(ls tests/lecture/*.shader | wc -l) lecture shaders parse without diagnostics"
-echo "(compiling them needs the full shader library: the next issue)"
+echo "== kiln validate: one material instance per shipped shader"
+build/release/bin/kiln validate --pack build/release/materials/materials.kpack materials/*.material
+echo "all $(ls materials/*.material | wc -l) material instances validate"
+echo
+echo "== the lecture's shaders (tests/lecture), compiled with Kiln's templates"
+for f in tests/lecture/*.shader; do
+    # Lectures 01-05 print `float4 lightColor = _LightColor0.rgb;` (and 05 a float4 albedo from
+    # .rgb): Kiln reports the type error; the test suite asserts it and compiles the fixed text.
+    if build/release/bin/kiln compile "$f" -I tests/lecture -o /dev/null 2>/dev/null; then
+        echo "  ok    $f"
+    else
+        echo "  error $f: $(build/release/bin/kiln compile "$f" -I tests/lecture -o /dev/null 2>&1 | head -1)"
+    fi
+done

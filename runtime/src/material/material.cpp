@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -258,7 +259,8 @@ bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIss
             continue;
         }
         if (key == "kiln_material") {
-            out.version = static_cast<int>(item.number);
+            // only convert what fits an int (a huge double -> int is undefined behaviour)
+            out.version = std::abs(item.number) < 1e6 ? static_cast<int>(item.number) : -1;
             if (item.number != kFormatVersion) {
                 s.Error(IssueCode::kUnsupportedVersion, item.pos,
                         "unsupported material format version", "this build reads version 1");

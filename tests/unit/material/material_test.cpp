@@ -85,6 +85,9 @@ TEST(MaterialParse, StructuralErrors) {
               "1:2 K6002 unknown material field 'shadr' (did you mean 'shader')\n");
     EXPECT_EQ(Brief(Parse(R"({"shader": "y", "kiln_material": 2})")),
               "1:34 K6004 unsupported material format version (this build reads version 1)\n");
+    // found by the fuzzer: a version too large for an int
+    EXPECT_EQ(Brief(Parse(R"({"shader": "y", "kiln_material": 1e300})")),
+              "1:34 K6004 unsupported material format version (this build reads version 1)\n");
     EXPECT_EQ(Brief(Parse(R"({"shader": "y", "properties": {"_A": 1, "_A": 2, "_B": true}})")),
               "1:41 K6015 property '_A' is set twice\n"
               "1:56 K6003 property '_B' must be a number, an array of 1 to 4 numbers, or a "
