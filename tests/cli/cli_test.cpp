@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/compile_support.h"
 #include "support/test_support.h"
 
 namespace kiln::test {
@@ -208,6 +209,45 @@ TEST(Cli, VariantsReportsDedup) {
     EXPECT_NE(r.out.find("3 permutations, 3 variants; unique programs: vertex 1, fragment 2"),
               std::string::npos)
         << r.out;
+}
+
+TEST(Cli, NewWritesEachScaffoldThatThenCompilesAndRefusesToOverwrite) {
+    ScratchDir dir;
+    for (const std::string t : {"lit", "unlit", "pbs", "multilight"}) {
+        const std::string out = dir.path() + "/" + t + ".shader";
+        const RunResult r = RunKiln("new --template " + t + " Game/My" + t + " -o " + out);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(ReadFile(out).find("Shader \"Game/My" + t + "\""), std::string::npos);
+        const RunResult c = RunKiln("compile " + out + " -o " + dir.path() + "/" + t + ".kpack");
+        EXPECT_EQ(c.exit_code, 0) << c.err;
+        EXPECT_EQ(c.err, "") << "scaffolds compile without warnings";
+        const RunResult again = RunKiln("new --template " + t + " Game/My" + t + " -o " + out);
+        EXPECT_EQ(again.exit_code, 1);
+        EXPECT_NE(again.err.find("file exists; pass --force to overwrite"), std::string::npos);
+    }
+    EXPECT_EQ(RunKiln("new --template fancy X -o " + dir.path() + "/x.shader").exit_code, 2);
+}
+
+TEST(Cli, ValidateReportsMaterialErrorsAtTheirPositions) {
+    ScratchDir dir;
+    const std::string pack = dir.path() + "/m.kpack";
+    ASSERT_EQ(RunKiln("compile " + DataPath("../materials/Lambert.shader") + " -o " + pack)
+                  .exit_code,
+              0);
+    const std::string good = dir.Write("good.material",
+                                       "{\"shader\": \"Kiln/Lambert\", \"properties\": "
+                                       "{\"_Color\": [1, 0, 0]}}\n");
+    EXPECT_EQ(RunKiln("validate --pack " + pack + " " + good).exit_code, 0);
+    const std::string bad = dir.Write("bad.material",
+                                      "{\n  \"shader\": \"Kiln/Lambert\",\n  \"properties\": "
+                                      "{\"_Colour\": [1, 0, 0]}\n}\n");
+    const RunResult r = RunKiln("validate --pack " + pack + " " + bad);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("bad.material:3:18: error: shader 'Kiln/Lambert' has no property "
+                         "'_Colour' [K6007]"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("note: did you mean '_Color'"), std::string::npos) << r.err;
 }
 
 }  // namespace
