@@ -231,9 +231,8 @@ TEST(Cli, NewWritesEachScaffoldThatThenCompilesAndRefusesToOverwrite) {
 TEST(Cli, ValidateReportsMaterialErrorsAtTheirPositions) {
     ScratchDir dir;
     const std::string pack = dir.path() + "/m.kpack";
-    ASSERT_EQ(RunKiln("compile " + DataPath("../materials/Lambert.shader") + " -o " + pack)
-                  .exit_code,
-              0);
+    ASSERT_EQ(
+        RunKiln("compile " + DataPath("../materials/Lambert.shader") + " -o " + pack).exit_code, 0);
     const std::string good = dir.Write("good.material",
                                        "{\"shader\": \"Kiln/Lambert\", \"properties\": "
                                        "{\"_Color\": [1, 0, 0]}}\n");

@@ -14,10 +14,10 @@ namespace kiln::test {
 namespace {
 
 struct LectureError {
-    std::string line;     // the lecture's line, as printed
+    std::string line;       // the lecture's line, as printed
     std::string column_at;  // the diagnostic points at the first occurrence of this on the line
-    std::string message;  // Kiln's message
-    std::string fixed;    // the line as a student fixes it
+    std::string message;    // Kiln's message
+    std::string fixed;      // the line as a student fixes it
 };
 
 struct LectureShader {
@@ -26,21 +26,24 @@ struct LectureShader {
     size_t variants;                   // all passes, from the shader's pragmas
 };
 
-const LectureError kLightColorIsFloat3 = {
-    "float4 lightColor = _LightColor0.rgb;", "=", "cannot convert from 'float3' to 'float4'",
-    "float4 lightColor = _LightColor0;"};
+const LectureError kLightColorIsFloat3 = {"float4 lightColor = _LightColor0.rgb;", "=",
+                                          "cannot convert from 'float3' to 'float4'",
+                                          "float4 lightColor = _LightColor0;"};
 const LectureError kAlbedoIsFloat3 = {"float4 albedo = tex2D(_MainTex, v2f.uv).rgb * _Color;", "=",
                                       "cannot convert from 'float3' to 'float4'",
                                       "float4 albedo = tex2D(_MainTex, v2f.uv) * _Color;"};
 
 // 1-based line and column of `needle` inside the first line containing `line`.
-std::pair<uint32_t, uint32_t> Position(const std::string& text, const std::string& line,
+std::pair<uint32_t, uint32_t> Position(const std::string& text,
+                                       const std::string& line,
                                        const std::string& needle) {
     const size_t at = text.find(line);
     if (at == std::string::npos)
         return {0, 0};
-    const uint32_t line_no = 1 + static_cast<uint32_t>(std::count(text.begin(), text.begin() + at, '\n'));
-    const size_t line_start = text.rfind('\n', at) == std::string::npos ? 0 : text.rfind('\n', at) + 1;
+    const uint32_t line_no =
+        1 + static_cast<uint32_t>(std::count(text.begin(), text.begin() + at, '\n'));
+    const size_t line_start =
+        text.rfind('\n', at) == std::string::npos ? 0 : text.rfind('\n', at) + 1;
     const size_t col = text.find(needle, at) - line_start + 1;
     return {line_no, static_cast<uint32_t>(col)};
 }
@@ -83,7 +86,8 @@ TEST_P(LectureCompile, CompilesInEveryVariantOnceTheLecturesTyposAreFixed) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Lecture, LectureCompile,
+    Lecture,
+    LectureCompile,
     testing::Values(LectureShader{"01_Lambert.shader", {kLightColorIsFloat3}, 1},
                     LectureShader{"02_LambertAmbient.shader", {kLightColorIsFloat3}, 1},
                     LectureShader{"03_Phong.shader", {kLightColorIsFloat3}, 1},

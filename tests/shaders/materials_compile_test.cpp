@@ -30,10 +30,10 @@ TEST(Materials, TheTenShippedShadersArePresent) {
     std::set<std::string> names;
     for (const std::string& f : ShippedShaders())
         names.insert(fs::path(f).stem().string());
-    EXPECT_EQ(names, (std::set<std::string>{"BlinnPhong", "BlinnPhongTextured", "Deferred",
-                                            "EnergyConserving", "Lambert", "LambertAmbient",
-                                            "MultiLight", "Standard", "StandardMetallic",
-                                            "Unlit"}));
+    EXPECT_EQ(names,
+              (std::set<std::string>{"BlinnPhong", "BlinnPhongTextured", "Deferred",
+                                     "EnergyConserving", "Lambert", "LambertAmbient", "MultiLight",
+                                     "Standard", "StandardMetallic", "Unlit"}));
 }
 
 TEST(Materials, EveryShippedShaderCompilesInEveryVariantWithoutWarnings) {

@@ -14,11 +14,11 @@ namespace {
 namespace fs = std::filesystem;
 
 // The one conversion of material issues into the CLI's diagnostics.
-void AddIssues(std::vector<material::MaterialIssue> issues, const SourceFile& file,
+void AddIssues(std::vector<material::MaterialIssue> issues,
+               const SourceFile& file,
                DiagnosticList& diags) {
-    std::stable_sort(issues.begin(), issues.end(), [](const auto& a, const auto& b) {
-        return a.pos.offset < b.pos.offset;
-    });
+    std::stable_sort(issues.begin(), issues.end(),
+                     [](const auto& a, const auto& b) { return a.pos.offset < b.pos.offset; });
     for (const material::MaterialIssue& i : issues) {
         SourceRange range;
         range.begin = file.LocAt(i.pos.offset);
@@ -67,7 +67,8 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
             std::vector<material::MaterialIssue> issues;
             material::Material m;
             material::ParseMaterial(files.back()->text(), m, issues);
-            const bool is_json = issues.empty() || issues.front().code != material::IssueCode::kJsonSyntax;
+            const bool is_json =
+                issues.empty() || issues.front().code != material::IssueCode::kJsonSyntax;
             if (is_json && !m.shader.empty())
                 material::ValidateMaterial(m, p, fs::path(path).parent_path().string(), issues);
             AddIssues(issues, *files.back(), diags);
@@ -112,8 +113,9 @@ std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& /*global*
         }
         for (char c : args->name) {
             if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) {
-                std::fprintf(stderr, "kiln new: error: shader name must not contain quotes, "
-                                     "backslashes or control characters\n");
+                std::fprintf(stderr,
+                             "kiln new: error: shader name must not contain quotes, "
+                             "backslashes or control characters\n");
                 return int(kExitUsageError);
             }
         }

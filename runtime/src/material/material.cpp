@@ -114,7 +114,8 @@ void ParseKeywords(State& s, const JsonValue& v, Material& m) {
         if (item.kind != Kind::kString) {
             s.Error(IssueCode::kFieldType, item.pos, "a keyword must be a string");
         } else if (!seen.insert(item.string).second) {
-            s.Error(IssueCode::kDuplicate, item.pos, "keyword '" + item.string + "' is listed twice");
+            s.Error(IssueCode::kDuplicate, item.pos,
+                    "keyword '" + item.string + "' is listed twice");
         } else {
             m.keywords.push_back({item.string, item.pos});
         }
@@ -141,7 +142,8 @@ bool ValidColorMask(std::string_view v) {
     const std::string order = "RGBA";
     size_t last = 0;
     for (char c : v) {
-        const size_t at = order.find(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+        const size_t at =
+            order.find(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
         if (at == std::string::npos || at + 1 <= last)
             return false;
         last = at + 1;
@@ -197,13 +199,14 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
             continue;
         }
         for (const JsonValue* f : values) {
-            const std::string c = f->kind == Kind::kString ? Canonical(f->string, allowed->second)
-                                                           : std::string();
+            const std::string c =
+                f->kind == Kind::kString ? Canonical(f->string, allowed->second) : std::string();
             if (c.empty()) {
-                s.Error(IssueCode::kRenderState, f->pos,
-                        "invalid " + key + " value" +
-                            (f->kind == Kind::kString ? " '" + f->string + "'" : ""),
-                        "allowed: " + Join(allowed->second) + (key == "Blend" ? ", or \"Off\"" : ""));
+                s.Error(
+                    IssueCode::kRenderState, f->pos,
+                    "invalid " + key + " value" +
+                        (f->kind == Kind::kString ? " '" + f->string + "'" : ""),
+                    "allowed: " + Join(allowed->second) + (key == "Blend" ? ", or \"Off\"" : ""));
             }
             o.values.push_back(c);
         }

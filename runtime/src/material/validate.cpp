@@ -16,7 +16,10 @@ struct State {
     std::vector<MaterialIssue>& issues;
     bool ok = true;
 
-    void Add(IssueSeverity severity, IssueCode code, TextPos pos, std::string message,
+    void Add(IssueSeverity severity,
+             IssueCode code,
+             TextPos pos,
+             std::string message,
              std::string note = "") {
         issues.push_back({severity, code, pos, std::move(message), std::move(note)});
         ok = ok && severity != IssueSeverity::kError;
@@ -63,7 +66,9 @@ bool IsTexture(PropertyType t) {
            t == PropertyType::kCubeArray;
 }
 
-void CheckProperty(State& s, const PropertyValue& v, const pack::PropertyRec& rec,
+void CheckProperty(State& s,
+                   const PropertyValue& v,
+                   const pack::PropertyRec& rec,
                    const std::string& material_dir) {
     const auto type = static_cast<PropertyType>(rec.type);
     const std::string what = "property '" + v.name + "' is a " + TypeName(type);
@@ -111,11 +116,11 @@ void CheckProperty(State& s, const PropertyValue& v, const pack::PropertyRec& re
                       what + ": give one number");
             } else if (type == PropertyType::kRange &&
                        (v.numbers[0] < rec.range_min || v.numbers[0] > rec.range_max)) {
-                s.Add(IssueSeverity::kError, IssueCode::kOutOfRange, v.pos,
-                      "value " + Number(v.numbers[0]) + " of property '" + v.name +
-                          "' is outside its range",
-                      "declared Range(" + Number(rec.range_min) + ", " + Number(rec.range_max) +
-                          ")");
+                s.Add(
+                    IssueSeverity::kError, IssueCode::kOutOfRange, v.pos,
+                    "value " + Number(v.numbers[0]) + " of property '" + v.name +
+                        "' is outside its range",
+                    "declared Range(" + Number(rec.range_min) + ", " + Number(rec.range_max) + ")");
             }
             return;
         default:
@@ -124,7 +129,7 @@ void CheckProperty(State& s, const PropertyValue& v, const pack::PropertyRec& re
 }
 
 struct KeywordUse {
-    uint32_t set;       // global KeywordSetRec index
+    uint32_t set;  // global KeywordSetRec index
     bool multi_compile;
 };
 
@@ -179,7 +184,9 @@ void CheckKeywords(State& s, const Material& m, const pack::ShaderRec& shader) {
 
 }  // namespace
 
-bool ValidateMaterial(const Material& m, const pack::Pack& pack, const std::string& material_dir,
+bool ValidateMaterial(const Material& m,
+                      const pack::Pack& pack,
+                      const std::string& material_dir,
                       std::vector<MaterialIssue>& issues) {
     State s{pack, issues};
     const auto shader_index = pack.FindShader(m.shader);
@@ -197,8 +204,8 @@ bool ValidateMaterial(const Material& m, const pack::Pack& pack, const std::stri
     std::map<std::string, pack::PropertyRec> props;
     std::vector<std::string> names;
     for (uint32_t i = 0; i < shader.property_count; ++i) {
-        const auto rec = pack.Get<pack::PropertyRec>(pack::SectionTag::kProperties,
-                                                     shader.first_property + i);
+        const auto rec =
+            pack.Get<pack::PropertyRec>(pack::SectionTag::kProperties, shader.first_property + i);
         names.emplace_back(pack.String(rec.name));
         props.emplace(names.back(), rec);
     }

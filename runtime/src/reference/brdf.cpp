@@ -52,14 +52,13 @@ glm::dvec3 StandardBrdf(const StandardInputs& in) {
 
     // Rendering equation for a punctual light, times pi for the light-colour convention:
     // (diffuse / pi + D V F) * (pi C) * NoL.
-    const glm::dvec3 diffuse =
-        in.diffuse_color * (in.indirect_diffuse + in.light_color * no_l);
+    const glm::dvec3 diffuse = in.diffuse_color * (in.indirect_diffuse + in.light_color * no_l);
     glm::dvec3 specular(0.0);
     if (no_l > 0.0) {
         const double d = D_GGX(Saturate(glm::dot(n, h)), alpha);
         const double vis = V_SmithGGXCorrelated(no_v, no_l, alpha);
-        specular = kPi * d * vis * no_l * F_Schlick(in.specular_color, glm::dot(l, h)) *
-                   in.light_color;
+        specular =
+            kPi * d * vis * no_l * F_Schlick(in.specular_color, glm::dot(l, h)) * in.light_color;
     }
     // Unity's indirect specular: 1 / (alpha^2 + 1) and Fresnel towards smoothness + reflectivity.
     const double grazing = Saturate(in.smoothness + (1.0 - in.one_minus_reflectivity));

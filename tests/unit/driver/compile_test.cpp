@@ -111,8 +111,7 @@ TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
     CompileRun run = Compile({path});
     EXPECT_FALSE(run.out.ok);
     EXPECT_TRUE(run.out.pack.empty());
-    EXPECT_EQ(Brief(run.diags),
-              "bad.shader:8:22 K5001 cannot convert from 'float3' to 'float4'\n")
+    EXPECT_EQ(Brief(run.diags), "bad.shader:8:22 K5001 cannot convert from 'float3' to 'float4'\n")
         << "glslang stops at the first error of a declaration; the next line is not reported";
 }
 

@@ -30,11 +30,13 @@ TEST(GlslangMessages, RewordsIntoHouseStyle) {
         RewordMessage(
             "=", " cannot convert from ' const float'  to ' temp 4-component vector of float'"),
         "cannot convert from 'float' to 'float4'");
-    EXPECT_EQ(RewordMessage("=", "cannot convert from ' temp 3-component vector of float' to ' "
-                                 "temp 4-component vector of float'"),
+    EXPECT_EQ(RewordMessage("=",
+                            "cannot convert from ' temp 3-component vector of float' to ' "
+                            "temp 4-component vector of float'"),
               "cannot convert from 'float3' to 'float4'");
-    EXPECT_EQ(RewordMessage("f", "no matching overloaded function found: uniform 4X4 matrix of float"),
-              "no matching overloaded function found: uniform 4X4 matrix of float 'f'");
+    EXPECT_EQ(
+        RewordMessage("f", "no matching overloaded function found: uniform 4X4 matrix of float"),
+        "no matching overloaded function found: uniform 4X4 matrix of float 'f'");
     EXPECT_EQ(RewordMessage("", "Missing entry point."), "missing entry point");
 }
 

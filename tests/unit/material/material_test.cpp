@@ -66,11 +66,12 @@ TEST(MaterialParse, ReadsEveryField) {
 }
 
 TEST(MaterialParse, SyntaxErrorsPointAtTheOffendingCharacter) {
-    EXPECT_EQ(Brief(Parse("{\n  \"shader\": \"a\",\n}")),
-              "3:1 K6001 trailing comma before '}'\n");
-    EXPECT_EQ(Brief(Parse("{\"shader\" \"a\"}")), "1:11 K6001 expected ':' after the key, found '\"'\n");
+    EXPECT_EQ(Brief(Parse("{\n  \"shader\": \"a\",\n}")), "3:1 K6001 trailing comma before '}'\n");
+    EXPECT_EQ(Brief(Parse("{\"shader\" \"a\"}")),
+              "1:11 K6001 expected ':' after the key, found '\"'\n");
     EXPECT_EQ(Brief(Parse("{\"shader\": 'a'}")), "1:12 K6001 expected a value, found '''\n");
-    EXPECT_EQ(Brief(Parse("{\"shader\": \"a\"} x")), "1:17 K6001 unexpected 'x' after the JSON value\n");
+    EXPECT_EQ(Brief(Parse("{\"shader\": \"a\"} x")),
+              "1:17 K6001 unexpected 'x' after the JSON value\n");
     EXPECT_EQ(Brief(Parse("")), "1:1 K6001 expected a value, found end of file\n");
     EXPECT_EQ(Brief(Parse("{\"a\": 1e999}")), "1:7 K6001 number out of range\n");
     EXPECT_EQ(Brief(Parse(std::string(100, '['))), "1:65 K6001 nesting deeper than 64 levels\n");
@@ -94,8 +95,9 @@ TEST(MaterialParse, StructuralErrors) {
               "texture\n");
     EXPECT_EQ(Brief(Parse(R"({"shader": "y", "keywords": ["A", "A", 1]})")),
               "1:35 K6015 keyword 'A' is listed twice\n1:40 K6003 a keyword must be a string\n");
-    EXPECT_EQ(Brief(Parse(R"({"shader": "y", "render_state": {"ColorMask": "GR", "ZTest": "lequal"}})")),
-              "1:47 K6013 ColorMask must be \"0\" or channels in RGBA order such as \"RGB\"\n");
+    EXPECT_EQ(
+        Brief(Parse(R"({"shader": "y", "render_state": {"ColorMask": "GR", "ZTest": "lequal"}})")),
+        "1:47 K6013 ColorMask must be \"0\" or channels in RGBA order such as \"RGB\"\n");
 }
 
 // A pack with one shader whose Properties and keywords cover every check.
@@ -133,7 +135,8 @@ const pack::Pack& TestPack() {
     return p;
 }
 
-std::string Validate(const std::string& props, const std::string& keywords = "[]",
+std::string Validate(const std::string& props,
+                     const std::string& keywords = "[]",
                      const std::string& shader = "Test/M") {
     const std::string text = "{\"shader\": \"" + shader + "\",\n\"properties\": " + props +
                              ",\n\"keywords\": " + keywords + "}";
@@ -156,10 +159,12 @@ TEST(MaterialValidate, AcceptsWellTypedValues) {
 }
 
 TEST(MaterialValidate, UnknownShaderAndPropertySuggestTheClosestName) {
-    EXPECT_EQ(Validate("{}", "[]", "Test/N"), "1:12 K6006 no shader 'Test/N' in the pack (did you mean 'Test/M')\n");
+    EXPECT_EQ(Validate("{}", "[]", "Test/N"),
+              "1:12 K6006 no shader 'Test/N' in the pack (did you mean 'Test/M')\n");
     EXPECT_EQ(Validate(R"({"_Colour": [1, 1, 1]})"),
               "2:16 K6007 shader 'Test/M' has no property '_Colour' (did you mean '_Color')\n");
-    EXPECT_EQ(Validate(R"({"_Zebra": 1})"), "2:16 K6007 shader 'Test/M' has no property '_Zebra'\n");
+    EXPECT_EQ(Validate(R"({"_Zebra": 1})"),
+              "2:16 K6007 shader 'Test/M' has no property '_Zebra'\n");
 }
 
 TEST(MaterialValidate, WrongTypesAndOutOfRangeValues) {
@@ -167,26 +172,33 @@ TEST(MaterialValidate, WrongTypesAndOutOfRangeValues) {
               "2:16 K6008 property '_Color' is a Color: give 3 or 4 numbers (r, g, b[, a])\n");
     EXPECT_EQ(Validate(R"({"_Color": "red.png"})"),
               "2:16 K6008 property '_Color' is a Color, not a texture\n");
-    EXPECT_EQ(Validate(R"({"_Gloss": [1, 2]})"), "2:16 K6008 property '_Gloss' is a Range: give one number\n");
-    EXPECT_EQ(Validate(R"({"_Count": 1.5})"), "2:16 K6008 property '_Count' is a Int: give one whole number\n");
-    EXPECT_EQ(Validate(R"({"_MainTex": 1})"),
-              "2:16 K6008 property '_MainTex' is a 2D texture, not a number (write a path string or "
-              "{\"path\": ..., \"scale\": [x, y], \"offset\": [x, y]})\n");
+    EXPECT_EQ(Validate(R"({"_Gloss": [1, 2]})"),
+              "2:16 K6008 property '_Gloss' is a Range: give one number\n");
+    EXPECT_EQ(Validate(R"({"_Count": 1.5})"),
+              "2:16 K6008 property '_Count' is a Int: give one whole number\n");
+    EXPECT_EQ(
+        Validate(R"({"_MainTex": 1})"),
+        "2:16 K6008 property '_MainTex' is a 2D texture, not a number (write a path string or "
+        "{\"path\": ..., \"scale\": [x, y], \"offset\": [x, y]})\n");
     EXPECT_EQ(Validate(R"({"_Gloss": 2.5})"),
-              "2:16 K6009 value 2.5 of property '_Gloss' is outside its range (declared Range(0.25, 2))\n");
+              "2:16 K6009 value 2.5 of property '_Gloss' is outside its range (declared "
+              "Range(0.25, 2))\n");
     EXPECT_EQ(Validate(R"({"_Gloss": 0.2})"),
-              "2:16 K6009 value 0.2 of property '_Gloss' is outside its range (declared Range(0.25, 2))\n");
+              "2:16 K6009 value 0.2 of property '_Gloss' is outside its range (declared "
+              "Range(0.25, 2))\n");
 }
 
 TEST(MaterialValidate, KeywordsMustBeDeclaredAndNotAlternatives) {
-    EXPECT_EQ(Validate("{}", R"(["_GLOWW"])"),
-              "3:14 K6010 keyword '_GLOWW' is not declared by shader 'Test/M' (did you mean '_GLOW')\n");
+    EXPECT_EQ(
+        Validate("{}", R"(["_GLOWW"])"),
+        "3:14 K6010 keyword '_GLOWW' is not declared by shader 'Test/M' (did you mean '_GLOW')\n");
     EXPECT_EQ(Validate("{}", R"(["_RED", "_GREEN"])"),
               "3:22 K6011 keywords '_RED' and '_GREEN' are alternatives of one keyword set (enable "
               "at most one keyword of each set)\n");
-    EXPECT_EQ(Validate("{}", R"(["POINT"])"),
-              "3:14 K6012 keyword 'POINT' is a multi_compile keyword the renderer chooses per draw; "
-              "the material setting is ignored\n");
+    EXPECT_EQ(
+        Validate("{}", R"(["POINT"])"),
+        "3:14 K6012 keyword 'POINT' is a multi_compile keyword the renderer chooses per draw; "
+        "the material setting is ignored\n");
 }
 
 TEST(MaterialValidate, EveryTruncatedPrefixFailsCleanly) {

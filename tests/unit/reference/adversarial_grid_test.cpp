@@ -46,7 +46,7 @@ TEST(ReferenceAdversarial, EveryModelIsFiniteOnTheGrid) {
         for (double nl : cosines) {
             for (int light_case = 0; light_case < 3; ++light_case) {
                 // free light direction, light = view, light = -view
-                const glm::dvec3 l = light_case == 0 ? WithCosine(nl, 2.0)
+                const glm::dvec3 l = light_case == 0   ? WithCosine(nl, 2.0)
                                      : light_case == 1 ? v
                                                        : -v;
                 for (double s : smoothness) {
@@ -55,8 +55,7 @@ TEST(ReferenceAdversarial, EveryModelIsFiniteOnTheGrid) {
                             for (double r : ranges) {
                                 for (const auto& cone : cones) {
                                     const double atten =
-                                        DistanceAttenuation(d, r) *
-                                        SpotCone(nl, cone[0], cone[1]);
+                                        DistanceAttenuation(d, r) * SpotCone(nl, cone[0], cone[1]);
                                     const glm::dvec3 c(intensity * atten);
                                     StandardInputs in;
                                     in.diffuse_color = glm::dvec3(0.8);

@@ -42,9 +42,9 @@ TEST(ReferenceAttenuation, InverseRangeSquaredIsWhatTheShaderReceives) {
 
 TEST(ReferenceAttenuation, SpotConeRampsFromOuterToInner) {
     const double outer = 45.0 * kPi / 180.0, inner = 30.0 * kPi / 180.0;
-    EXPECT_EQ(SpotCone(1.0, outer, inner), 1.0);                        // on the axis
-    EXPECT_EQ(SpotCone(std::cos(inner), outer, inner), 1.0);            // at the inner cone
-    EXPECT_NEAR(SpotCone(std::cos(outer), outer, inner), 0.0, 1e-12);   // at the outer cone
+    EXPECT_EQ(SpotCone(1.0, outer, inner), 1.0);                       // on the axis
+    EXPECT_EQ(SpotCone(std::cos(inner), outer, inner), 1.0);           // at the inner cone
+    EXPECT_NEAR(SpotCone(std::cos(outer), outer, inner), 0.0, 1e-12);  // at the outer cone
     EXPECT_EQ(SpotCone(std::cos(60.0 * kPi / 180.0), outer, inner), 0.0);
     const double mid = 0.5 * (std::cos(outer) + std::cos(inner));
     EXPECT_NEAR(SpotCone(mid, outer, inner), 0.25, 1e-12);  // t = 1/2, squared

@@ -95,7 +95,9 @@ bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIss
 // its type within its Range, every keyword is declared (and not two of one set), render-state
 // overrides are valid. `material_dir`, when not empty, is where texture paths are looked up.
 // Returns false when an error was added.
-bool ValidateMaterial(const Material& m, const pack::Pack& pack, const std::string& material_dir,
+bool ValidateMaterial(const Material& m,
+                      const pack::Pack& pack,
+                      const std::string& material_dir,
                       std::vector<MaterialIssue>& issues);
 
 // Edit distance suggestion: the candidate closest to `name` within a third of its length, or "".

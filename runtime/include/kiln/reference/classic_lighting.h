@@ -8,8 +8,10 @@
 namespace kiln::reference {
 
 // Lambert's cosine law: albedo * C * max(0, cos(theta_l)), theta_l the angle between n and l.
-glm::dvec3 LambertDiffuse(const glm::dvec3& albedo, const glm::dvec3& light_color,
-                          const glm::dvec3& n, const glm::dvec3& l);
+glm::dvec3 LambertDiffuse(const glm::dvec3& albedo,
+                          const glm::dvec3& light_color,
+                          const glm::dvec3& n,
+                          const glm::dvec3& l);
 
 // Constant ambient: albedo * ambient.
 glm::dvec3 AmbientConstant(const glm::dvec3& albedo, const glm::dvec3& ambient);
@@ -19,14 +21,18 @@ glm::dvec3 AmbientConstant(const glm::dvec3& albedo, const glm::dvec3& ambient);
 glm::dvec3 BlinnPhongHalfVector(const glm::dvec3& l, const glm::dvec3& v);
 
 // Blinn (1977): spec * C * cos(theta_h)^e, cos clamped to [0, 1], 0^0 = 1.
-glm::dvec3 BlinnPhongSpecular(const glm::dvec3& spec, const glm::dvec3& light_color,
-                              const glm::dvec3& n, const glm::dvec3& h, double exponent);
+glm::dvec3 BlinnPhongSpecular(const glm::dvec3& spec,
+                              const glm::dvec3& light_color,
+                              const glm::dvec3& n,
+                              const glm::dvec3& h,
+                              double exponent);
 
 // The lecture's exponent 100 * smoothness, smoothness clamped to [0, 1].
 double BlinnPhongExponent(double smoothness);
 
 // Energy conservation: diffuse weight 1 - max(spec) in [0, 1]; returns albedo * weight.
-glm::dvec3 EnergyConservation(const glm::dvec3& albedo, const glm::dvec3& spec,
+glm::dvec3 EnergyConservation(const glm::dvec3& albedo,
+                              const glm::dvec3& spec,
                               double* one_minus_reflectivity);
 
 }  // namespace kiln::reference
