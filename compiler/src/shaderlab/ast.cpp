@@ -1,5 +1,7 @@
 #include "kiln/shaderlab/ast.h"
 
+#include "kiln/pack/format.h"
+
 namespace kiln::shaderlab {
 
 bool IsIncludeBlock(ProgramKind kind) {
@@ -25,38 +27,19 @@ const char* ProgramKindName(ProgramKind kind) {
     return "CGPROGRAM";
 }
 
+// The AST's property types are stored in packs as they are (pack_emit.cpp casts them), so the
+// two enums must agree; the names live with the pack format.
+static_assert(uint32_t(PropertyType::kColor) == uint32_t(pack::PropertyType::kColor));
+static_assert(uint32_t(PropertyType::kRange) == uint32_t(pack::PropertyType::kRange));
+static_assert(uint32_t(PropertyType::kTexture2D) == uint32_t(pack::PropertyType::kTexture2D));
+static_assert(uint32_t(PropertyType::kCubeArray) == uint32_t(pack::PropertyType::kCubeArray));
+
 const char* PropertyTypeName(PropertyType type) {
-    switch (type) {
-        case PropertyType::kColor:
-            return "Color";
-        case PropertyType::kVector:
-            return "Vector";
-        case PropertyType::kFloat:
-            return "Float";
-        case PropertyType::kInt:
-            return "Int";
-        case PropertyType::kInteger:
-            return "Integer";
-        case PropertyType::kRange:
-            return "Range";
-        case PropertyType::kTexture2D:
-            return "2D";
-        case PropertyType::kTexture3D:
-            return "3D";
-        case PropertyType::kCube:
-            return "Cube";
-        case PropertyType::kTexture2DArray:
-            return "2DArray";
-        case PropertyType::kCubeArray:
-            return "CubeArray";
-    }
-    return "Float";
+    return pack::PropertyTypeName(static_cast<pack::PropertyType>(type));
 }
 
 bool IsTextureType(PropertyType type) {
-    return type == PropertyType::kTexture2D || type == PropertyType::kTexture3D ||
-           type == PropertyType::kCube || type == PropertyType::kTexture2DArray ||
-           type == PropertyType::kCubeArray;
+    return pack::IsTextureProperty(static_cast<pack::PropertyType>(type));
 }
 
 }  // namespace kiln::shaderlab

@@ -32,49 +32,15 @@ std::string Number(double v) {
     return buf;
 }
 
-const char* TypeName(PropertyType t) {
-    switch (t) {
-        case PropertyType::kColor:
-            return "Color";
-        case PropertyType::kVector:
-            return "Vector";
-        case PropertyType::kFloat:
-            return "Float";
-        case PropertyType::kInt:
-            return "Int";
-        case PropertyType::kInteger:
-            return "Integer";
-        case PropertyType::kRange:
-            return "Range";
-        case PropertyType::kTexture2D:
-            return "2D";
-        case PropertyType::kTexture3D:
-            return "3D";
-        case PropertyType::kCube:
-            return "Cube";
-        case PropertyType::kTexture2DArray:
-            return "2DArray";
-        case PropertyType::kCubeArray:
-            return "CubeArray";
-    }
-    return "unknown";
-}
-
-bool IsTexture(PropertyType t) {
-    return t == PropertyType::kTexture2D || t == PropertyType::kTexture3D ||
-           t == PropertyType::kCube || t == PropertyType::kTexture2DArray ||
-           t == PropertyType::kCubeArray;
-}
-
 void CheckProperty(State& s,
                    const PropertyValue& v,
                    const pack::PropertyRec& rec,
                    const std::string& material_dir) {
     const auto type = static_cast<PropertyType>(rec.type);
-    const std::string what = "property '" + v.name + "' is a " + TypeName(type);
+    const std::string what = "property '" + v.name + "' is a " + pack::PropertyTypeName(type);
     const bool texture = v.kind == PropertyValue::Kind::kTexture;
     const size_t n = v.numbers.size();
-    if (IsTexture(type)) {
+    if (pack::IsTextureProperty(type)) {
         if (!texture) {
             s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
                   what + " texture, not a number",

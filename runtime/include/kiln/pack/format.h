@@ -99,6 +99,41 @@ enum class PropertyType : uint32_t {
     kCubeArray,
 };
 
+// ShaderLab's spelling of a property type: "Color", "Range", "2D", ...
+constexpr const char* PropertyTypeName(PropertyType type) {
+    switch (type) {
+        case PropertyType::kColor:
+            return "Color";
+        case PropertyType::kVector:
+            return "Vector";
+        case PropertyType::kFloat:
+            return "Float";
+        case PropertyType::kInt:
+            return "Int";
+        case PropertyType::kInteger:
+            return "Integer";
+        case PropertyType::kRange:
+            return "Range";
+        case PropertyType::kTexture2D:
+            return "2D";
+        case PropertyType::kTexture3D:
+            return "3D";
+        case PropertyType::kCube:
+            return "Cube";
+        case PropertyType::kTexture2DArray:
+            return "2DArray";
+        case PropertyType::kCubeArray:
+            return "CubeArray";
+    }
+    return "Float";
+}
+
+constexpr bool IsTextureProperty(PropertyType type) {
+    return type == PropertyType::kTexture2D || type == PropertyType::kTexture3D ||
+           type == PropertyType::kCube || type == PropertyType::kTexture2DArray ||
+           type == PropertyType::kCubeArray;
+}
+
 struct PropertyRec {  // 64 bytes
     StrRef name;
     StrRef display_name;
