@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 
 #include "commands.h"
 #include "kiln/material/material.h"
@@ -91,11 +90,9 @@ std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& /*global*
         bool force = false;
     };
     auto args = std::make_shared<Args>();
-    const std::map<std::string, std::string> scaffolds{
-        {"lit", "lit"}, {"unlit", "unlit"}, {"pbs", "pbs"}, {"multilight", "multilight"}};
     cmd->add_option("--template", args->scaffold, "Scaffold: lit, unlit, pbs or multilight")
         ->required()
-        ->transform(CLI::CheckedTransformer(scaffolds, CLI::ignore_case));
+        ->transform(CLI::IsMember({"lit", "unlit", "pbs", "multilight"}, CLI::ignore_case));
     cmd->add_option("name", args->name, "Shader name, e.g. MyGame/Rock (file: Rock.shader)")
         ->required();
     cmd->add_option("-o,--output", args->output, "Output file (default: <last name part>.shader)");
