@@ -35,6 +35,7 @@ constexpr AttributeSpec kAttributes[] = {
     {"Gamma", 0, 0, false},
     {"NoScaleOffset", 0, 0, false},
     {"Normal", 0, 0, false},
+    {"Linear", 0, 0, false},  // Kiln: a texture of data, sampled without sRGB decoding
     {"MainTexture", 0, 0, false},
     {"MainColor", 0, 0, false},
     {"HideInInspector", 0, 0, false},

@@ -54,6 +54,7 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace kiln::cli
 

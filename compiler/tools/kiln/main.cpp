@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
             {"info", AddInfoCommand(app, global)},
             {"extract", AddExtractCommand(app, global)},
             {"validate", AddValidateCommand(app, global)},
-            {"new", AddNewCommand(app, global)}};
+            {"new", AddNewCommand(app, global)},
+            {"render", AddRenderCommand(app, global)}};
 
         try {
             std::vector<std::string> args = RewriteArgs(argc, argv);

@@ -1,0 +1,156 @@
+// kiln render SCENE.gltf -o OUT.png: the runtime library driven from the command line.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "commands.h"
+#include "kiln/runtime/color.h"
+#include "kiln/runtime/renderer.h"
+#include "kiln/runtime/scene.h"
+
+namespace kiln::cli {
+namespace {
+namespace fs = std::filesystem;
+
+// The shipped materials pack: beside the executable's build tree, else where CMake built it.
+std::string DefaultPack() {
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const fs::path beside = exe.parent_path().parent_path() / "materials" / "materials.kpack";
+        if (fs::exists(beside)) {
+            return beside.string();
+        }
+    }
+    return KILN_DEFAULT_PACK;
+}
+
+}  // namespace
+
+std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
+    auto* cmd = app.add_subcommand("render", "Render a glTF scene headless with the runtime");
+    struct Args {
+        std::string scene, output = "out.png", exr, materials, usage, pipeline_cache;
+        std::vector<std::string> packs;
+        runtime::FrameSettings frame;
+        runtime::ColorOptions color;
+        bool validation = false, closest = false;
+        std::string device;
+    };
+    auto a = std::make_shared<Args>();
+    cmd->add_option("scene", a->scene, ".gltf or .glb file")->required();
+    cmd->add_option("--pack", a->packs,
+                    "Variant packs to take shaders from, searched in order (default: the "
+                    "shipped materials.kpack)");
+    cmd->add_option("-o,--output", a->output, "PNG to write (8-bit, display-encoded)");
+    cmd->add_option("--exr", a->exr, "Also write the linear image as 32-bit float OpenEXR");
+    cmd->add_option("--width", a->frame.width, "Image width")->check(CLI::Range(1, 16384));
+    cmd->add_option("--height", a->frame.height, "Image height")->check(CLI::Range(1, 16384));
+    cmd->add_option("--camera", a->frame.camera, "Scene camera index (default: the first, or "
+                                                 "one framing the scene)");
+    cmd->add_option("--pixel-lights", a->frame.pixel_lights,
+                    "Additive per-light passes per object at most (default 4)");
+    cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
+    cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
+    cmd->add_flag("!--no-default-light", a->frame.default_light,
+                  "Do not add a directional light to scenes that have none");
+    cmd->add_option("--ocio-config", a->color.config_path,
+                    "OpenColorIO config (default: $OCIO, else Kiln's built-in sRGB config)");
+    cmd->add_option("--display", a->color.display, "OpenColorIO display");
+    cmd->add_option("--view", a->color.view, "OpenColorIO view");
+    cmd->add_option("--materials", a->materials,
+                    "Material sidecar assigning .material files to glTF materials by name "
+                    "(default: <scene>.kiln.json when present)");
+    cmd->add_flag("--validation", a->validation,
+                  "Enable VK_LAYER_KHRONOS_validation; any message fails the render");
+    cmd->add_flag("--closest-variant", a->closest,
+                  "Take the closest variant (with a warning) when one was stripped");
+    cmd->add_option("--usage", a->usage, "Write every variant lookup to this JSON file");
+    cmd->add_option("--pipeline-cache", a->pipeline_cache, "Persist the VkPipelineCache here");
+    cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
+    return [a] {
+        auto fail = [](const std::string& message) {
+            std::fprintf(stderr, "kiln render: error: %s\n", message.c_str());
+            return int(kExitInputError);
+        };
+        runtime::Scene scene;
+        std::vector<std::string> warnings;
+        if (auto e = runtime::LoadGltf(a->scene, scene, warnings)) {
+            return fail(e->message);
+        }
+        if (!a->materials.empty()) {
+            if (auto e = runtime::LoadMaterialSidecar(a->materials, scene)) {
+                return fail(e->message);
+            }
+        }
+        runtime::ColorPipeline color;
+        if (auto e = runtime::ColorPipeline::Create(a->color, color)) {
+            return fail(e->message);
+        }
+        runtime::RendererOptions options;
+        options.validation = a->validation;
+        options.device_filter = a->device;
+        options.pipeline_cache = a->pipeline_cache;
+        options.missing_variant = a->closest ? runtime::MissingVariantPolicy::kClosest
+                                             : runtime::MissingVariantPolicy::kError;
+        runtime::Renderer renderer;
+        if (auto e = runtime::Renderer::Create(options, renderer)) {
+            return fail(e->message);
+        }
+        if (a->packs.empty()) {
+            a->packs.push_back(DefaultPack());
+        }
+        for (const std::string& p : a->packs) {
+            if (auto e = renderer.AddPack(p)) {
+                return fail(e->message);
+            }
+        }
+        runtime::LinearImage image;
+        runtime::FrameStats stats;
+        auto error = renderer.Render(scene, a->frame, color, image, stats);
+        for (const std::string& w : warnings) {
+            std::fprintf(stderr, "kiln render: warning: %s\n", w.c_str());
+        }
+        for (const std::string& w : stats.warnings) {
+            std::fprintf(stderr, "kiln render: warning: %s\n", w.c_str());
+        }
+        if (!a->usage.empty()) {
+            if (auto e = renderer.WriteUsage(a->usage)) {
+                return fail(e->message);
+            }
+        }
+        if (error) {
+            return fail(error->message);
+        }
+        const std::vector<std::string> messages = renderer.ValidationMessages();
+        for (const std::string& m : messages) {
+            std::fprintf(stderr, "kiln render: validation: %s\n", m.c_str());
+        }
+        if (!a->exr.empty()) {
+            if (auto e = runtime::WriteExr(a->exr, image)) {
+                return fail(e->message);
+            }
+        }
+        std::vector<float> display = image.rgba;
+        color.ApplyDisplay(display);
+        std::vector<uint8_t> rgba8 = runtime::ColorPipeline::Quantize(display);
+        for (size_t i = 3; i < rgba8.size(); i += 4) {
+            rgba8[i] = 255;  // an opaque picture: coverage is not transparency
+        }
+        if (auto e = runtime::WritePng(a->output, image.width, image.height, rgba8)) {
+            return fail(e->message);
+        }
+        std::printf("%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes, %u "
+                    "pipelines, device '%s', %s%s\n",
+                    a->output.c_str(), image.width, image.height, stats.camera.c_str(),
+                    stats.objects, stats.base_passes, stats.add_passes, stats.pipelines_created,
+                    renderer.DeviceName().c_str(), color.description().c_str(),
+                    a->validation ? (", validation messages: " + std::to_string(messages.size()))
+                                        .c_str()
+                                  : "");
+        return messages.empty() ? int(kExitOk) : int(kExitInputError);
+    };
+}
+
+}  // namespace kiln::cli

@@ -1,0 +1,85 @@
+// The renderer an engine (or `kiln render`) drives: it owns a headless Vulkan device, the
+// mapped variant packs, their pipelines and default textures, and renders a Scene with the
+// forward path of the lecture: per object a ForwardBase pass (main directional light, ambient,
+// optional vertex lights) and one additively blended ForwardAdd pass per further pixel light.
+#ifndef KILN_RUNTIME_RENDERER_H_
+#define KILN_RUNTIME_RENDERER_H_
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kiln/pack/reader.h"
+#include "kiln/runtime/color.h"
+#include "kiln/runtime/scene.h"
+#include "kiln/runtime/status.h"
+#include "kiln/runtime/variant_selector.h"
+
+namespace kiln::runtime {
+
+struct RendererOptions {
+    bool validation = false;     // VK_LAYER_KHRONOS_validation; messages are collected
+    std::string device_filter;   // only devices whose name contains this
+    MissingVariantPolicy missing_variant = MissingVariantPolicy::kError;
+    std::string pipeline_cache;  // a file to seed and save the VkPipelineCache; empty: none
+    bool float32_target = false;  // R32G32B32A32_SFLOAT instead of R16G16B16A16_SFLOAT
+};
+
+struct FrameSettings {
+    uint32_t width = 960, height = 540;
+    int camera = -1;            // scene camera index; -1: the first, or one framing the scene
+    uint32_t pixel_lights = 4;  // at most this many additive (ForwardAdd) passes per object
+    float time = 0;             // seconds, for _Time
+    glm::vec3 background{0.0f};  // linear clear colour
+    bool default_light = true;   // light a scene without lights by one directional light
+};
+
+struct FrameStats {
+    uint32_t objects = 0;      // primitives drawn
+    uint32_t base_passes = 0;  // ForwardBase (or untagged) draws
+    uint32_t add_passes = 0;   // ForwardAdd draws
+    uint32_t vertex_lit = 0;   // base draws with VERTEXLIGHT_ON
+    uint32_t pipelines_created = 0;
+    std::string camera;  // which camera was used
+    std::vector<std::string> warnings;
+};
+
+class Renderer {
+  public:
+    Renderer();
+    ~Renderer();  // waits for the device, saves the pipeline cache, destroys everything
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
+    static std::optional<Error> Create(const RendererOptions& options, Renderer& out);
+
+    // Maps and validates a pack; shaders are looked up in the order packs were added.
+    std::optional<Error> AddPack(const std::string& path);
+
+    // Renders one frame into a linear (scene-referred) image. Colour properties are decoded
+    // from sRGB through `color`.
+    std::optional<Error> Render(const Scene& scene,
+                                const FrameSettings& settings,
+                                const ColorPipeline& color,
+                                LinearImage& out,
+                                FrameStats& stats);
+
+    std::string DeviceName() const;
+    std::vector<std::string> ValidationMessages() const;
+    std::optional<Error> WriteUsage(const std::string& path) const;
+
+    size_t pack_count() const;
+    const pack::Pack& pack(size_t index) const;
+
+    struct State;  // opaque: defined inside the library
+
+  private:
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_RENDERER_H_

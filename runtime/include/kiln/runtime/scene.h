@@ -1,0 +1,135 @@
+// Scenes the renderer draws, free of Vulkan: meshes with every vertex stream filled, a flattened
+// node hierarchy, cameras, punctual lights and glTF materials. LoadGltf fills one from a .gltf
+// or .glb file (tinygltf); an optional sidecar assigns Kiln material instances by material name.
+#ifndef KILN_RUNTIME_SCENE_H_
+#define KILN_RUNTIME_SCENE_H_
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kiln/runtime/status.h"
+
+namespace kiln::runtime {
+
+// Interleaved vertex, 72 bytes; the layout the pipelines' vertex input reads.
+struct MeshVertex {
+    float position[3];
+    float normal[3];
+    float uv0[2];
+    float uv1[2];
+    float tangent[4];  // xyz + handedness w (bitangent = w * cross(normal, tangent))
+    float color[4];    // linear RGBA; white when the mesh has none
+};
+static_assert(sizeof(MeshVertex) == 72);
+
+struct Primitive {
+    std::vector<MeshVertex> vertices;
+    std::vector<uint32_t> indices;  // triangle list
+    int material = -1;              // -1: glTF's default material
+    bool has_tangents = false;      // from the file (else generated when there are UVs)
+    bool has_colors = false;
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<Primitive> primitives;
+};
+
+struct SceneImage {
+    std::string name;
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;
+};
+
+struct TextureRef {
+    int image = -1;  // -1: none
+    int texcoord = 0;
+    float scale = 1;  // normalTexture.scale / occlusionTexture.strength
+    bool repeat = true;  // false: clamp to edge
+    bool nearest = false;
+};
+
+enum class AlphaMode { kOpaque, kMask, kBlend };
+
+// A glTF metallic-roughness material; all factors linear.
+struct SceneMaterial {
+    std::string name;
+    glm::vec4 base_color{1.0f};
+    float metallic = 1, roughness = 1;
+    glm::vec3 emissive{0.0f};  // times KHR_materials_emissive_strength
+    TextureRef base_color_texture, metallic_roughness_texture, normal_texture, occlusion_texture,
+        emissive_texture;
+    AlphaMode alpha_mode = AlphaMode::kOpaque;
+    float alpha_cutoff = 0.5f;
+    bool double_sided = false;
+};
+
+enum class LightType { kDirectional, kPoint, kSpot };
+
+struct Light {
+    std::string name;
+    LightType type = LightType::kPoint;
+    glm::vec3 color{1.0f};  // linear
+    float intensity = 1;    // lux (directional) or candela (point, spot)
+    float range = 0;        // 0: unlimited
+    float inner_cone = 0, outer_cone = 0.7853982f;  // radians from the axis
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // world, unit: where the light shines
+};
+
+struct Camera {
+    std::string name;
+    bool perspective = true;
+    float yfov = 0.8f, aspect = 0;  // aspect 0: the image's
+    float znear = 0.05f, zfar = 0;  // zfar 0: infinite
+    float xmag = 1, ymag = 1;       // orthographic half extents
+    glm::mat4 world{1.0f};          // camera to world; looks down -Z, +Y up
+};
+
+struct Instance {
+    uint32_t mesh = 0;
+    glm::mat4 world{1.0f};
+    std::string node;
+};
+
+struct Scene {
+    std::string path;  // the file it came from
+    std::vector<Mesh> meshes;
+    std::vector<SceneImage> images;
+    std::vector<SceneMaterial> materials;
+    std::vector<Instance> instances;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+    glm::vec3 ambient{0.05f};  // linear sky colour for unity_AmbientSky and the SH probe
+    // glTF material name -> .material file (absolute or relative to the working directory).
+    std::map<std::string, std::string> material_files;
+};
+
+// Loads a .gltf or .glb. Recoverable problems (an invalid light, a missing image) are dropped
+// with a warning; anything that leaves no usable scene is an error.
+std::optional<Error> LoadGltf(const std::string& path,
+                              Scene& out,
+                              std::vector<std::string>& warnings);
+
+// Reads a material sidecar: {"kiln_materials": 1, "materials": {"<glTF material>": "x.material"},
+// "ambient": [r, g, b]}; paths relative to the sidecar. LoadGltf reads "<scene>.kiln.json"
+// beside the scene by itself when present.
+std::optional<Error> LoadMaterialSidecar(const std::string& path, Scene& scene);
+
+// Fills tangents from positions, normals and UV0 (per-triangle UV derivatives accumulated per
+// vertex, Gram-Schmidt against the normal, handedness from the bitangent).
+void GenerateTangents(Primitive& primitive);
+
+// World-space bounds of every instance: (min, max); an empty scene gives a unit box.
+std::pair<glm::vec3, glm::vec3> SceneBounds(const Scene& scene);
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_SCENE_H_

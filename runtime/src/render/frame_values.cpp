@@ -1,0 +1,209 @@
+#include "render/frame_values.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "kiln/reference/sh.h"
+
+namespace kiln::render {
+namespace {
+
+std::vector<float> Vec(const glm::vec4& v) {
+    return {v.x, v.y, v.z, v.w};
+}
+std::vector<float> Mat(const glm::mat4& m) {  // column-major, as HLSL's default column_major
+    const float* p = glm::value_ptr(m);
+    return std::vector<float>(p, p + 16);
+}
+
+// Right-handed, depth 0..1, y up in clip space (the viewport flips it).
+glm::mat4 Perspective(float yfov, float aspect, float znear, float zfar) {
+    if (zfar > znear) {
+        return glm::perspectiveRH_ZO(yfov, aspect, znear, zfar);
+    }
+    const float f = 1.0f / std::tan(yfov / 2);
+    glm::mat4 p(0.0f);
+    p[0][0] = f / aspect;
+    p[1][1] = f;
+    p[2][2] = -1.0f;
+    p[2][3] = -1.0f;
+    p[3][2] = -znear;
+    return p;
+}
+
+}  // namespace
+
+float Luminance(const glm::vec3& c) {
+    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
+
+std::optional<runtime::Error> ChooseCamera(const runtime::Scene& scene,
+                                           const runtime::FrameSettings& settings,
+                                           CameraSetup& out) {
+    const float aspect = float(settings.width) / float(settings.height);
+    if (settings.camera >= 0 && size_t(settings.camera) >= scene.cameras.size()) {
+        return runtime::Error{"camera " + std::to_string(settings.camera) +
+                              " does not exist (the scene has " +
+                              std::to_string(scene.cameras.size()) + ")"};
+    }
+    if (!scene.cameras.empty()) {
+        const runtime::Camera& c = scene.cameras[size_t(std::max(settings.camera, 0))];
+        out.name = c.name.empty() ? "camera " + std::to_string(std::max(settings.camera, 0))
+                                  : c.name;
+        out.view = glm::inverse(c.world);
+        out.position = glm::vec3(c.world[3]);
+        out.znear = c.znear > 0 ? c.znear : 0.05f;
+        out.zfar = c.zfar;
+        if (c.perspective) {
+            // glTF: the viewport's aspect ratio is used; the file's only says what was intended.
+            out.projection = Perspective(c.yfov, aspect, out.znear, out.zfar);
+        } else {
+            const float far = c.zfar > out.znear ? c.zfar : out.znear + 1000.0f;
+            out.projection = glm::orthoRH_ZO(-c.xmag, c.xmag, -c.ymag, c.ymag, c.znear, far);
+            out.zfar = far;
+        }
+        return std::nullopt;
+    }
+    // No camera: frame the scene's bounds from the front, above and to the right.
+    const auto [lo, hi] = runtime::SceneBounds(scene);
+    const glm::vec3 center = (lo + hi) * 0.5f;
+    const float radius = std::max(glm::length(hi - lo) * 0.5f, 1e-3f);
+    const float yfov = 0.8f;
+    const float fit = std::min(yfov, 2 * std::atan(std::tan(yfov / 2) * aspect));
+    const float distance = radius / std::sin(fit / 2) * 1.05f;
+    out.name = "automatic";
+    out.position = center + glm::normalize(glm::vec3(0.45f, 0.35f, 1.0f)) * distance;
+    out.view = glm::lookAtRH(out.position, center, glm::vec3(0, 1, 0));
+    out.znear = std::max(distance - radius * 1.5f, distance * 0.01f);
+    out.zfar = distance + radius * 2;
+    out.projection = Perspective(yfov, aspect, out.znear, out.zfar);
+    return std::nullopt;
+}
+
+Values FrameValues(const runtime::Scene& scene,
+                   const runtime::FrameSettings& settings,
+                   const CameraSetup& camera) {
+    const float t = settings.time;
+    const float w = float(settings.width), h = float(settings.height);
+    Values v;
+    v["_Time"] = {t / 20, t, 2 * t, 3 * t};
+    v["_SinTime"] = {std::sin(t / 8), std::sin(t / 4), std::sin(t / 2), std::sin(t)};
+    v["_CosTime"] = {std::cos(t / 8), std::cos(t / 4), std::cos(t / 2), std::cos(t)};
+    v["unity_DeltaTime"] = {1.0f / 60, 60.0f, 1.0f / 60, 60.0f};
+    v["_WorldSpaceCameraPos"] = {camera.position.x, camera.position.y, camera.position.z};
+    const float far = camera.zfar > 0 ? camera.zfar : 1e30f;
+    v["_ProjectionParams"] = {1, camera.znear, far, camera.zfar > 0 ? 1 / far : 0};
+    v["_ScreenParams"] = {w, h, 1 + 1 / w, 1 + 1 / h};
+    v["unity_MatrixV"] = Mat(camera.view);
+    v["unity_MatrixVP"] = Mat(camera.projection * camera.view);
+    v["glstate_matrix_projection"] = Mat(camera.projection);
+    v["unity_AmbientSky"] = Vec(glm::vec4(scene.ambient, 1));
+    // A constant sky of radiance `ambient`: ShadeSH9 then returns E / pi = ambient.
+    reference::SH9 sh;
+    reference::AddConstantRadiance(sh, glm::dvec3(scene.ambient));
+    const reference::PackedSH packed = reference::PackSH9(sh);
+    const char* names[7] = {"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr",
+                            "unity_SHBg", "unity_SHBb", "unity_SHC"};
+    for (int i = 0; i < 7; ++i) {
+        v[names[i]] = std::vector<float>(packed[size_t(i)].begin(), packed[size_t(i)].end());
+    }
+    return v;
+}
+
+Values LightValues(const runtime::Light* light, const std::vector<const runtime::Light*>& vertex) {
+    Values v;
+    if (light) {
+        const glm::vec3 c = light->color * light->intensity;
+        v["_LightColor0"] = {c.r, c.g, c.b, 1};
+        if (light->type == runtime::LightType::kDirectional) {
+            const glm::vec3 d = -light->direction;  // towards the light
+            v["_WorldSpaceLightPos0"] = {d.x, d.y, d.z, 0};
+        } else {
+            v["_WorldSpaceLightPos0"] = {light->position.x, light->position.y,
+                                         light->position.z, 1};
+        }
+        v["kiln_SpotDirection0"] = {light->direction.x, light->direction.y, light->direction.z, 0};
+        const float inv_range2 = light->range > 0 ? 1 / (light->range * light->range) : 0;
+        v["kiln_LightParams0"] = {inv_range2, std::cos(light->outer_cone),
+                                  std::cos(light->inner_cone), 0};
+    } else {
+        v["_LightColor0"] = {0, 0, 0, 0};
+        v["_WorldSpaceLightPos0"] = {0, 1, 0, 0};
+        v["kiln_SpotDirection0"] = {0, -1, 0, 0};
+        v["kiln_LightParams0"] = {0, -1, -1, 0};
+    }
+    std::vector<float> x(4, 0), y(4, 0), z(4, 0), atten(4, 0), colors(32, 0);
+    for (size_t i = 0; i < vertex.size() && i < 4; ++i) {
+        const runtime::Light& l = *vertex[i];
+        x[i] = l.position.x;
+        y[i] = l.position.y;
+        z[i] = l.position.z;
+        atten[i] = l.range > 0 ? 1 / (l.range * l.range) : 0;
+        const glm::vec3 c = l.color * l.intensity;
+        colors[i * 4 + 0] = c.r;
+        colors[i * 4 + 1] = c.g;
+        colors[i * 4 + 2] = c.b;
+        colors[i * 4 + 3] = 1;
+    }
+    v["unity_4LightPosX0"] = x;
+    v["unity_4LightPosY0"] = y;
+    v["unity_4LightPosZ0"] = z;
+    v["unity_4LightAtten0"] = atten;
+    v["unity_LightColor"] = colors;
+    return v;
+}
+
+Values ObjectValues(const glm::mat4& world) {
+    return {{"unity_ObjectToWorld", Mat(world)}, {"unity_WorldToObject", Mat(glm::inverse(world))}};
+}
+
+const runtime::Light* MainLight(const std::vector<runtime::Light>& lights) {
+    const runtime::Light* main = nullptr;
+    for (const runtime::Light& l : lights) {
+        if (l.type == runtime::LightType::kDirectional &&
+            (!main || l.intensity * Luminance(l.color) > main->intensity * Luminance(main->color))) {
+            main = &l;
+        }
+    }
+    return main;
+}
+
+ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
+                       const runtime::Light* main,
+                       const glm::vec3& center,
+                       float radius,
+                       uint32_t pixel_lights) {
+    ObjectLights out;
+    out.main = main;
+    std::vector<std::pair<float, const runtime::Light*>> ranked;
+    for (const runtime::Light& l : lights) {
+        if (&l == main) {
+            continue;
+        }
+        const float power = l.intensity * Luminance(l.color);
+        if (l.type == runtime::LightType::kDirectional) {
+            ranked.emplace_back(std::numeric_limits<float>::max() / 2 + power, &l);
+            continue;
+        }
+        const float d = std::max(glm::length(l.position - center) - radius, 0.0f);
+        if (l.range > 0 && d >= l.range) {
+            continue;
+        }
+        ranked.emplace_back(power / std::max(d * d, 1e-4f), &l);
+    }
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& [importance, light] : ranked) {
+        if (out.pixel.size() < pixel_lights) {
+            out.pixel.push_back(light);
+        } else if (light->type == runtime::LightType::kPoint && out.vertex.size() < 4) {
+            out.vertex.push_back(light);
+        }
+    }
+    return out;
+}
+
+}  // namespace kiln::render

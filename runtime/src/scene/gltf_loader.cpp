@@ -1,0 +1,519 @@
+// LoadGltf: tinygltf model -> Scene. Accessors of any component type are read with bounds checks
+// (tinygltf checks buffer views against buffers; we check every element against its view), the
+// node tree is flattened into instances, and KHR_lights_punctual lights are validated here
+// because tinygltf 2.7 accepts unknown types and leaves defaults unset.
+#include "kiln/runtime/scene.h"
+
+#include <tiny_gltf.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+
+namespace kiln::runtime {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+// Reads accessor `index` as floats, `want` components per element (missing components 0),
+// normalizing integer types when the accessor says so. Empty on any inconsistency.
+bool ReadAccessor(const tinygltf::Model& m, int index, int want, std::vector<float>& out,
+                  std::string& why) {
+    if (index < 0 || size_t(index) >= m.accessors.size()) {
+        why = "accessor " + std::to_string(index) + " does not exist";
+        return false;
+    }
+    const tinygltf::Accessor& a = m.accessors[size_t(index)];
+    if (a.sparse.isSparse) {
+        why = "sparse accessors are not supported";
+        return false;
+    }
+    const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+    if (comps <= 0 || csize <= 0 || a.bufferView < 0 ||
+        size_t(a.bufferView) >= m.bufferViews.size()) {
+        why = "accessor " + std::to_string(index) + " has no usable buffer view or type";
+        return false;
+    }
+    const tinygltf::BufferView& view = m.bufferViews[size_t(a.bufferView)];
+    if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size()) {
+        why = "buffer view " + std::to_string(a.bufferView) + " names no buffer";
+        return false;
+    }
+    const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
+    const size_t elem = size_t(comps) * size_t(csize);
+    const size_t stride = view.byteStride ? view.byteStride : elem;
+    const size_t base = view.byteOffset + a.byteOffset;
+    if (a.count > 0 && (base > data.size() || view.byteOffset + view.byteLength > data.size() ||
+                        (a.count - 1) * stride + elem > view.byteLength - a.byteOffset ||
+                        a.byteOffset > view.byteLength)) {
+        why = "accessor " + std::to_string(index) + " reads past its buffer view";
+        return false;
+    }
+    out.assign(a.count * size_t(want), 0.0f);
+    for (size_t i = 0; i < a.count; ++i) {
+        const unsigned char* p = data.data() + base + i * stride;
+        for (int c = 0; c < std::min(comps, want); ++c) {
+            const unsigned char* q = p + size_t(c) * size_t(csize);
+            float v = 0;
+            switch (a.componentType) {
+                case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                    std::memcpy(&v, q, 4);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                    v = a.normalized ? float(*q) / 255.0f : float(*q);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_BYTE:
+                    v = a.normalized ? std::max(float(int8_t(*q)) / 127.0f, -1.0f)
+                                     : float(int8_t(*q));
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                    uint16_t s;
+                    std::memcpy(&s, q, 2);
+                    v = a.normalized ? float(s) / 65535.0f : float(s);
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                    int16_t s;
+                    std::memcpy(&s, q, 2);
+                    v = a.normalized ? std::max(float(s) / 32767.0f, -1.0f) : float(s);
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+                    uint32_t s;
+                    std::memcpy(&s, q, 4);
+                    v = float(s);
+                    break;
+                }
+                default:
+                    why = "accessor " + std::to_string(index) + " has an unknown component type";
+                    return false;
+            }
+            out[i * size_t(want) + size_t(c)] = std::isfinite(v) ? v : 0.0f;
+        }
+    }
+    return true;
+}
+
+bool ReadIndices(const tinygltf::Model& m, int index, std::vector<uint32_t>& out,
+                 std::string& why) {
+    std::vector<float> f;
+    if (!ReadAccessor(m, index, 1, f, why)) {
+        return false;
+    }
+    const auto& a = m.accessors[size_t(index)];
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {  // exact above 2^24
+        const auto& view = m.bufferViews[size_t(a.bufferView)];
+        const auto& data = m.buffers[size_t(view.buffer)].data;
+        const size_t stride = view.byteStride ? view.byteStride : 4;
+        out.resize(a.count);
+        for (size_t i = 0; i < a.count; ++i) {
+            std::memcpy(&out[i], data.data() + view.byteOffset + a.byteOffset + i * stride, 4);
+        }
+        return true;
+    }
+    out.assign(f.begin(), f.end());
+    return true;
+}
+
+std::optional<Error> ReadPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p,
+                                   const std::string& where, Primitive& out,
+                                   std::vector<std::string>& warnings) {
+    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
+        warnings.push_back(where + ": primitive mode " + std::to_string(p.mode) +
+                           " is not triangles; skipped");
+        return std::nullopt;
+    }
+    auto attr = [&](const char* name) {
+        auto it = p.attributes.find(name);
+        return it == p.attributes.end() ? -1 : it->second;
+    };
+    std::string why;
+    std::vector<float> pos, nrm, uv0, uv1, tan, col;
+    if (attr("POSITION") < 0 || !ReadAccessor(m, attr("POSITION"), 3, pos, why)) {
+        return Error{where + ": " + (why.empty() ? "no POSITION attribute" : why)};
+    }
+    const size_t n = pos.size() / 3;
+    auto optional = [&](const char* name, int comps, std::vector<float>& v) -> bool {
+        if (attr(name) < 0) {
+            return false;
+        }
+        if (!ReadAccessor(m, attr(name), comps, v, why) || v.size() != n * size_t(comps)) {
+            warnings.push_back(where + ": attribute " + name + " ignored: " +
+                               (why.empty() ? "count differs from POSITION" : why));
+            v.clear();
+            return false;
+        }
+        return true;
+    };
+    const bool has_normals = optional("NORMAL", 3, nrm);
+    const bool has_uv0 = optional("TEXCOORD_0", 2, uv0);
+    const bool has_uv1 = optional("TEXCOORD_1", 2, uv1);
+    out.has_tangents = optional("TANGENT", 4, tan);
+    out.has_colors = false;
+    if (attr("COLOR_0") >= 0) {
+        const int comps = m.accessors[size_t(attr("COLOR_0"))].type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+        out.has_colors = optional("COLOR_0", comps, col);
+        if (out.has_colors && comps == 3) {
+            std::vector<float> rgba(n * 4);
+            for (size_t i = 0; i < n; ++i) {
+                rgba[i * 4 + 0] = col[i * 3 + 0];
+                rgba[i * 4 + 1] = col[i * 3 + 1];
+                rgba[i * 4 + 2] = col[i * 3 + 2];
+                rgba[i * 4 + 3] = 1.0f;
+            }
+            col = std::move(rgba);
+        }
+    }
+    out.vertices.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        MeshVertex& v = out.vertices[i];
+        std::memset(&v, 0, sizeof v);
+        std::memcpy(v.position, &pos[i * 3], 12);
+        if (has_normals) {
+            std::memcpy(v.normal, &nrm[i * 3], 12);
+        }
+        if (has_uv0) {
+            std::memcpy(v.uv0, &uv0[i * 2], 8);
+        }
+        if (has_uv1) {
+            std::memcpy(v.uv1, &uv1[i * 2], 8);
+        }
+        if (out.has_tangents) {
+            std::memcpy(v.tangent, &tan[i * 4], 16);
+        } else {
+            v.tangent[0] = 1.0f;
+            v.tangent[3] = 1.0f;
+        }
+        for (int c = 0; c < 4; ++c) {
+            v.color[c] = out.has_colors ? col[i * 4 + size_t(c)] : 1.0f;
+        }
+    }
+    if (p.indices >= 0) {
+        if (!ReadIndices(m, p.indices, out.indices, why)) {
+            return Error{where + ": " + why};
+        }
+    } else {
+        out.indices.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            out.indices[i] = uint32_t(i);
+        }
+    }
+    out.indices.resize(out.indices.size() / 3 * 3);
+    for (uint32_t& index : out.indices) {
+        if (index >= n) {
+            return Error{where + ": index " + std::to_string(index) + " is past the " +
+                         std::to_string(n) + " vertices"};
+        }
+    }
+    if (!has_normals) {  // flat normals are what glTF asks for; smooth per-vertex is close
+        for (size_t t = 0; t + 2 < out.indices.size(); t += 3) {
+            MeshVertex* v[3] = {&out.vertices[out.indices[t]], &out.vertices[out.indices[t + 1]],
+                                &out.vertices[out.indices[t + 2]]};
+            const glm::vec3 a = glm::make_vec3(v[0]->position), b = glm::make_vec3(v[1]->position),
+                            c = glm::make_vec3(v[2]->position);
+            const glm::vec3 fn = glm::cross(b - a, c - a);
+            for (MeshVertex* x : v) {
+                for (int k = 0; k < 3; ++k) {
+                    x->normal[k] += fn[k];
+                }
+            }
+        }
+        for (MeshVertex& v : out.vertices) {
+            glm::vec3 nn = glm::make_vec3(v.normal);
+            const float len = glm::length(nn);
+            nn = len > 1e-20f ? nn / len : glm::vec3(0, 0, 1);
+            std::memcpy(v.normal, &nn[0], 12);
+        }
+    }
+    p.material >= 0 && size_t(p.material) < m.materials.size() ? out.material = p.material
+                                                                 : out.material = -1;
+    if (!out.has_tangents && has_uv0) {
+        GenerateTangents(out);
+    }
+    return std::nullopt;
+}
+
+TextureRef ReadTextureRef(const tinygltf::Model& m, int texture, int texcoord, float scale) {
+    TextureRef ref;
+    if (texture < 0 || size_t(texture) >= m.textures.size()) {
+        return ref;
+    }
+    const tinygltf::Texture& t = m.textures[size_t(texture)];
+    if (t.source < 0 || size_t(t.source) >= m.images.size()) {
+        return ref;
+    }
+    ref.image = t.source;
+    ref.texcoord = texcoord;
+    ref.scale = scale;
+    if (t.sampler >= 0 && size_t(t.sampler) < m.samplers.size()) {
+        const tinygltf::Sampler& s = m.samplers[size_t(t.sampler)];
+        ref.repeat = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        ref.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+    }
+    return ref;
+}
+
+SceneMaterial ReadMaterial(const tinygltf::Model& m, const tinygltf::Material& g) {
+    SceneMaterial s;
+    s.name = g.name;
+    const auto& pbr = g.pbrMetallicRoughness;
+    for (int i = 0; i < 4 && size_t(i) < pbr.baseColorFactor.size(); ++i) {
+        s.base_color[i] = float(pbr.baseColorFactor[size_t(i)]);
+    }
+    s.metallic = float(pbr.metallicFactor);
+    s.roughness = float(pbr.roughnessFactor);
+    for (int i = 0; i < 3 && size_t(i) < g.emissiveFactor.size(); ++i) {
+        s.emissive[i] = float(g.emissiveFactor[size_t(i)]);
+    }
+    if (auto it = g.extensions.find("KHR_materials_emissive_strength"); it != g.extensions.end()) {
+        const tinygltf::Value& strength = it->second.Get("emissiveStrength");
+        if (strength.IsNumber()) {
+            s.emissive *= float(strength.GetNumberAsDouble());
+        }
+    }
+    s.base_color_texture =
+        ReadTextureRef(m, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, 1);
+    s.metallic_roughness_texture = ReadTextureRef(m, pbr.metallicRoughnessTexture.index,
+                                                  pbr.metallicRoughnessTexture.texCoord, 1);
+    s.normal_texture = ReadTextureRef(m, g.normalTexture.index, g.normalTexture.texCoord,
+                                      float(g.normalTexture.scale));
+    s.occlusion_texture = ReadTextureRef(m, g.occlusionTexture.index, g.occlusionTexture.texCoord,
+                                         float(g.occlusionTexture.strength));
+    s.emissive_texture =
+        ReadTextureRef(m, g.emissiveTexture.index, g.emissiveTexture.texCoord, 1);
+    s.alpha_mode = g.alphaMode == "MASK"    ? AlphaMode::kMask
+                   : g.alphaMode == "BLEND" ? AlphaMode::kBlend
+                                            : AlphaMode::kOpaque;
+    s.alpha_cutoff = float(g.alphaCutoff);
+    s.double_sided = g.doubleSided;
+    return s;
+}
+
+// Checks one KHR_lights_punctual light; empty when valid.
+std::string CheckLight(const tinygltf::Light& l) {
+    if (l.type != "directional" && l.type != "point" && l.type != "spot") {
+        return "unknown light type '" + l.type + "' (expected directional, point or spot)";
+    }
+    if (!l.color.empty() && l.color.size() != 3) {
+        return "color has " + std::to_string(l.color.size()) + " components, expected 3";
+    }
+    for (double c : l.color) {
+        if (!std::isfinite(c) || c < 0) {
+            return "color components must be finite and >= 0";
+        }
+    }
+    if (!std::isfinite(l.intensity) || l.intensity < 0) {
+        return "intensity must be finite and >= 0";
+    }
+    if (l.range < 0 || !std::isfinite(l.range)) {
+        return "range must be > 0 when given";
+    }
+    if (l.type == "spot") {
+        const double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
+        if (!(inner >= 0 && inner < outer && outer <= kPi / 2 + 1e-6)) {
+            return "spot cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2 "
+                   "(got " +
+                   std::to_string(inner) + ", " + std::to_string(outer) + ")";
+        }
+    }
+    return {};
+}
+
+glm::mat4 LocalMatrix(const tinygltf::Node& n) {
+    if (n.matrix.size() == 16) {
+        glm::mat4 m;
+        for (int i = 0; i < 16; ++i) {
+            m[i / 4][i % 4] = float(n.matrix[size_t(i)]);
+        }
+        return m;
+    }
+    glm::mat4 m(1.0f);
+    if (n.translation.size() == 3) {
+        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+    }
+    if (n.rotation.size() == 4) {
+        m *= glm::mat4_cast(glm::normalize(glm::quat(float(n.rotation[3]), float(n.rotation[0]),
+                                                     float(n.rotation[1]), float(n.rotation[2]))));
+    }
+    if (n.scale.size() == 3) {
+        m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+    }
+    return m;
+}
+
+}  // namespace
+
+std::optional<Error> LoadGltf(const std::string& path,
+                              Scene& out,
+                              std::vector<std::string>& warnings) {
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    const bool binary = std::filesystem::path(path).extension() == ".glb";
+    if (!std::filesystem::exists(path)) {
+        return Error{path + ": no such file"};
+    }
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (!warn.empty()) {
+        warnings.push_back(path + ": " + warn);
+    }
+    if (!ok) {
+        return Error{path + ": " + (err.empty() ? std::string("not a glTF file") : err)};
+    }
+    Scene scene;
+    scene.path = path;
+    for (const tinygltf::Image& img : model.images) {
+        SceneImage si;
+        si.name = img.name.empty() ? img.uri : img.name;
+        if (img.width > 0 && img.height > 0 && img.component == 4 && img.bits == 8 &&
+            img.image.size() == size_t(img.width) * size_t(img.height) * 4) {
+            si.width = uint32_t(img.width);
+            si.height = uint32_t(img.height);
+            si.rgba8 = img.image;
+        } else {
+            warnings.push_back(path + ": image '" + si.name + "' could not be decoded as 8-bit " +
+                               "RGBA; the default texture is used instead");
+        }
+        scene.images.push_back(std::move(si));
+    }
+    for (const tinygltf::Material& g : model.materials) {
+        scene.materials.push_back(ReadMaterial(model, g));
+    }
+    for (size_t mi = 0; mi < model.meshes.size(); ++mi) {
+        Mesh mesh;
+        mesh.name = model.meshes[mi].name;
+        for (size_t pi = 0; pi < model.meshes[mi].primitives.size(); ++pi) {
+            Primitive prim;
+            const std::string where = path + ": mesh " + std::to_string(mi) + " primitive " +
+                                      std::to_string(pi);
+            if (auto e = ReadPrimitive(model, model.meshes[mi].primitives[pi], where, prim,
+                                       warnings)) {
+                return e;
+            }
+            if (!prim.indices.empty()) {
+                mesh.primitives.push_back(std::move(prim));
+            }
+        }
+        scene.meshes.push_back(std::move(mesh));
+    }
+    // Lights: validated once; nodes refer to them by index.
+    std::vector<std::string> light_problem(model.lights.size());
+    for (size_t i = 0; i < model.lights.size(); ++i) {
+        light_problem[i] = CheckLight(model.lights[i]);
+        if (!light_problem[i].empty()) {
+            warnings.push_back(path + ": light " + std::to_string(i) + " '" +
+                               model.lights[i].name + "' rejected: " + light_problem[i]);
+        }
+    }
+    std::vector<bool> visiting(model.nodes.size(), false);
+    std::function<void(int, const glm::mat4&)> visit = [&](int index, const glm::mat4& parent) {
+        if (index < 0 || size_t(index) >= model.nodes.size() || visiting[size_t(index)]) {
+            return;  // a cycle or a bad index: tinygltf lets both through
+        }
+        visiting[size_t(index)] = true;
+        const tinygltf::Node& node = model.nodes[size_t(index)];
+        const glm::mat4 world = parent * LocalMatrix(node);
+        if (node.mesh >= 0 && size_t(node.mesh) < scene.meshes.size()) {
+            scene.instances.push_back({uint32_t(node.mesh), world, node.name});
+        }
+        if (node.camera >= 0 && size_t(node.camera) < model.cameras.size()) {
+            const tinygltf::Camera& gc = model.cameras[size_t(node.camera)];
+            Camera cam;
+            cam.name = gc.name.empty() ? node.name : gc.name;
+            cam.perspective = gc.type != "orthographic";
+            if (cam.perspective) {
+                cam.yfov = float(gc.perspective.yfov);
+                cam.aspect = float(gc.perspective.aspectRatio);
+                cam.znear = float(gc.perspective.znear);
+                cam.zfar = float(gc.perspective.zfar);
+            } else {
+                cam.xmag = float(gc.orthographic.xmag);
+                cam.ymag = float(gc.orthographic.ymag);
+                cam.znear = float(gc.orthographic.znear);
+                cam.zfar = float(gc.orthographic.zfar);
+            }
+            cam.world = world;
+            scene.cameras.push_back(cam);
+        }
+        if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
+            const tinygltf::Value& li = it->second.Get("light");
+            const int light = li.IsInt() ? li.GetNumberAsInt() : -1;
+            if (light < 0 || size_t(light) >= model.lights.size()) {
+                warnings.push_back(path + ": node '" + node.name + "' refers to light " +
+                                   std::to_string(light) + ", which does not exist; ignored");
+            } else if (light_problem[size_t(light)].empty()) {
+                const tinygltf::Light& gl = model.lights[size_t(light)];
+                Light l;
+                l.name = gl.name.empty() ? node.name : gl.name;
+                l.type = gl.type == "directional" ? LightType::kDirectional
+                         : gl.type == "spot"      ? LightType::kSpot
+                                                  : LightType::kPoint;
+                if (gl.color.size() == 3) {
+                    l.color = glm::vec3(gl.color[0], gl.color[1], gl.color[2]);
+                }
+                l.intensity = float(gl.intensity);
+                l.range = l.type == LightType::kDirectional ? 0.0f : float(gl.range);
+                l.inner_cone = float(gl.spot.innerConeAngle);
+                l.outer_cone = float(gl.spot.outerConeAngle);
+                l.position = glm::vec3(world[3]);
+                l.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+                if (!std::isfinite(l.direction.x)) {
+                    l.direction = glm::vec3(0, 0, -1);
+                }
+                scene.lights.push_back(l);
+            }
+        }
+        for (int child : node.children) {
+            visit(child, world);
+        }
+        visiting[size_t(index)] = false;
+    };
+    std::vector<int> roots;
+    if (model.defaultScene >= 0 && size_t(model.defaultScene) < model.scenes.size()) {
+        roots = model.scenes[size_t(model.defaultScene)].nodes;
+    } else if (!model.scenes.empty()) {
+        roots = model.scenes[0].nodes;
+    } else {
+        for (size_t i = 0; i < model.nodes.size(); ++i) {
+            roots.push_back(int(i));
+        }
+    }
+    for (int root : roots) {
+        visit(root, glm::mat4(1.0f));
+    }
+    const std::filesystem::path sidecar =
+        std::filesystem::path(path).replace_extension(".kiln.json");
+    if (std::filesystem::exists(sidecar)) {
+        if (auto e = LoadMaterialSidecar(sidecar.string(), scene)) {
+            return e;
+        }
+    }
+    out = std::move(scene);
+    return std::nullopt;
+}
+
+std::pair<glm::vec3, glm::vec3> SceneBounds(const Scene& scene) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const Instance& inst : scene.instances) {
+        for (const Primitive& p : scene.meshes[inst.mesh].primitives) {
+            for (const MeshVertex& v : p.vertices) {
+                const glm::vec3 w = glm::vec3(inst.world * glm::vec4(glm::make_vec3(v.position), 1));
+                lo = glm::min(lo, w);
+                hi = glm::max(hi, w);
+            }
+        }
+    }
+    if (lo.x > hi.x) {
+        return {glm::vec3(-0.5f), glm::vec3(0.5f)};
+    }
+    return {lo, hi};
+}
+
+}  // namespace kiln::runtime

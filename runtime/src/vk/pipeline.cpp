@@ -1,0 +1,317 @@
+// CreatePipeline: shader modules from the pack's SPIR-V, descriptor-set layouts and push
+// constants from the variant's reflection (union of both stages), vertex input by semantic.
+#include "vk/pipeline.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <map>
+
+namespace kiln::vk {
+namespace {
+
+using pack::SectionTag;
+
+struct Stream {
+    uint32_t offset;
+    VkFormat format;
+};
+
+// The mesh stream a vertex input reads, by HLSL semantic.
+std::optional<Stream> StreamFor(std::string_view semantic) {
+    if (semantic == "POSITION" || semantic == "POSITION0") {
+        return Stream{offsetof(Vertex, position), VK_FORMAT_R32G32B32_SFLOAT};
+    }
+    if (semantic == "NORMAL" || semantic == "NORMAL0") {
+        return Stream{offsetof(Vertex, normal), VK_FORMAT_R32G32B32_SFLOAT};
+    }
+    if (semantic == "TEXCOORD" || semantic == "TEXCOORD0") {
+        return Stream{offsetof(Vertex, uv0), VK_FORMAT_R32G32_SFLOAT};
+    }
+    if (semantic == "TEXCOORD1") {
+        return Stream{offsetof(Vertex, uv1), VK_FORMAT_R32G32_SFLOAT};
+    }
+    if (semantic == "TANGENT" || semantic == "TANGENT0") {
+        return Stream{offsetof(Vertex, tangent), VK_FORMAT_R32G32B32A32_SFLOAT};
+    }
+    if (semantic == "COLOR" || semantic == "COLOR0") {
+        return Stream{offsetof(Vertex, color), VK_FORMAT_R32G32B32A32_SFLOAT};
+    }
+    return std::nullopt;
+}
+
+VkShaderStageFlags StageBit(uint32_t stage) {
+    return stage == uint32_t(pack::Stage::kVertex) ? VK_SHADER_STAGE_VERTEX_BIT
+                                                   : VK_SHADER_STAGE_FRAGMENT_BIT;
+}
+
+VkDescriptorType DescriptorType(pack::ResourceKind kind) {
+    switch (kind) {
+        case pack::ResourceKind::kCombinedImageSampler:
+            return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        case pack::ResourceKind::kSeparateImage:
+            return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+        case pack::ResourceKind::kSeparateSampler:
+            return VK_DESCRIPTOR_TYPE_SAMPLER;
+        case pack::ResourceKind::kStorageImage:
+            return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        case pack::ResourceKind::kStorageBuffer:
+            return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    }
+    return VK_DESCRIPTOR_TYPE_SAMPLER;
+}
+
+std::optional<runtime::Error> CreateLayout(const Context& c,
+                                           const pack::Pack& pack,
+                                           const std::array<pack::ModuleRec, 2>& modules,
+                                           VariantLayout& out) {
+    // (set, binding) -> layout binding, stages OR-ed across the two modules.
+    std::map<std::pair<uint32_t, uint32_t>, VkDescriptorSetLayoutBinding> bindings;
+    auto add = [&](uint32_t set, uint32_t binding, VkDescriptorType type, uint32_t count,
+                   VkShaderStageFlags stage) {
+        auto [it, fresh] = bindings.try_emplace({set, binding});
+        if (fresh) {
+            it->second = VkDescriptorSetLayoutBinding{binding, type, std::max(count, 1u), 0,
+                                                      nullptr};
+        }
+        it->second.stageFlags |= stage;
+    };
+    for (const pack::ModuleRec& m : modules) {
+        const VkShaderStageFlags stage = StageBit(m.stage);
+        for (uint32_t i = 0; i < m.block_count; ++i) {
+            const auto b = pack.Get<pack::BlockRec>(SectionTag::kBlocks, m.first_block + i);
+            if (pack::BlockKind(b.kind) == pack::BlockKind::kPushConstant) {
+                out.push_constant_size = std::max(out.push_constant_size, b.size);
+                out.push_constant_stages |= stage;
+            } else {
+                add(b.set, b.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stage);
+            }
+        }
+        for (uint32_t i = 0; i < m.resource_count; ++i) {
+            const auto r =
+                pack.Get<pack::ResourceRec>(SectionTag::kResources, m.first_resource + i);
+            add(r.set, r.binding, DescriptorType(pack::ResourceKind(r.kind)), r.array_size, stage);
+        }
+    }
+    uint32_t set_count = 0;
+    for (const auto& [key, b] : bindings) {
+        if (key.first >= 8) {
+            return runtime::Error{"descriptor set " + std::to_string(key.first) +
+                                  " is beyond the 8 sets the runtime supports"};
+        }
+        set_count = std::max(set_count, key.first + 1);
+    }
+    out.bindings.assign(set_count, {});
+    for (const auto& [key, b] : bindings) {
+        out.bindings[key.first].push_back(b);
+    }
+    for (uint32_t s = 0; s < set_count; ++s) {
+        VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        info.bindingCount = uint32_t(out.bindings[s].size());
+        info.pBindings = out.bindings[s].data();
+        VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+        if (VkResult r = vkCreateDescriptorSetLayout(c.device, &info, nullptr, &layout);
+            r != VK_SUCCESS) {
+            return VkError("cannot create a descriptor set layout", r);
+        }
+        out.sets.push_back(layout);
+    }
+    VkPushConstantRange push{out.push_constant_stages, 0, out.push_constant_size};
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = uint32_t(out.sets.size());
+    info.pSetLayouts = out.sets.data();
+    info.pushConstantRangeCount = out.push_constant_size ? 1 : 0;
+    info.pPushConstantRanges = &push;
+    if (VkResult r = vkCreatePipelineLayout(c.device, &info, nullptr, &out.layout);
+        r != VK_SUCCESS) {
+        return VkError("cannot create a pipeline layout", r);
+    }
+    return std::nullopt;
+}
+
+// The name of the module's first OpEntryPoint (Kiln keeps the HLSL function's name), read with
+// every word bounds-checked; empty when there is none.
+std::string EntryPointName(std::span<const uint32_t> words) {
+    constexpr uint32_t kOpEntryPoint = 15;
+    for (size_t i = 5; i < words.size();) {
+        const uint32_t count = words[i] >> 16, opcode = words[i] & 0xFFFF;
+        if (count == 0 || count > words.size() - i) {
+            break;
+        }
+        if (opcode == kOpEntryPoint && count > 3) {
+            std::string name;
+            for (size_t w = i + 3; w < i + count; ++w) {
+                for (int b = 0; b < 4; ++b) {
+                    const char ch = char((words[w] >> (8 * b)) & 0xFF);
+                    if (ch == 0) {
+                        return name;
+                    }
+                    name += ch;
+                }
+            }
+            return name;
+        }
+        i += count;
+    }
+    return {};
+}
+
+}  // namespace
+
+std::optional<runtime::Error> CreatePipeline(const Context& c,
+                                             const pack::Pack& pack,
+                                             uint32_t variant,
+                                             const RenderState& state,
+                                             const PipelineTargets& targets,
+                                             VkPipelineCache cache,
+                                             Pipeline& out) {
+    const pack::VariantRec v = pack.Variant(variant);
+    const std::array<pack::ModuleRec, 2> modules = {pack.Module(v.vertex_module),
+                                                    pack.Module(v.fragment_module)};
+    Pipeline p;
+    auto fail = [&](runtime::Error e) {
+        DestroyPipeline(c, p);
+        return std::optional<runtime::Error>(std::move(e));
+    };
+    std::array<std::string, 2> entry_points;
+    for (size_t i = 0; i < 2; ++i) {
+        const std::span<const uint8_t> spirv = pack.Spirv(modules[i]);
+        std::vector<uint32_t> words(spirv.size() / 4);
+        std::memcpy(words.data(), spirv.data(), words.size() * 4);
+        entry_points[i] = EntryPointName(words);
+        if (entry_points[i].empty()) {
+            return fail(runtime::Error{"a SPIR-V module of the variant has no entry point"});
+        }
+        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        info.codeSize = words.size() * 4;
+        info.pCode = words.data();
+        if (VkResult r = vkCreateShaderModule(c.device, &info, nullptr, &p.modules[i]);
+            r != VK_SUCCESS) {
+            return fail(VkError("cannot create a shader module", r));
+        }
+    }
+    if (auto e = CreateLayout(c, pack, modules, p.layout)) {
+        return fail(*e);
+    }
+
+    // Vertex input: one interleaved binding, an attribute per reflected input location.
+    std::vector<VkVertexInputAttributeDescription> attributes;
+    const pack::ModuleRec& vs = modules[0];
+    for (uint32_t i = 0; i < vs.interface_count; ++i) {
+        const auto var =
+            pack.Get<pack::InterfaceVarRec>(SectionTag::kInterface, vs.first_interface + i);
+        if (var.direction != 0 || var.location == ~0u) {
+            continue;
+        }
+        const std::string_view semantic = pack.String(var.semantic);
+        const std::optional<Stream> stream = StreamFor(semantic);
+        if (!stream) {
+            return fail(runtime::Error{"vertex input '" + std::string(pack.String(var.name)) +
+                                       "' has semantic '" + std::string(semantic) +
+                                       "', which no mesh stream provides (POSITION, NORMAL, "
+                                       "TEXCOORD0, TEXCOORD1, TANGENT, COLOR)"});
+        }
+        attributes.push_back({var.location, 0, stream->format, stream->offset});
+    }
+    VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+    VkPipelineVertexInputStateCreateInfo input{
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    input.vertexBindingDescriptionCount = attributes.empty() ? 0 : 1;
+    input.pVertexBindingDescriptions = &binding;
+    input.vertexAttributeDescriptionCount = uint32_t(attributes.size());
+    input.pVertexAttributeDescriptions = attributes.data();
+
+    VkPipelineShaderStageCreateInfo stages[2]{};
+    for (size_t i = 0; i < 2; ++i) {
+        stages[i].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        stages[i].stage = VkShaderStageFlagBits(StageBit(modules[i].stage));
+        stages[i].module = p.modules[i];
+        stages[i].pName = entry_points[i].c_str();
+    }
+    VkPipelineInputAssemblyStateCreateInfo assembly{
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = state.cull;
+    // The projection is right-handed and the viewport is flipped (negative height), so glTF's
+    // counter-clockwise front faces stay counter-clockwise.
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.depthBiasEnable = state.offset_factor != 0 || state.offset_units != 0;
+    raster.depthBiasSlopeFactor = state.offset_factor;
+    raster.depthBiasConstantFactor = state.offset_units;
+    raster.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo multisample{
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo depth{
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = state.depth_test;
+    depth.depthWriteEnable = state.zwrite;
+    depth.depthCompareOp = state.ztest;
+    depth.stencilTestEnable = state.stencil;
+    auto face = [&](const StencilFace& f) {
+        return VkStencilOpState{f.fail,          f.pass,           f.zfail,          f.compare,
+                                state.stencil_read, state.stencil_write, state.stencil_ref};
+    };
+    depth.front = face(state.front);
+    depth.back = face(state.back);
+    std::vector<VkPipelineColorBlendAttachmentState> blends(targets.color_count);
+    for (uint32_t i = 0; i < targets.color_count; ++i) {
+        const BlendTarget& t = state.targets[i];
+        blends[i] = {t.enable, t.src, t.dst, t.op, t.src_alpha, t.dst_alpha, t.op_alpha, t.mask};
+    }
+    VkPipelineColorBlendStateCreateInfo blend{
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = targets.color_count;
+    blend.pAttachments = blends.data();
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = p.layout.layout;
+    info.renderPass = targets.render_pass;
+    if (VkResult r = vkCreateGraphicsPipelines(c.device, cache, 1, &info, nullptr, &p.pipeline);
+        r != VK_SUCCESS) {
+        return fail(VkError("cannot create a graphics pipeline", r));
+    }
+    out = p;
+    return std::nullopt;
+}
+
+void DestroyPipeline(const Context& c, Pipeline& p) {
+    if (p.pipeline) {
+        vkDestroyPipeline(c.device, p.pipeline, nullptr);
+    }
+    if (p.layout.layout) {
+        vkDestroyPipelineLayout(c.device, p.layout.layout, nullptr);
+    }
+    for (VkDescriptorSetLayout s : p.layout.sets) {
+        vkDestroyDescriptorSetLayout(c.device, s, nullptr);
+    }
+    for (VkShaderModule m : p.modules) {
+        if (m) {
+            vkDestroyShaderModule(c.device, m, nullptr);
+        }
+    }
+    p = Pipeline{};
+}
+
+}  // namespace kiln::vk

@@ -1,0 +1,111 @@
+// Graphics pipelines from a pack: render state from the pass (with property references resolved
+// from the material and the material's own overrides), vertex input and descriptor-set layouts
+// from the variant's reflection.
+#ifndef KILN_RUNTIME_VK_PIPELINE_H_
+#define KILN_RUNTIME_VK_PIPELINE_H_
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kiln/pack/reader.h"
+#include "vk/context.h"
+
+namespace kiln::vk {
+
+inline constexpr uint32_t kMaxTargets = 8;
+
+struct BlendTarget {
+    bool enable = false;
+    VkBlendFactor src = VK_BLEND_FACTOR_ONE, dst = VK_BLEND_FACTOR_ZERO;
+    VkBlendFactor src_alpha = VK_BLEND_FACTOR_ONE, dst_alpha = VK_BLEND_FACTOR_ZERO;
+    VkBlendOp op = VK_BLEND_OP_ADD, op_alpha = VK_BLEND_OP_ADD;
+    VkColorComponentFlags mask = 0xF;
+
+    bool operator==(const BlendTarget&) const = default;
+};
+
+struct StencilFace {
+    VkCompareOp compare = VK_COMPARE_OP_ALWAYS;
+    VkStencilOp pass = VK_STENCIL_OP_KEEP, fail = VK_STENCIL_OP_KEEP, zfail = VK_STENCIL_OP_KEEP;
+
+    bool operator==(const StencilFace&) const = default;
+};
+
+// The fixed-function state of one draw, Unity's defaults until a pass or material says otherwise.
+struct RenderState {
+    VkCullModeFlags cull = VK_CULL_MODE_BACK_BIT;
+    bool depth_test = true;
+    VkCompareOp ztest = VK_COMPARE_OP_LESS_OR_EQUAL;
+    bool zwrite = true;
+    bool zclip = true;
+    float offset_factor = 0, offset_units = 0;
+    std::array<BlendTarget, kMaxTargets> targets{};
+    bool stencil = false;
+    uint32_t stencil_ref = 0, stencil_read = 0xFF, stencil_write = 0xFF;
+    StencilFace front, back;
+
+    bool operator==(const RenderState&) const = default;
+};
+
+// Looks up a numeric material property for `Blend [_SrcBlend] [_DstBlend]` and the like.
+using PropertyLookup = std::function<std::optional<float>(std::string_view name)>;
+
+// One override in the material's words: field ("Cull", "ZWrite", "ZTest", "Blend", "ColorMask")
+// and its values ("Off"; ["SrcAlpha", "OneMinusSrcAlpha"]).
+struct StateOverride {
+    std::string field;
+    std::vector<std::string> values;
+};
+
+// Resolves a pass's states, then applies the overrides in order.
+std::optional<runtime::Error> ResolveRenderState(const pack::Pack& pack,
+                                                 uint32_t pass,
+                                                 const PropertyLookup& properties,
+                                                 const std::vector<StateOverride>& overrides,
+                                                 RenderState& out);
+
+// Kiln's mesh vertex: every stream a shipped shader can read, interleaved (72 bytes).
+struct Vertex {
+    float position[3];
+    float normal[3];
+    float uv0[2];
+    float uv1[2];
+    float tangent[4];  // xyz + handedness w
+    float color[4];
+};
+
+// The layouts a variant's reflection implies (sets 0..n, push constants).
+struct VariantLayout {
+    std::vector<VkDescriptorSetLayout> sets;
+    std::vector<std::vector<VkDescriptorSetLayoutBinding>> bindings;  // per set
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    uint32_t push_constant_size = 0;
+    VkShaderStageFlags push_constant_stages = 0;
+};
+
+struct Pipeline {
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VariantLayout layout;
+    std::array<VkShaderModule, 2> modules{};
+};
+
+struct PipelineTargets {
+    VkRenderPass render_pass = VK_NULL_HANDLE;
+    uint32_t color_count = 1;
+};
+
+std::optional<runtime::Error> CreatePipeline(const Context& c,
+                                             const pack::Pack& pack,
+                                             uint32_t variant,
+                                             const RenderState& state,
+                                             const PipelineTargets& targets,
+                                             VkPipelineCache cache,
+                                             Pipeline& out);
+void DestroyPipeline(const Context& c, Pipeline& pipeline);
+
+}  // namespace kiln::vk
+
+#endif  // KILN_RUNTIME_VK_PIPELINE_H_

@@ -1,0 +1,130 @@
+#include "vk/pipeline_cache.h"
+
+#include <xxhash.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "kiln/pack/records.h"
+
+namespace kiln::vk {
+namespace {
+
+constexpr std::array<char, 4> kMagic = {'K', 'P', 'L', 'C'};
+constexpr uint32_t kVersion = 1;
+
+}  // namespace
+
+std::vector<uint8_t> EncodePipelineCacheFile(const Context& c, std::span<const uint8_t> data) {
+    pack::ByteWriter w;
+    w.Put(kMagic);
+    w.Put(kVersion);
+    w.Put(c.properties.vendorID);
+    w.Put(c.properties.deviceID);
+    w.Put(c.properties.driverVersion);
+    w.PutBytes({c.properties.pipelineCacheUUID, VK_UUID_SIZE});
+    w.Put(uint32_t{0});
+    w.Put(uint64_t{data.size()});
+    w.Put(uint64_t{XXH64(data.data(), data.size(), 0)});
+    w.PutBytes(data);
+    return std::move(w.bytes());
+}
+
+std::string CheckPipelineCacheFile(const Context& c,
+                                   std::span<const uint8_t> file,
+                                   std::span<const uint8_t>& data) {
+    if (file.size() < kPipelineCacheHeaderSize) {
+        return "shorter than its header";
+    }
+    pack::ByteReader r(file.first(kPipelineCacheHeaderSize));
+    std::array<char, 4> magic{};
+    uint32_t version = 0, vendor = 0, device = 0, driver = 0, reserved = 0;
+    uint64_t size = 0, hash = 0;
+    r.Get(magic);
+    r.Get(version);
+    r.Get(vendor);
+    r.Get(device);
+    r.Get(driver);
+    if (magic != kMagic) {
+        return "not a kiln pipeline cache";
+    }
+    if (version != kVersion) {
+        return "cache format version " + std::to_string(version) + ", expected " +
+               std::to_string(kVersion);
+    }
+    if (vendor != c.properties.vendorID || device != c.properties.deviceID ||
+        driver != c.properties.driverVersion ||
+        std::memcmp(file.data() + 20, c.properties.pipelineCacheUUID, VK_UUID_SIZE) != 0) {
+        return "written by another device or driver";
+    }
+    pack::ByteReader tail(file.subspan(36, 20));
+    tail.Get(reserved);
+    tail.Get(size);
+    tail.Get(hash);
+    if (size != file.size() - kPipelineCacheHeaderSize) {
+        return "data size does not match the file";
+    }
+    data = file.subspan(kPipelineCacheHeaderSize);
+    if (XXH64(data.data(), data.size(), 0) != hash) {
+        return "checksum mismatch";
+    }
+    return {};
+}
+
+std::optional<runtime::Error> CreatePipelineCache(const Context& c,
+                                                  const std::string& path,
+                                                  VkPipelineCache& out,
+                                                  std::string& note) {
+    std::vector<uint8_t> file;
+    std::span<const uint8_t> data;
+    if (!path.empty() && std::filesystem::exists(path)) {
+        std::ifstream in(path, std::ios::binary);
+        file.assign(std::istreambuf_iterator<char>(in), {});
+        note = CheckPipelineCacheFile(c, file, data);
+        if (!note.empty()) {
+            note = "pipeline cache '" + path + "' ignored: " + note;
+            data = {};
+        }
+    }
+    VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+    info.initialDataSize = data.size();
+    info.pInitialData = data.empty() ? nullptr : data.data();
+    if (VkResult r = vkCreatePipelineCache(c.device, &info, nullptr, &out); r != VK_SUCCESS) {
+        return VkError("cannot create a pipeline cache", r);
+    }
+    return std::nullopt;
+}
+
+std::optional<runtime::Error> SavePipelineCache(const Context& c,
+                                                VkPipelineCache cache,
+                                                const std::string& path) {
+    size_t size = 0;
+    vkGetPipelineCacheData(c.device, cache, &size, nullptr);
+    std::vector<uint8_t> data(size);
+    if (VkResult r = vkGetPipelineCacheData(c.device, cache, &size, data.data());
+        r != VK_SUCCESS) {
+        return VkError("cannot read the pipeline cache", r);
+    }
+    data.resize(size);
+    const std::vector<uint8_t> file = EncodePipelineCacheFile(c, data);
+    const std::string temp = path + ".tmp";
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size()));
+        if (!out) {
+            std::remove(temp.c_str());
+            return runtime::Error{"cannot write pipeline cache '" + temp + "'"};
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::remove(temp.c_str());
+        return runtime::Error{"cannot rename '" + temp + "' to '" + path + "': " + ec.message()};
+    }
+    return std::nullopt;
+}
+
+}  // namespace kiln::vk

@@ -1,0 +1,287 @@
+#include "vk/resources.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <vector>
+
+namespace kiln::vk {
+namespace {
+
+std::optional<uint32_t> FindMemoryType(const Context& c,
+                                       uint32_t type_bits,
+                                       VkMemoryPropertyFlags wanted) {
+    for (uint32_t i = 0; i < c.memory.memoryTypeCount; ++i) {
+        if ((type_bits & (1u << i)) &&
+            (c.memory.memoryTypes[i].propertyFlags & wanted) == wanted) {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<runtime::Error> Allocate(const Context& c,
+                                       const VkMemoryRequirements& req,
+                                       VkMemoryPropertyFlags wanted,
+                                       VkDeviceMemory& out) {
+    auto type = FindMemoryType(c, req.memoryTypeBits, wanted);
+    if (!type) {
+        type = FindMemoryType(c, req.memoryTypeBits, 0);
+    }
+    if (!type) {
+        return runtime::Error{"no suitable Vulkan memory type"};
+    }
+    VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    info.allocationSize = req.size;
+    info.memoryTypeIndex = *type;
+    if (VkResult r = vkAllocateMemory(c.device, &info, nullptr, &out); r != VK_SUCCESS) {
+        return VkError("cannot allocate device memory", r);
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<runtime::Error> CreateBuffer(const Context& c,
+                                           VkDeviceSize size,
+                                           VkBufferUsageFlags usage,
+                                           Buffer& out) {
+    Buffer b;
+    b.size = std::max<VkDeviceSize>(size, 4);
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = b.size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    if (VkResult r = vkCreateBuffer(c.device, &info, nullptr, &b.buffer); r != VK_SUCCESS) {
+        return VkError("cannot create a buffer", r);
+    }
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(c.device, b.buffer, &req);
+    const VkMemoryPropertyFlags host =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    if (!FindMemoryType(c, req.memoryTypeBits, host)) {
+        DestroyBuffer(c, b);
+        return runtime::Error{"no host-visible coherent memory for a buffer"};
+    }
+    if (auto e = Allocate(c, req, host, b.memory)) {
+        DestroyBuffer(c, b);
+        return e;
+    }
+    vkBindBufferMemory(c.device, b.buffer, b.memory, 0);
+    if (VkResult r = vkMapMemory(c.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);
+        r != VK_SUCCESS) {
+        DestroyBuffer(c, b);
+        return VkError("cannot map a buffer", r);
+    }
+    out = b;
+    return std::nullopt;
+}
+
+std::optional<runtime::Error> CreateBufferWithData(const Context& c,
+                                                   std::span<const uint8_t> data,
+                                                   VkBufferUsageFlags usage,
+                                                   Buffer& out) {
+    if (auto e = CreateBuffer(c, data.size(), usage, out)) {
+        return e;
+    }
+    if (!data.empty()) {
+        std::memcpy(out.mapped, data.data(), data.size());
+    }
+    return std::nullopt;
+}
+
+void DestroyBuffer(const Context& c, Buffer& b) {
+    if (b.buffer) {
+        vkDestroyBuffer(c.device, b.buffer, nullptr);
+    }
+    if (b.memory) {
+        vkFreeMemory(c.device, b.memory, nullptr);  // unmaps implicitly
+    }
+    b = Buffer{};
+}
+
+std::optional<runtime::Error> CreateImage(const Context& c,
+                                          uint32_t width,
+                                          uint32_t height,
+                                          VkFormat format,
+                                          VkImageUsageFlags usage,
+                                          VkImageAspectFlags aspect,
+                                          Image& out,
+                                          uint32_t mip_levels) {
+    Image img;
+    img.format = format;
+    img.width = width;
+    img.height = height;
+    img.mip_levels = mip_levels;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {width, height, 1};
+    info.mipLevels = mip_levels;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (VkResult r = vkCreateImage(c.device, &info, nullptr, &img.image); r != VK_SUCCESS) {
+        return VkError("cannot create an image", r);
+    }
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(c.device, img.image, &req);
+    if (auto e = Allocate(c, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, img.memory)) {
+        DestroyImage(c, img);
+        return e;
+    }
+    vkBindImageMemory(c.device, img.image, img.memory, 0);
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = img.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, mip_levels, 0, 1};
+    if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &img.view); r != VK_SUCCESS) {
+        DestroyImage(c, img);
+        return VkError("cannot create an image view", r);
+    }
+    out = img;
+    return std::nullopt;
+}
+
+void DestroyImage(const Context& c, Image& img) {
+    if (img.view) {
+        vkDestroyImageView(c.device, img.view, nullptr);
+    }
+    if (img.image) {
+        vkDestroyImage(c.device, img.image, nullptr);
+    }
+    if (img.memory) {
+        vkFreeMemory(c.device, img.memory, nullptr);
+    }
+    img = Image{};
+}
+
+void ImageBarrier(VkCommandBuffer cmd,
+                  VkImage image,
+                  VkImageAspectFlags aspect,
+                  VkImageLayout from,
+                  VkImageLayout to,
+                  VkAccessFlags src_access,
+                  VkAccessFlags dst_access,
+                  VkPipelineStageFlags src_stage,
+                  VkPipelineStageFlags dst_stage,
+                  uint32_t base_mip,
+                  uint32_t mip_count) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = src_access;
+    b.dstAccessMask = dst_access;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, base_mip, mip_count, 0, 1};
+    vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+std::optional<runtime::Error> CreateTexture(const Context& c,
+                                            uint32_t width,
+                                            uint32_t height,
+                                            std::span<const uint8_t> rgba8,
+                                            bool srgb,
+                                            Image& out) {
+    if (width == 0 || height == 0 || rgba8.size() != size_t{width} * height * 4) {
+        return runtime::Error{"texture data does not match its size"};
+    }
+    const VkFormat format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+    VkFormatProperties props;
+    vkGetPhysicalDeviceFormatProperties(c.physical, format, &props);
+    const bool can_blit =
+        (props.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT) &&
+        (props.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) &&
+        (props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT);
+    const uint32_t mips = can_blit ? uint32_t(std::bit_width(std::max(width, height))) : 1;
+    Buffer staging;
+    if (auto e = CreateBufferWithData(c, rgba8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging)) {
+        return e;
+    }
+    Image img;
+    if (auto e = CreateImage(c, width, height, format,
+                             VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                 VK_IMAGE_USAGE_SAMPLED_BIT,
+                             VK_IMAGE_ASPECT_COLOR_BIT, img, mips)) {
+        DestroyBuffer(c, staging);
+        return e;
+    }
+    auto e = SubmitOnce(c, [&](VkCommandBuffer cmd) {
+        const auto color = VK_IMAGE_ASPECT_COLOR_BIT;
+        ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {color, 0, 0, 1};
+        copy.imageExtent = {width, height, 1};
+        vkCmdCopyBufferToImage(cmd, staging.buffer, img.image,
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        int32_t w = int32_t(width), h = int32_t(height);
+        for (uint32_t level = 1; level < mips; ++level) {
+            ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                         VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, level - 1, 1);
+            VkImageBlit blit{};
+            blit.srcSubresource = {color, level - 1, 0, 1};
+            blit.srcOffsets[1] = {w, h, 1};
+            w = std::max(1, w / 2);
+            h = std::max(1, h / 2);
+            blit.dstSubresource = {color, level, 0, 1};
+            blit.dstOffsets[1] = {w, h, 1};
+            vkCmdBlitImage(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img.image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+            ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_READ_BIT,
+                         VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, level - 1, 1);
+        }
+        ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, mips - 1, 1);
+    });
+    DestroyBuffer(c, staging);
+    if (e) {
+        DestroyImage(c, img);
+        return e;
+    }
+    out = img;
+    return std::nullopt;
+}
+
+std::optional<runtime::Error> ReadBack(const Context& c,
+                                       const Image& image,
+                                       uint32_t bytes_per_pixel,
+                                       std::vector<uint8_t>& out) {
+    const VkDeviceSize size = VkDeviceSize{image.width} * image.height * bytes_per_pixel;
+    Buffer staging;
+    if (auto e = CreateBuffer(c, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging)) {
+        return e;
+    }
+    auto e = SubmitOnce(c, [&](VkCommandBuffer cmd) {
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.imageExtent = {image.width, image.height, 1};
+        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               staging.buffer, 1, &copy);
+        VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
+                             1, &to_host, 0, nullptr, 0, nullptr);
+    });
+    if (!e) {
+        const auto* p = static_cast<const uint8_t*>(staging.mapped);
+        out.assign(p, p + size);
+    }
+    DestroyBuffer(c, staging);
+    return e;
+}
+
+}  // namespace kiln::vk
