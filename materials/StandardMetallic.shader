@@ -6,6 +6,7 @@
 //   _METALLICGLOSSMAP  glTF metallicRoughnessTexture: G = roughness, B = metallic (x factors)
 //   _OCCLUSIONMAP      glTF occlusionTexture: R = ambient occlusion (indirect light only)
 //   _EMISSION          emissive colour x emission map
+//   _ALPHATEST_ON      glTF alphaMode MASK: fragments with base alpha below _Cutoff are discarded
 // ForwardBase: the main light, SH ambient and emission; ForwardAdd: one more light per pass.
 Shader "Kiln/StandardMetallic"
 {
@@ -15,13 +16,14 @@ Shader "Kiln/StandardMetallic"
         [MainTexture] _MainTex ("Base Color Map", 2D) = "white" {}
         _Metallic ("Metallic", Range(0, 1)) = 1
         _Roughness ("Roughness", Range(0, 1)) = 1
-        _MetallicGlossMap ("Metallic-Roughness Map", 2D) = "white" {}
+        [Linear] _MetallicGlossMap ("Metallic-Roughness Map", 2D) = "white" {}
         _BumpScale ("Normal Scale", Float) = 1
         [Normal] _BumpMap ("Normal Map", 2D) = "bump" {}
         _OcclusionStrength ("Occlusion Strength", Range(0, 1)) = 1
-        _OcclusionMap ("Occlusion Map", 2D) = "white" {}
+        [Linear] _OcclusionMap ("Occlusion Map", 2D) = "white" {}
         [HDR] _EmissionColor ("Emission", Color) = (0, 0, 0, 1)
         _EmissionMap ("Emission Map", 2D) = "white" {}
+        _Cutoff ("Alpha Cutoff", Range(0, 1)) = 0.5
     }
 
     CGINCLUDE
@@ -40,6 +42,7 @@ Shader "Kiln/StandardMetallic"
     sampler2D _OcclusionMap;
     float4 _EmissionColor;
     sampler2D _EmissionMap;
+    float _Cutoff;
 
     struct VertexData {
         float4 position : POSITION;
@@ -106,6 +109,10 @@ Shader "Kiln/StandardMetallic"
                                                    s.oneMinusReflectivity);
         s.smoothness = 1.0 - saturate(roughness);
         s.alpha = base.a;
+    #if defined(_ALPHATEST_ON)
+        clip(base.a - _Cutoff);
+        s.alpha = 1.0;  // glTF: a MASK material is opaque where it is not cut out
+    #endif
         return s;
     }
 
@@ -163,6 +170,7 @@ Shader "Kiln/StandardMetallic"
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
             #pragma shader_feature_local_fragment _OCCLUSIONMAP
             #pragma shader_feature_local_fragment _EMISSION
+            #pragma shader_feature_local_fragment _ALPHATEST_ON
             ENDCG
         }
 
@@ -179,6 +187,7 @@ Shader "Kiln/StandardMetallic"
             #pragma multi_compile DIRECTIONAL POINT SPOT
             #pragma shader_feature_local _NORMALMAP
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
+            #pragma shader_feature_local_fragment _ALPHATEST_ON
             ENDCG
         }
     }

@@ -59,9 +59,10 @@ TEST(Materials, StandardMetallicFeaturesAreShaderFeaturesThatStripAway) {
     const std::string file = DataPath("../materials/StandardMetallic.shader");
     CompileRun all = Compile({file});
     ASSERT_TRUE(all.out.ok) << Brief(all.diags);
-    // Base: 2^4 features. Add: DIRECTIONAL/POINT/SPOT x _NORMALMAP x _METALLICGLOSSMAP.
-    EXPECT_EQ(VariantsOf(all, "ForwardBase"), 16u);
-    EXPECT_EQ(VariantsOf(all, "ForwardAdd"), 12u);
+    // Base: 2^5 features. Add: DIRECTIONAL/POINT/SPOT x _NORMALMAP x _METALLICGLOSSMAP x
+    // _ALPHATEST_ON.
+    EXPECT_EQ(VariantsOf(all, "ForwardBase"), 32u);
+    EXPECT_EQ(VariantsOf(all, "ForwardAdd"), 24u);
 
     CompileOptions only_normal_map;
     only_normal_map.keywords = std::set<std::string>{"_NORMALMAP"};

@@ -200,7 +200,26 @@ std::optional<runtime::Error> CreateContext(const ContextOptions& options, Conte
     vkGetPhysicalDeviceFeatures(c.physical, &supported);
     VkPhysicalDeviceFeatures features{};
     features.independentBlend = supported.independentBlend;
+    // VK_KHR_maintenance4 relaxes vertex-output/fragment-input matching: a variant whose
+    // fragment stage does not read every interpolator the shared vertex stage writes is valid
+    // without it, but the validation layer reports it as a performance warning.
+    std::vector<const char*> extensions;
+    uint32_t ext_count = 0;
+    vkEnumerateDeviceExtensionProperties(c.physical, nullptr, &ext_count, nullptr);
+    std::vector<VkExtensionProperties> available(ext_count);
+    vkEnumerateDeviceExtensionProperties(c.physical, nullptr, &ext_count, available.data());
+    VkPhysicalDeviceMaintenance4FeaturesKHR maintenance4{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES_KHR};
+    for (const VkExtensionProperties& e : available) {
+        if (std::strcmp(e.extensionName, VK_KHR_MAINTENANCE_4_EXTENSION_NAME) == 0) {
+            extensions.push_back(VK_KHR_MAINTENANCE_4_EXTENSION_NAME);
+            maintenance4.maintenance4 = VK_TRUE;
+        }
+    }
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.pNext = maintenance4.maintenance4 ? &maintenance4 : nullptr;
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
     info.pEnabledFeatures = &features;
