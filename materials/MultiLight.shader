@@ -47,24 +47,31 @@ Shader "Kiln/MultiLight"
         return i;
     }
 
-    float4 MultiLightFragment(MultiLightInterpolators i) : SV_TARGET {
+    // CGINCLUDE text precedes each pass's CGPROGRAM, so a `#define` in the pass would come too
+    // late for this code: the base pass selects ambient through its own entry point instead.
+    float4 MultiLightShade(MultiLightInterpolators i, bool basePass) {
         float4 texel = tex2D(_MainTex, i.uv) * _Color;
         float oneMinusReflectivity;
         float3 albedo = EnergyConservationBetweenDiffuseAndSpecular(texel.rgb, _SpecularColor.rgb,
                                                                     oneMinusReflectivity);
         float3 n = SafeNormalize(i.normal);
         UnityIndirect indirect;
-        indirect.diffuse = 0;
+        indirect.diffuse = basePass ? ShadeSH9(float4(n, 1.0)) : 0;
         indirect.specular = 0;
-    #if defined(FORWARD_BASE_PASS)
-        indirect.diffuse = ShadeSH9(float4(n, 1.0));
-    #endif
     #if defined(VERTEXLIGHT_ON)
         indirect.diffuse += i.vertexLight;
     #endif
         float4 c = UNITY_BRDF_PBS(albedo, _SpecularColor.rgb, oneMinusReflectivity, _Smoothness, n,
                                   ViewDirection(i.worldPos), PixelLight(i.worldPos, n), indirect);
         return float4(c.rgb, texel.a);
+    }
+
+    float4 MultiLightBaseFragment(MultiLightInterpolators i) : SV_TARGET {
+        return MultiLightShade(i, true);
+    }
+
+    float4 MultiLightAddFragment(MultiLightInterpolators i) : SV_TARGET {
+        return MultiLightShade(i, false);
     }
     ENDCG
 
@@ -79,9 +86,8 @@ Shader "Kiln/MultiLight"
 
             CGPROGRAM
             #pragma vertex MultiLightVertex
-            #pragma fragment MultiLightFragment
+            #pragma fragment MultiLightBaseFragment
             #pragma multi_compile _ VERTEXLIGHT_ON
-            #define FORWARD_BASE_PASS
             ENDCG
         }
 
@@ -94,7 +100,7 @@ Shader "Kiln/MultiLight"
 
             CGPROGRAM
             #pragma vertex MultiLightVertex
-            #pragma fragment MultiLightFragment
+            #pragma fragment MultiLightAddFragment
             #pragma multi_compile DIRECTIONAL POINT SPOT
             ENDCG
         }

@@ -45,7 +45,9 @@ Shader "KILN_SHADER_NAME"
         return i;
     }
 
-    float4 Fragment(Interpolators i) : SV_TARGET {
+    // CGINCLUDE text comes before each pass's CGPROGRAM, so a `#define` inside a pass would be
+    // too late for this code: each pass has its own entry point instead.
+    float4 Shade(Interpolators i, bool basePass) {
         float4 texel = tex2D(_MainTex, i.uv) * _Color;
         float oneMinusReflectivity;
         float3 albedo = EnergyConservationBetweenDiffuseAndSpecular(texel.rgb, _SpecularColor.rgb,
@@ -57,16 +59,16 @@ Shader "KILN_SHADER_NAME"
         light.color = _LightColor0.rgb * attenuation;
         light.ndotl = DotClamped(n, light.dir);
         UnityIndirect indirect;
-        indirect.diffuse = 0;
+        indirect.diffuse = basePass ? ShadeSH9(float4(n, 1.0)) : 0;
         indirect.specular = 0;
-    #if defined(FORWARD_BASE_PASS)
-        indirect.diffuse = ShadeSH9(float4(n, 1.0));
-    #endif
         float4 c = UNITY_BRDF_PBS(albedo, _SpecularColor.rgb, oneMinusReflectivity, _Smoothness, n,
                                   SafeNormalize(UnityWorldSpaceViewDir(i.worldPos)), light,
                                   indirect);
         return float4(c.rgb, texel.a);
     }
+
+    float4 BaseFragment(Interpolators i) : SV_TARGET { return Shade(i, true); }
+    float4 AddFragment(Interpolators i) : SV_TARGET { return Shade(i, false); }
     ENDCG
 
     SubShader
@@ -78,8 +80,7 @@ Shader "KILN_SHADER_NAME"
             Tags { "LightMode" = "ForwardBase" }
             CGPROGRAM
             #pragma vertex Vertex
-            #pragma fragment Fragment
-            #define FORWARD_BASE_PASS
+            #pragma fragment BaseFragment
             ENDCG
         }
 
@@ -90,7 +91,7 @@ Shader "KILN_SHADER_NAME"
             ZWrite Off
             CGPROGRAM
             #pragma vertex Vertex
-            #pragma fragment Fragment
+            #pragma fragment AddFragment
             #pragma multi_compile DIRECTIONAL POINT SPOT
             ENDCG
         }

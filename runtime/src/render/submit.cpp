@@ -166,7 +166,7 @@ std::optional<Error> RecordFrame(Renderer::State& s,
         return Error{"cannot allocate a command buffer"};
     }
     VkClearValue clear[2]{};
-    clear[0].color = {{settings.background.r, settings.background.g, settings.background.b, 1}};
+    clear[0].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};  // alpha 0: not covered
     clear[1].depthStencil = {1.0f, 0};
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = s.render_pass;

@@ -1,0 +1,277 @@
+// The renderer end to end: the glTF samples and the demo scene render headless with zero
+// validation messages, additive passes per light, colour-property decoding, missing variants,
+// damaged packs, and the persisted pipeline cache.
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/runtime_fixture.h"
+#include "vk/pipeline_cache.h"
+
+namespace kiln::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+size_t Covered(const runtime::LinearImage& image) {
+    size_t n = 0;
+    for (size_t i = 3; i < image.rgba.size(); i += 4) {
+        n += image.rgba[i] > 0.0f;
+    }
+    return n;
+}
+
+class GltfSampleTest : public RuntimeTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(GltfSampleTest, RendersHeadlessWithoutValidationMessages) {
+    const std::string path = std::string(KILN_SHARED_DIR) + "/gltf-samples/" + GetParam() +
+                             "/glTF/" + GetParam() + ".gltf";
+    if (!fs::exists(path)) {
+        GTEST_SKIP() << path << " is absent (../shared not checked out): sample skipped";
+    }
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    auto e = runtime::LoadGltf(path, scene, warnings);
+    ASSERT_FALSE(e) << e->message;
+    runtime::FrameSettings settings;
+    settings.width = 256;
+    settings.height = 192;
+    runtime::FrameStats stats;
+    const runtime::LinearImage image = Render(scene, settings, &stats);
+    EXPECT_GT(stats.objects, 0u);
+    EXPECT_GT(Covered(image), image.rgba.size() / 4 / 20) << "less than 5% of the image drawn";
+    for (float v : image.rgba) {
+        ASSERT_TRUE(std::isfinite(v));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Samples,
+                         GltfSampleTest,
+                         ::testing::Values("Box",
+                                           "BoxTextured",
+                                           "TextureCoordinateTest",
+                                           "TextureEncodingTest",
+                                           "MetalRoughSpheresNoTextures",
+                                           "NormalTangentTest",
+                                           "LightsPunctualLamp",
+                                           "Cameras",
+                                           "BoxVertexColors",
+                                           "EmissiveStrengthTest"));
+
+TEST_F(RuntimeTest, DemoSceneShowsEveryShippedMaterial) {
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    auto e = runtime::LoadGltf(std::string(KILN_SOURCE_DIR) + "/scenes/demo/demo.gltf", scene,
+                               warnings);
+    ASSERT_FALSE(e) << e->message;
+    EXPECT_EQ(scene.material_files.size(), 10u);
+    EXPECT_EQ(scene.lights.size(), 3u);
+    runtime::FrameStats stats;
+    const runtime::LinearImage image = Render(scene, {}, &stats);
+    EXPECT_EQ(stats.objects, 11u);
+    EXPECT_EQ(stats.base_passes, 11u);
+    // Point and spot light on the three objects whose shaders have a ForwardAdd pass.
+    EXPECT_EQ(stats.add_passes, 6u);
+    EXPECT_GT(Covered(image), image.rgba.size() / 4 / 2);
+}
+
+runtime::Scene LoneSphere(const std::string& material, int point_lights) {
+    runtime::Scene scene = SphereOnFloor(RuntimeData(material));
+    scene.instances.pop_back();  // no floor
+    for (int i = 0; i < point_lights; ++i) {
+        runtime::Light l;
+        l.type = runtime::LightType::kPoint;
+        l.intensity = 2.0f + float(i);
+        l.position = {std::cos(float(i)) * 2.5f, 1.5f, std::sin(float(i)) * 2.5f};
+        scene.lights.push_back(l);
+    }
+    return scene;
+}
+
+TEST_F(RuntimeTest, NPointLightsRunNAdditivePasses) {
+    for (int n : {1, 3, 6}) {
+        runtime::FrameSettings settings;
+        settings.width = 64;
+        settings.height = 48;
+        settings.pixel_lights = 8;
+        runtime::FrameStats stats;
+        Render(LoneSphere("multi_light.material", n), settings, &stats);
+        EXPECT_EQ(stats.base_passes, 1u);
+        EXPECT_EQ(stats.add_passes, uint32_t(n)) << n << " point lights";
+        EXPECT_EQ(stats.vertex_lit, 0u);
+    }
+}
+
+TEST_F(RuntimeTest, PixelLightCountLimitsAdditivePassesAndTheRestBecomeVertexLights) {
+    runtime::FrameSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    settings.pixel_lights = 2;
+    runtime::FrameStats stats;
+    Render(LoneSphere("multi_light.material", 5), settings, &stats);
+    EXPECT_EQ(stats.add_passes, 2u);
+    EXPECT_EQ(stats.vertex_lit, 1u);  // the other three lit per vertex (VERTEXLIGHT_ON)
+}
+
+TEST_F(RuntimeTest, ColorPropertyIsDecodedFromSrgbWithTheStandardFormula) {
+    // Unlit writes _Color; the material file says (0.5, 0.25, 0.75) in sRGB.
+    runtime::Scene scene = LoneSphere("unlit_color.material", 0);
+    runtime::FrameSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    const runtime::LinearImage image = Render(scene, settings);
+    const size_t center = (size_t{24} * 64 + 32) * 4;
+    ASSERT_GT(image.rgba[center + 3], 0.0f);
+    EXPECT_NEAR(image.rgba[center + 0], SrgbToLinear(0.5), 1e-5);
+    EXPECT_NEAR(image.rgba[center + 1], SrgbToLinear(0.25), 1e-5);
+    EXPECT_NEAR(image.rgba[center + 2], SrgbToLinear(0.75), 1e-5);
+
+    // The OCIO path against the formula over the whole range, and [HDR] values above 1.
+    double worst = 0;
+    for (int i = 0; i <= 1000; ++i) {
+        const float x = float(i) / 1000.0f;
+        float rgb[3] = {x, x, x};
+        color_.SrgbToLinear(rgb, false);
+        worst = std::max(worst, std::fabs(double(rgb[0]) - SrgbToLinear(x)));
+    }
+    EXPECT_LT(worst, 2e-6);
+    float hdr[3] = {1.5f, 2.0f, 1.5f}, ldr[3] = {1.5f, 2.0f, 1.5f};
+    color_.SrgbToLinear(hdr, true);
+    color_.SrgbToLinear(ldr, false);
+    EXPECT_NEAR(hdr[0], std::pow((1.5 + 0.055) / 1.055, 2.4), 1e-4);
+    EXPECT_FLOAT_EQ(ldr[0], 1.0f);
+}
+
+TEST_F(RuntimeTest, DisplayTransformEncodesSrgb) {
+    std::vector<float> rgba = {0.214041f, 0.0f, 1.0f, 1.0f, 0.0031308f, 0.5f, 4.0f, 1.0f};
+    color_.ApplyDisplay(rgba);
+    EXPECT_NEAR(rgba[0], 0.5f, 1e-4);
+    EXPECT_NEAR(rgba[2], 1.0f, 1e-5);
+    EXPECT_NEAR(rgba[4], 0.04045f, 1e-4);
+    EXPECT_NEAR(rgba[5], LinearToSrgb(0.5), 1e-4);
+}
+
+TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
+    pack::MappedFile file;
+    pack::Pack pack;
+    ASSERT_FALSE(pack::MappedFile::Map(KILN_STRIPPED_PACK, file));
+    ASSERT_FALSE(pack::Pack::Open(file.bytes(), pack));
+    const uint32_t shader = *pack.FindShader("Kiln/StandardMetallic");
+    const uint32_t pass = *pack.FindPass(shader, "ForwardBase");
+    runtime::VariantSelector strict(pack, runtime::MissingVariantPolicy::kError);
+    runtime::VariantChoice choice;
+    auto e = strict.Select(pass, {"_NORMALMAP", "_EMISSION"}, choice);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->message,
+              "shader 'Kiln/StandardMetallic' pass 'FORWARD' has no variant for keywords "
+              "'_NORMALMAP _EMISSION' (stripped or never compiled); closest present: "
+              "'_NORMALMAP', '(no keywords)'");
+    ASSERT_FALSE(strict.Select(pass, {"_NORMALMAP"}, choice));
+    EXPECT_TRUE(choice.exact);
+
+    runtime::VariantSelector lenient(pack, runtime::MissingVariantPolicy::kClosest);
+    ASSERT_FALSE(lenient.Select(pass, {"_NORMALMAP", "_EMISSION"}, choice));
+    EXPECT_FALSE(choice.exact);
+    EXPECT_EQ(pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(choice.variant).key)),
+              std::vector<std::string>{"_NORMALMAP"});
+    EXPECT_NE(choice.warning.find("using the closest, '_NORMALMAP'"), std::string::npos);
+
+    const std::string usage = (fs::temp_directory_path() / "kiln_usage_test.json").string();
+    ASSERT_FALSE(runtime::WriteUsageFile(usage, {&strict, &lenient}));
+    std::ifstream in(usage);
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    EXPECT_EQ(doc["kiln_usage"], 1);
+    ASSERT_EQ(doc["lookups"].size(), 3u);  // strict: missing + found; lenient: missing
+    EXPECT_EQ(doc["lookups"][0]["shader"], "Kiln/StandardMetallic");
+}
+
+TEST_F(RuntimeTest, RenderingAStrippedVariantFailsWithTheVariantNamed) {
+    runtime::Renderer stripped;
+    runtime::RendererOptions options;
+    options.validation = true;
+    ASSERT_FALSE(runtime::Renderer::Create(options, stripped));
+    ASSERT_FALSE(stripped.AddPack(KILN_STRIPPED_PACK));
+    runtime::Scene scene = LoneSphere("unlit_color.material", 0);
+    scene.material_files.clear();  // the glTF material: StandardMetallic ...
+    scene.materials[0].emissive = glm::vec3(1, 0, 0);  // ... with _EMISSION
+    runtime::LinearImage image;
+    runtime::FrameStats stats;
+    auto e = stripped.Render(scene, {}, color_, image, stats);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("has no variant for keywords '_EMISSION'"), std::string::npos)
+        << e->message;
+    EXPECT_TRUE(stripped.ValidationMessages().empty());
+}
+
+TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
+    std::ifstream in(KILN_MATERIALS_PACK, std::ios::binary);
+    const std::vector<char> good((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_GT(good.size(), 1000u);
+    const fs::path file = fs::temp_directory_path() / "kiln_damaged.kpack";
+    auto try_bytes = [&](const std::vector<char>& bytes) {
+        std::ofstream(file, std::ios::binary | std::ios::trunc)
+            .write(bytes.data(), std::streamsize(bytes.size()));
+        runtime::Renderer r;
+        runtime::RendererOptions options;
+        EXPECT_FALSE(runtime::Renderer::Create(options, r));
+        return r.AddPack(file.string());
+    };
+    size_t rejected = 0, tried = 0;
+    for (size_t len = 0; len < good.size(); len += len < 128 ? 1 : 4099) {  // truncations
+        ++tried;
+        rejected += bool(try_bytes(std::vector<char>(good.begin(), good.begin() + long(len))));
+    }
+    for (size_t bit = 0; bit < good.size() * 8; bit += 7919) {  // single bit flips
+        std::vector<char> bytes = good;
+        bytes[bit / 8] = char(bytes[bit / 8] ^ (1 << (bit % 8)));
+        ++tried;
+        rejected += bool(try_bytes(bytes));
+    }
+    EXPECT_EQ(rejected, tried);
+    std::vector<char> foreign = good;
+    foreign[0] = 'X';
+    auto e = try_bytes(foreign);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("not-a-pack"), std::string::npos) << e->message;
+    fs::remove(file);
+}
+
+TEST_F(RuntimeTest, PipelineCacheIsPersistedBehindAValidatedHeader) {
+    const fs::path path = fs::temp_directory_path() / "kiln_pipeline_cache_test.bin";
+    fs::remove(path);
+    runtime::Scene scene = LoneSphere("lambert.material", 0);
+    {
+        runtime::Renderer r;
+        runtime::RendererOptions options;
+        options.pipeline_cache = path.string();
+        ASSERT_FALSE(runtime::Renderer::Create(options, r));
+        ASSERT_FALSE(r.AddPack(KILN_MATERIALS_PACK));
+        runtime::LinearImage image;
+        runtime::FrameStats stats;
+        ASSERT_FALSE(r.Render(scene, {}, color_, image, stats));
+    }  // saved on destruction
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_GE(bytes.size(), vk::kPipelineCacheHeaderSize);
+    EXPECT_EQ(std::string(bytes.data(), 4), "KPLC");
+    // A damaged cache is ignored with a note, never handed to the driver.
+    bytes.back() = char(bytes.back() ^ 0x40);
+    bytes[40] = char(bytes[40] + 1);  // data size no longer matches
+    std::ofstream(path, std::ios::binary | std::ios::trunc)
+        .write(bytes.data(), std::streamsize(bytes.size()));
+    runtime::Renderer r;
+    runtime::RendererOptions options;
+    options.pipeline_cache = path.string();
+    ASSERT_FALSE(runtime::Renderer::Create(options, r));
+    ASSERT_FALSE(r.AddPack(KILN_MATERIALS_PACK));
+    runtime::LinearImage image;
+    runtime::FrameStats stats;
+    ASSERT_FALSE(r.Render(scene, {}, color_, image, stats));
+    ASSERT_FALSE(stats.warnings.empty());
+    EXPECT_NE(stats.warnings[0].find("ignored"), std::string::npos) << stats.warnings[0];
+    fs::remove(path);
+}
+
+}  // namespace
+}  // namespace kiln::testing

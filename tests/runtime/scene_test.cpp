@@ -1,0 +1,176 @@
+// The glTF loader on the real samples and the glTF-Validator's KHR_lights_punctual files (skipped
+// when ../shared is absent), tangent generation, and the material sidecar.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "kiln/runtime/scene.h"
+
+namespace kiln::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Shared(const std::string& rel) {
+    return std::string(KILN_SHARED_DIR) + "/gltf-samples/" + rel;
+}
+#define REQUIRE_SHARED()                                                              \
+    if (!fs::exists(Shared(""))) {                                                    \
+        GTEST_SKIP() << "../shared/gltf-samples is absent: glTF sample tests skipped"; \
+    }
+
+bool AnyContains(const std::vector<std::string>& v, const std::string& s) {
+    for (const auto& x : v) {
+        if (x.find(s) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+TEST(GltfLights, ValidatorFilesInvalidLightsAreRejectedWithAMessage) {
+    REQUIRE_SHARED();
+    const std::string dir = Shared("_validator-KHR_lights_punctual/data/light/");
+    for (const char* bad : {"unknown_type.gltf", "spot_invalid_angles.gltf"}) {
+        runtime::Scene scene;
+        std::vector<std::string> warnings;
+        auto e = runtime::LoadGltf(dir + bad, scene, warnings);
+        ASSERT_FALSE(e) << e->message;
+        EXPECT_TRUE(AnyContains(warnings, "rejected")) << bad;
+    }
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_FALSE(runtime::LoadGltf(dir + "valid.gltf", scene, warnings));
+    EXPECT_FALSE(AnyContains(warnings, "rejected"));
+}
+
+TEST(GltfLights, EveryValidatorFileLoadsOrFailsCleanly) {
+    REQUIRE_SHARED();
+    for (const char* sub : {"light", "node"}) {
+        for (const auto& entry :
+             fs::directory_iterator(Shared("_validator-KHR_lights_punctual/data/") + sub)) {
+            if (entry.path().extension() != ".gltf") {
+                continue;
+            }
+            runtime::Scene scene;
+            std::vector<std::string> warnings;
+            runtime::LoadGltf(entry.path().string(), scene, warnings);  // must not crash
+        }
+    }
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_FALSE(runtime::LoadGltf(
+        Shared("_validator-KHR_lights_punctual/data/node/unresolved_light_empty_root_array.gltf"),
+        scene, warnings));
+    EXPECT_TRUE(scene.lights.empty());
+    EXPECT_TRUE(AnyContains(warnings, "does not exist"));
+}
+
+TEST(GltfLights, LampHasFivePointLightsWithDefaultedColours) {
+    REQUIRE_SHARED();
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_FALSE(runtime::LoadGltf(Shared("LightsPunctualLamp/glTF/LightsPunctualLamp.gltf"), scene,
+                                   warnings));
+    ASSERT_EQ(scene.lights.size(), 5u);
+    for (const runtime::Light& l : scene.lights) {
+        EXPECT_GE(l.intensity, 0.0f);
+        EXPECT_TRUE(std::isfinite(l.position.x));
+    }
+}
+
+TEST(GltfScene, CamerasSampleHasAPerspectiveAndAnOrthographicCamera) {
+    REQUIRE_SHARED();
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_FALSE(runtime::LoadGltf(Shared("Cameras/glTF/Cameras.gltf"), scene, warnings));
+    ASSERT_EQ(scene.cameras.size(), 2u);
+    EXPECT_NE(scene.cameras[0].perspective, scene.cameras[1].perspective);
+}
+
+TEST(GltfScene, MissingTangentsAreGeneratedOrthonormalToTheNormal) {
+    REQUIRE_SHARED();
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_FALSE(
+        runtime::LoadGltf(Shared("NormalTangentTest/glTF/NormalTangentTest.gltf"), scene, warnings));
+    ASSERT_FALSE(scene.meshes.empty());
+    size_t checked = 0;
+    for (const runtime::Mesh& m : scene.meshes) {
+        for (const runtime::Primitive& p : m.primitives) {
+            EXPECT_TRUE(p.has_tangents);
+            for (const runtime::MeshVertex& v : p.vertices) {
+                const glm::vec3 t = glm::make_vec3(v.tangent), n = glm::make_vec3(v.normal);
+                EXPECT_NEAR(glm::length(t), 1.0f, 1e-4f);
+                EXPECT_NEAR(glm::dot(t, n), 0.0f, 1e-4f);
+                EXPECT_TRUE(v.tangent[3] == 1.0f || v.tangent[3] == -1.0f);
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 0u);
+}
+
+TEST(GltfScene, GeneratedTangentFollowsIncreasingU) {
+    runtime::Primitive p;
+    // A quad in the xy plane with u along +x, v along -y (glTF's v points down the image).
+    const float xyuv[4][4] = {{0, 0, 0, 1}, {1, 0, 1, 1}, {1, 1, 1, 0}, {0, 1, 0, 0}};
+    for (const auto& c : xyuv) {
+        runtime::MeshVertex v{};
+        v.position[0] = c[0];
+        v.position[1] = c[1];
+        v.normal[2] = 1;
+        v.uv0[0] = c[2];
+        v.uv0[1] = c[3];
+        p.vertices.push_back(v);
+    }
+    p.indices = {0, 1, 2, 0, 2, 3};
+    runtime::GenerateTangents(p);
+    for (const runtime::MeshVertex& v : p.vertices) {
+        EXPECT_NEAR(v.tangent[0], 1.0f, 1e-6f);
+        EXPECT_NEAR(v.tangent[1], 0.0f, 1e-6f);
+        // bitangent = w * cross(n, t) = w * (+y) must follow increasing v, i.e. -y: w = -1.
+        EXPECT_EQ(v.tangent[3], -1.0f);
+    }
+}
+
+TEST(GltfScene, NotAGltfFileIsAnErrorNotACrash) {
+    const fs::path dir = fs::temp_directory_path() / "kiln_scene_test";
+    fs::create_directories(dir);
+    for (const std::string& text : {std::string(""), std::string("{"),
+                                    std::string("{\"asset\":{\"version\":\"2.0\"},\"meshes\":[{"
+                                                "\"primitives\":[{\"attributes\":{\"POSITION\""
+                                                ":7}}]}]}")}) {
+        std::ofstream(dir / "bad.gltf") << text;
+        runtime::Scene scene;
+        std::vector<std::string> warnings;
+        EXPECT_TRUE(runtime::LoadGltf((dir / "bad.gltf").string(), scene, warnings)) << text;
+    }
+    runtime::Scene scene;
+    std::vector<std::string> warnings;
+    auto e = runtime::LoadGltf((dir / "missing.gltf").string(), scene, warnings);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("no such file"), std::string::npos);
+}
+
+TEST(MaterialSidecar, PathsAreRelativeToTheSidecarAndUnknownFieldsAreErrors) {
+    const fs::path dir = fs::temp_directory_path() / "kiln_sidecar_test";
+    fs::create_directories(dir);
+    std::ofstream(dir / "s.kiln.json")
+        << R"({"kiln_materials": 1, "materials": {"Red": "red.material"}, "ambient": [0.1, 0.2, 0.3]})";
+    runtime::Scene scene;
+    ASSERT_FALSE(runtime::LoadMaterialSidecar((dir / "s.kiln.json").string(), scene));
+    EXPECT_EQ(scene.material_files.at("Red"), (dir / "red.material").string());
+    EXPECT_FLOAT_EQ(scene.ambient.y, 0.2f);
+    std::ofstream(dir / "t.kiln.json") << R"({"materiels": {}})";
+    auto e = runtime::LoadMaterialSidecar((dir / "t.kiln.json").string(), scene);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("unknown field 'materiels'"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace kiln::testing
