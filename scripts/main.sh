@@ -33,3 +33,20 @@ for f in tests/lecture/*.shader; do
         echo "  error $f: $(build/release/bin/kiln compile "$f" -I tests/lecture -o "$lecture_out/lecture.kpack" 2>&1 | head -1)"
     fi
 done
+echo
+echo "== kiln render: the demo scene (scenes/demo), headless, validation layer on"
+mkdir -p out
+build/release/bin/kiln render scenes/demo/demo.gltf --validation --width 1280 --height 720 \
+    -o out/demo.png --exr out/demo.exr
+echo
+echo "== kiln render: the glTF samples in ../shared/gltf-samples"
+if [ -d ../shared/gltf-samples ]; then
+    for s in Box BoxTextured TextureCoordinateTest TextureEncodingTest \
+             MetalRoughSpheresNoTextures NormalTangentTest LightsPunctualLamp; do
+        build/release/bin/kiln render "../shared/gltf-samples/$s/glTF/$s.gltf" --validation \
+            --width 640 --height 480 -o "out/$s.png" 2>/dev/null
+    done
+else
+    echo "  ../shared/gltf-samples is absent: samples skipped"
+fi
+echo "images in out/"
