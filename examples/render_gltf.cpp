@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     Renderer renderer;
-    if (!check(Renderer::Create(RendererOptions{}, renderer)) || !check(renderer.AddPack(argv[1]))) {
+    if (!check(Renderer::Create(RendererOptions{}, renderer)) ||
+        !check(renderer.AddPack(argv[1]))) {
         return 1;
     }
     ColorPipeline color;  // $OCIO when set, else the built-in sRGB display

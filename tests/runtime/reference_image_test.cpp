@@ -153,7 +153,8 @@ class ReferenceImageTest : public RuntimeTest {
             }
             int diff = 0;
             for (int k = 0; k < 3; ++k) {
-                diff = std::max(diff, std::abs(int(a[i * 4 + size_t(k)]) - int(b[i * 4 + size_t(k)])));
+                diff =
+                    std::max(diff, std::abs(int(a[i * 4 + size_t(k)]) - int(b[i * 4 + size_t(k)])));
             }
             worst = std::max(worst, diff);
             over += diff > 5;
@@ -197,8 +198,14 @@ TEST_F(ReferenceImageTest, BlinnPhongMatchesTheReference) {
 
 // The PBS model of the lecture (Kiln/Standard) with SH ambient, or MultiLight's base pass plus
 // one additive pass per further light.
-dvec3 Pbs(const dvec3& base, const dvec3& spec, double smoothness, const glm::vec3& ambient,
-          const std::vector<Light>& lights, const dvec3& p, const dvec3& n, const dvec3& v) {
+dvec3 Pbs(const dvec3& base,
+          const dvec3& spec,
+          double smoothness,
+          const glm::vec3& ambient,
+          const std::vector<Light>& lights,
+          const dvec3& p,
+          const dvec3& n,
+          const dvec3& v) {
     double omr = 0;
     const dvec3 diffuse = reference::EnergyConservation(base, spec, &omr);
     reference::SH9 sh;

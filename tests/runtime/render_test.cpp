@@ -62,8 +62,8 @@ INSTANTIATE_TEST_SUITE_P(Samples,
 TEST_F(RuntimeTest, DemoSceneShowsEveryShippedMaterial) {
     runtime::Scene scene;
     std::vector<std::string> warnings;
-    auto e = runtime::LoadGltf(std::string(KILN_SOURCE_DIR) + "/scenes/demo/demo.gltf", scene,
-                               warnings);
+    auto e =
+        runtime::LoadGltf(std::string(KILN_SOURCE_DIR) + "/scenes/demo/demo.gltf", scene, warnings);
     ASSERT_FALSE(e) << e->message;
     EXPECT_EQ(scene.material_files.size(), 10u);
     EXPECT_EQ(scene.lights.size(), 3u);
@@ -193,7 +193,7 @@ TEST_F(RuntimeTest, RenderingAStrippedVariantFailsWithTheVariantNamed) {
     ASSERT_FALSE(runtime::Renderer::Create(options, stripped));
     ASSERT_FALSE(stripped.AddPack(KILN_STRIPPED_PACK));
     runtime::Scene scene = LoneSphere("unlit_color.material", 0);
-    scene.material_files.clear();  // the glTF material: StandardMetallic ...
+    scene.material_files.clear();                      // the glTF material: StandardMetallic ...
     scene.materials[0].emissive = glm::vec3(1, 0, 0);  // ... with _EMISSION
     runtime::LinearImage image;
     runtime::FrameStats stats;

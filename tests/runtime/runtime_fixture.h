@@ -96,8 +96,8 @@ inline runtime::Scene SphereOnFloor(const std::string& material_file) {
     cam.yfov = 0.8f;
     cam.znear = 0.1f;
     cam.zfar = 50.0f;
-    cam.world = glm::inverse(glm::lookAtRH(glm::vec3(0.5f, 2.8f, 5.0f), glm::vec3(0, 0.7f, 0),
-                                           glm::vec3(0, 1, 0)));
+    cam.world = glm::inverse(
+        glm::lookAtRH(glm::vec3(0.5f, 2.8f, 5.0f), glm::vec3(0, 0.7f, 0), glm::vec3(0, 1, 0)));
     scene.cameras.push_back(cam);
     scene.ambient = glm::vec3(0.05f, 0.06f, 0.08f);
     scene.material_files["m"] = material_file;

@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 std::string Shared(const std::string& rel) {
     return std::string(KILN_SHARED_DIR) + "/gltf-samples/" + rel;
 }
-#define REQUIRE_SHARED()                                                              \
-    if (!fs::exists(Shared(""))) {                                                    \
+#define REQUIRE_SHARED()                                                               \
+    if (!fs::exists(Shared(""))) {                                                     \
         GTEST_SKIP() << "../shared/gltf-samples is absent: glTF sample tests skipped"; \
     }
 
@@ -96,8 +96,8 @@ TEST(GltfScene, MissingTangentsAreGeneratedOrthonormalToTheNormal) {
     REQUIRE_SHARED();
     runtime::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_FALSE(
-        runtime::LoadGltf(Shared("NormalTangentTest/glTF/NormalTangentTest.gltf"), scene, warnings));
+    ASSERT_FALSE(runtime::LoadGltf(Shared("NormalTangentTest/glTF/NormalTangentTest.gltf"), scene,
+                                   warnings));
     ASSERT_FALSE(scene.meshes.empty());
     size_t checked = 0;
     for (const runtime::Mesh& m : scene.meshes) {

@@ -47,8 +47,9 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
     cmd->add_option("--exr", a->exr, "Also write the linear image as 32-bit float OpenEXR");
     cmd->add_option("--width", a->frame.width, "Image width")->check(CLI::Range(1, 16384));
     cmd->add_option("--height", a->frame.height, "Image height")->check(CLI::Range(1, 16384));
-    cmd->add_option("--camera", a->frame.camera, "Scene camera index (default: the first, or "
-                                                 "one framing the scene)");
+    cmd->add_option("--camera", a->frame.camera,
+                    "Scene camera index (default: the first, or "
+                    "one framing the scene)");
     cmd->add_option("--pixel-lights", a->frame.pixel_lights,
                     "Additive per-light passes per object at most (default 4)");
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
@@ -141,14 +142,14 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
         if (auto e = runtime::WritePng(a->output, image.width, image.height, rgba8)) {
             return fail(e->message);
         }
-        std::printf("%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes, %u "
-                    "pipelines, device '%s', %s%s\n",
-                    a->output.c_str(), image.width, image.height, stats.camera.c_str(),
-                    stats.objects, stats.base_passes, stats.add_passes, stats.pipelines_created,
-                    renderer.DeviceName().c_str(), color.description().c_str(),
-                    a->validation ? (", validation messages: " + std::to_string(messages.size()))
-                                        .c_str()
-                                  : "");
+        std::printf(
+            "%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes, %u "
+            "pipelines, device '%s', %s%s\n",
+            a->output.c_str(), image.width, image.height, stats.camera.c_str(), stats.objects,
+            stats.base_passes, stats.add_passes, stats.pipelines_created,
+            renderer.DeviceName().c_str(), color.description().c_str(),
+            a->validation ? (", validation messages: " + std::to_string(messages.size())).c_str()
+                          : "");
         return messages.empty() ? int(kExitOk) : int(kExitInputError);
     };
 }

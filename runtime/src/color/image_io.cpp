@@ -7,28 +7,21 @@
 #include <filesystem>
 #include <fstream>
 
+#include "base/atomic_file.h"
 #include "kiln/pack/records.h"
 #include "kiln/runtime/color.h"
 
 namespace kiln::runtime {
 namespace {
 
-std::optional<Error> Commit(const std::string& temp, const std::string& path) {
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::remove(temp.c_str());
-        return Error{"cannot rename '" + temp + "' to '" + path + "': " + ec.message()};
-    }
-    return std::nullopt;
-}
-
 void PutString(pack::ByteWriter& w, std::string_view s) {
     w.PutBytes({reinterpret_cast<const uint8_t*>(s.data()), s.size()});
     w.PutBytes(std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(""), 1));
 }
 
-void Attribute(pack::ByteWriter& w, std::string_view name, std::string_view type,
+void Attribute(pack::ByteWriter& w,
+               std::string_view name,
+               std::string_view type,
                const std::vector<uint8_t>& value) {
     PutString(w, name);
     PutString(w, type);
@@ -45,13 +38,17 @@ std::optional<Error> WritePng(const std::string& path,
     if (width == 0 || height == 0 || rgba8.size() != size_t{width} * height * 4) {
         return Error{"image data does not match its size"};
     }
-    const std::string temp = path + ".tmp";
-    if (!stbi_write_png(temp.c_str(), int(width), int(height), 4, rgba8.data(),
-                        int(width * 4))) {
-        std::remove(temp.c_str());
-        return Error{"cannot write '" + temp + "'"};
+    std::vector<uint8_t> png;
+    auto append = [](void* context, void* data, int size) {
+        auto* out = static_cast<std::vector<uint8_t>*>(context);
+        const auto* p = static_cast<const uint8_t*>(data);
+        out->insert(out->end(), p, p + size);
+    };
+    if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, rgba8.data(),
+                                int(width * 4))) {
+        return Error{"cannot encode '" + path + "' as PNG"};
     }
-    return Commit(temp, path);
+    return WriteFileAtomically(path, png);
 }
 
 std::optional<Error> WriteExr(const std::string& path, const LinearImage& image) {
@@ -105,16 +102,7 @@ std::optional<Error> WriteExr(const std::string& path, const LinearImage& image)
             }
         }
     }
-    const std::string temp = path + ".tmp";
-    {
-        std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-        f.write(reinterpret_cast<const char*>(out.bytes().data()), std::streamsize(out.size()));
-        if (!f) {
-            std::remove(temp.c_str());
-            return Error{"cannot write '" + temp + "'"};
-        }
-    }
-    return Commit(temp, path);
+    return WriteFileAtomically(path, out.bytes());
 }
 
 }  // namespace kiln::runtime

@@ -7,13 +7,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <deque>
 #include <map>
-#include <cstring>
 
+#include "render/draw.h"
 #include "render/frame_values.h"
 #include "render/renderer_state.h"
-#include "render/draw.h"
 #include "render/textures.h"
 
 namespace kiln::runtime {
@@ -69,15 +69,21 @@ struct Planner {
     }
 
     // One draw of `pass` for a primitive, lit by `light` (and `vertex` lights in base passes).
-    std::optional<Error> Plan(const MaterialInstance& m, uint32_t pass, bool additive,
-                              const Light* light, const std::vector<const Light*>& vertex,
-                              const glm::mat4& world, const vk::Buffer& vb, const vk::Buffer& ib,
-                              uint32_t index_count, std::vector<Draw>& draws) {
+    std::optional<Error> Plan(const MaterialInstance& m,
+                              uint32_t pass,
+                              bool additive,
+                              const Light* light,
+                              const std::vector<const Light*>& vertex,
+                              const glm::mat4& world,
+                              const vk::Buffer& vb,
+                              const vk::Buffer& ib,
+                              uint32_t index_count,
+                              std::vector<Draw>& draws) {
         LoadedPack& lp = *s.packs[m.pack];
         const pack::Pack& pack = lp.pack;
         std::vector<std::string> keywords = m.keywords;
         if (additive) {
-            keywords.emplace_back(!light                                    ? "DIRECTIONAL"
+            keywords.emplace_back(!light                                   ? "DIRECTIONAL"
                                   : light->type == LightType::kDirectional ? "DIRECTIONAL"
                                   : light->type == LightType::kPoint       ? "POINT"
                                                                            : "SPOT");
@@ -121,8 +127,8 @@ struct Planner {
             return Error{m.name + ": pass '" + PassLabel(pack, pass) + "': " + e->message};
         }
         Draw d;
-        if (auto e = s.GetPipeline(m.pack, choice.variant, state, d.pipeline,
-                                   stats.pipelines_created)) {
+        if (auto e =
+                s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created)) {
             return Error{"shader '" + std::string(pack.String(pack.Shader(m.shader).name)) +
                          "' pass '" + PassLabel(pack, pass) + "' variant '" +
                          [&] {
@@ -138,14 +144,14 @@ struct Planner {
         d.indices = &ib;
         d.index_count = index_count;
 
-        const Values light_values = render::LightValues(light, additive ? std::vector<const Light*>{}
-                                                                        : vertex);
+        const Values light_values =
+            render::LightValues(light, additive ? std::vector<const Light*>{} : vertex);
         const Values object = render::ObjectValues(world);
         Values material_extra;  // <tex>_TexelSize
         const pack::VariantRec v = pack.Variant(choice.variant);
         const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
-            for (const Values* table :
-                 std::initializer_list<const Values*>{&object, &light_values, &frame, &material_extra}) {
+            for (const Values* table : std::initializer_list<const Values*>{
+                     &object, &light_values, &frame, &material_extra}) {
                 if (auto it = table->find(name); it != table->end()) {
                     return &it->second;
                 }
@@ -170,17 +176,15 @@ struct Planner {
                 }
                 render::BoundTexture t;
                 auto it = m.textures.find(name);
-                if (auto e = textures.Get(it == m.textures.end() ? render::TextureBinding{}
-                                                                 : it->second,
-                                          t)) {
+                if (auto e = textures.Get(
+                        it == m.textures.end() ? render::TextureBinding{} : it->second, t)) {
                     return e;
                 }
                 if (!t.warning.empty()) {
                     Warn(m.name + ": " + t.warning);
                 }
-                material_extra[name + "_TexelSize"] = {1.0f / float(t.width),
-                                                       1.0f / float(t.height), float(t.width),
-                                                       float(t.height)};
+                material_extra[name + "_TexelSize"] = {
+                    1.0f / float(t.width), 1.0f / float(t.height), float(t.width), float(t.height)};
                 Draw::Write w{res.set, res.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
                 w.image = {t.sampler, t.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
                 if (kind == pack::ResourceKind::kSeparateImage) {
@@ -273,8 +277,8 @@ std::optional<Error> RenderForward(Renderer::State& s,
             gltf = scene.materials[slot];
         }
         MaterialInstance inst;
-        if (auto it = scene.material_files.find(gltf.name); index >= 0 &&
-                                                            it != scene.material_files.end()) {
+        if (auto it = scene.material_files.find(gltf.name);
+            index >= 0 && it != scene.material_files.end()) {
             if (auto e = render::InstanceFromMaterialFile(s.PackList(), it->second, color, inst)) {
                 return e;
             }
@@ -300,10 +304,10 @@ std::optional<Error> RenderForward(Renderer::State& s,
 
     FrameBuffers gpu{s.context, {}};
     render::FrameTextures textures(s, scene);
-    Planner planner{s, scene, color, textures, render::FrameValues(scene, settings, camera),
-                    stats, {}, 256};
-    planner.alignment = std::max<VkDeviceSize>(
-        256, s.context.properties.limits.minUniformBufferOffsetAlignment);
+    Planner planner{s,     scene, color, textures, render::FrameValues(scene, settings, camera),
+                    stats, {},    256};
+    planner.alignment =
+        std::max<VkDeviceSize>(256, s.context.properties.limits.minUniformBufferOffsetAlignment);
     std::vector<Light> scene_lights = scene.lights;
     if (scene_lights.empty() && settings.default_light) {
         Light key;
@@ -311,8 +315,9 @@ std::optional<Error> RenderForward(Renderer::State& s,
         key.type = LightType::kDirectional;
         key.direction = glm::normalize(glm::vec3(-0.35f, -0.8f, -0.5f));
         scene_lights.push_back(key);
-        planner.Warn("the scene has no KHR_lights_punctual lights: lit by a default directional "
-                     "light of 1 lux shining along (-0.35, -0.8, -0.5)");
+        planner.Warn(
+            "the scene has no KHR_lights_punctual lights: lit by a default directional "
+            "light of 1 lux shining along (-0.35, -0.8, -0.5)");
     }
     const Light* main = render::MainLight(scene_lights);
 
@@ -352,19 +357,20 @@ std::optional<Error> RenderForward(Renderer::State& s,
         const MaterialInstance& m = *item.material;
         const ShaderPasses passes = PassesOf(s.packs[m.pack]->pack, m.shader);
         if (passes.base.empty()) {
-            planner.Warn(m.name + ": the shader has no ForwardBase or untagged pass; objects "
-                                  "using it are not drawn by the forward path");
+            planner.Warn(m.name +
+                         ": the shader has no ForwardBase or untagged pass; objects "
+                         "using it are not drawn by the forward path");
             continue;
         }
         auto& buffers = uploaded[item.primitive];
         if (!buffers.first) {
             const Primitive& p = *item.primitive;
             vk::Buffer& vb = gpu.buffers.emplace_back();
-            if (auto e = vk::CreateBufferWithData(
-                    s.context,
-                    {reinterpret_cast<const uint8_t*>(p.vertices.data()),
-                     p.vertices.size() * sizeof(MeshVertex)},
-                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vb)) {
+            if (auto e =
+                    vk::CreateBufferWithData(s.context,
+                                             {reinterpret_cast<const uint8_t*>(p.vertices.data()),
+                                              p.vertices.size() * sizeof(MeshVertex)},
+                                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vb)) {
                 return e;
             }
             vk::Buffer& ib = gpu.buffers.emplace_back();
@@ -376,13 +382,13 @@ std::optional<Error> RenderForward(Renderer::State& s,
             }
             buffers = {&vb, &ib};
         }
-        const render::ObjectLights lights = render::LightsFor(
-            scene_lights, main, item.center, item.radius, settings.pixel_lights);
+        const render::ObjectLights lights =
+            render::LightsFor(scene_lights, main, item.center, item.radius, settings.pixel_lights);
         const uint32_t count = uint32_t(item.primitive->indices.size());
         for (uint32_t pass : passes.base) {
-            if (auto e = planner.Plan(m, pass, false, lights.main, lights.vertex,
-                                      item.instance->world, *buffers.first, *buffers.second,
-                                      count, draws)) {
+            if (auto e =
+                    planner.Plan(m, pass, false, lights.main, lights.vertex, item.instance->world,
+                                 *buffers.first, *buffers.second, count, draws)) {
                 return e;
             }
         }

@@ -51,8 +51,8 @@ std::optional<runtime::Error> ChooseCamera(const runtime::Scene& scene,
     }
     if (!scene.cameras.empty()) {
         const runtime::Camera& c = scene.cameras[size_t(std::max(settings.camera, 0))];
-        out.name = c.name.empty() ? "camera " + std::to_string(std::max(settings.camera, 0))
-                                  : c.name;
+        out.name =
+            c.name.empty() ? "camera " + std::to_string(std::max(settings.camera, 0)) : c.name;
         out.view = glm::inverse(c.world);
         out.position = glm::vec3(c.world[3]);
         out.znear = c.znear > 0 ? c.znear : 0.05f;
@@ -122,8 +122,8 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
             const glm::vec3 d = -light->direction;  // towards the light
             v["_WorldSpaceLightPos0"] = {d.x, d.y, d.z, 0};
         } else {
-            v["_WorldSpaceLightPos0"] = {light->position.x, light->position.y,
-                                         light->position.z, 1};
+            v["_WorldSpaceLightPos0"] = {light->position.x, light->position.y, light->position.z,
+                                         1};
         }
         v["kiln_SpotDirection0"] = {light->direction.x, light->direction.y, light->direction.z, 0};
         const float inv_range2 = light->range > 0 ? 1 / (light->range * light->range) : 0;
@@ -164,7 +164,8 @@ const runtime::Light* MainLight(const std::vector<runtime::Light>& lights) {
     const runtime::Light* main = nullptr;
     for (const runtime::Light& l : lights) {
         if (l.type == runtime::LightType::kDirectional &&
-            (!main || l.intensity * Luminance(l.color) > main->intensity * Luminance(main->color))) {
+            (!main ||
+             l.intensity * Luminance(l.color) > main->intensity * Luminance(main->color))) {
             main = &l;
         }
     }

@@ -22,7 +22,8 @@ bool HasAttribute(const pack::Pack& pack, const pack::PropertyRec& p, std::strin
     return false;
 }
 
-std::optional<pack::PropertyRec> FindProperty(const pack::Pack& pack, uint32_t shader,
+std::optional<pack::PropertyRec> FindProperty(const pack::Pack& pack,
+                                              uint32_t shader,
                                               std::string_view name) {
     const pack::ShaderRec s = pack.Shader(shader);
     for (uint32_t i = 0; i < s.property_count; ++i) {
@@ -35,8 +36,10 @@ std::optional<pack::PropertyRec> FindProperty(const pack::Pack& pack, uint32_t s
 }
 
 // sRGB-authored values become linear: Colors always, Floats/Vectors/Ranges marked [Gamma].
-void Decode(const pack::Pack& pack, const pack::PropertyRec& p,
-            const runtime::ColorPipeline& color, std::vector<float>& v) {
+void Decode(const pack::Pack& pack,
+            const pack::PropertyRec& p,
+            const runtime::ColorPipeline& color,
+            std::vector<float>& v) {
     const auto type = PropertyType(p.type);
     const bool gamma = HasAttribute(pack, p, "Gamma");
     if (type == PropertyType::kColor || (gamma && type == PropertyType::kVector)) {
@@ -84,11 +87,10 @@ void InstanceFromDefaults(const pack::Pack& pack,
     out = std::move(m);
 }
 
-std::optional<runtime::Error> InstanceFromMaterialFile(
-    const std::vector<const pack::Pack*>& packs,
-    const std::string& path,
-    const runtime::ColorPipeline& color,
-    MaterialInstance& out) {
+std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
+                                                       const std::string& path,
+                                                       const runtime::ColorPipeline& color,
+                                                       MaterialInstance& out) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         return runtime::Error{path + ": cannot open the material file"};

@@ -49,11 +49,10 @@ void InstanceFromDefaults(const pack::Pack& pack,
 
 // Reads, validates (against the pack) and applies a .material file on top of the shader's
 // defaults; the shader comes from the file. Errors carry file:line:col.
-std::optional<runtime::Error> InstanceFromMaterialFile(
-    const std::vector<const pack::Pack*>& packs,
-    const std::string& path,
-    const runtime::ColorPipeline& color,
-    MaterialInstance& out);
+std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
+                                                       const std::string& path,
+                                                       const runtime::ColorPipeline& color,
+                                                       MaterialInstance& out);
 
 // A glTF metallic-roughness material mapped onto Kiln/StandardMetallic (factors are linear in
 // glTF and written as they are; maps switch on their shader_feature keywords).

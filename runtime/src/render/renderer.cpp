@@ -178,15 +178,16 @@ std::optional<Error> Renderer::Create(const RendererOptions& options, Renderer& 
         }
     }
     if (s->depth_format == VK_FORMAT_UNDEFINED) {
-        return Error{"the device has no depth-stencil format (D32_SFLOAT_S8_UINT or "
-                     "D24_UNORM_S8_UINT)"};
+        return Error{
+            "the device has no depth-stencil format (D32_SFLOAT_S8_UINT or "
+            "D24_UNORM_S8_UINT)"};
     }
     if (auto e = CreateRenderPass(*s)) {
         return e;
     }
     std::string note;
-    if (auto e = vk::CreatePipelineCache(s->context, options.pipeline_cache, s->pipeline_cache,
-                                         note)) {
+    if (auto e =
+            vk::CreatePipelineCache(s->context, options.pipeline_cache, s->pipeline_cache, note)) {
         return e;
     }
     if (!note.empty()) {

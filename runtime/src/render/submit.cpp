@@ -65,15 +65,15 @@ std::optional<Error> RecordFrame(Renderer::State& s,
     const vk::Context& c = s.context;
     const uint32_t w = settings.width, h = settings.height;
     FrameObjects f{c, {}, {}, VK_NULL_HANDLE, VK_NULL_HANDLE, {}};
-    if (auto e = vk::CreateImage(c, w, h, s.color_format,
-                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                 VK_IMAGE_ASPECT_COLOR_BIT, f.color)) {
+    if (auto e =
+            vk::CreateImage(c, w, h, s.color_format,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                            VK_IMAGE_ASPECT_COLOR_BIT, f.color)) {
         return e;
     }
-    if (auto e = vk::CreateImage(c, w, h, s.depth_format,
-                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                 VK_IMAGE_ASPECT_DEPTH_BIT, f.depth)) {
+    if (auto e =
+            vk::CreateImage(c, w, h, s.depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                            VK_IMAGE_ASPECT_DEPTH_BIT, f.depth)) {
         return e;
     }
     const VkImageView views[2] = {f.color.view, f.depth.view};
@@ -84,12 +84,11 @@ std::optional<Error> RecordFrame(Renderer::State& s,
     fb.width = w;
     fb.height = h;
     fb.layers = 1;
-    if (VkResult r = vkCreateFramebuffer(c.device, &fb, nullptr, &f.framebuffer);
-        r != VK_SUCCESS) {
+    if (VkResult r = vkCreateFramebuffer(c.device, &fb, nullptr, &f.framebuffer); r != VK_SUCCESS) {
         return vk::VkError("cannot create the framebuffer", r);
     }
-    if (auto e = vk::CreateBufferWithData(c, uniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                          f.uniforms)) {
+    if (auto e =
+            vk::CreateBufferWithData(c, uniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, f.uniforms)) {
         return e;
     }
 
@@ -166,7 +165,8 @@ std::optional<Error> RecordFrame(Renderer::State& s,
         return Error{"cannot allocate a command buffer"};
     }
     VkClearValue clear[2]{};
-    clear[0].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};  // alpha 0: not covered
+    clear[0].color = {{settings.background.r, settings.background.g, settings.background.b,
+                       0}};  // alpha 0: not covered
     clear[1].depthStencil = {1.0f, 0};
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = s.render_pass;
@@ -188,9 +188,8 @@ std::optional<Error> RecordFrame(Renderer::State& s,
             bound = d.pipeline;
         }
         if (!sets[i].empty()) {
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                    d.pipeline->layout.layout, 0, uint32_t(sets[i].size()),
-                                    sets[i].data(), 0, nullptr);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline->layout.layout,
+                                    0, uint32_t(sets[i].size()), sets[i].data(), 0, nullptr);
         }
         const vk::VariantLayout& layout = d.pipeline->layout;
         if (layout.push_constant_size > 0) {

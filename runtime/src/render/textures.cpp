@@ -26,15 +26,15 @@ std::optional<runtime::Error> FrameTextures::Default(const TextureBinding& bindi
     return std::nullopt;
 }
 
-std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
-                                                 BoundTexture& out) {
+std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding, BoundTexture& out) {
     out = BoundTexture{};
     std::string key;
     if (binding.source == TextureBinding::Source::kSceneImage) {
         if (binding.image < 0 || size_t(binding.image) >= scene_.images.size() ||
             scene_.images[size_t(binding.image)].rgba8.empty()) {
-            return Default(binding, "image " + std::to_string(binding.image) +
-                                        " has no pixels; using the default texture",
+            return Default(binding,
+                           "image " + std::to_string(binding.image) +
+                               " has no pixels; using the default texture",
                            out);
         }
         key = "#" + std::to_string(binding.image);
@@ -51,8 +51,8 @@ std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
         vk::Image image;
         if (binding.source == TextureBinding::Source::kSceneImage) {
             const runtime::SceneImage& si = scene_.images[size_t(binding.image)];
-            if (auto e = vk::CreateTexture(s_.context, si.width, si.height, si.rgba8,
-                                           binding.srgb, image)) {
+            if (auto e = vk::CreateTexture(s_.context, si.width, si.height, si.rgba8, binding.srgb,
+                                           image)) {
                 return e;
             }
         } else {
@@ -64,9 +64,9 @@ std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
                                    "; using the default texture",
                                out);
             }
-            auto e = vk::CreateTexture(
-                s_.context, uint32_t(w), uint32_t(h),
-                std::span<const uint8_t>(pixels, size_t(w) * size_t(h) * 4), binding.srgb, image);
+            auto e = vk::CreateTexture(s_.context, uint32_t(w), uint32_t(h),
+                                       std::span<const uint8_t>(pixels, size_t(w) * size_t(h) * 4),
+                                       binding.srgb, image);
             stbi_image_free(pixels);
             if (e) {
                 return e;

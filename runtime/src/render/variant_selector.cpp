@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "base/atomic_file.h"
+
 namespace kiln::runtime {
 namespace {
 
@@ -75,8 +77,8 @@ std::optional<Error> VariantSelector::Select(uint32_t pass,
     std::string closest;
     for (size_t i = 0; i < ranked.size() && i < 3; ++i) {
         closest += std::string(i ? ", " : "") + "'" +
-                   JoinKeywords(pack.KeywordsOf(pass, pack::VariantKey(
-                                                          pack.Variant(ranked[i].second).key))) +
+                   JoinKeywords(pack.KeywordsOf(
+                       pass, pack::VariantKey(pack.Variant(ranked[i].second).key))) +
                    "'";
     }
     const std::string what = "shader '" + shader + "' pass '" + PassLabel(pack, pass) +
@@ -109,22 +111,8 @@ std::optional<Error> WriteUsageFile(const std::string& path,
     nlohmann::ordered_json doc;
     doc["kiln_usage"] = 1;
     doc["lookups"] = std::move(lookups);
-    const std::string temp = path + ".tmp";
-    {
-        std::ofstream out(temp, std::ios::trunc);
-        out << doc.dump(2) << "\n";
-        if (!out) {
-            std::remove(temp.c_str());
-            return Error{"cannot write usage file '" + temp + "'"};
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::remove(temp.c_str());
-        return Error{"cannot rename '" + temp + "' to '" + path + "': " + ec.message()};
-    }
-    return std::nullopt;
+    const std::string text = doc.dump(2) + "\n";
+    return WriteFileAtomically(path, {reinterpret_cast<const uint8_t*>(text.data()), text.size()});
 }
 
 }  // namespace kiln::runtime

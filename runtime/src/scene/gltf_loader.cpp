@@ -15,114 +15,17 @@
 #include <filesystem>
 #include <functional>
 
+#include "scene/accessors.h"
+
 namespace kiln::runtime {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// Reads accessor `index` as floats, `want` components per element (missing components 0),
-// normalizing integer types when the accessor says so. Empty on any inconsistency.
-bool ReadAccessor(const tinygltf::Model& m, int index, int want, std::vector<float>& out,
-                  std::string& why) {
-    if (index < 0 || size_t(index) >= m.accessors.size()) {
-        why = "accessor " + std::to_string(index) + " does not exist";
-        return false;
-    }
-    const tinygltf::Accessor& a = m.accessors[size_t(index)];
-    if (a.sparse.isSparse) {
-        why = "sparse accessors are not supported";
-        return false;
-    }
-    const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    if (comps <= 0 || csize <= 0 || a.bufferView < 0 ||
-        size_t(a.bufferView) >= m.bufferViews.size()) {
-        why = "accessor " + std::to_string(index) + " has no usable buffer view or type";
-        return false;
-    }
-    const tinygltf::BufferView& view = m.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size()) {
-        why = "buffer view " + std::to_string(a.bufferView) + " names no buffer";
-        return false;
-    }
-    const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
-    const size_t elem = size_t(comps) * size_t(csize);
-    const size_t stride = view.byteStride ? view.byteStride : elem;
-    const size_t base = view.byteOffset + a.byteOffset;
-    if (a.count > 0 && (base > data.size() || view.byteOffset + view.byteLength > data.size() ||
-                        (a.count - 1) * stride + elem > view.byteLength - a.byteOffset ||
-                        a.byteOffset > view.byteLength)) {
-        why = "accessor " + std::to_string(index) + " reads past its buffer view";
-        return false;
-    }
-    out.assign(a.count * size_t(want), 0.0f);
-    for (size_t i = 0; i < a.count; ++i) {
-        const unsigned char* p = data.data() + base + i * stride;
-        for (int c = 0; c < std::min(comps, want); ++c) {
-            const unsigned char* q = p + size_t(c) * size_t(csize);
-            float v = 0;
-            switch (a.componentType) {
-                case TINYGLTF_COMPONENT_TYPE_FLOAT:
-                    std::memcpy(&v, q, 4);
-                    break;
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-                    v = a.normalized ? float(*q) / 255.0f : float(*q);
-                    break;
-                case TINYGLTF_COMPONENT_TYPE_BYTE:
-                    v = a.normalized ? std::max(float(int8_t(*q)) / 127.0f, -1.0f)
-                                     : float(int8_t(*q));
-                    break;
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                    uint16_t s;
-                    std::memcpy(&s, q, 2);
-                    v = a.normalized ? float(s) / 65535.0f : float(s);
-                    break;
-                }
-                case TINYGLTF_COMPONENT_TYPE_SHORT: {
-                    int16_t s;
-                    std::memcpy(&s, q, 2);
-                    v = a.normalized ? std::max(float(s) / 32767.0f, -1.0f) : float(s);
-                    break;
-                }
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-                    uint32_t s;
-                    std::memcpy(&s, q, 4);
-                    v = float(s);
-                    break;
-                }
-                default:
-                    why = "accessor " + std::to_string(index) + " has an unknown component type";
-                    return false;
-            }
-            out[i * size_t(want) + size_t(c)] = std::isfinite(v) ? v : 0.0f;
-        }
-    }
-    return true;
-}
-
-bool ReadIndices(const tinygltf::Model& m, int index, std::vector<uint32_t>& out,
-                 std::string& why) {
-    std::vector<float> f;
-    if (!ReadAccessor(m, index, 1, f, why)) {
-        return false;
-    }
-    const auto& a = m.accessors[size_t(index)];
-    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {  // exact above 2^24
-        const auto& view = m.bufferViews[size_t(a.bufferView)];
-        const auto& data = m.buffers[size_t(view.buffer)].data;
-        const size_t stride = view.byteStride ? view.byteStride : 4;
-        out.resize(a.count);
-        for (size_t i = 0; i < a.count; ++i) {
-            std::memcpy(&out[i], data.data() + view.byteOffset + a.byteOffset + i * stride, 4);
-        }
-        return true;
-    }
-    out.assign(f.begin(), f.end());
-    return true;
-}
-
-std::optional<Error> ReadPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p,
-                                   const std::string& where, Primitive& out,
+std::optional<Error> ReadPrimitive(const tinygltf::Model& m,
+                                   const tinygltf::Primitive& p,
+                                   const std::string& where,
+                                   Primitive& out,
                                    std::vector<std::string>& warnings) {
     if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
         warnings.push_back(where + ": primitive mode " + std::to_string(p.mode) +
@@ -144,8 +47,8 @@ std::optional<Error> ReadPrimitive(const tinygltf::Model& m, const tinygltf::Pri
             return false;
         }
         if (!ReadAccessor(m, attr(name), comps, v, why) || v.size() != n * size_t(comps)) {
-            warnings.push_back(where + ": attribute " + name + " ignored: " +
-                               (why.empty() ? "count differs from POSITION" : why));
+            warnings.push_back(where + ": attribute " + name +
+                               " ignored: " + (why.empty() ? "count differs from POSITION" : why));
             v.clear();
             return false;
         }
@@ -232,7 +135,7 @@ std::optional<Error> ReadPrimitive(const tinygltf::Model& m, const tinygltf::Pri
         }
     }
     p.material >= 0 && size_t(p.material) < m.materials.size() ? out.material = p.material
-                                                                 : out.material = -1;
+                                                               : out.material = -1;
     if (!out.has_tangents && has_uv0) {
         GenerateTangents(out);
     }
@@ -285,8 +188,7 @@ SceneMaterial ReadMaterial(const tinygltf::Model& m, const tinygltf::Material& g
                                       float(g.normalTexture.scale));
     s.occlusion_texture = ReadTextureRef(m, g.occlusionTexture.index, g.occlusionTexture.texCoord,
                                          float(g.occlusionTexture.strength));
-    s.emissive_texture =
-        ReadTextureRef(m, g.emissiveTexture.index, g.emissiveTexture.texCoord, 1);
+    s.emissive_texture = ReadTextureRef(m, g.emissiveTexture.index, g.emissiveTexture.texCoord, 1);
     s.alpha_mode = g.alphaMode == "MASK"    ? AlphaMode::kMask
                    : g.alphaMode == "BLEND" ? AlphaMode::kBlend
                                             : AlphaMode::kOpaque;
@@ -391,10 +293,10 @@ std::optional<Error> LoadGltf(const std::string& path,
         mesh.name = model.meshes[mi].name;
         for (size_t pi = 0; pi < model.meshes[mi].primitives.size(); ++pi) {
             Primitive prim;
-            const std::string where = path + ": mesh " + std::to_string(mi) + " primitive " +
-                                      std::to_string(pi);
-            if (auto e = ReadPrimitive(model, model.meshes[mi].primitives[pi], where, prim,
-                                       warnings)) {
+            const std::string where =
+                path + ": mesh " + std::to_string(mi) + " primitive " + std::to_string(pi);
+            if (auto e =
+                    ReadPrimitive(model, model.meshes[mi].primitives[pi], where, prim, warnings)) {
                 return e;
             }
             if (!prim.indices.empty()) {
@@ -408,8 +310,8 @@ std::optional<Error> LoadGltf(const std::string& path,
     for (size_t i = 0; i < model.lights.size(); ++i) {
         light_problem[i] = CheckLight(model.lights[i]);
         if (!light_problem[i].empty()) {
-            warnings.push_back(path + ": light " + std::to_string(i) + " '" +
-                               model.lights[i].name + "' rejected: " + light_problem[i]);
+            warnings.push_back(path + ": light " + std::to_string(i) + " '" + model.lights[i].name +
+                               "' rejected: " + light_problem[i]);
         }
     }
     std::vector<bool> visiting(model.nodes.size(), false);
@@ -504,7 +406,8 @@ std::pair<glm::vec3, glm::vec3> SceneBounds(const Scene& scene) {
     for (const Instance& inst : scene.instances) {
         for (const Primitive& p : scene.meshes[inst.mesh].primitives) {
             for (const MeshVertex& v : p.vertices) {
-                const glm::vec3 w = glm::vec3(inst.world * glm::vec4(glm::make_vec3(v.position), 1));
+                const glm::vec3 w =
+                    glm::vec3(inst.world * glm::vec4(glm::make_vec3(v.position), 1));
                 lo = glm::min(lo, w);
                 hi = glm::max(hi, w);
             }

@@ -18,7 +18,8 @@ namespace kiln::runtime {
 // orthogonalized against N; w = sign(dot(cross(N, T), B)). Degenerate UVs fall back to any
 // unit vector perpendicular to N.
 void GenerateTangents(Primitive& p) {
-    std::vector<glm::vec3> tan(p.vertices.size(), glm::vec3(0)), bit(p.vertices.size(), glm::vec3(0));
+    std::vector<glm::vec3> tan(p.vertices.size(), glm::vec3(0)),
+        bit(p.vertices.size(), glm::vec3(0));
     for (size_t t = 0; t + 2 < p.indices.size(); t += 3) {
         const uint32_t i[3] = {p.indices[t], p.indices[t + 1], p.indices[t + 2]};
         const MeshVertex& a = p.vertices[i[0]];
@@ -81,7 +82,8 @@ std::optional<Error> LoadMaterialSidecar(const std::string& path, Scene& scene) 
             }
         } else if (key == "materials") {
             if (!value.is_object()) {
-                return Error{path + ": 'materials' must map glTF material names to .material files"};
+                return Error{path +
+                             ": 'materials' must map glTF material names to .material files"};
             }
             for (const auto& [name, file] : value.items()) {
                 if (!file.is_string()) {
@@ -94,8 +96,8 @@ std::optional<Error> LoadMaterialSidecar(const std::string& path, Scene& scene) 
                 !value[1].is_number() || !value[2].is_number()) {
                 return Error{path + ": 'ambient' must be three numbers (linear RGB)"};
             }
-            scene.ambient = glm::vec3(value[0].get<float>(), value[1].get<float>(),
-                                      value[2].get<float>());
+            scene.ambient =
+                glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>());
         } else if (key != "description") {
             return Error{path + ": unknown field '" + key +
                          "' (expected kiln_materials, materials, ambient, description)"};

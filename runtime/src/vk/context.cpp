@@ -26,8 +26,9 @@ bool HasLayer(const char* name) {
     vkEnumerateInstanceLayerProperties(&count, nullptr);
     std::vector<VkLayerProperties> layers(count);
     vkEnumerateInstanceLayerProperties(&count, layers.data());
-    return std::any_of(layers.begin(), layers.end(),
-                       [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+    return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) {
+        return std::strcmp(l.layerName, name) == 0;
+    });
 }
 
 int DeviceRank(VkPhysicalDeviceType type) {
@@ -68,8 +69,9 @@ std::optional<runtime::Error> CreateInstance(const ContextOptions& options, Cont
     std::vector<const char*> extensions;
     if (options.validation) {
         if (!HasLayer(kValidationLayer)) {
-            return runtime::Error{"validation requested but VK_LAYER_KHRONOS_validation is not "
-                                  "installed (Debian package vulkan-validationlayers)"};
+            return runtime::Error{
+                "validation requested but VK_LAYER_KHRONOS_validation is not "
+                "installed (Debian package vulkan-validationlayers)"};
         }
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);

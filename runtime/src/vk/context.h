@@ -16,7 +16,7 @@
 namespace kiln::vk {
 
 struct ContextOptions {
-    bool validation = false;  // enable VK_LAYER_KHRONOS_validation; an error when it is missing
+    bool validation = false;    // enable VK_LAYER_KHRONOS_validation; an error when it is missing
     std::string device_filter;  // when set, only devices whose name contains it are considered
 };
 

@@ -71,8 +71,8 @@ std::optional<runtime::Error> CreateLayout(const Context& c,
                    VkShaderStageFlags stage) {
         auto [it, fresh] = bindings.try_emplace({set, binding});
         if (fresh) {
-            it->second = VkDescriptorSetLayoutBinding{binding, type, std::max(count, 1u), 0,
-                                                      nullptr};
+            it->second =
+                VkDescriptorSetLayoutBinding{binding, type, std::max(count, 1u), 0, nullptr};
         }
         it->second.stageFlags |= stage;
     };
@@ -256,8 +256,9 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
     depth.depthCompareOp = state.ztest;
     depth.stencilTestEnable = state.stencil;
     auto face = [&](const StencilFace& f) {
-        return VkStencilOpState{f.fail,          f.pass,           f.zfail,          f.compare,
-                                state.stencil_read, state.stencil_write, state.stencil_ref};
+        return VkStencilOpState{
+            f.fail,           f.pass, f.zfail, f.compare, state.stencil_read, state.stencil_write,
+            state.stencil_ref};
     };
     depth.front = face(state.front);
     depth.back = face(state.back);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "base/atomic_file.h"
 #include "kiln/pack/records.h"
 
 namespace kiln::vk {
@@ -103,26 +104,13 @@ std::optional<runtime::Error> SavePipelineCache(const Context& c,
     size_t size = 0;
     vkGetPipelineCacheData(c.device, cache, &size, nullptr);
     std::vector<uint8_t> data(size);
-    if (VkResult r = vkGetPipelineCacheData(c.device, cache, &size, data.data());
-        r != VK_SUCCESS) {
+    if (VkResult r = vkGetPipelineCacheData(c.device, cache, &size, data.data()); r != VK_SUCCESS) {
         return VkError("cannot read the pipeline cache", r);
     }
     data.resize(size);
     const std::vector<uint8_t> file = EncodePipelineCacheFile(c, data);
-    const std::string temp = path + ".tmp";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size()));
-        if (!out) {
-            std::remove(temp.c_str());
-            return runtime::Error{"cannot write pipeline cache '" + temp + "'"};
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::remove(temp.c_str());
-        return runtime::Error{"cannot rename '" + temp + "' to '" + path + "': " + ec.message()};
+    if (auto e = runtime::WriteFileAtomically(path, file)) {
+        return e;
     }
     return std::nullopt;
 }

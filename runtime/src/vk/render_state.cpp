@@ -40,17 +40,24 @@ constexpr Named<VkBlendFactor> kBlendFactors[] = {
 };
 // CompareFunction: 0 Disabled, 1 Never ... 8 Always.
 constexpr Named<VkCompareOp> kCompare[] = {
-    {"Disabled", VK_COMPARE_OP_ALWAYS},  {"Never", VK_COMPARE_OP_NEVER},
-    {"Less", VK_COMPARE_OP_LESS},        {"Equal", VK_COMPARE_OP_EQUAL},
-    {"LEqual", VK_COMPARE_OP_LESS_OR_EQUAL}, {"Greater", VK_COMPARE_OP_GREATER},
-    {"NotEqual", VK_COMPARE_OP_NOT_EQUAL},   {"GEqual", VK_COMPARE_OP_GREATER_OR_EQUAL},
+    {"Disabled", VK_COMPARE_OP_ALWAYS},
+    {"Never", VK_COMPARE_OP_NEVER},
+    {"Less", VK_COMPARE_OP_LESS},
+    {"Equal", VK_COMPARE_OP_EQUAL},
+    {"LEqual", VK_COMPARE_OP_LESS_OR_EQUAL},
+    {"Greater", VK_COMPARE_OP_GREATER},
+    {"NotEqual", VK_COMPARE_OP_NOT_EQUAL},
+    {"GEqual", VK_COMPARE_OP_GREATER_OR_EQUAL},
     {"Always", VK_COMPARE_OP_ALWAYS},
 };
-constexpr Named<VkCullModeFlags> kCull[] = {
-    {"Off", VK_CULL_MODE_NONE}, {"Front", VK_CULL_MODE_FRONT_BIT}, {"Back", VK_CULL_MODE_BACK_BIT}};
-constexpr Named<VkBlendOp> kBlendOps[] = {
-    {"Add", VK_BLEND_OP_ADD}, {"Sub", VK_BLEND_OP_SUBTRACT}, {"RevSub", VK_BLEND_OP_REVERSE_SUBTRACT},
-    {"Min", VK_BLEND_OP_MIN}, {"Max", VK_BLEND_OP_MAX}};
+constexpr Named<VkCullModeFlags> kCull[] = {{"Off", VK_CULL_MODE_NONE},
+                                            {"Front", VK_CULL_MODE_FRONT_BIT},
+                                            {"Back", VK_CULL_MODE_BACK_BIT}};
+constexpr Named<VkBlendOp> kBlendOps[] = {{"Add", VK_BLEND_OP_ADD},
+                                          {"Sub", VK_BLEND_OP_SUBTRACT},
+                                          {"RevSub", VK_BLEND_OP_REVERSE_SUBTRACT},
+                                          {"Min", VK_BLEND_OP_MIN},
+                                          {"Max", VK_BLEND_OP_MAX}};
 constexpr Named<VkStencilOp> kStencilOps[] = {
     {"Keep", VK_STENCIL_OP_KEEP},
     {"Zero", VK_STENCIL_OP_ZERO},
@@ -247,8 +254,10 @@ struct Resolver {
                 s.stencil = true;
                 const bool front = field <= StateField::kStencilZFailFront;
                 auto& face = front ? s.front : s.back;
-                const VkStencilOp op = Pick(kStencilOps, v, "stencil operation", VK_STENCIL_OP_KEEP);
-                const auto base = front ? StateField::kStencilPassFront : StateField::kStencilPassBack;
+                const VkStencilOp op =
+                    Pick(kStencilOps, v, "stencil operation", VK_STENCIL_OP_KEEP);
+                const auto base =
+                    front ? StateField::kStencilPassFront : StateField::kStencilPassBack;
                 const int which = int(field) - int(base);  // 0 pass, 1 fail, 2 zfail
                 (which == 0 ? face.pass : which == 1 ? face.fail : face.zfail) = op;
                 break;

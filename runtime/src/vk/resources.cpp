@@ -12,8 +12,7 @@ std::optional<uint32_t> FindMemoryType(const Context& c,
                                        uint32_t type_bits,
                                        VkMemoryPropertyFlags wanted) {
     for (uint32_t i = 0; i < c.memory.memoryTypeCount; ++i) {
-        if ((type_bits & (1u << i)) &&
-            (c.memory.memoryTypes[i].propertyFlags & wanted) == wanted) {
+        if ((type_bits & (1u << i)) && (c.memory.memoryTypes[i].propertyFlags & wanted) == wanted) {
             return i;
         }
     }
@@ -219,8 +218,8 @@ std::optional<runtime::Error> CreateTexture(const Context& c,
         VkBufferImageCopy copy{};
         copy.imageSubresource = {color, 0, 0, 1};
         copy.imageExtent = {width, height, 1};
-        vkCmdCopyBufferToImage(cmd, staging.buffer, img.image,
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        vkCmdCopyBufferToImage(cmd, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               1, &copy);
         int32_t w = int32_t(width), h = int32_t(height);
         for (uint32_t level = 1; level < mips; ++level) {
             ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -273,8 +272,8 @@ std::optional<runtime::Error> ReadBack(const Context& c,
         VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
-                             1, &to_host, 0, nullptr, 0, nullptr);
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                             &to_host, 0, nullptr, 0, nullptr);
     });
     if (!e) {
         const auto* p = static_cast<const uint8_t*>(staging.mapped);

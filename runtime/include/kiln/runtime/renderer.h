@@ -21,18 +21,18 @@
 namespace kiln::runtime {
 
 struct RendererOptions {
-    bool validation = false;     // VK_LAYER_KHRONOS_validation; messages are collected
-    std::string device_filter;   // only devices whose name contains this
+    bool validation = false;    // VK_LAYER_KHRONOS_validation; messages are collected
+    std::string device_filter;  // only devices whose name contains this
     MissingVariantPolicy missing_variant = MissingVariantPolicy::kError;
-    std::string pipeline_cache;  // a file to seed and save the VkPipelineCache; empty: none
+    std::string pipeline_cache;   // a file to seed and save the VkPipelineCache; empty: none
     bool float32_target = false;  // R32G32B32A32_SFLOAT instead of R16G16B16A16_SFLOAT
 };
 
 struct FrameSettings {
     uint32_t width = 960, height = 540;
-    int camera = -1;            // scene camera index; -1: the first, or one framing the scene
-    uint32_t pixel_lights = 4;  // at most this many additive (ForwardAdd) passes per object
-    float time = 0;             // seconds, for _Time
+    int camera = -1;             // scene camera index; -1: the first, or one framing the scene
+    uint32_t pixel_lights = 4;   // at most this many additive (ForwardAdd) passes per object
+    float time = 0;              // seconds, for _Time
     glm::vec3 background{0.0f};  // linear clear colour
     bool default_light = true;   // light a scene without lights by one directional light
 };

@@ -51,7 +51,7 @@ struct SceneImage {
 struct TextureRef {
     int image = -1;  // -1: none
     int texcoord = 0;
-    float scale = 1;  // normalTexture.scale / occlusionTexture.strength
+    float scale = 1;     // normalTexture.scale / occlusionTexture.strength
     bool repeat = true;  // false: clamp to edge
     bool nearest = false;
 };
@@ -76,9 +76,9 @@ enum class LightType { kDirectional, kPoint, kSpot };
 struct Light {
     std::string name;
     LightType type = LightType::kPoint;
-    glm::vec3 color{1.0f};  // linear
-    float intensity = 1;    // lux (directional) or candela (point, spot)
-    float range = 0;        // 0: unlimited
+    glm::vec3 color{1.0f};                          // linear
+    float intensity = 1;                            // lux (directional) or candela (point, spot)
+    float range = 0;                                // 0: unlimited
     float inner_cone = 0, outer_cone = 0.7853982f;  // radians from the axis
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // world, unit: where the light shines

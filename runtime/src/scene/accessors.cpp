@@ -1,0 +1,113 @@
+#include "scene/accessors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace kiln::runtime {
+
+bool ReadAccessor(const tinygltf::Model& m,
+                  int index,
+                  int want,
+                  std::vector<float>& out,
+                  std::string& why) {
+    if (index < 0 || size_t(index) >= m.accessors.size()) {
+        why = "accessor " + std::to_string(index) + " does not exist";
+        return false;
+    }
+    const tinygltf::Accessor& a = m.accessors[size_t(index)];
+    if (a.sparse.isSparse) {
+        why = "sparse accessors are not supported";
+        return false;
+    }
+    const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+    if (comps <= 0 || csize <= 0 || a.bufferView < 0 ||
+        size_t(a.bufferView) >= m.bufferViews.size()) {
+        why = "accessor " + std::to_string(index) + " has no usable buffer view or type";
+        return false;
+    }
+    const tinygltf::BufferView& view = m.bufferViews[size_t(a.bufferView)];
+    if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size()) {
+        why = "buffer view " + std::to_string(a.bufferView) + " names no buffer";
+        return false;
+    }
+    const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
+    const size_t elem = size_t(comps) * size_t(csize);
+    const size_t stride = view.byteStride ? view.byteStride : elem;
+    const size_t base = view.byteOffset + a.byteOffset;
+    if (a.count > 0 && (base > data.size() || view.byteOffset + view.byteLength > data.size() ||
+                        (a.count - 1) * stride + elem > view.byteLength - a.byteOffset ||
+                        a.byteOffset > view.byteLength)) {
+        why = "accessor " + std::to_string(index) + " reads past its buffer view";
+        return false;
+    }
+    out.assign(a.count * size_t(want), 0.0f);
+    for (size_t i = 0; i < a.count; ++i) {
+        const unsigned char* p = data.data() + base + i * stride;
+        for (int c = 0; c < std::min(comps, want); ++c) {
+            const unsigned char* q = p + size_t(c) * size_t(csize);
+            float v = 0;
+            switch (a.componentType) {
+                case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                    std::memcpy(&v, q, 4);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                    v = a.normalized ? float(*q) / 255.0f : float(*q);
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_BYTE:
+                    v = a.normalized ? std::max(float(int8_t(*q)) / 127.0f, -1.0f)
+                                     : float(int8_t(*q));
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                    uint16_t s;
+                    std::memcpy(&s, q, 2);
+                    v = a.normalized ? float(s) / 65535.0f : float(s);
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                    int16_t s;
+                    std::memcpy(&s, q, 2);
+                    v = a.normalized ? std::max(float(s) / 32767.0f, -1.0f) : float(s);
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+                    uint32_t s;
+                    std::memcpy(&s, q, 4);
+                    v = float(s);
+                    break;
+                }
+                default:
+                    why = "accessor " + std::to_string(index) + " has an unknown component type";
+                    return false;
+            }
+            out[i * size_t(want) + size_t(c)] = std::isfinite(v) ? v : 0.0f;
+        }
+    }
+    return true;
+}
+
+bool ReadIndices(const tinygltf::Model& m,
+                 int index,
+                 std::vector<uint32_t>& out,
+                 std::string& why) {
+    std::vector<float> f;
+    if (!ReadAccessor(m, index, 1, f, why)) {
+        return false;
+    }
+    const auto& a = m.accessors[size_t(index)];
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {  // exact above 2^24
+        const auto& view = m.bufferViews[size_t(a.bufferView)];
+        const auto& data = m.buffers[size_t(view.buffer)].data;
+        const size_t stride = view.byteStride ? view.byteStride : 4;
+        out.resize(a.count);
+        for (size_t i = 0; i < a.count; ++i) {
+            std::memcpy(&out[i], data.data() + view.byteOffset + a.byteOffset + i * stride, 4);
+        }
+        return true;
+    }
+    out.assign(f.begin(), f.end());
+    return true;
+}
+
+}  // namespace kiln::runtime
