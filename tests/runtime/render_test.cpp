@@ -1,6 +1,8 @@
 // The renderer end to end: the glTF samples and the demo scene render headless with zero
 // validation messages, additive passes per light, colour-property decoding, missing variants,
 // damaged packs, and the persisted pipeline cache.
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -177,7 +179,9 @@ TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
               std::vector<std::string>{"_NORMALMAP"});
     EXPECT_NE(choice.warning.find("using the closest, '_NORMALMAP'"), std::string::npos);
 
-    const std::string usage = (fs::temp_directory_path() / "kiln_usage_test.json").string();
+    const std::string usage =
+        (fs::temp_directory_path() / ("kiln_usage_test_" + std::to_string(getpid()) + ".json"))
+            .string();
     ASSERT_FALSE(runtime::WriteUsageFile(usage, {&strict, &lenient}));
     std::ifstream in(usage);
     const nlohmann::json doc = nlohmann::json::parse(in);
@@ -208,7 +212,8 @@ TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
     std::ifstream in(KILN_MATERIALS_PACK, std::ios::binary);
     const std::vector<char> good((std::istreambuf_iterator<char>(in)), {});
     ASSERT_GT(good.size(), 1000u);
-    const fs::path file = fs::temp_directory_path() / "kiln_damaged.kpack";
+    const fs::path file =
+        fs::temp_directory_path() / ("kiln_damaged_" + std::to_string(getpid()) + ".kpack");
     auto try_bytes = [&](const std::vector<char>& bytes) {
         std::ofstream(file, std::ios::binary | std::ios::trunc)
             .write(bytes.data(), std::streamsize(bytes.size()));
@@ -238,7 +243,8 @@ TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
 }
 
 TEST_F(RuntimeTest, PipelineCacheIsPersistedBehindAValidatedHeader) {
-    const fs::path path = fs::temp_directory_path() / "kiln_pipeline_cache_test.bin";
+    const fs::path path =
+        fs::temp_directory_path() / ("kiln_pipeline_cache_" + std::to_string(getpid()) + ".bin");
     fs::remove(path);
     runtime::Scene scene = LoneSphere("lambert.material", 0);
     {

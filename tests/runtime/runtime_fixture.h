@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <dlfcn.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -104,9 +106,24 @@ inline runtime::Scene SphereOnFloor(const std::string& material_file) {
     return scene;
 }
 
+// Keeps the Vulkan driver and layer mapped after the loader closes them, so that LeakSanitizer
+// can name them in stacks (tests/runtime/lsan.supp suppresses Mesa's process-lifetime
+// allocations by module). Harmless outside sanitizer builds; a missing library is ignored.
+inline void PinVulkanLibraries() {
+    static const bool pinned = [] {
+        for (const char* lib :
+             {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so", "libLLVM-15.so.1"}) {
+            dlopen(lib, RTLD_NOW | RTLD_NODELETE);
+        }
+        return true;
+    }();
+    (void)pinned;
+}
+
 class RuntimeTest : public ::testing::Test {
   protected:
     void SetUp() override {
+        PinVulkanLibraries();
         runtime::RendererOptions options;
         options.validation = true;
         options.float32_target = true;
