@@ -133,8 +133,9 @@ TEST(GltfScene, GeneratedTangentFollowsIncreasingU) {
     for (const runtime::MeshVertex& v : p.vertices) {
         EXPECT_NEAR(v.tangent[0], 1.0f, 1e-6f);
         EXPECT_NEAR(v.tangent[1], 0.0f, 1e-6f);
-        // bitangent = w * cross(n, t) = w * (+y) must follow increasing v, i.e. -y: w = -1.
-        EXPECT_EQ(v.tangent[3], -1.0f);
+        // bitangent = w * cross(n, t) = w * (+y) must point up the image (the normal map's
+        // green axis), i.e. towards decreasing v, which is +y here: w = +1.
+        EXPECT_EQ(v.tangent[3], 1.0f);
     }
 }
 

@@ -15,7 +15,8 @@ namespace kiln::runtime {
 
 // Lengyel, "Computing Tangent Space Basis Vectors for an Arbitrary Mesh" (2001): per triangle
 // T = (dP1 dv2 - dP2 dv1) / det, B = (dP2 du1 - dP1 du2) / det, summed per vertex, then
-// orthogonalized against N; w = sign(dot(cross(N, T), B)). Degenerate UVs fall back to any
+// orthogonalized against N; w = -sign(dot(cross(N, T), B)) because glTF's v axis points down
+// the image (MikkTSpace as glTF viewers run it, on 1 - v). Degenerate UVs fall back to any
 // unit vector perpendicular to N.
 void GenerateTangents(Primitive& p) {
     std::vector<glm::vec3> tan(p.vertices.size(), glm::vec3(0)),
@@ -56,7 +57,9 @@ void GenerateTangents(Primitive& p) {
             }
         }
         t /= len;
-        const float w = glm::dot(glm::cross(n, t), bit[k]) < 0.0f ? -1.0f : 1.0f;
+        // glTF's v runs down the image while a normal map's +y (green) points up it, so the
+        // bitangent must point towards decreasing v: the opposite of the accumulated dP/dv.
+        const float w = glm::dot(glm::cross(n, t), bit[k]) > 0.0f ? -1.0f : 1.0f;
         v.tangent[0] = t.x;
         v.tangent[1] = t.y;
         v.tangent[2] = t.z;
