@@ -43,12 +43,7 @@ int main(int argc, char** argv) {
     if (!check(renderer.Render(scene, frame, color, image, stats))) {
         return 1;
     }
-    color.ApplyDisplay(image.rgba);
-    std::vector<uint8_t> pixels = ColorPipeline::Quantize(image.rgba);
-    for (size_t i = 3; i < pixels.size(); i += 4) {
-        pixels[i] = 255;
-    }
-    if (!check(WritePng(argv[3], image.width, image.height, pixels))) {
+    if (!check(WriteDisplayPng(argv[3], image, color))) {
         return 1;
     }
     std::printf("%s: %u objects, %u base + %u additive passes on %s\n", argv[3], stats.objects,

@@ -125,7 +125,7 @@ class ReferenceImageTest : public RuntimeTest {
         settings.pixel_lights = pixel_lights;
         runtime::LinearImage gpu = Render(scene, settings);
         ASSERT_EQ(gpu.rgba.size(), probe.covered.size() * 4);
-        const dvec3 eye(0.5, 2.8, 5.0);
+        const dvec3 eye(scene.cameras.at(0).world[3]);
         std::vector<float> ref(gpu.rgba.size(), 0.0f);
         size_t covered = 0;
         for (size_t i = 0; i < probe.covered.size(); ++i) {

@@ -212,15 +212,18 @@ TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
     std::ifstream in(KILN_MATERIALS_PACK, std::ios::binary);
     const std::vector<char> good((std::istreambuf_iterator<char>(in)), {});
     ASSERT_GT(good.size(), 1000u);
-    const fs::path file =
-        fs::temp_directory_path() / ("kiln_damaged_" + std::to_string(getpid()) + ".kpack");
+    // One renderer for every attempt (a rejected pack is never added). Each attempt writes a new
+    // file, so a pack wrongly accepted and still mapped is never truncated under the mapping.
+    const std::string stem =
+        (fs::temp_directory_path() / ("kiln_damaged_" + std::to_string(getpid()) + "_")).string();
+    int attempt = 0;
     auto try_bytes = [&](const std::vector<char>& bytes) {
+        const std::string file = stem + std::to_string(attempt++) + ".kpack";
         std::ofstream(file, std::ios::binary | std::ios::trunc)
             .write(bytes.data(), std::streamsize(bytes.size()));
-        runtime::Renderer r;
-        runtime::RendererOptions options;
-        EXPECT_FALSE(runtime::Renderer::Create(options, r));
-        return r.AddPack(file.string());
+        auto error = renderer_.AddPack(file);
+        fs::remove(file);  // unlinking keeps any mapping valid
+        return error;
     };
     size_t rejected = 0, tried = 0;
     for (size_t len = 0; len < good.size(); len += len < 128 ? 1 : 4099) {  // truncations
@@ -239,7 +242,6 @@ TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
     auto e = try_bytes(foreign);
     ASSERT_TRUE(e);
     EXPECT_NE(e->message.find("not-a-pack"), std::string::npos) << e->message;
-    fs::remove(file);
 }
 
 TEST_F(RuntimeTest, PipelineCacheIsPersistedBehindAValidatedHeader) {

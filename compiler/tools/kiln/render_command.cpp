@@ -133,13 +133,7 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
                 return fail(e->message);
             }
         }
-        std::vector<float> display = image.rgba;
-        color.ApplyDisplay(display);
-        std::vector<uint8_t> rgba8 = runtime::ColorPipeline::Quantize(display);
-        for (size_t i = 3; i < rgba8.size(); i += 4) {
-            rgba8[i] = 255;  // an opaque picture: coverage is not transparency
-        }
-        if (auto e = runtime::WritePng(a->output, image.width, image.height, rgba8)) {
+        if (auto e = runtime::WriteDisplayPng(a->output, image, color)) {
             return fail(e->message);
         }
         std::printf(

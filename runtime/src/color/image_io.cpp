@@ -51,6 +51,18 @@ std::optional<Error> WritePng(const std::string& path,
     return WriteFileAtomically(path, png);
 }
 
+std::optional<Error> WriteDisplayPng(const std::string& path,
+                                     const LinearImage& image,
+                                     const ColorPipeline& color) {
+    std::vector<float> display = image.rgba;
+    color.ApplyDisplay(display);
+    std::vector<uint8_t> rgba8 = ColorPipeline::Quantize(display);
+    for (size_t i = 3; i < rgba8.size(); i += 4) {
+        rgba8[i] = 255;
+    }
+    return WritePng(path, image.width, image.height, rgba8);
+}
+
 std::optional<Error> WriteExr(const std::string& path, const LinearImage& image) {
     const uint32_t w = image.width, h = image.height;
     if (w == 0 || h == 0 || image.rgba.size() != size_t{w} * h * 4) {

@@ -83,10 +83,10 @@ struct Planner {
         const pack::Pack& pack = lp.pack;
         std::vector<std::string> keywords = m.keywords;
         if (additive) {
-            keywords.emplace_back(!light                                   ? "DIRECTIONAL"
-                                  : light->type == LightType::kDirectional ? "DIRECTIONAL"
-                                  : light->type == LightType::kPoint       ? "POINT"
-                                                                           : "SPOT");
+            const LightType type = light ? light->type : LightType::kDirectional;
+            keywords.emplace_back(type == LightType::kPoint  ? "POINT"
+                                  : type == LightType::kSpot ? "SPOT"
+                                                             : "DIRECTIONAL");
         } else {
             keywords.emplace_back("DIRECTIONAL");
             if (!vertex.empty()) {
@@ -130,14 +130,7 @@ struct Planner {
         if (auto e =
                 s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created)) {
             return Error{"shader '" + std::string(pack.String(pack.Shader(m.shader).name)) +
-                         "' pass '" + PassLabel(pack, pass) + "' variant '" +
-                         [&] {
-                             std::string k;
-                             for (const auto& w : chosen) {
-                                 k += (k.empty() ? "" : " ") + w;
-                             }
-                             return k;
-                         }() +
+                         "' pass '" + PassLabel(pack, pass) + "' variant '" + JoinKeywords(chosen) +
                          "': " + e->message};
         }
         d.vertices = &vb;
@@ -206,7 +199,7 @@ struct Planner {
                 const auto block =
                     pack.Get<pack::BlockRec>(pack::SectionTag::kBlocks, mod.first_block + b);
                 if (pack::BlockKind(block.kind) == pack::BlockKind::kPushConstant) {
-                    d.push.assign(block.size, 0);
+                    d.push.assign(d.pipeline->layout.push_constant_size, 0);
                     render::WriteBlock(pack, block, lookup, d.push.data(), d.push.size());
                     continue;
                 }

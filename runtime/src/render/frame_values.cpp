@@ -179,25 +179,31 @@ ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
                        uint32_t pixel_lights) {
     ObjectLights out;
     out.main = main;
-    std::vector<std::pair<float, const runtime::Light*>> ranked;
+    struct Ranked {
+        bool directional;
+        float importance;
+        const runtime::Light* light;
+    };
+    std::vector<Ranked> ranked;
     for (const runtime::Light& l : lights) {
         if (&l == main) {
             continue;
         }
         const float power = l.intensity * Luminance(l.color);
         if (l.type == runtime::LightType::kDirectional) {
-            ranked.emplace_back(std::numeric_limits<float>::max() / 2 + power, &l);
+            ranked.push_back({true, power, &l});
             continue;
         }
         const float d = std::max(glm::length(l.position - center) - radius, 0.0f);
         if (l.range > 0 && d >= l.range) {
             continue;
         }
-        ranked.emplace_back(power / std::max(d * d, 1e-4f), &l);
+        ranked.push_back({false, power / std::max(d * d, 1e-4f), &l});
     }
-    std::stable_sort(ranked.begin(), ranked.end(),
-                     [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (const auto& [importance, light] : ranked) {
+    std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
+        return a.directional != b.directional ? a.directional : a.importance > b.importance;
+    });
+    for (const auto& [directional, importance, light] : ranked) {
         if (out.pixel.size() < pixel_lights) {
             out.pixel.push_back(light);
         } else if (light->type == runtime::LightType::kPoint && out.vertex.size() < 4) {

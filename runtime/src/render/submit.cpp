@@ -192,11 +192,9 @@ std::optional<Error> RecordFrame(Renderer::State& s,
                                     0, uint32_t(sets[i].size()), sets[i].data(), 0, nullptr);
         }
         const vk::VariantLayout& layout = d.pipeline->layout;
-        if (layout.push_constant_size > 0) {
-            std::vector<uint8_t> push = d.push;
-            push.resize(layout.push_constant_size, 0);
+        if (layout.push_constant_size > 0 && d.push.size() == layout.push_constant_size) {
             vkCmdPushConstants(cmd, layout.layout, layout.push_constant_stages, 0,
-                               layout.push_constant_size, push.data());
+                               layout.push_constant_size, d.push.data());
         }
         const VkDeviceSize zero = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &d.vertices->buffer, &zero);

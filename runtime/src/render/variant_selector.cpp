@@ -14,17 +14,6 @@ namespace {
 
 using pack::SectionTag;
 
-std::string JoinKeywords(const std::vector<std::string>& keywords) {
-    if (keywords.empty()) {
-        return "(no keywords)";
-    }
-    std::string out;
-    for (const std::string& k : keywords) {
-        out += (out.empty() ? "" : " ") + k;
-    }
-    return out;
-}
-
 // Keyword sets whose chosen keyword differs between two keys of a pass.
 uint32_t Distance(const pack::Pack& pack, uint32_t pass, pack::VariantKey a, pack::VariantKey b) {
     const pack::PassRec p = pack.Pass(pass);
@@ -37,6 +26,17 @@ uint32_t Distance(const pack::Pack& pack, uint32_t pass, pack::VariantKey a, pac
 }
 
 }  // namespace
+
+std::string JoinKeywords(const std::vector<std::string>& keywords) {
+    if (keywords.empty()) {
+        return "(no keywords)";
+    }
+    std::string out;
+    for (const std::string& k : keywords) {
+        out += (out.empty() ? "" : " ") + k;
+    }
+    return out;
+}
 
 std::string PassLabel(const pack::Pack& pack, uint32_t pass) {
     const pack::PassRec p = pack.Pass(pass);

@@ -134,8 +134,7 @@ std::optional<Error> ReadPrimitive(const tinygltf::Model& m,
             std::memcpy(v.normal, &nn[0], 12);
         }
     }
-    p.material >= 0 && size_t(p.material) < m.materials.size() ? out.material = p.material
-                                                               : out.material = -1;
+    out.material = p.material >= 0 && size_t(p.material) < m.materials.size() ? p.material : -1;
     if (!out.has_tangents && has_uv0) {
         GenerateTangents(out);
     }

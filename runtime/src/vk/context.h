@@ -47,16 +47,13 @@ void DestroyContext(Context& context);
 // Messages reported so far (copied under the log's lock).
 std::vector<std::string> ValidationMessages(const Context& context);
 
-// Records and submits a one-off command buffer on the queue and waits for it.
-template <class Record>
-std::optional<runtime::Error> SubmitOnce(const Context& context, Record&& record);
-
 const char* ResultName(VkResult result);
 runtime::Error VkError(const char* what, VkResult result);
 
 std::optional<runtime::Error> SubmitAndWait(const Context& context, VkCommandBuffer cmd);
 VkCommandBuffer BeginOneShot(const Context& context);
 
+// Records and submits a one-off command buffer on the queue and waits for it.
 template <class Record>
 std::optional<runtime::Error> SubmitOnce(const Context& context, Record&& record) {
     VkCommandBuffer cmd = BeginOneShot(context);

@@ -64,6 +64,11 @@ std::optional<Error> WritePng(const std::string& path,
                               uint32_t width,
                               uint32_t height,
                               const std::vector<uint8_t>& rgba8);
+// A rendered linear image through `color`'s display transform, quantized to 8 bits and written
+// as an opaque PNG (coverage is not transparency).
+std::optional<Error> WriteDisplayPng(const std::string& path,
+                                     const LinearImage& image,
+                                     const ColorPipeline& color);
 // Uncompressed 32-bit float RGBA OpenEXR (scanline), written to a temporary file and renamed.
 std::optional<Error> WriteExr(const std::string& path, const LinearImage& image);
 

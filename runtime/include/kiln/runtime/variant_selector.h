@@ -51,6 +51,9 @@ class VariantSelector {
     std::map<UsageKey, Usage> usage_;
 };
 
+// Keywords as messages show them: "A B C", or "(no keywords)".
+std::string JoinKeywords(const std::vector<std::string>& keywords);
+
 // The pass's display name: its Name, else its LightMode tag, else "#index".
 std::string PassLabel(const pack::Pack& pack, uint32_t pass);
 
