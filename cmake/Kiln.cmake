@@ -1,14 +1,17 @@
 # kiln_compile_materials(TARGET <name> OUTPUT <pack> SOURCES <a.shader>...
 #                        [INCLUDE_DIRS <dir>...] [KEYWORDS <kw>...] [OPTIONS <flag>...]
+#                        [MATERIALS <x.material or scene.kiln.json>...]
 #                        [KILN <kiln executable or target>])
 #
 # Compiles .shader files into one variant pack at build time. Kiln writes a depfile of every file
 # it read (the shaders and every #include), so editing an included .cginc rebuilds the pack, and
-# an unchanged build does not run kiln at all. Adds a custom target <name> that builds the pack
+# an unchanged build does not run kiln at all. shader_feature variants are built as Unity builds
+# them: the all-off combination and the combinations the MATERIALS enable (OPTIONS --all-features
+# builds every one). Adds a custom target <name> that builds the pack
 # (ALL unless EXCLUDE_FROM_ALL is given).
 function(kiln_compile_materials)
     cmake_parse_arguments(ARG "EXCLUDE_FROM_ALL" "TARGET;OUTPUT;KILN"
-        "SOURCES;INCLUDE_DIRS;KEYWORDS;OPTIONS" ${ARGN})
+        "SOURCES;INCLUDE_DIRS;KEYWORDS;OPTIONS;MATERIALS" ${ARGN})
     if(NOT ARG_TARGET OR NOT ARG_OUTPUT OR NOT ARG_SOURCES)
         message(FATAL_ERROR "kiln_compile_materials: TARGET, OUTPUT and SOURCES are required")
     endif()
@@ -40,11 +43,18 @@ function(kiln_compile_materials)
         list(JOIN ARG_KEYWORDS "," _kw)
         list(APPEND _args --keywords ${_kw})
     endif()
+    set(_materials "")
+    foreach(_m IN LISTS ARG_MATERIALS)
+        cmake_path(ABSOLUTE_PATH _m BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}
+            NORMALIZE OUTPUT_VARIABLE _abs)
+        list(APPEND _materials ${_abs})
+        list(APPEND _args --materials ${_abs})
+    endforeach()
     list(APPEND _args ${ARG_OPTIONS})
     add_custom_command(
         OUTPUT ${_out}
         COMMAND ${_kiln} compile ${_sources} -o ${_out} -MD -MF ${_out}.d ${_args}
-        DEPENDS ${_sources} ${_kiln_dep}
+        DEPENDS ${_sources} ${_materials} ${_kiln_dep}
         DEPFILE ${_out}.d
         COMMENT "Compiling Kiln materials into ${ARG_OUTPUT}"
         VERBATIM)

@@ -12,8 +12,8 @@ echo
 echo "== kiln variants materials/*.shader"
 build/release/bin/kiln variants materials/*.shader
 echo
-echo "== kiln compile materials/*.shader -o build/release/materials/materials.kpack"
-build/release/bin/kiln compile materials/*.shader -o build/release/materials/materials.kpack \
+echo "== kiln compile materials/*.shader -o build/release/materials/materials.kpack --all-features"
+build/release/bin/kiln compile materials/*.shader -o build/release/materials/materials.kpack --all-features \
     --cache-dir build/release/kiln-cache --stats
 build/release/bin/kiln info build/release/materials/materials.kpack
 echo

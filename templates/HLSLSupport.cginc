@@ -1,8 +1,25 @@
 // HLSLSupport.cginc: the spellings Unity-style shader code expects from its compiler.
-// (fixed/fixedN are defined by Kiln's prelude; see docs/variants.md. half is 32-bit: glslang
-// maps HLSL half to float unless 16-bit types are enabled, which Kiln does not do.)
 #ifndef HLSL_SUPPORT_INCLUDED
 #define HLSL_SUPPORT_INCLUDED
+
+#define UNITY_COMPILER_HLSL
+#define UNITY_COMPILER_HLSLCC
+
+// Desktop Vulkan precision, as Unity's HLSLSupport.cginc defines it: fixed and half are 32-bit.
+#define fixed float
+#define fixed2 float2
+#define fixed3 float3
+#define fixed4 float4
+#define fixed4x4 float4x4
+#define fixed3x3 float3x3
+#define fixed2x2 float2x2
+#define half float
+#define half2 float2
+#define half3 float3
+#define half4 float4
+#define half2x2 float2x2
+#define half3x3 float3x3
+#define half4x4 float4x4
 
 #define CBUFFER_START(name) cbuffer name {
 #define CBUFFER_END };

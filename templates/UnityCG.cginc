@@ -3,6 +3,7 @@
 #define UNITY_CG_INCLUDED
 
 #include "UnityShaderVariables.cginc"
+#include "UnityShaderUtilities.cginc"
 #include "KilnCommon.cginc"
 #include "KilnColor.cginc"
 #include "KilnAttenuation.cginc"
@@ -15,14 +16,6 @@
 #define HALF_MAX KILN_HALF_MAX
 
 // ---- transforms ----
-
-// Object space -> homogeneous clip space: P * V * M * p, with w = 1 forced on the input.
-float4 UnityObjectToClipPos(float3 pos) {
-    return mul(unity_MatrixVP, mul(unity_ObjectToWorld, float4(pos, 1.0)));
-}
-float4 UnityObjectToClipPos(float4 pos) {
-    return UnityObjectToClipPos(pos.xyz);
-}
 
 float4 UnityWorldToClipPos(float3 pos) {
     return mul(unity_MatrixVP, float4(pos, 1.0));

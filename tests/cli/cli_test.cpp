@@ -136,7 +136,14 @@ TEST(Cli, CompileWritesPackAndDepfileListingEveryFileRead) {
     const std::string shader =
         std::filesystem::canonical(DataPath("data/compile/multi_light.shader"));
     const std::string include = std::filesystem::canonical(DataPath("data/compile/light.cginc"));
-    EXPECT_EQ(dep, pack + ": \\\n  " + include + " \\\n  " + shader + "\n");
+    // A CGPROGRAM includes Unity's three implicit files first, here from Kiln's templates.
+    std::string implicit;
+    for (const char* f :
+         {"HLSLSupport.cginc", "UnityShaderUtilities.cginc", "UnityShaderVariables.cginc"}) {
+        implicit +=
+            std::filesystem::canonical(kiln::DefaultTemplatesDir() + "/" + f).string() + " \\\n  ";
+    }
+    EXPECT_EQ(dep, pack + ": \\\n  " + implicit + include + " \\\n  " + shader + "\n");
     EXPECT_TRUE(std::filesystem::exists(pack));
 
     const RunResult info = RunKiln("info " + pack);
@@ -247,6 +254,82 @@ TEST(Cli, ValidateReportsMaterialErrorsAtTheirPositions) {
               std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("note: did you mean '_Color'"), std::string::npos) << r.err;
+}
+
+TEST(Cli, VariantsReportsExpansionErrorsWithoutCrashing) {
+    // Used to segfault: analysis mode merged job diagnostics when no job had been made.
+    const std::string geometry = WriteTemp("geometry.shader", R"(Shader "T/G" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex v
+    #pragma geometry g
+    #pragma fragment f
+    ENDCG
+} } })");
+    RunResult r = RunKiln("variants " + geometry);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("[K4002]"), std::string::npos) << r.err;
+    const std::string many = WriteTemp("many.shader", R"(Shader "T/M" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex v
+    #pragma fragment f
+    #pragma multi_compile A B C
+    #pragma multi_compile _ D
+    float4 v(float4 p : POSITION) : SV_POSITION { return p; }
+    float4 f() : SV_Target { return 1; }
+    ENDCG
+} } })");
+    r = RunKiln("variants --max-variants 4 " + many);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("3 x 2 = 6 variants"), std::string::npos) << r.err;
+    r = RunKiln("variants --json --max-variants 4 " + many);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+}
+
+TEST(Cli, MaterialsChooseTheShaderFeatureCombinations) {
+    const std::string shader = WriteTemp("features.shader", R"(Shader "T/F" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex v
+    #pragma fragment f
+    #pragma shader_feature _A
+    #pragma shader_feature _B
+    #pragma multi_compile X Y
+    float4 v(float4 p : POSITION) : SV_POSITION { return p; }
+    float4 f() : SV_Target { return 1; }
+    ENDCG
+} } })");
+    const std::string material =
+        WriteTemp("features_ab.material",
+                  R"({"kiln_material": 1, "shader": "T/F", "keywords": ["_A", "_B"]})");
+    const std::string pack = testing::TempDir() + "/kiln_cli_features.kpack";
+    auto variants = [&](const std::string& flags) {
+        const RunResult r = RunKiln("compile " + shader + " -o " + pack + " --no-cache " + flags);
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const RunResult info = RunKiln("info --json " + pack);
+        return nlohmann::json::parse(info.out)["shaders"][0]["passes"][0]["variants"].size();
+    };
+    EXPECT_EQ(variants(""), 2u);                         // all-off x {X, Y}
+    EXPECT_EQ(variants("--materials " + material), 4u);  // + _A _B
+    EXPECT_EQ(variants("--keywords _B"), 4u);            // + _B
+    EXPECT_EQ(variants("--all-features"), 8u);
+    const RunResult bad = RunKiln("compile " + shader + " -o " + pack + " --materials " +
+                                  WriteTemp("broken.material", "{\"shader\": 3}"));
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find("broken.material:1:"), std::string::npos) << bad.err;
+}
+
+TEST(Cli, UnityVersionMustBeAVersion) {
+    // Accepted spellings get past the command line (the missing file is an input error).
+    for (const char* v : {"2022.3", "2019.4.40", "202230"}) {
+        EXPECT_EQ(
+            RunKiln(std::string("compile /nonexistent.shader -o x.kpack --unity-version ") + v)
+                .exit_code,
+            1)
+            << v;
+    }
+    EXPECT_EQ(RunKiln("compile /nonexistent.shader -o x.kpack --unity-version 2022.").exit_code, 2);
+    const RunResult r = RunKiln("compile x.shader -o x.kpack --unity-version latest");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("2022.3"), std::string::npos) << r.err;
 }
 
 }  // namespace

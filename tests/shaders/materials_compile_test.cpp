@@ -37,9 +37,11 @@ TEST(Materials, TheTenShippedShadersArePresent) {
 }
 
 TEST(Materials, EveryShippedShaderCompilesInEveryVariantWithoutWarnings) {
+    CompileOptions every_feature;
+    every_feature.all_features = true;
     for (const std::string& file : ShippedShaders()) {
         SCOPED_TRACE(file);
-        CompileRun run = Compile({file});
+        CompileRun run = Compile({file}, every_feature);
         ASSERT_TRUE(run.out.ok) << Brief(run.diags);
         EXPECT_EQ(Brief(run.diags), "");
         EXPECT_GT(run.out.stats.variants, 0u);
@@ -57,7 +59,9 @@ uint64_t VariantsOf(const CompileRun& run, const std::string& light_mode) {
 
 TEST(Materials, StandardMetallicFeaturesAreShaderFeaturesThatStripAway) {
     const std::string file = DataPath("../materials/StandardMetallic.shader");
-    CompileRun all = Compile({file});
+    CompileOptions every_feature;
+    every_feature.all_features = true;
+    CompileRun all = Compile({file}, every_feature);
     ASSERT_TRUE(all.out.ok) << Brief(all.diags);
     // Base: 2^5 features. Add: DIRECTIONAL/POINT/SPOT x _NORMALMAP x _METALLICGLOSSMAP x
     // _ALPHATEST_ON.
@@ -70,6 +74,20 @@ TEST(Materials, StandardMetallicFeaturesAreShaderFeaturesThatStripAway) {
     ASSERT_TRUE(some.out.ok) << Brief(some.diags);
     EXPECT_EQ(VariantsOf(some, "ForwardBase"), 2u);
     EXPECT_EQ(VariantsOf(some, "ForwardAdd"), 6u);
+
+    // As in Unity, without materials only the all-off shader_feature combination is built; a
+    // material enabling two features adds exactly that combination.
+    CompileRun none = Compile({file});
+    ASSERT_TRUE(none.out.ok) << Brief(none.diags);
+    EXPECT_EQ(VariantsOf(none, "ForwardBase"), 1u);
+    EXPECT_EQ(VariantsOf(none, "ForwardAdd"), 3u);
+    CompileOptions material;
+    material.material_keywords["Kiln/StandardMetallic"] = {{"_NORMALMAP", "_EMISSION"}};
+    material.material_keywords["Some/OtherShader"] = {{"_METALLICGLOSSMAP"}};
+    CompileRun one = Compile({file}, material);
+    ASSERT_TRUE(one.out.ok) << Brief(one.diags);
+    EXPECT_EQ(VariantsOf(one, "ForwardBase"), 2u);
+    EXPECT_EQ(VariantsOf(one, "ForwardAdd"), 6u);  // _EMISSION is not in the add pass
 }
 
 TEST(Materials, MultiLightHasVertexLightsInTheBaseAndThreeLightTypesInTheAddPass) {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -22,15 +23,27 @@ namespace kiln {
 
 enum class OptimizationLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
 
+// Unity 2022.3: the UNITY_VERSION Kiln's compile environment reproduces by default
+// (docs/unity-compat.md).
+inline constexpr int kDefaultUnityVersion = 202230;
+
 struct CompileOptions {
     std::vector<std::string> include_dirs;                     // -I, searched in order
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
+    std::vector<std::string> undefines;  // -U NAME: predefined macros left undefined
+    // --include FILE: included into every program after Unity's implicit includes.
+    std::vector<std::string> forced_includes;
+    int unity_version = kDefaultUnityVersion;  // UNITY_VERSION (--unity-version 2022.3)
     std::string templates_dir;  // the built-in include library; empty: DefaultTemplatesDir()
     OptimizationLevel opt_level = OptimizationLevel::kPerformance;
     bool debug_info = false;  // -g: keep names and debug info in the SPIR-V
     unsigned jobs = 0;        // 0: all cores
-    // shader_feature keywords asked for; unset: every shader_feature variant is built.
+    // shader_feature variants, as in Unity: the all-off combination plus one combination per
+    // material instance of the shader (keyed by shader name), plus `keywords` (--keywords) for
+    // every shader; or, with all_features (--all-features), every combination.
+    std::map<std::string, std::vector<std::set<std::string>>> material_keywords;
     std::optional<std::set<std::string>> keywords;
+    bool all_features = false;
     uint64_t max_variants = 4096;  // per pass
     std::string cache_dir;         // empty: no cache
     // Called from the driver thread as work completes (phase, done, total).

@@ -17,6 +17,7 @@
 #include "hlsl/assemble.h"
 #include "hlsl/includer.h"
 #include "hlsl/reduce.h"
+#include "hlsl/rewrite.h"
 #include "kiln/shaderlab/parse.h"
 #include "spirv/optimize.h"
 
@@ -85,12 +86,19 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
 
 // Phase 2: pragmas and variant expansion; one StageTask per (variant, stage).
 void ExpandPasses(CompileState& st) {
-    variants::VariantRequest request;
-    request.shader_features = st.options.keywords;
-    request.max_variants = st.options.max_variants;
     for (size_t s = 0; s < st.shaders.size(); ++s) {
         const driver::ShaderUnit& unit = st.shaders[s];
         const std::string& path = unit.file->path();
+        variants::VariantRequest request;
+        request.all_features = st.options.all_features;
+        request.max_variants = st.options.max_variants;
+        if (st.options.keywords)
+            request.feature_combinations.push_back(*st.options.keywords);
+        if (auto it = st.options.material_keywords.find(unit.ast ? unit.ast->name : "");
+            unit.ast && it != st.options.material_keywords.end()) {
+            request.feature_combinations.insert(request.feature_combinations.end(),
+                                                it->second.begin(), it->second.end());
+        }
         for (size_t f = 0; f < unit.passes.size(); ++f) {
             const driver::FlatPass& fp = unit.passes[f];
             driver::PassUnit pu;
@@ -119,7 +127,11 @@ void ExpandPasses(CompileState& st) {
                 in.blocks = fp.blocks;
                 in.stage = stage;
                 in.shader_target = pu.pragmas.shader_target;
+                in.unity_version = st.options.unity_version;
                 in.defines = st.options.defines;
+                in.undefines = st.options.undefines;
+                in.forced_includes = st.options.forced_includes;
+                in.light_mode = driver::TagValue(fp, "LightMode");
                 const uint32_t skip_flag = stage == pack::Stage::kVertex
                                                ? pack::kKeywordSetFragmentOnly
                                                : pack::kKeywordSetVertexOnly;
@@ -129,6 +141,13 @@ void ExpandPasses(CompileState& st) {
                     const std::string& kw = set.keywords[key.Get(layout.shift, layout.bits)];
                     if (!kw.empty() && !(set.flags & skip_flag))
                         in.keywords.push_back(kw);
+                }
+                // Instancing needs shader model 3.5: Unity compiles the INSTANCING_ON variants of
+                // multi_compile_instancing for at least that target (UnityInstancing.cginc tests
+                // SHADER_TARGET >= 35).
+                if (std::find(in.keywords.begin(), in.keywords.end(), "INSTANCING_ON") !=
+                    in.keywords.end()) {
+                    in.shader_target = std::max(in.shader_target, 35);
                 }
                 driver::StageTask task;
                 task.pass = p;
@@ -159,8 +178,12 @@ void PreprocessAndDedup(CompileState& st) {
             frontend::StageOutput out = frontend::Preprocess(t.stage, t.source, main, includer);
             t.preprocess_ok = out.ok;
             t.preprocess_log = std::move(out.info_log);
-            if (out.ok)
-                t.reduced = hlsl::ReduceToEntryPoint(out.text, EntryOf(st, t));
+            if (!out.ok)
+                return;
+            hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(out.text);
+            t.reduced = hlsl::ReduceToEntryPoint(rewritten.text, EntryOf(st, t));
+            if (rewritten.changed())
+                t.rewritten = std::move(rewritten.text);
         },
         [&](size_t done) { Progress(st.options, "preprocessing", done, st.tasks.size()); });
 
@@ -222,10 +245,12 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
                                                           includer, st.options.debug_info);
             if (!out.ok) {
                 // Positions in the reduced text are lines of the original files but not their
-                // columns: compile the assembled source once more for exact diagnostics.
+                // columns: compile the assembled source once more for exact diagnostics (or,
+                // when a rewrite was needed, the rewritten text, whose lines are right).
                 ++compiles;
-                out = frontend::Compile(job.stage, task.source, main, job.entry, includer,
-                                        st.options.debug_info);
+                out = frontend::Compile(job.stage,
+                                        task.rewritten.empty() ? task.source : task.rewritten, main,
+                                        job.entry, includer, st.options.debug_info);
                 AppendLog(st, out.info_log, job.diags);
                 if (out.ok || job.diags.empty()) {
                     job.diags.push_back({Severity::kInternal,
@@ -302,10 +327,14 @@ CompileOutput Run(const std::vector<std::string>& paths,
     LoadShaders(st, paths);
     if (!diags.has_errors())
         ExpandPasses(st);
-    if (!diags.has_errors())
+    bool preprocessed = false;
+    if (!diags.has_errors()) {
         PreprocessAndDedup(st);
+        preprocessed = true;
+    }
     if (!build_pack) {
-        driver::ReportJobDiagnostics(st);
+        if (preprocessed)
+            driver::ReportJobDiagnostics(st);
     } else if (!diags.has_errors()) {
         CompileJobs(st, out.stats);
         driver::ReportJobDiagnostics(st);

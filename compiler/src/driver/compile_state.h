@@ -38,8 +38,9 @@ struct StageTask {
     size_t pass = 0;
     pack::VariantKey key;
     pack::Stage stage = pack::Stage::kVertex;
-    std::string source;   // assembled
-    std::string reduced;  // preprocessed and reduced to the entry point
+    std::string source;     // assembled
+    std::string reduced;    // preprocessed, rewritten (hlsl/rewrite.h), reduced to the entry point
+    std::string rewritten;  // preprocessed and rewritten, kept only when a rewrite applied
     bool preprocess_ok = false;
     std::string preprocess_log;
     size_t job = 0;

@@ -164,6 +164,9 @@ void CheckInterfaces(CompileState& st) {
         std::map<std::string, const spirv::BlockMember*> members;
         std::map<std::string, const spirv::Resource*> resources;
         bool any_pass = false;
+        // A property only the unbuilt shader_feature combinations use is not unused: K5005 needs
+        // every combination (--all-features, or a shader without shader_feature sets).
+        bool every_feature_built = st.options.all_features;
         for (size_t p = 0; p < st.passes.size(); ++p) {
             if (st.passes[p].shader != s)
                 continue;
@@ -181,6 +184,16 @@ void CheckInterfaces(CompileState& st) {
         }
         if (!any_pass)
             continue;
+        if (!every_feature_built) {
+            every_feature_built = true;
+            for (const PassUnit& pu : st.passes) {
+                for (const auto& set : pu.pragmas.sets) {
+                    every_feature_built =
+                        every_feature_built &&
+                        (pu.shader != s || set.kind != pack::KeywordSetKind::kShaderFeature);
+                }
+            }
+        }
         std::set<std::string> declared;
         const std::string& file = unit.file->path();
         for (const shaderlab::Property& prop : unit.ast->properties) {
@@ -194,6 +207,8 @@ void CheckInterfaces(CompileState& st) {
             auto m = members.find(prop.name);
             auto r = resources.find(prop.name);
             if (m == members.end() && r == resources.end()) {
+                if (!every_feature_built)
+                    continue;
                 st.diags.Warning(
                     DiagCode::kPropertyUnused, file, prop.name_range,
                     "property '" + prop.name + "' has no shader variable of that name in any pass");

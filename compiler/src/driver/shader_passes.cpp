@@ -147,7 +147,7 @@ struct Walker {
             FlatPass fp;
             fp.pass = &p;
             fp.subshader = subshader_index;
-            fp.lod = ss_lod;
+            fp.lod = p.lod.value_or(ss_lod);
             fp.label = p.name.empty() ? "#" + std::to_string(index) + " of SubShader " +
                                             std::to_string(subshader_index + 1)
                                       : "\"" + p.name + "\"";

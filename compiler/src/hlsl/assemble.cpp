@@ -1,6 +1,22 @@
 #include "hlsl/assemble.h"
 
+#include <algorithm>
+#include <cctype>
+
 namespace kiln::hlsl {
+namespace {
+
+using Macros = std::vector<std::pair<std::string, std::string>>;
+
+bool IsCgProgram(const AssembleInput& in) {
+    return !in.blocks.empty() && in.blocks.back()->kind == shaderlab::ProgramKind::kCgProgram;
+}
+
+void Define(std::string& s, const std::string& name, const std::string& value) {
+    s += "#define " + name + (value.empty() ? std::string() : " " + value) + "\n";
+}
+
+}  // namespace
 
 bool IsLineSafeName(const std::string& path) {
     for (char c : path) {
@@ -10,25 +26,87 @@ bool IsLineSafeName(const std::string& path) {
     return !path.empty();
 }
 
+std::string PassMacro(const std::string& light_mode) {
+    // Unity's built-in pipeline defines these for the passes of those LightModes (its include
+    // files rely on them: UnityStandardMeta.cginc on UNITY_PASS_META, UnityCG.cginc on
+    // UNITY_PASS_SHADOWCASTER and UNITY_PASS_FORWARDADD).
+    static const char* const kModes[][2] = {
+        {"ForwardBase", "UNITY_PASS_FORWARDBASE"},
+        {"ForwardAdd", "UNITY_PASS_FORWARDADD"},
+        {"Deferred", "UNITY_PASS_DEFERRED"},
+        {"ShadowCaster", "UNITY_PASS_SHADOWCASTER"},
+        {"Meta", "UNITY_PASS_META"},
+        {"PrepassBase", "UNITY_PASS_PREPASSBASE"},
+        {"PrepassFinal", "UNITY_PASS_PREPASSFINAL"},
+        {"MotionVectors", "UNITY_PASS_MOTIONVECTORS"},
+    };
+    for (const auto& [mode, macro] : kModes) {
+        if (light_mode.size() == std::char_traits<char>::length(mode) &&
+            std::equal(light_mode.begin(), light_mode.end(), mode, [](char a, char b) {
+                return std::tolower(static_cast<unsigned char>(a)) ==
+                       std::tolower(static_cast<unsigned char>(b));
+            })) {
+            return macro;
+        }
+    }
+    return "";
+}
+
+Macros PredefinedMacros(const AssembleInput& in) {
+    Macros m = {
+        // What Unity's shader compiler defines for the Vulkan target.
+        {"SHADER_API_VULKAN", "1"},
+        {"SHADER_API_DESKTOP", "1"},
+        {"UNITY_VERSION", std::to_string(in.unity_version)},
+        {"SHADER_TARGET", std::to_string(in.shader_target)},
+        {in.stage == pack::Stage::kVertex ? "SHADER_STAGE_VERTEX" : "SHADER_STAGE_FRAGMENT", "1"},
+        // Unity's graphics settings for desktop (tier 3) defaults, which its compiler passes as
+        // macros: Standard shader quality High, reflection-probe box projection and blending,
+        // detail normal maps, deferred reflections, light probe proxy volumes, RGBM lightmaps.
+        {"UNITY_PBS_USE_BRDF1", "1"},
+        {"UNITY_SPECCUBE_BOX_PROJECTION", "1"},
+        {"UNITY_SPECCUBE_BLENDING", "1"},
+        {"UNITY_ENABLE_DETAIL_NORMALMAP", "1"},
+        {"UNITY_ENABLE_REFLECTION_BUFFERS", "1"},
+        {"UNITY_LIGHT_PROBE_PROXY_VOLUME", "1"},
+        {"UNITY_LIGHTMAP_RGBM_ENCODING", "1"},
+        {"KILN", "1"},
+    };
+    if (const std::string pass = PassMacro(in.light_mode); !pass.empty())
+        m.emplace_back(pass, "1");
+    // Precision-suffixed type names that Unity's HLSLcc back end understands for Vulkan (and that
+    // its HLSLSupport.cginc therefore leaves undefined there); for glslang they are the plain
+    // types (half is 32-bit, see docs/unity-compat.md).
+    for (const char* type :
+         {"sampler1D", "sampler2D", "sampler3D", "samplerCUBE", "Texture2D", "Texture2DArray",
+          "Texture2DMS", "TextureCube", "TextureCubeArray", "Texture3D"}) {
+        m.emplace_back(std::string(type) + "_half", type);
+        m.emplace_back(std::string(type) + "_float", type);
+    }
+    return m;
+}
+
 std::string Prelude(const AssembleInput& in) {
     std::string s = "#line 1 \"" + std::string(kPreludeName) + "\"\n";
-    s += "#define SHADER_API_VULKAN 1\n";
-    s += "#define SHADER_API_DESKTOP 1\n";
-    s += "#define UNITY_COMPILER_HLSL 1\n";
-    s += "#define KILN 1\n";
-    s += "#define UNITY_VERSION " + std::to_string(kUnityVersion) + "\n";
-    s += "#define SHADER_TARGET " + std::to_string(in.shader_target) + "\n";
-    s += in.stage == pack::Stage::kVertex ? "#define SHADER_STAGE_VERTEX 1\n"
-                                          : "#define SHADER_STAGE_FRAGMENT 1\n";
-    // Cg's low-precision spellings: fixed is half, and half is 32-bit float on desktop Vulkan.
-    for (const char* suffix : {"", "2", "3", "4", "2x2", "3x3", "4x4", "3x4", "4x3"}) {
-        s += "#define fixed" + std::string(suffix) + " half" + suffix + "\n";
+    auto undefined = [&](const std::string& name) {
+        return std::find(in.undefines.begin(), in.undefines.end(), name) != in.undefines.end();
+    };
+    for (const auto& [name, value] : PredefinedMacros(in)) {
+        if (!undefined(name))
+            Define(s, name, value);
     }
     for (const auto& [name, value] : in.defines) {
-        s += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
+        if (!undefined(name))
+            Define(s, name, value.empty() ? "1" : value);
     }
     for (const std::string& kw : in.keywords)
-        s += "#define " + kw + " 1\n";
+        Define(s, kw, "1");
+    if (IsCgProgram(in)) {
+        for (const char* file : kImplicitIncludes)
+            s += "#include \"" + std::string(file) + "\"\n";
+    }
+    for (const std::string& file : in.forced_includes)
+        s += "#include \"" + file + "\"\n";
     return s;
 }
 

@@ -1,8 +1,9 @@
-// Builds the HLSL text glslang compiles for one (variant, stage): the prelude (what shader code
-// expects from a Unity-style compiler), then the CGINCLUDE/HLSLINCLUDE blocks, then the program.
-// Every block is preceded by a `#line` directive and indented to its column, so each glslang
-// message names the .shader (or include) file's own line and column. This is the only place
-// that writes `#line`.
+// Builds the HLSL text glslang compiles for one (variant, stage): the prelude (Unity's compile
+// environment for the Vulkan target: the macros its compiler predefines and, for CGPROGRAM, the
+// files it includes implicitly; docs/unity-compat.md), then the CGINCLUDE/HLSLINCLUDE blocks,
+// then the program. Every block is preceded by a `#line` directive and indented to its column, so
+// each glslang message names the .shader (or include) file's own line and column. This is the
+// only place that writes `#line`.
 #ifndef KILN_HLSL_ASSEMBLE_H_
 #define KILN_HLSL_ASSEMBLE_H_
 
@@ -16,21 +17,34 @@
 namespace kiln::hlsl {
 
 inline constexpr const char* kPreludeName = "<kiln prelude>";
-inline constexpr int kUnityVersion = 201940;  // the Unity API level the templates follow
+
+// Files Unity's compiler includes in front of every CGPROGRAM (not HLSLPROGRAM), in order.
+inline constexpr const char* kImplicitIncludes[] = {
+    "HLSLSupport.cginc", "UnityShaderVariables.cginc", "UnityShaderUtilities.cginc"};
 
 struct AssembleInput {
     std::string file_name;                               // as given in #line (see LineName)
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program
     pack::Stage stage = pack::Stage::kVertex;
     int shader_target = 25;
+    int unity_version = 202230;  // UNITY_VERSION
+    std::string light_mode;      // the pass's LightMode tag: UNITY_PASS_FORWARDBASE and so on
     std::vector<std::string> keywords;                         // enabled in this variant and stage
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME=VALUE
+    std::vector<std::string> undefines;                        // -U NAME
+    std::vector<std::string> forced_includes;                  // --include FILE
 };
 
 std::string AssembleSource(const AssembleInput& in);
 
-// The prelude alone (documented in docs/variants.md).
+// The prelude alone (documented in docs/unity-compat.md).
 std::string Prelude(const AssembleInput& in);
+
+// UNITY_PASS_<NAME> for a LightMode tag value (compared without case), or "" for none.
+std::string PassMacro(const std::string& light_mode);
+
+// The macros the prelude defines before -D and keywords: (name, value), in order.
+std::vector<std::pair<std::string, std::string>> PredefinedMacros(const AssembleInput& in);
 
 // A file name safe inside `#line N "name"`; false when the path has characters that cannot be.
 bool IsLineSafeName(const std::string& path);

@@ -1,6 +1,7 @@
 #include "hlsl/includer.h"
 
 #include <filesystem>
+#include <string_view>
 
 namespace kiln::hlsl {
 namespace fs = std::filesystem;
@@ -50,7 +51,12 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
     if (!file)
         return nullptr;
     held_.push_back(file);
-    return new IncludeResult(path, file->text().data(), file->text().size(), nullptr);
+    // glslang's preprocessor does not skip a UTF-8 byte-order mark: serve the text after it.
+    std::string_view text = file->text();
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") {
+        text.remove_prefix(3);
+    }
+    return new IncludeResult(path, text.data(), text.size(), nullptr);
 }
 
 glslang::TShader::Includer::IncludeResult* Includer::includeLocal(const char* header,

@@ -33,6 +33,7 @@ static_assert(uint32_t(PropertyType::kColor) == uint32_t(pack::PropertyType::kCo
 static_assert(uint32_t(PropertyType::kRange) == uint32_t(pack::PropertyType::kRange));
 static_assert(uint32_t(PropertyType::kTexture2D) == uint32_t(pack::PropertyType::kTexture2D));
 static_assert(uint32_t(PropertyType::kCubeArray) == uint32_t(pack::PropertyType::kCubeArray));
+static_assert(uint32_t(PropertyType::kTextureAny) == uint32_t(pack::PropertyType::kTextureAny));
 
 const char* PropertyTypeName(PropertyType type) {
     return pack::PropertyTypeName(static_cast<pack::PropertyType>(type));

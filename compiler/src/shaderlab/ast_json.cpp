@@ -153,12 +153,16 @@ Json PropertyJson(const Property& p) {
 
 Json PassJson(const PassEntry& entry) {
     if (const Pass* p = std::get_if<Pass>(&entry)) {
-        return {{"kind", "Pass"},
-                {"name", p->name},
-                {"tags", Tags(p->tags)},
-                {"state", State(p->state)},
-                {"programs", Programs(p->programs)},
-                {"range", R(p->range)}};
+        Json j = {{"kind", "Pass"},
+                  {"name", p->name},
+                  {"tags", Tags(p->tags)},
+                  {"state", State(p->state)},
+                  {"programs", Programs(p->programs)},
+                  {"range", R(p->range)}};
+        if (p->lod) {
+            j["lod"] = *p->lod;
+        }
+        return j;
     }
     if (const UsePass* u = std::get_if<UsePass>(&entry)) {
         return {{"kind", "UsePass"}, {"target", u->target}, {"range", R(u->range)}};

@@ -133,6 +133,9 @@ struct Printer {
         }
         const kiln::shaderlab::Pass& p = std::get<kiln::shaderlab::Pass>(entry);
         Line(indent, "Pass" + (p.name.empty() ? "" : " \"" + p.name + "\"") + At(p.range));
+        if (p.lod) {
+            Line(indent + 1, "LOD " + std::to_string(*p.lod));
+        }
         Tags(indent + 1, p.tags);
         State(indent + 1, p.state);
         Programs(indent + 1, p.programs);

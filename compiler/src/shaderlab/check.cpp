@@ -3,6 +3,7 @@
 #include <cstring>
 #include <map>
 
+#include "kiln/pack/names.h"
 #include "kiln/shaderlab/parse.h"
 #include "parser.h"
 
@@ -100,9 +101,23 @@ void State::CheckValue(const StateValue& value) {
         if (shader.properties_incomplete) {
             return;  // the declaration may be the one that failed to parse
         }
-        Diagnostic& d = Error(DiagCode::kUndeclaredProperty, value.range,
-                              "reference to undeclared property '" + value.text + "'");
-        if (shader.properties_range) {
+        // Unity reads an undeclared name from the global shader properties (unity_GUIZTestMode
+        // in its UI shaders): a warning, with the closest declared name in case of a typo.
+        std::vector<std::string> names;
+        for (const auto& [name, prop] : props) {
+            names.push_back(name);
+        }
+        const std::string near = pack::ClosestName(value.text, names);
+        Diagnostic& d =
+            Warning(DiagCode::kUndeclaredProperty, value.range,
+                    "'" + value.text +
+                        "' is not declared in Properties; as in Unity its value is a global "
+                        "property that the material or the runtime must set" +
+                        (near.empty() ? std::string() : "; did you mean '" + near + "'?"));
+        if (!near.empty()) {
+            d.notes.push_back(
+                {file, props.find(near)->second->name_range, "'" + near + "' declared here"});
+        } else if (shader.properties_range) {
             d.notes.push_back({file, *shader.properties_range, "properties are declared here"});
         }
         return;

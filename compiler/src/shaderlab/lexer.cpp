@@ -18,6 +18,8 @@ bool IsSpace(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
 }
 
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
 struct ProgramMarker {
     const char* open;
     const char* close;
@@ -219,6 +221,11 @@ void State::LexProgram(const ProgramMarker& marker, SourceLoc begin) {
 
 std::vector<Token> Lex(const SourceFile& source, DiagnosticList& diags) {
     State s{source, diags, source.text(), 0, 1, 1, {}};
+    // A UTF-8 byte-order mark (many Unity project files start with one) is not part of the text;
+    // columns on the first line still count from the first byte after it.
+    if (s.text.substr(0, 3) == kUtf8Bom) {
+        s.pos = 3;
+    }
     while (true) {
         s.SkipSpaceAndComments();
         if (s.AtEnd()) {

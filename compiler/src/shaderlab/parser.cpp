@@ -58,7 +58,7 @@ const char* HomeOf(std::string_view word) {
         {"Pass", "a SubShader"},
         {"UsePass", "a SubShader"},
         {"GrabPass", "a SubShader"},
-        {"LOD", "a SubShader or Category"},
+        {"LOD", "a SubShader, Pass or Category"},
         {"SubShader", "a Shader or Category"},
         {"Category", "a Shader or Category"},
         {"Properties", "the Shader block"},
@@ -186,7 +186,9 @@ void Parser::ErrorUnexpected(const Token& t, std::string_view context) {
         t.range, "unexpected " + Describe(t) + " " + std::string(context));
 }
 
-void Parser::WarnDuplicate(DiagCode code, SourceRange range, const std::string& what,
+void Parser::WarnDuplicate(DiagCode code,
+                           SourceRange range,
+                           const std::string& what,
                            SourceRange previous) {
     Warning(code, range, "duplicate " + what + "; the last one wins")
         .notes.push_back({source_.path(), previous, "previous one here"});
@@ -441,6 +443,9 @@ bool Parser::ParsePass(Pass& pass) {
     const bool ok = ParseBlock("'Pass'", [&] {
         if (AtWord("Name")) {
             return ParseStringArg(pass.name, "Name");
+        }
+        if (AtWord("LOD")) {
+            return ParseLod(pass.lod);
         }
         bool item_ok = false;
         if (TryCommonCommand(pass.tags, pass.state, pass.programs, item_ok)) {

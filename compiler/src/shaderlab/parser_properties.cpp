@@ -15,11 +15,12 @@ constexpr TypeSpec kTypes[] = {
     {"Integer", PropertyType::kInteger},     {"Range", PropertyType::kRange},
     {"2D", PropertyType::kTexture2D},        {"3D", PropertyType::kTexture3D},
     {"Cube", PropertyType::kCube},           {"2DArray", PropertyType::kTexture2DArray},
-    {"CubeArray", PropertyType::kCubeArray},
+    {"CubeArray", PropertyType::kCubeArray}, {"Any", PropertyType::kTextureAny},
+    {"Rect", PropertyType::kTexture2D},  // legacy spelling of 2D that Unity still accepts
 };
 
 constexpr const char* kTypeList =
-    "Color, Vector, Float, Int, Integer, Range(min, max), 2D, 3D, Cube, 2DArray or CubeArray";
+    "Color, Vector, Float, Int, Integer, Range(min, max), 2D, 3D, Cube, 2DArray, CubeArray or Any";
 
 // Attributes Kiln knows, with their argument counts (-1: no upper bound) and canonical spelling.
 // Unknown attributes are kept as written: they may be custom material property drawers.
@@ -144,6 +145,13 @@ bool Parser::ParseAttribute(std::vector<Attribute>& out) {
         return false;
     }
     attr.name = std::string(name->text);
+    // Dotted names (Unity's virtual texturing: [TextureStack.Stack]).
+    while (Peek().kind == TokenKind::kUnknown && Peek().text == "." &&
+           Peek(1).kind == TokenKind::kIdentifier &&
+           Peek(1).range.begin.offset == Peek().range.end.offset) {
+        Next();
+        attr.name += "." + std::string(Next().text);
+    }
     if (At(TokenKind::kLParen)) {
         const Token& lparen = Next();
         attr.has_parens = true;

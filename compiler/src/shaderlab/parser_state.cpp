@@ -2,6 +2,8 @@
 // BlendOp, ColorMask and Stencil { }. Every value may be a property reference such as [_Cull].
 #include "parser.h"
 
+#include <algorithm>
+
 namespace kiln::shaderlab {
 namespace {
 
@@ -59,6 +61,16 @@ const Words kBlendOps = {"Add",
                          "HSLSaturation",
                          "HSLColor",
                          "HSLLuminosity"};
+// Spellings Unity also accepts, with the canonical word they mean.
+struct Alias {
+    std::string_view alias, canonical;
+};
+const std::vector<Alias> kAliases = {
+    {"True", "On"},     // AlphaToMask True
+    {"False", "Off"},   // AlphaToMask False
+    {"Off", "Always"},  // ZTest Off: no depth comparison
+};
+
 const Words kStencilOps = {"Keep",    "Zero",   "Replace",  "IncrSat",
                            "DecrSat", "Invert", "IncrWrap", "DecrWrap"};
 
@@ -129,6 +141,13 @@ std::optional<StateValue> Parser::ParseEnumValue(std::string_view command, const
             if (EqualsIgnoreCase(t.text, word)) {
                 Next();
                 return StateValue{StateValue::Kind::kLiteral, std::string(word), 0, t.range};
+            }
+        }
+        for (const Alias& a : kAliases) {
+            if (EqualsIgnoreCase(t.text, a.alias) &&
+                std::find(allowed.begin(), allowed.end(), a.canonical) != allowed.end()) {
+                Next();
+                return StateValue{StateValue::Kind::kLiteral, std::string(a.canonical), 0, t.range};
             }
         }
     }

@@ -56,33 +56,61 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
     }
     ex.layout = *layout;
 
-    // Allowed choice indices per set.
-    std::vector<std::vector<uint32_t>> choices;
-    for (const KeywordSet& s : pragmas.sets) {
-        std::vector<uint32_t> allowed;
-        for (uint32_t i = 0; i < s.keywords.size(); ++i) {
-            const bool feature = s.kind == pack::KeywordSetKind::kShaderFeature;
-            // The first choice is what a material that enables none of the set's keywords gets.
-            if (!feature || !request.shader_features || i == 0 ||
-                request.shader_features->count(s.keywords[i])) {
-                allowed.push_back(i);
+    // Choices: every index of a multi_compile set (and of shader_feature sets with
+    // --all-features); shader_feature choices come as whole combinations otherwise.
+    const size_t n = pragmas.sets.size();
+    auto is_feature = [&](size_t s) {
+        return !request.all_features &&
+               pragmas.sets[s].kind == pack::KeywordSetKind::kShaderFeature;
+    };
+    std::vector<std::vector<uint32_t>> choices(n);
+    for (size_t s = 0; s < n; ++s) {
+        if (!is_feature(s)) {
+            for (uint32_t i = 0; i < pragmas.sets[s].keywords.size(); ++i)
+                choices[s].push_back(i);
+        }
+    }
+    // One combination per material: in each shader_feature set, the first keyword the material
+    // enables, else the set's first choice (what a material that enables none of them gets).
+    std::set<std::vector<uint32_t>> combos = {std::vector<uint32_t>(n, 0)};
+    for (const std::set<std::string>& enabled : request.feature_combinations) {
+        std::vector<uint32_t> combo(n, 0);
+        for (size_t s = 0; s < n; ++s) {
+            const auto& kws = pragmas.sets[s].keywords;
+            for (uint32_t i = 0; is_feature(s) && i < kws.size(); ++i) {
+                if (!kws[i].empty() && enabled.count(kws[i])) {
+                    combo[s] = i;
+                    break;
+                }
             }
         }
-        choices.push_back(std::move(allowed));
+        combos.insert(combo);
     }
+    ex.feature_combinations = combos.size();
 
-    uint64_t product = 1;
+    uint64_t product = combos.size();
     bool overflow = false;
     std::string formula;
-    for (const auto& c : choices) {
-        ex.effective_sizes.push_back(c.size());
-        if (product > UINT64_MAX / c.size()) {
+    for (size_t s = 0; s < n; ++s) {
+        std::set<uint32_t> used;
+        if (is_feature(s)) {
+            for (const auto& c : combos)
+                used.insert(c[s]);
+        }
+        const size_t size = is_feature(s) ? used.size() : choices[s].size();
+        ex.effective_sizes.push_back(size);
+        if (is_feature(s) || size <= 1)
+            continue;
+        if (product > UINT64_MAX / size) {
             overflow = true;
         } else {
-            product *= c.size();
+            product *= size;
         }
-        if (c.size() > 1)
-            formula += (formula.empty() ? "" : " x ") + std::to_string(c.size());
+        formula += (formula.empty() ? "" : " x ") + std::to_string(size);
+    }
+    if (combos.size() > 1) {
+        formula += (formula.empty() ? "" : " x ") + std::to_string(combos.size()) +
+                   " shader_feature combinations";
     }
     ex.permutations = overflow ? UINT64_MAX : product;
     if (overflow || product > request.max_variants) {
@@ -92,11 +120,11 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                             (overflow ? std::string("more than 2^64") : std::to_string(product)) +
                             " variants in pass " + pass_label + ", over the limit of " +
                             std::to_string(request.max_variants) + " (--max-variants)");
-        for (const KeywordSet& s : pragmas.sets) {
-            if (s.keywords.size() > 1) {
-                d.notes.push_back({file, s.range,
-                                   std::to_string(s.keywords.size()) + " choices from '#pragma " +
-                                       s.pragma + "'"});
+        for (size_t s = 0; s < n; ++s) {
+            if (!is_feature(s) && pragmas.sets[s].keywords.size() > 1) {
+                d.notes.push_back({file, pragmas.sets[s].range,
+                                   std::to_string(pragmas.sets[s].keywords.size()) +
+                                       " choices from '#pragma " + pragmas.sets[s].pragma + "'"});
             }
         }
         return std::nullopt;
@@ -105,27 +133,37 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
     std::set<std::string> skip;
     for (const auto& a : pragmas.skip_variants)
         skip.insert(a.text);
-    std::vector<uint32_t> index(choices.size(), 0);
-    while (true) {
-        pack::VariantKey key;
-        bool skipped = false;
-        for (size_t s = 0; s < choices.size(); ++s) {
-            const uint32_t k = choices[s][index[s]];
-            key.Set(ex.layout[s].shift, ex.layout[s].bits, k);
-            skipped = skipped || skip.count(pragmas.sets[s].keywords[k]) > 0;
-        }
-        if (!skipped)
-            ex.keys.push_back(key);
-        size_t s = 0;
-        for (; s < choices.size(); ++s) {
-            if (++index[s] < choices[s].size())
+    // The multi_compile product (features fixed per combination), odometer order.
+    for (const std::vector<uint32_t>& combo : combos) {
+        std::vector<size_t> index(n, 0);
+        while (true) {
+            pack::VariantKey key;
+            bool skipped = false;
+            std::vector<std::string> enabled;
+            for (size_t s = 0; s < n; ++s) {
+                const uint32_t k = is_feature(s) ? combo[s] : choices[s][index[s]];
+                key.Set(ex.layout[s].shift, ex.layout[s].bits, k);
+                const std::string& kw = pragmas.sets[s].keywords[k];
+                skipped = skipped || skip.count(kw) > 0;
+                if (!kw.empty())
+                    enabled.push_back(kw);
+            }
+            if (!skipped && SatisfiesRules(pragmas.rules, enabled))
+                ex.keys.push_back(key);
+            size_t s = 0;
+            for (; s < n; ++s) {
+                if (is_feature(s))
+                    continue;
+                if (++index[s] < choices[s].size())
+                    break;
+                index[s] = 0;
+            }
+            if (s == n)
                 break;
-            index[s] = 0;
         }
-        if (s == choices.size())
-            break;
     }
     std::sort(ex.keys.begin(), ex.keys.end());
+    ex.keys.erase(std::unique(ex.keys.begin(), ex.keys.end()), ex.keys.end());
     if (ex.keys.empty()) {
         diags.Error(DiagCode::kNoVariantsLeft, file, pass_range,
                     "skip_variants removes every variant of pass " + pass_label);

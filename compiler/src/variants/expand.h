@@ -1,6 +1,8 @@
-// Expands a pass's keyword sets into the variant keys to build: the Cartesian product of the
-// sets, with shader_feature sets narrowed to the requested keywords, then skip_variants applied,
-// guarded by a variant limit whose error shows the multiplication.
+// Expands a pass's keyword sets into the variant keys to build, as Unity does: the Cartesian
+// product of the multi_compile sets times the shader_feature combinations that material
+// instances ask for (plus the all-off one), or every shader_feature combination when asked;
+// then the built-in shortcuts' rules and skip_variants; guarded by a variant limit whose error
+// shows the multiplication.
 #ifndef KILN_VARIANTS_EXPAND_H_
 #define KILN_VARIANTS_EXPAND_H_
 
@@ -21,9 +23,11 @@ struct SetLayout {
 };
 
 struct VariantRequest {
-    // Keywords asked for (by --keywords or material instances). Unset: every shader_feature
-    // variant is built.
-    std::optional<std::set<std::string>> shader_features;
+    // Every shader_feature combination (--all-features) instead of the requested ones.
+    bool all_features = false;
+    // Keyword combinations material instances enable (one set per material); each gives one
+    // shader_feature combination. The all-off combination is always built.
+    std::vector<std::set<std::string>> feature_combinations;
     uint64_t max_variants = 4096;
 };
 
@@ -31,7 +35,9 @@ struct Expansion {
     std::vector<SetLayout> layout;        // one per keyword set
     std::vector<pack::VariantKey> keys;   // sorted ascending
     std::vector<size_t> effective_sizes;  // choices per set after shader_feature narrowing
-    uint64_t permutations = 0;            // product of effective_sizes (before skip_variants)
+    size_t feature_combinations = 0;      // distinct shader_feature combinations built
+    // multi_compile product x feature_combinations, before rules and skip_variants.
+    uint64_t permutations = 0;
 };
 
 // Bit layout of the sets (see kiln/pack/variant_key.h); nullopt when wider than 64 bits.

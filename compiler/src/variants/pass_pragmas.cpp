@@ -14,11 +14,14 @@ const std::set<std::string> kIgnoredPragmas = {"fragmentoption",
                                                "glsl_no_auto_normalization",
                                                "enable_d3d11_debug_symbols",
                                                "hardware_tier_variants",
-                                               "require",
                                                "editor_sync_compilation",
                                                "instancing_options",
-                                               "multi_compile_prepassfinal",
                                                "prefer_hlslcc",
+                                               "never_use_dxc",
+                                               "use_dxc",
+                                               "glsl_es",
+                                               "enable_cbuffer",
+                                               "dynamic_branch",
                                                "pack_matrix",
                                                "warning",
                                                "once",
@@ -43,6 +46,7 @@ struct State {
     DiagnosticList& diags;
     PassPragmas out;
     std::map<std::string, SourceRange> keyword_origin;
+    int required_target = 0;  // from #pragma require
 
     void Entry(const Pragma& p, std::optional<EntryPoint>& slot) {
         if (p.args.empty()) {
@@ -77,6 +81,29 @@ struct State {
             return;
         }
         out.shader_target = it->second;
+    }
+
+    // `#pragma require FEATURE...` raises SHADER_TARGET to the shader model that has the features,
+    // as Unity does (Unity manual, "Targeting shader models and GPU features").
+    void Require(const Pragma& p) {
+        static const std::map<std::string, int, std::less<>> kFeatureTargets = {
+            {"derivatives", 25},  {"samplelod", 25},
+            {"fragcoord", 25},    {"interpolators10", 30},
+            {"samplegrad", 30},   {"interpolators15", 35},
+            {"mrt4", 35},         {"integers", 35},
+            {"2darray", 35},      {"instancing", 35},
+            {"geometry", 40},     {"compute", 45},
+            {"randomwrite", 45},  {"msaatex", 45},
+            {"cubearray", 46},    {"tesshw", 46},
+            {"tessellation", 46}, {"interpolators32", 50},
+            {"mrt8", 50},         {"setrtarrayindexfromanyshader", 50}};
+        for (const auto& a : p.args) {
+            std::string feature = a.text;
+            for (char& c : feature)
+                c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            if (auto it = kFeatureTargets.find(feature); it != kFeatureTargets.end())
+                required_target = std::max(required_target, it->second);
+        }
     }
 
     void AddSet(KeywordSet set, const Pragma& p) {
@@ -128,12 +155,15 @@ struct State {
         KeywordSet set;
         set.pragma = p.name;
         set.range = p.range;
-        const auto shortcut = BuiltinShortcut(name);
-        if (!shortcut.empty()) {
-            for (const auto& keywords : shortcut) {
+        if (const auto shortcut = BuiltinShortcut(name)) {
+            for (const auto& keywords : shortcut->sets) {
                 KeywordSet s = set;
                 s.keywords = keywords;
                 AddSet(std::move(s), Pragma{p.name, {}, p.range});
+            }
+            for (KeywordRule rule : shortcut->rules) {
+                rule.pragma = p.name;
+                out.rules.push_back(std::move(rule));
             }
             return true;
         }
@@ -180,6 +210,8 @@ struct State {
             return Entry(p, out.fragment);
         if (p.name == "target")
             return Target(p);
+        if (p.name == "require")
+            return Require(p);
         if (p.name == "skip_variants") {
             out.skip_variants.insert(out.skip_variants.end(), p.args.begin(), p.args.end());
             return;
@@ -207,37 +239,123 @@ bool IsNoKeyword(const std::string& word) {
     return !word.empty() && word.find_first_not_of('_') == std::string::npos;
 }
 
-std::vector<std::vector<std::string>> BuiltinShortcut(const std::string& name) {
-    // Kiln has no lightmaps or light cookies: the Unity keywords for those are left out.
-    static const std::map<std::string, std::vector<std::vector<std::string>>> kShortcuts = {
-        {"multi_compile_fwdbase",
-         {{"DIRECTIONAL"}, {"", "SHADOWS_SCREEN"}, {"", "LIGHTPROBE_SH"}, {"", "VERTEXLIGHT_ON"}}},
-        {"multi_compile_fwdadd", {{"DIRECTIONAL", "POINT", "SPOT"}}},
-        {"multi_compile_fwdadd_fullshadows",
-         {{"DIRECTIONAL", "POINT", "SPOT"},
-          {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"},
-          {"", "SHADOWS_SOFT"}}},
-        {"multi_compile_shadowcaster", {{"SHADOWS_DEPTH", "SHADOWS_CUBE"}}},
-        {"multi_compile_lightpass",
-         {{"DIRECTIONAL", "POINT", "SPOT"},
-          {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"},
-          {"", "SHADOWS_SOFT"}}},
-        {"multi_compile_fog", {{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}}},
-        {"multi_compile_instancing", {{"", "INSTANCING_ON"}}},
+std::optional<Shortcut> BuiltinShortcut(const std::string& name) {
+    // Unity's keyword lists for its built-in pipeline (Unity manual, "Shader variant shortcuts"),
+    // as sets whose product the rules cut down to the combinations Unity builds. The rules were
+    // read off Unity's compiled output for these shortcuts; docs/variants.md has the tables.
+    using Sets = std::vector<std::vector<std::string>>;
+    using Rules = std::vector<KeywordRule>;
+    // A light pass with real-time shadows: each light type with the shadow kinds it can have,
+    // soft shadows for depth and cube shadows, and the mixed-lighting (shadowmask) keywords.
+    const Sets light_shadow_sets = {
+        {"POINT", "DIRECTIONAL", "SPOT", "POINT_COOKIE", "DIRECTIONAL_COOKIE"},
+        {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"},
+        {"", "SHADOWS_SOFT"},
+        {"", "SHADOWS_SHADOWMASK"},
+        {"", "LIGHTMAP_SHADOW_MIXING"}};
+    const Rules light_shadow_rules = {
+        {"SHADOWS_DEPTH", {"SPOT"}, {}, {}},
+        {"SHADOWS_SCREEN", {"DIRECTIONAL", "DIRECTIONAL_COOKIE"}, {}, {}},
+        {"SHADOWS_CUBE", {"POINT", "POINT_COOKIE"}, {}, {}},
+        {"SHADOWS_SOFT", {"SHADOWS_DEPTH", "SHADOWS_CUBE"}, {}, {}},
+        {"LIGHTMAP_SHADOW_MIXING",
+         {"SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE", "SHADOWS_SHADOWMASK"},
+         {},
+         {}}};
+    const KeywordRule dirlightmap = {
+        "DIRLIGHTMAP_COMBINED", {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}, {}, {}};
+    const KeywordRule vertexlights = {
+        "VERTEXLIGHT_ON", {}, {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}, {}};
+
+    if (name == "multi_compile_fwdbase") {
+        return Shortcut{{{"DIRECTIONAL"},
+                         {"", "LIGHTMAP_ON"},
+                         {"", "DIRLIGHTMAP_COMBINED"},
+                         {"", "DYNAMICLIGHTMAP_ON"},
+                         {"", "SHADOWS_SCREEN"},
+                         {"", "SHADOWS_SHADOWMASK"},
+                         {"", "LIGHTMAP_SHADOW_MIXING"},
+                         {"", "LIGHTPROBE_SH"},
+                         {"", "VERTEXLIGHT_ON"}},
+                        {dirlightmap,
+                         vertexlights,
+                         {"LIGHTMAP_SHADOW_MIXING", {"LIGHTMAP_ON", "SHADOWS_SCREEN"}, {}, {}}}};
+    }
+    if (name == "multi_compile_fwdbasealpha") {
+        return Shortcut{
+            {{"DIRECTIONAL"},
+             {"", "LIGHTMAP_ON"},
+             {"", "DIRLIGHTMAP_COMBINED"},
+             {"", "DYNAMICLIGHTMAP_ON"},
+             {"", "LIGHTMAP_SHADOW_MIXING"},
+             {"", "LIGHTPROBE_SH"},
+             {"", "VERTEXLIGHT_ON"}},
+            {dirlightmap, vertexlights, {"LIGHTMAP_SHADOW_MIXING", {"LIGHTMAP_ON"}, {}, {}}}};
+    }
+    if (name == "multi_compile_fwdadd") {
+        return Shortcut{{{"POINT", "DIRECTIONAL", "SPOT", "POINT_COOKIE", "DIRECTIONAL_COOKIE"}},
+                        {}};
+    }
+    if (name == "multi_compile_fwdadd_fullshadows" || name == "multi_compile_lightpass") {
+        return Shortcut{light_shadow_sets, light_shadow_rules};
+    }
+    if (name == "multi_compile_prepassfinal") {
+        return Shortcut{{{"", "LIGHTMAP_ON"},
+                         {"", "DIRLIGHTMAP_COMBINED"},
+                         {"", "DYNAMICLIGHTMAP_ON"},
+                         {"", "UNITY_HDR_ON"},
+                         {"", "SHADOWS_SHADOWMASK"},
+                         {"", "LIGHTMAP_SHADOW_MIXING"},
+                         {"", "LIGHTPROBE_SH"}},
+                        {dirlightmap, {"LIGHTMAP_SHADOW_MIXING", {"LIGHTMAP_ON"}, {}, {}}}};
+    }
+    if (name == "multi_compile_shadowcaster") {
+        return Shortcut{{{"SHADOWS_DEPTH", "SHADOWS_CUBE"}}, {}};
+    }
+    if (name == "multi_compile_shadowcollector") {
+        return Shortcut{{{"", "SHADOWS_SPLIT_SPHERES"}, {"", "SHADOWS_SINGLE_CASCADE"}}, {}};
+    }
+    if (name == "multi_compile_fog") {
+        return Shortcut{{{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}}, {}};
+    }
+    if (name == "multi_compile_instancing") {
+        return Shortcut{{{"", "INSTANCING_ON"}}, {}};
+    }
+    if (name == "multi_compile_particles") {
+        return Shortcut{{{"", "SOFTPARTICLES_ON"}}, {}};
+    }
+    return std::nullopt;
+}
+
+bool SatisfiesRules(const std::vector<KeywordRule>& rules,
+                    const std::vector<std::string>& keywords) {
+    auto on = [&](const std::string& k) {
+        return std::find(keywords.begin(), keywords.end(), k) != keywords.end();
     };
-    auto it = kShortcuts.find(name);
-    return it == kShortcuts.end() ? std::vector<std::vector<std::string>>{} : it->second;
+    for (const KeywordRule& r : rules) {
+        if (!on(r.keyword)) {
+            continue;
+        }
+        if (!r.any_of.empty() && std::none_of(r.any_of.begin(), r.any_of.end(), on)) {
+            return false;
+        }
+        if (std::any_of(r.none_of.begin(), r.none_of.end(), on)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& blocks,
                             const std::string& file,
                             SourceRange pass_range,
                             DiagnosticList& diags) {
-    State st{file, diags, {}, {}};
+    State st{file, diags, {}, {}, 0};
     for (const shaderlab::ProgramBlock* block : blocks) {
         for (const Pragma& p : block->pragmas)
             st.One(p);
     }
+    st.out.shader_target = std::max(st.out.shader_target, st.required_target);
     const SourceRange where = blocks.empty() ? pass_range : blocks.back()->range;
     if (!st.out.vertex) {
         diags.Error(DiagCode::kMissingEntryPoint, file, where,

@@ -25,6 +25,24 @@ struct KeywordSet {
     SourceRange range;                  // the pragma line
 };
 
+// A combination rule from a built-in shortcut: a variant that enables `keyword` must also enable
+// one of `any_of` (when not empty) and none of `none_of`. Unity never builds the combinations
+// these rules exclude (e.g. DIRECTIONAL with SHADOWS_DEPTH), and its include files cannot compile
+// some of them.
+struct KeywordRule {
+    std::string keyword;
+    std::vector<std::string> any_of;
+    std::vector<std::string> none_of;
+    std::string pragma;  // the shortcut it came from
+};
+
+// A built-in shortcut: keyword sets whose product, filtered by the rules, is Unity's exact
+// variant list for it (docs/variants.md has one table per shortcut).
+struct Shortcut {
+    std::vector<std::vector<std::string>> sets;
+    std::vector<KeywordRule> rules;
+};
+
 struct EntryPoint {
     std::string name;
     SourceRange range;
@@ -34,6 +52,7 @@ struct PassPragmas {
     std::optional<EntryPoint> vertex, fragment;
     int shader_target = 25;  // SHADER_TARGET: 25 unless `#pragma target`
     std::vector<KeywordSet> sets;
+    std::vector<KeywordRule> rules;  // from built-in shortcuts
     std::vector<shaderlab::PragmaArg> skip_variants;
     std::vector<std::string> only_renderers, exclude_renderers;
 };
@@ -45,9 +64,13 @@ PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& b
                             SourceRange pass_range,
                             DiagnosticList& diags);
 
-// The keyword sets a built-in shortcut (e.g. "multi_compile_fwdadd") expands to; empty when
-// `name` is not a shortcut. Documented in docs/variants.md.
-std::vector<std::vector<std::string>> BuiltinShortcut(const std::string& name);
+// What a built-in shortcut (e.g. "multi_compile_fwdadd") expands to; nullopt when `name` is not
+// a shortcut. Documented in docs/variants.md.
+std::optional<Shortcut> BuiltinShortcut(const std::string& name);
+
+// True when the enabled `keywords` satisfy every rule.
+bool SatisfiesRules(const std::vector<KeywordRule>& rules,
+                    const std::vector<std::string>& keywords);
 
 bool IsNoKeyword(const std::string& word);  // "_", "__", ...
 

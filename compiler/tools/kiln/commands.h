@@ -3,6 +3,8 @@
 #define KILN_TOOLS_KILN_COMMANDS_H_
 
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,7 @@
 
 #include "kiln/compile.h"
 #include "kiln/diagnostic.h"
+#include "kiln/material/material.h"
 
 namespace kiln::cli {
 
@@ -33,18 +36,36 @@ void PrintDiagnostics(const DiagnosticList& diags,
                       const GlobalOptions& global);
 int ExitCodeFor(const DiagnosticList& diags);
 
+// The one conversion of material issues into the CLI's diagnostics.
+void AddMaterialIssues(std::vector<kiln::material::MaterialIssue> issues,
+                       const SourceFile& file,
+                       DiagnosticList& diags);
+
 // Flags shared by `compile` and `variants`.
 struct CompilerFlags {
     std::vector<std::string> include_dirs;
     std::vector<std::string> defines;
+    std::vector<std::string> undefines;
+    std::vector<std::string> forced_includes;
+    std::string unity_version;
     std::vector<std::string> keywords;
+    std::vector<std::string> materials;  // .material files and <scene>.kiln.json sidecars
+    bool all_features = false;
     uint64_t max_variants = 4096;
     std::string templates_dir;
     unsigned jobs = 0;
 };
 void AddCompilerOptions(CLI::App& cmd, CompilerFlags& flags);
-CompileOptions ToCompileOptions(const CompilerFlags& flags);
-std::vector<const SourceFile*> Views(const CompileOutput& out);
+// The library's options from the flags; reads the --materials files (kept in `files` for the
+// diagnostics that point into them). Problems go to `diags`.
+CompileOptions ToCompileOptions(const CompilerFlags& flags,
+                                std::vector<std::unique_ptr<SourceFile>>& files,
+                                DiagnosticList& diags);
+// "2022.3" -> 202230 (UNITY_VERSION: major x 100 + minor x 10 + patch, patch capped at 9), or a
+// plain number; nullopt when it is neither.
+std::optional<int> ParseUnityVersion(const std::string& text);
+std::vector<const SourceFile*> Views(const CompileOutput& out,
+                                     const std::vector<std::unique_ptr<SourceFile>>& more = {});
 
 // Each registers its subcommand; the returned function runs it.
 std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global);

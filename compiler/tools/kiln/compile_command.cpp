@@ -1,6 +1,8 @@
 // kiln compile A.shader [B.shader ...] -o out.kpack [options]: the variant compiler.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -8,6 +10,7 @@
 
 #include "commands.h"
 #include "kiln/compile.h"
+#include "kiln/runtime/scene.h"
 
 namespace kiln::cli {
 namespace {
@@ -29,9 +32,28 @@ std::string DepfileEscape(const std::string& path) {
 void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
     cmd.add_option("-I", f.include_dirs, "Add an include directory (searched in order)");
     cmd.add_option("-D", f.defines, "Define a preprocessor macro NAME or NAME=VALUE");
+    cmd.add_option("-U", f.undefines,
+                   "Leave a macro of Unity's compile environment undefined (docs/unity-compat.md)");
+    cmd.add_option("--include", f.forced_includes,
+                   "Include FILE in every program, after Unity's implicit includes");
+    cmd.add_option("--unity-version", f.unity_version,
+                   "The Unity version to reproduce: UNITY_VERSION (default 2022.3)")
+        ->check(CLI::Validator(
+            [](std::string& v) {
+                return ParseUnityVersion(v) ? std::string()
+                                            : "expected a version such as 2022.3 or a "
+                                              "UNITY_VERSION number such as 202230";
+            },
+            "VERSION"));
+    cmd.add_option("--materials", f.materials,
+                   ".material files or <scene>.kiln.json sidecars: build the shader_feature "
+                   "combinations they enable");
     cmd.add_option("--keywords", f.keywords,
-                   "shader_feature keywords to build (default: all shader_feature variants)")
+                   "shader_feature keywords of one more combination to build, for every shader")
         ->delimiter(',');
+    cmd.add_flag("--all-features", f.all_features,
+                 "Build every shader_feature combination (default: the all-off one and those "
+                 "the materials enable, as Unity does)");
     cmd.add_option("--max-variants", f.max_variants, "Largest number of variants a pass may have")
         ->check(CLI::PositiveNumber);
     cmd.add_option("--templates-dir", f.templates_dir,
@@ -39,7 +61,61 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
     cmd.add_option("-j,--jobs", f.jobs, "Parallel compile jobs (default: all cores)");
 }
 
-CompileOptions ToCompileOptions(const CompilerFlags& f) {
+std::optional<int> ParseUnityVersion(const std::string& text) {
+    int parts[3] = {0, 0, 0};
+    size_t count = 0, i = 0;
+    while (i < text.size() && count < 3) {
+        size_t j = i;
+        while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])))
+            ++j;
+        if (j == i || j - i > 6)
+            return std::nullopt;
+        parts[count++] = std::stoi(text.substr(i, j - i));
+        if (j == text.size())
+            break;
+        if (text[j] != '.' || count == 3)
+            return std::nullopt;
+        i = j + 1;
+        if (i == text.size())
+            return std::nullopt;
+    }
+    if (count == 0)
+        return std::nullopt;
+    if (count == 1)
+        return parts[0];  // already a UNITY_VERSION number
+    return parts[0] * 100 + std::min(parts[1], 9) * 10 + std::min(parts[2], 9);
+}
+
+namespace {
+
+// Adds the keyword combination of one .material file to `out` (by shader name).
+void ReadMaterialKeywords(const std::string& path,
+                          CompileOptions& out,
+                          std::vector<std::unique_ptr<SourceFile>>& files,
+                          DiagnosticList& diags) {
+    Result<SourceFile> read = ReadSourceFile(path);
+    if (!read) {
+        diags.Error(DiagCode::kCannotReadFile, path, {}, read.error().message);
+        return;
+    }
+    files.push_back(std::make_unique<SourceFile>(std::move(read).value()));
+    material::Material m;
+    std::vector<material::MaterialIssue> issues;
+    if (!material::ParseMaterial(files.back()->text(), m, issues)) {
+        AddMaterialIssues(issues, *files.back(), diags);
+        return;
+    }
+    std::set<std::string> keywords;
+    for (const material::Keyword& k : m.keywords)
+        keywords.insert(k.name);
+    out.material_keywords[m.shader].push_back(std::move(keywords));
+}
+
+}  // namespace
+
+CompileOptions ToCompileOptions(const CompilerFlags& f,
+                                std::vector<std::unique_ptr<SourceFile>>& files,
+                                DiagnosticList& diags) {
     CompileOptions o;
     o.include_dirs = f.include_dirs;
     for (const std::string& d : f.defines) {
@@ -48,17 +124,46 @@ CompileOptions ToCompileOptions(const CompilerFlags& f) {
                                 ? std::make_pair(d, std::string("1"))
                                 : std::make_pair(d.substr(0, eq), d.substr(eq + 1)));
     }
+    o.undefines = f.undefines;
+    for (const std::string& file : f.forced_includes) {
+        // As a C compiler's -include: a path that exists relative to the working directory is
+        // that file; anything else is looked up like #include "file".
+        std::error_code ec;
+        o.forced_includes.push_back(
+            std::filesystem::exists(file, ec)
+                ? std::filesystem::absolute(file).lexically_normal().string()
+                : file);
+    }
+    if (auto v = ParseUnityVersion(f.unity_version))
+        o.unity_version = *v;
     if (!f.keywords.empty())
         o.keywords = std::set<std::string>(f.keywords.begin(), f.keywords.end());
+    o.all_features = f.all_features;
+    for (const std::string& path : f.materials) {
+        if (path.size() >= 10 && path.compare(path.size() - 10, 10, ".kiln.json") == 0) {
+            runtime::Scene scene;
+            if (auto e = runtime::LoadMaterialSidecar(path, scene)) {
+                diags.Error(DiagCode::kCannotReadFile, path, {}, e->message);
+                continue;
+            }
+            for (const auto& [gltf_name, file] : scene.material_files)
+                ReadMaterialKeywords(file, o, files, diags);
+        } else {
+            ReadMaterialKeywords(path, o, files, diags);
+        }
+    }
     o.max_variants = f.max_variants;
     o.templates_dir = f.templates_dir;
     o.jobs = f.jobs;
     return o;
 }
 
-std::vector<const SourceFile*> Views(const CompileOutput& out) {
+std::vector<const SourceFile*> Views(const CompileOutput& out,
+                                     const std::vector<std::unique_ptr<SourceFile>>& more) {
     std::vector<const SourceFile*> views;
     for (const auto& f : out.files)
+        views.push_back(f.get());
+    for (const auto& f : more)
         views.push_back(f.get());
     return views;
 }
@@ -91,7 +196,13 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
     cmd->add_flag("--stats", o->stats, "Print variant and compile counts on stdout");
 
     return [o, &global]() {
-        CompileOptions options = ToCompileOptions(o->flags);
+        DiagnosticList diags;
+        std::vector<std::unique_ptr<SourceFile>> material_files;
+        CompileOptions options = ToCompileOptions(o->flags, material_files, diags);
+        if (diags.has_errors()) {
+            PrintDiagnostics(diags, Views(CompileOutput{}, material_files), global);
+            return ExitCodeFor(diags);
+        }
         options.opt_level = o->opt == "0"   ? OptimizationLevel::kNone
                             : o->opt == "s" ? OptimizationLevel::kSize
                                             : OptimizationLevel::kPerformance;
@@ -106,7 +217,6 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                     std::fputs("\r\033[K", stderr);
             };
         }
-        DiagnosticList diags;
         CompileOutput out = CompileShaders(o->files, options, diags);
         if (out.ok) {
             Result<bool> written = WriteFileAtomic(o->output, out.pack);
@@ -137,7 +247,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                 static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
                 s.unique_programs, s.glslang_compiles, s.cache_hits, s.modules);
         }
-        PrintDiagnostics(diags, Views(out), global);
+        PrintDiagnostics(diags, Views(out, material_files), global);
         return ExitCodeFor(diags);
     };
 }

@@ -9,13 +9,11 @@
 #include "kiln/source.h"
 
 namespace kiln::cli {
-namespace {
 namespace fs = std::filesystem;
 
-// The one conversion of material issues into the CLI's diagnostics.
-void AddIssues(std::vector<material::MaterialIssue> issues,
-               const SourceFile& file,
-               DiagnosticList& diags) {
+void AddMaterialIssues(std::vector<material::MaterialIssue> issues,
+                       const SourceFile& file,
+                       DiagnosticList& diags) {
     std::stable_sort(issues.begin(), issues.end(),
                      [](const auto& a, const auto& b) { return a.pos.offset < b.pos.offset; });
     for (const material::MaterialIssue& i : issues) {
@@ -29,8 +27,6 @@ void AddIssues(std::vector<material::MaterialIssue> issues,
             d.notes.push_back({file.path(), range, i.note});
     }
 }
-
-}  // namespace
 
 std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global) {
     auto* cmd = app.add_subcommand(
@@ -70,7 +66,7 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
                 issues.empty() || issues.front().code != material::IssueCode::kJsonSyntax;
             if (is_json && !m.shader.empty())
                 material::ValidateMaterial(m, p, fs::path(path).parent_path().string(), issues);
-            AddIssues(issues, *files.back(), diags);
+            AddMaterialIssues(issues, *files.back(), diags);
         }
         std::vector<const SourceFile*> views;
         for (const auto& f : files)

@@ -23,7 +23,13 @@ std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& glob
 
     return [o, &global]() {
         DiagnosticList diags;
-        CompileOutput out = AnalyzeVariants(o->files, ToCompileOptions(o->flags), diags);
+        std::vector<std::unique_ptr<SourceFile>> material_files;
+        const CompileOptions options = ToCompileOptions(o->flags, material_files, diags);
+        if (diags.has_errors()) {
+            PrintDiagnostics(diags, Views(CompileOutput{}, material_files), global);
+            return ExitCodeFor(diags);
+        }
+        CompileOutput out = AnalyzeVariants(o->files, options, diags);
         if (o->json) {
             nlohmann::json passes = nlohmann::json::array();
             for (const PassReport& p : out.passes) {
@@ -73,7 +79,7 @@ std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& glob
             std::printf("total: %zu variants, %zu stage programs, %zu unique compiles\n",
                         s.variants, s.stage_programs, s.unique_programs);
         }
-        PrintDiagnostics(diags, Views(out), global);
+        PrintDiagnostics(diags, Views(out, material_files), global);
         return ExitCodeFor(diags);
     };
 }

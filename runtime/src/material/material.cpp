@@ -284,30 +284,4 @@ bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIss
     return s.ok;
 }
 
-std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates) {
-    std::string best;
-    size_t best_distance = std::max<size_t>(1, name.size() / 3) + 1;
-    for (const std::string& c : candidates) {
-        // Levenshtein distance, case-insensitive, one row.
-        const std::string a = Lower(name), b = Lower(c);
-        std::vector<size_t> row(b.size() + 1);
-        for (size_t j = 0; j <= b.size(); ++j)
-            row[j] = j;
-        for (size_t i = 1; i <= a.size(); ++i) {
-            size_t diagonal = row[0];
-            row[0] = i;
-            for (size_t j = 1; j <= b.size(); ++j) {
-                const size_t up = row[j];
-                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-                diagonal = up;
-            }
-        }
-        if (row[b.size()] < best_distance) {
-            best_distance = row[b.size()];
-            best = c;
-        }
-    }
-    return best;
-}
-
 }  // namespace kiln::material

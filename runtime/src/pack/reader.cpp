@@ -278,7 +278,7 @@ std::optional<PackError> Pack::Validate() {
     for (uint32_t i = 0; i < n_props; ++i) {
         const auto p = Get<PropertyRec>(SectionTag::kProperties, i);
         if (!str_ok(p.name) || !str_ok(p.display_name) || !str_ok(p.texture_default) ||
-            p.type > uint32_t(PropertyType::kCubeArray) ||
+            p.type > uint32_t(PropertyType::kTextureAny) ||
             !RangeOk(p.first_attribute, p.attribute_count, n_attrs)) {
             return fail("PROP", i);
         }

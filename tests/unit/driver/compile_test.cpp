@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "hlsl/assemble.h"
 #include "kiln/pack/reader.h"
 #include "spirv/optimize.h"
 #include "support/compile_support.h"
@@ -177,6 +178,9 @@ TEST(Compile, IncludeResolutionOrderIsIncluderThenDashIThenTemplates) {
     const std::string local = dir.Write("s/which.cginc", "#define WHICH 1\n");
     const std::string dash_i = dir.Write("inc/which.cginc", "#define WHICH 2\n");
     const std::string templ = dir.Write("templates/which.cginc", "#define WHICH 3\n");
+    // A CGPROGRAM includes these first, as in Unity; here from this templates folder.
+    for (const char* implicit : hlsl::kImplicitIncludes)
+        dir.Write(std::string("templates/") + implicit, "\n");
     CompileOptions o;
     o.include_dirs = {dir.path() + "/inc"};
     o.templates_dir = dir.path() + "/templates";
@@ -278,6 +282,72 @@ TEST(Compile, BindingsFollowTheBindingModel) {
     EXPECT_TRUE(saw_push);
     EXPECT_TRUE(saw_global);
     EXPECT_TRUE(saw_tex);
+}
+
+TEST(Compile, UnitysCompileEnvironmentIsReproduced) {
+    ScratchDir dir;
+    const std::string shader = dir.Write("env.shader", R"(Shader "Test/Env" {
+    SubShader {
+        Pass {
+            Tags { "LightMode" = "Meta" }
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #pragma multi_compile_instancing
+            #if !defined(UNITY_PASS_META) || !defined(SHADER_API_VULKAN) || !defined(SHADER_API_DESKTOP)
+            #error "pass or API macro missing"
+            #endif
+            #if UNITY_VERSION != EXPECTED_VERSION || !defined(UNITY_PBS_USE_BRDF1)
+            #error "version or tier macro wrong"
+            #endif
+            #if defined(INSTANCING_ON) && SHADER_TARGET < 35
+            #error "instancing variants need shader model 3.5"
+            #endif
+            #if !defined(FORCED) || !defined(HLSL_SUPPORT_INCLUDED) || !defined(UNITY_SHADER_UTILITIES_INCLUDED)
+            #error "implicit or forced include missing"
+            #endif
+            float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
+            fixed4 frag() : SV_Target { return fixed4(1, 1, 1, 1); }
+            ENDCG
+        }
+    }
+})");
+    const std::string forced = dir.Write("forced.cginc", "#define FORCED 1\n");
+    CompileOptions o;
+    o.defines = {{"EXPECTED_VERSION", "202230"}};
+    o.forced_includes = {forced};
+    CompileRun ok = Compile({shader}, o);
+    EXPECT_TRUE(ok.out.ok) << Brief(ok.diags);
+    EXPECT_EQ(ok.out.stats.variants, 2u);
+
+    o.unity_version = 201940;
+    o.defines = {{"EXPECTED_VERSION", "201940"}};
+    EXPECT_TRUE(Compile({shader}, o).out.ok);
+
+    o.undefines = {"UNITY_PBS_USE_BRDF1"};
+    CompileRun undefined = Compile({shader}, o);
+    EXPECT_FALSE(undefined.out.ok);
+    EXPECT_NE(Brief(undefined.diags).find("version or tier macro wrong"), std::string::npos)
+        << Brief(undefined.diags);
+}
+
+TEST(Compile, HlslProgramHasNoImplicitIncludes) {
+    ScratchDir dir;
+    const std::string shader = dir.Write("h.shader", R"(Shader "Test/H" {
+    SubShader { Pass {
+        HLSLPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #ifdef HLSL_SUPPORT_INCLUDED
+        #error "HLSLPROGRAM must not include HLSLSupport.cginc"
+        #endif
+        float4 vert(float4 p : POSITION) : SV_POSITION { return p; }
+        float4 frag() : SV_Target { return 1; }
+        ENDHLSL
+    } }
+})");
+    CompileRun run = Compile({shader});
+    EXPECT_TRUE(run.out.ok) << Brief(run.diags);
 }
 
 }  // namespace

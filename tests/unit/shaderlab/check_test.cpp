@@ -32,13 +32,29 @@ SubShader { ZTest [_b] ZWrite [_c] ZClip [_d] AlphaToMask [_e] Conservative [_f]
         undeclared += d.code == DiagCode::kUndeclaredProperty ? 1 : 0;
     }
     EXPECT_EQ(undeclared, 17u) << Summarize(out.diags);
-    EXPECT_EQ(out.diags.error_count(), 17u) << Summarize(out.diags);
+    // As in Unity, an undeclared name is a global property: a warning, not an error.
+    EXPECT_EQ(out.diags.error_count(), 0u) << Summarize(out.diags);
 }
 
 TEST(Check, UndeclaredReferenceWithoutPropertiesBlockHasNoNote) {
     ParseOutcome out = ParseText("Shader \"x\" { SubShader { Cull [_C] } }");
-    ASSERT_EQ(out.diags.error_count(), 1u);
+    ASSERT_EQ(out.diags.all().size(), 1u);
+    EXPECT_EQ(out.diags.all()[0].severity, Severity::kWarning);
     EXPECT_TRUE(out.diags.all()[0].notes.empty());
+}
+
+TEST(Check, UndeclaredReferenceSuggestsTheClosestProperty) {
+    ParseOutcome out = ParseText(
+        "Shader \"x\" { Properties { _Cull (\"Cull\", Float) = 2 }\n"
+        "SubShader { Cull [_Cul] ZTest [unity_GUIZTestMode] } }");
+    ASSERT_EQ(out.diags.all().size(), 2u) << Summarize(out.diags);
+    EXPECT_EQ(out.diags.all()[0].message,
+              "'_Cul' is not declared in Properties; as in Unity its value is a global property "
+              "that the material or the runtime must set; did you mean '_Cull'?");
+    ASSERT_EQ(out.diags.all()[0].notes.size(), 1u);
+    EXPECT_EQ(out.diags.all()[0].notes[0].message, "'_Cull' declared here");
+    EXPECT_EQ(out.diags.all()[1].message.find("'unity_GUIZTestMode' is not declared"), 0u);
+    EXPECT_EQ(out.diags.all()[1].notes[0].message, "properties are declared here");
 }
 
 TEST(Check, ProgramsAtTheRightLevels) {

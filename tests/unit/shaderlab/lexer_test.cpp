@@ -127,5 +127,15 @@ TEST(Lexer, UnterminatedConstructs) {
     }
 }
 
+TEST(Lexer, Utf8ByteOrderMarkIsSkipped) {
+    DiagnosticList diags;
+    const auto t = LexText("\xEF\xBB\xBFShader \"a\" { }", diags);
+    EXPECT_TRUE(diags.all().empty());
+    ASSERT_EQ(t.size(), 5u);
+    EXPECT_EQ(t[0].text, "Shader");
+    EXPECT_EQ(t[0].range.begin.offset, 3u);
+    EXPECT_EQ(t[0].range.begin.line, 1u);
+}
+
 }  // namespace
 }  // namespace kiln::test

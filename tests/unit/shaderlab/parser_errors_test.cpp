@@ -77,8 +77,6 @@ std::vector<ErrorCase> Cases() {
         {"stencil_ref_out_of_range", InPass("  Stencil { Ref 256 }"), DiagCode::kInvalidValue, 4,
          17},
         {"stencil_unknown_key", InPass("  Stencil { Bogus 1 }"), DiagCode::kUnknownCommand, 4, 13},
-        {"undeclared_property_ref", InPass("  ZTest [_Missing]"), DiagCode::kUndeclaredProperty, 4,
-         9},
         {"texture_property_as_state",
          "Shader \"x\" {\nProperties { _T (\"T\", 2D) = \"white\" {} }\nSubShader { Cull [_T] "
          "}\n}\n",
@@ -86,7 +84,7 @@ std::vector<ErrorCase> Cases() {
         {"unknown_command", InSubShader("Pas { }"), DiagCode::kUnknownCommand, 3, 1},
         {"pass_at_shader_level", "Shader \"x\" {\n  Pass { }\n}\n", DiagCode::kMisplacedCommand, 2,
          3},
-        {"lod_in_pass", InPass("  LOD 100"), DiagCode::kMisplacedCommand, 4, 3},
+        {"name_in_subshader", InSubShader("Name \"X\""), DiagCode::kMisplacedCommand, 3, 1},
         {"negative_lod", InSubShader("LOD -1"), DiagCode::kExpectedToken, 3, 5},
         {"tag_missing_equals", InPass("  Tags { \"A\" \"B\" }"), DiagCode::kExpectedToken, 4, 14},
         {"fallback_number", "Shader \"x\" {\nFallback 12\n}\n", DiagCode::kExpectedToken, 2, 10},

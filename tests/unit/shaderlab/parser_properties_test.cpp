@@ -119,5 +119,23 @@ TEST(Properties, WarningsForOutOfRangeDefaultAndUnknownTexture) {
     EXPECT_EQ(diags.all()[1].code, DiagCode::kUnknownTextureDefault);
 }
 
+TEST(Properties, UnityAnyAndRectTypesAndDottedAttributes) {
+    ParseOutcome out = ParseText(R"(Shader "x" { Properties {
+    [TextureStack.Stack] _A ("A", Any) = "white" {}
+    _B ("B", any) = "" {}
+    _C ("C", RECT) = "white" {}
+} })");
+    ASSERT_FALSE(out.diags.has_errors()) << Summarize(out.diags);
+    const auto& props = out.shader->properties;
+    ASSERT_EQ(props.size(), 3u);
+    EXPECT_EQ(props[0].type, PropertyType::kTextureAny);
+    EXPECT_TRUE(IsTextureType(props[0].type));
+    EXPECT_STREQ(PropertyTypeName(props[0].type), "Any");
+    ASSERT_EQ(props[0].attributes.size(), 1u);
+    EXPECT_EQ(props[0].attributes[0].name, "TextureStack.Stack");
+    EXPECT_EQ(props[1].type, PropertyType::kTextureAny);
+    EXPECT_EQ(props[2].type, PropertyType::kTexture2D);
+}
+
 }  // namespace
 }  // namespace kiln::test

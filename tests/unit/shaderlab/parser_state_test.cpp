@@ -158,5 +158,27 @@ TEST(RenderStateParse, DuplicatesPerRenderTargetWarn) {
     EXPECT_EQ(lines, (std::vector<uint32_t>{4, 7, 8})) << Summarize(out.diags);
 }
 
+TEST(RenderStateParse, UnitySpellingsAreAcceptedAsTheirCanonicalWords) {
+    // Unity's built-in shaders write AlphaToMask True and ZTest Off.
+    const RenderState s = PassState("AlphaToMask True\nZTest Off");
+    EXPECT_EQ(s.alpha_to_mask->value.text, "On");
+    EXPECT_EQ(s.ztest->value.text, "Always");
+    EXPECT_EQ(PassState("AlphaToMask False").alpha_to_mask->value.text, "Off");
+    EXPECT_EQ(PassState("ZWrite True").zwrite->value.text, "On");
+    // An alias only stands for a word the command takes.
+    ParseOutcome bad = ParseText("Shader \"x\" { SubShader { Pass { Cull True } } }");
+    ASSERT_TRUE(bad.diags.has_errors());
+    EXPECT_EQ(bad.diags.all()[0].code, DiagCode::kInvalidValue);
+}
+
+TEST(RenderStateParse, LodInAPassOverridesTheSubShader) {
+    ParseOutcome out =
+        ParseText("Shader \"x\" { SubShader { LOD 200 Pass { LOD 100 Cull Off } Pass { } } }");
+    ASSERT_FALSE(out.diags.has_errors()) << Summarize(out.diags);
+    const auto& sub = std::get<SubShader>(out.shader->subshaders.at(0));
+    EXPECT_EQ(std::get<Pass>(sub.passes.at(0)).lod, 100);
+    EXPECT_FALSE(std::get<Pass>(sub.passes.at(1)).lod);
+}
+
 }  // namespace
 }  // namespace kiln::test

@@ -43,18 +43,74 @@ TEST(Expand, CartesianProductPicksOneKeywordPerSet) {
                                            "POINT SHADOWS", "SPOT SHADOWS"}));
 }
 
-TEST(Expand, ShaderFeatureVariantsOnlyWhenAskedFor) {
+TEST(Expand, ShaderFeatureCombinationsComeFromMaterialsAsInUnity) {
     PassPragmas p;
     p.sets = {Set({"A", "B"}), Set({"", "_NORMALMAP"}, pack::KeywordSetKind::kShaderFeature),
               Set({"", "_EMISSION"}, pack::KeywordSetKind::kShaderFeature)};
+    auto described = [&](const VariantRequest& r) {
+        DiagnosticList diags;
+        std::set<std::string> out;
+        const auto ex = ExpandVariants(p, r, "P", "t", {}, diags);
+        for (auto k : ex->keys)
+            out.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+        EXPECT_FALSE(diags.has_errors());
+        return out;
+    };
+    // No materials: only the all-off shader_feature combination, times the multi_compile set.
+    EXPECT_EQ(described({}), (std::set<std::string>{"A", "B"}));
+    // One material with both keywords: that combination, not the product of the two sets.
+    VariantRequest both;
+    both.feature_combinations = {{"_NORMALMAP", "_EMISSION"}};
+    EXPECT_EQ(described(both), (std::set<std::string>{"A", "B", "A _NORMALMAP _EMISSION",
+                                                      "B _NORMALMAP _EMISSION"}));
+    // Two materials give two combinations; keywords no set declares are ignored.
+    VariantRequest two;
+    two.feature_combinations = {{"_NORMALMAP"}, {"_EMISSION", "UNRELATED"}, {"_NORMALMAP"}};
     DiagnosticList diags;
-    EXPECT_EQ(ExpandVariants(p, {}, "P", "t", {}, diags)->keys.size(), 8u);  // no information: all
-    VariantRequest none;
-    none.shader_features = std::set<std::string>{};
-    EXPECT_EQ(ExpandVariants(p, none, "P", "t", {}, diags)->keys.size(), 2u);
-    VariantRequest normal;
-    normal.shader_features = std::set<std::string>{"_NORMALMAP"};
-    EXPECT_EQ(ExpandVariants(p, normal, "P", "t", {}, diags)->keys.size(), 4u);
+    auto ex = ExpandVariants(p, two, "P", "t", {}, diags);
+    EXPECT_EQ(ex->keys.size(), 6u);
+    EXPECT_EQ(ex->feature_combinations, 3u);
+    EXPECT_EQ(ex->permutations, 6u);
+    // --all-features: the full product.
+    VariantRequest all;
+    all.all_features = true;
+    EXPECT_EQ(described(all).size(), 8u);
+}
+
+TEST(Expand, ShortcutRulesLeaveUnitysVariantList) {
+    DiagnosticList diags;
+    auto expand = [&](const std::string& pragma) {
+        PassPragmas p;
+        auto shortcut = BuiltinShortcut(pragma);
+        EXPECT_TRUE(shortcut) << pragma;
+        for (const auto& kws : shortcut->sets)
+            p.sets.push_back(Set(kws));
+        p.rules = shortcut->rules;
+        std::set<std::string> out;
+        const auto ex = ExpandVariants(p, {}, "P", "t", {}, diags);
+        for (auto k : ex->keys)
+            out.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+        return out;
+    };
+    const auto fullshadows = expand("multi_compile_fwdadd_fullshadows");
+    EXPECT_EQ(fullshadows.size(), 47u);  // 5 lights x 3 + 8 shadowed x 4 mixing choices
+    EXPECT_TRUE(fullshadows.count("SPOT SHADOWS_DEPTH SHADOWS_SOFT"));
+    EXPECT_TRUE(fullshadows.count("POINT_COOKIE SHADOWS_CUBE"));
+    EXPECT_TRUE(fullshadows.count("DIRECTIONAL SHADOWS_SCREEN"));
+    EXPECT_TRUE(fullshadows.count("DIRECTIONAL SHADOWS_SHADOWMASK LIGHTMAP_SHADOW_MIXING"));
+    EXPECT_FALSE(fullshadows.count("DIRECTIONAL SHADOWS_DEPTH"));  // Unity never builds it
+    EXPECT_FALSE(fullshadows.count("DIRECTIONAL SHADOWS_SCREEN SHADOWS_SOFT"));
+    EXPECT_FALSE(fullshadows.count("POINT LIGHTMAP_SHADOW_MIXING"));
+    EXPECT_EQ(expand("multi_compile_lightpass"), fullshadows);
+    EXPECT_EQ(expand("multi_compile_fwdadd").size(), 5u);
+    const auto base = expand("multi_compile_fwdbase");
+    EXPECT_EQ(base.size(), 112u);
+    EXPECT_TRUE(base.count("DIRECTIONAL LIGHTPROBE_SH VERTEXLIGHT_ON"));
+    EXPECT_FALSE(base.count("DIRECTIONAL LIGHTMAP_ON VERTEXLIGHT_ON"));
+    EXPECT_FALSE(base.count("DIRECTIONAL DIRLIGHTMAP_COMBINED"));
+    EXPECT_EQ(expand("multi_compile_shadowcaster"),
+              (std::set<std::string>{"SHADOWS_DEPTH", "SHADOWS_CUBE"}));
+    EXPECT_EQ(expand("multi_compile_prepassfinal").size(), 88u);
     EXPECT_FALSE(diags.has_errors());
 }
 

@@ -80,18 +80,31 @@ TEST(PassPragmas, EveryKeywordPragmaForm) {
 
 TEST(PassPragmas, BuiltinShortcutsExpandToDocumentedSets) {
     EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_fwdadd").pragmas),
-              "multi: DIRECTIONAL POINT SPOT\n");
-    EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_fwdbase").pragmas),
-              "multi: DIRECTIONAL\nmulti: _ SHADOWS_SCREEN\nmulti: _ LIGHTPROBE_SH\n"
-              "multi: _ VERTEXLIGHT_ON\n");
+              "multi: POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE\n");
+    const Read base = ReadPragmas("#pragma multi_compile_fwdbase");
+    EXPECT_EQ(Sets(base.pragmas),
+              "multi: DIRECTIONAL\nmulti: _ LIGHTMAP_ON\nmulti: _ DIRLIGHTMAP_COMBINED\n"
+              "multi: _ DYNAMICLIGHTMAP_ON\nmulti: _ SHADOWS_SCREEN\nmulti: _ SHADOWS_SHADOWMASK\n"
+              "multi: _ LIGHTMAP_SHADOW_MIXING\nmulti: _ LIGHTPROBE_SH\nmulti: _ VERTEXLIGHT_ON\n");
+    ASSERT_EQ(base.pragmas.rules.size(), 3u);
+    EXPECT_EQ(base.pragmas.rules[1].keyword, "VERTEXLIGHT_ON");
+    EXPECT_EQ(base.pragmas.rules[1].none_of,
+              (std::vector<std::string>{"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}));
+    EXPECT_EQ(base.pragmas.rules[1].pragma, "multi_compile_fwdbase");
     EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_fog").pragmas),
               "multi: _ FOG_LINEAR FOG_EXP FOG_EXP2\n");
     EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_instancing").pragmas),
               "multi: _ INSTANCING_ON\n");
     EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_shadowcaster").pragmas),
               "multi: SHADOWS_DEPTH SHADOWS_CUBE\n");
-    EXPECT_EQ(ReadPragmas("#pragma multi_compile_fwdadd_fullshadows").pragmas.sets.size(), 3u);
-    EXPECT_EQ(ReadPragmas("#pragma multi_compile_lightpass").pragmas.sets.size(), 3u);
+    EXPECT_EQ(ReadPragmas("#pragma multi_compile_fwdadd_fullshadows").pragmas.sets.size(), 5u);
+    EXPECT_EQ(ReadPragmas("#pragma multi_compile_lightpass").pragmas.rules.size(), 5u);
+    EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_particles").pragmas),
+              "multi: _ SOFTPARTICLES_ON\n");
+    EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_shadowcollector").pragmas),
+              "multi: _ SHADOWS_SPLIT_SPHERES\nmulti: _ SHADOWS_SINGLE_CASCADE\n");
+    EXPECT_EQ(ReadPragmas("#pragma multi_compile_prepassfinal").pragmas.sets.size(), 7u);
+    EXPECT_FALSE(BuiltinShortcut("multi_compile_fwdadd_nope"));
 }
 
 TEST(PassPragmas, RenderersAreRecordedAndWarnWithoutVulkan) {
@@ -127,6 +140,16 @@ TEST(PassPragmas, Problems) {
               "  note 3:1: first entry point given here\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma skip_variants NOPE").diags),
               "K4012 5:23 warning: skip_variants names 'NOPE', which no keyword set declares\n");
+}
+
+TEST(PassPragmas, RequireRaisesTheShaderTargetAsInUnity) {
+    EXPECT_EQ(ReadPragmas("#pragma require 2darray").pragmas.shader_target, 35);
+    EXPECT_EQ(ReadPragmas("#pragma require geometry\n#pragma target 3.0").pragmas.shader_target,
+              40);
+    EXPECT_EQ(ReadPragmas("#pragma target 5.0\n#pragma require sampleLOD").pragmas.shader_target,
+              50);
+    EXPECT_EQ(ReadPragmas("#pragma require cubeArray").pragmas.shader_target, 46);
+    EXPECT_EQ(ReadPragmas("#pragma require somethingnew").diags.all().size(), 0u);
 }
 
 }  // namespace

@@ -129,6 +129,7 @@ enum class PropertyType {
     kCube,
     kTexture2DArray,
     kCubeArray,
+    kTextureAny,  // `Any`: a texture of whatever dimension the shader declares
 };
 
 const char* PropertyTypeName(PropertyType type);  // "Color", "2D", ...
@@ -160,6 +161,7 @@ struct Pass {
     SourceRange range;
     std::string name;
     std::vector<Tag> tags;
+    std::optional<int> lod;  // Unity accepts LOD in a Pass too; it overrides the SubShader's
     RenderState state;
     std::vector<ProgramBlock> programs;  // CGPROGRAM/HLSLPROGRAM and *INCLUDE, in source order
 };

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kiln/pack/names.h"
 #include "kiln/pack/reader.h"
 
 namespace kiln::material {
@@ -100,8 +101,7 @@ bool ValidateMaterial(const Material& m,
                       const std::string& material_dir,
                       std::vector<MaterialIssue>& issues);
 
-// Edit distance suggestion: the candidate closest to `name` within a third of its length, or "".
-std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates);
+using pack::ClosestName;  // kiln/pack/names.h
 
 }  // namespace kiln::material
 

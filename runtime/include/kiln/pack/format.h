@@ -97,6 +97,7 @@ enum class PropertyType : uint32_t {
     kCube,
     kTexture2DArray,
     kCubeArray,
+    kTextureAny,  // `Any`: a texture of whatever dimension the shader declares
 };
 
 // ShaderLab's spelling of a property type: "Color", "Range", "2D", ...
@@ -124,6 +125,8 @@ constexpr const char* PropertyTypeName(PropertyType type) {
             return "2DArray";
         case PropertyType::kCubeArray:
             return "CubeArray";
+        case PropertyType::kTextureAny:
+            return "Any";
     }
     return "Float";
 }
@@ -131,7 +134,7 @@ constexpr const char* PropertyTypeName(PropertyType type) {
 constexpr bool IsTextureProperty(PropertyType type) {
     return type == PropertyType::kTexture2D || type == PropertyType::kTexture3D ||
            type == PropertyType::kCube || type == PropertyType::kTexture2DArray ||
-           type == PropertyType::kCubeArray;
+           type == PropertyType::kCubeArray || type == PropertyType::kTextureAny;
 }
 
 struct PropertyRec {  // 64 bytes

@@ -1,0 +1,17 @@
+// Name suggestions shared by the compiler's and the runtime's diagnostics ("did you mean ...").
+#ifndef KILN_PACK_NAMES_H_
+#define KILN_PACK_NAMES_H_
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kiln::pack {
+
+// Edit distance suggestion: the candidate closest to `name` within a third of its length, or "".
+// Case-insensitive Levenshtein distance.
+std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates);
+
+}  // namespace kiln::pack
+
+#endif  // KILN_PACK_NAMES_H_

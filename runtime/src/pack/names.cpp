@@ -1,0 +1,47 @@
+#include "kiln/pack/names.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace kiln::pack {
+namespace {
+
+std::string Lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t best_distance = std::max<size_t>(1, name.size() / 3) + 1;
+    const std::string a = Lower(name);
+    for (const std::string& c : candidates) {
+        // Levenshtein distance, one row.
+        const std::string b = Lower(c);
+        std::vector<size_t> row(b.size() + 1);
+        for (size_t j = 0; j <= b.size(); ++j) {
+            row[j] = j;
+        }
+        for (size_t i = 1; i <= a.size(); ++i) {
+            size_t diagonal = row[0];
+            row[0] = i;
+            for (size_t j = 1; j <= b.size(); ++j) {
+                const size_t up = row[j];
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+                diagonal = up;
+            }
+        }
+        if (row[b.size()] < best_distance) {
+            best_distance = row[b.size()];
+            best = c;
+        }
+    }
+    return best;
+}
+
+}  // namespace kiln::pack
