@@ -91,10 +91,11 @@ TEST(Cli, JsonDiagnostics) {
 
 TEST(Cli, WarningsAloneExitZero) {
     const std::string path =
-        WriteTemp("warn.shader", "Shader \"x\" { SubShader { Pass { Lighting Off } } }\n");
+        WriteTemp("warn.shader", "Shader \"x\" { SubShader { Pass { Fog { Density 1 } } } }\n");
     const RunResult r = RunKiln("parse -q " + path);
     EXPECT_EQ(r.exit_code, 0);
-    EXPECT_NE(r.err.find("warning: legacy fixed-function command 'Lighting'"), std::string::npos);
+    EXPECT_NE(r.err.find("warning: fixed-function 'Fog' settings are ignored"), std::string::npos)
+        << r.err;
 }
 
 TEST(Cli, ErrorsFromSeveralFilesInOneRun) {

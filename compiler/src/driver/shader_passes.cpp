@@ -2,6 +2,9 @@
 
 #include <map>
 
+#include "hlsl/fixed_function.h"
+#include "program_scan.h"
+
 namespace kiln::driver {
 namespace {
 
@@ -109,10 +112,12 @@ std::vector<StateSetting> Lower(const RenderState& s) {
 struct Walker {
     const std::string& file;
     DiagnosticList& diags;
+    const std::vector<Property>& properties;
     std::vector<FlatPass> out;
     std::vector<const ProgramBlock*> includes;  // outer levels
     std::vector<const std::vector<Tag>*> outer_tags;
     RenderState state;
+    FixedFunction fixed;  // outer levels' fixed-function settings
     int lod = 0;
     uint32_t subshader_index = 0;
 
@@ -127,8 +132,10 @@ struct Walker {
     void SubShaderLevel(const SubShader& ss) {
         const auto saved_inc = includes;
         const RenderState saved_state = state;
+        const FixedFunction saved_fixed = fixed;
         AddIncludes(includes, ss.programs);
         Merge(state, ss.state);
+        hlsl::MergeFixedFunction(fixed, ss.fixed);
         const int ss_lod = ss.lod.value_or(lod);
         uint32_t index = 0;
         for (const PassEntry& entry : ss.passes) {
@@ -158,10 +165,19 @@ struct Walker {
                     fp.program = &b;
             }
             if (!fp.program) {
-                diags.Error(DiagCode::kMissingEntryPoint, file, p.range,
-                            "pass has no CGPROGRAM or HLSLPROGRAM block; fixed-function passes "
-                            "are not supported");
-                continue;
+                // A fixed-function pass: Unity generates its programs, and so does Kiln (without
+                // the CGINCLUDE blocks, which belong to the hand-written programs).
+                FixedFunction ff = fixed;
+                hlsl::MergeFixedFunction(ff, p.fixed);
+                auto block = std::make_shared<ProgramBlock>();
+                block->kind = ProgramKind::kCgProgram;
+                block->range = p.range;
+                block->body_begin = p.range.begin;
+                block->text = hlsl::FixedFunctionProgram(ff, properties);
+                block->pragmas = ScanPragmas(block->text, block->body_begin);
+                fp.generated = block;
+                fp.program = block.get();
+                fp.blocks.clear();
             }
             fp.blocks.push_back(fp.program);
             AddTags(fp.tags, p.tags);
@@ -176,6 +192,7 @@ struct Walker {
         ++subshader_index;
         includes = saved_inc;
         state = saved_state;
+        fixed = saved_fixed;
     }
 
     void Entries(const std::vector<SubShaderEntry>& entries) {
@@ -187,15 +204,18 @@ struct Walker {
             const Category& cat = *std::get<std::unique_ptr<Category>>(e);
             const auto saved_inc = includes;
             const RenderState saved_state = state;
+            const FixedFunction saved_fixed = fixed;
             const int saved_lod = lod;
             AddIncludes(includes, cat.programs);
             Merge(state, cat.state);
+            hlsl::MergeFixedFunction(fixed, cat.fixed);
             lod = cat.lod.value_or(lod);
             outer_tags.push_back(&cat.tags);
             Entries(cat.children);
             outer_tags.pop_back();
             includes = saved_inc;
             state = saved_state;
+            fixed = saved_fixed;
             lod = saved_lod;
         }
     }
@@ -206,7 +226,7 @@ struct Walker {
 std::vector<FlatPass> FlattenPasses(const Shader& shader,
                                     const std::string& file,
                                     DiagnosticList& diags) {
-    Walker w{file, diags, {}, {}, {}, {}, 0, 0};
+    Walker w{file, diags, shader.properties, {}, {}, {}, {}, {}, 0, 0};
     Walker::AddIncludes(w.includes, shader.programs);
     w.Entries(shader.subshaders);
     return std::move(w.out);

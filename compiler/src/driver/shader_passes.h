@@ -6,6 +6,7 @@
 #ifndef KILN_DRIVER_SHADER_PASSES_H_
 #define KILN_DRIVER_SHADER_PASSES_H_
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,12 +33,15 @@ struct FlatPass {
     std::string label;                                   // `"FORWARD"` or `#2 of SubShader 1`
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program
     const shaderlab::ProgramBlock* program = nullptr;
+    // The program generated from fixed-function commands (hlsl/fixed_function.h) when the pass
+    // has none of its own; `program` then points here.
+    std::shared_ptr<const shaderlab::ProgramBlock> generated;
     std::vector<PassTag> tags;
     std::vector<StateSetting> state;
 };
 
-// Passes in source order. UsePass/GrabPass and passes without a program are reported (warning /
-// error) and skipped.
+// Passes in source order. UsePass/GrabPass are reported (warning) and skipped; a pass without a
+// program gets one generated from its fixed-function commands, as in Unity.
 std::vector<FlatPass> FlattenPasses(const shaderlab::Shader& shader,
                                     const std::string& file,
                                     DiagnosticList& diags);

@@ -88,9 +88,8 @@ const char* HomeOf(std::string_view word) {
 }
 
 bool IsLegacyCommand(std::string_view word) {
-    static const char* const kLegacy[] = {
-        "Lighting", "SeparateSpecular", "ColorMaterial", "AlphaTest",          "Fog",
-        "Material", "SetTexture",       "BindChannels",  "PackageRequirements"};
+    // Fixed-function commands Kiln does not translate (parser_fixed_function.cpp has the rest).
+    static const char* const kLegacy[] = {"PackageRequirements", "TexGen", "Matrix"};
     for (const char* w : kLegacy) {
         if (EqualsIgnoreCase(word, w)) {
             return true;
@@ -401,7 +400,7 @@ bool Parser::ParseCategory(std::unique_ptr<Category>& out) {
             return ParseLod(cat.lod);
         }
         bool item_ok = false;
-        if (TryCommonCommand(cat.tags, cat.state, cat.programs, item_ok)) {
+        if (TryCommonCommand(cat.tags, cat.state, cat.fixed, cat.programs, false, item_ok)) {
             return item_ok;
         }
         return ReportMisplacedOrUnknown(Level::kCategory);
@@ -429,7 +428,7 @@ bool Parser::ParseSubShader(SubShader& sub) {
             return ParseLod(sub.lod);
         }
         bool item_ok = false;
-        if (TryCommonCommand(sub.tags, sub.state, sub.programs, item_ok)) {
+        if (TryCommonCommand(sub.tags, sub.state, sub.fixed, sub.programs, false, item_ok)) {
             return item_ok;
         }
         return ReportMisplacedOrUnknown(Level::kSubShader);
@@ -448,7 +447,7 @@ bool Parser::ParsePass(Pass& pass) {
             return ParseLod(pass.lod);
         }
         bool item_ok = false;
-        if (TryCommonCommand(pass.tags, pass.state, pass.programs, item_ok)) {
+        if (TryCommonCommand(pass.tags, pass.state, pass.fixed, pass.programs, true, item_ok)) {
             return item_ok;
         }
         return ReportMisplacedOrUnknown(Level::kPass);
@@ -491,7 +490,9 @@ bool Parser::ParseGrabPass(SubShader& sub) {
 
 bool Parser::TryCommonCommand(std::vector<Tag>& tags,
                               RenderState& state,
+                              FixedFunction& fixed,
                               std::vector<ProgramBlock>& programs,
+                              bool in_pass,
                               bool& ok) {
     if (At(TokenKind::kProgram)) {
         ok = ParseProgram(programs);
@@ -502,6 +503,9 @@ bool Parser::TryCommonCommand(std::vector<Tag>& tags,
         return true;
     }
     if (TryStateCommand(state, ok)) {
+        return true;
+    }
+    if (TryFixedFunctionCommand(fixed, in_pass, ok)) {
         return true;
     }
     if (Peek().kind == TokenKind::kIdentifier && IsLegacyCommand(Peek().text)) {

@@ -55,7 +55,9 @@ class Parser {
     Diagnostic& Warning(DiagCode code, SourceRange range, std::string message);
     void ErrorUnexpected(const Token& token, std::string_view context);
     // "duplicate <what>; the last one wins", with a note at the previous one.
-    void WarnDuplicate(DiagCode code, SourceRange range, const std::string& what,
+    void WarnDuplicate(DiagCode code,
+                       SourceRange range,
+                       const std::string& what,
                        SourceRange previous);
 
     // Blocks and recovery. ParseBlock expects '{' next; `item` parses one command starting at the
@@ -81,7 +83,9 @@ class Parser {
     // Shared commands for Category/SubShader/Pass; false when the current token is none of them.
     bool TryCommonCommand(std::vector<Tag>& tags,
                           RenderState& state,
+                          FixedFunction& fixed,
                           std::vector<ProgramBlock>& programs,
+                          bool in_pass,
                           bool& ok);
     bool ReportMisplacedOrUnknown(Level level);
 
@@ -92,6 +96,19 @@ class Parser {
     bool ParsePropertyType(Property& prop);
     bool ParsePropertyDefault(Property& prop);
     std::optional<double> ParseSignedNumber(std::string_view context);
+
+    // Legacy fixed-function commands (parser_fixed_function.cpp). TryFixedFunctionCommand: false
+    // when the current token is none of them; otherwise parses it and sets `ok`.
+    bool TryFixedFunctionCommand(FixedFunction& fixed, bool in_pass, bool& ok);
+    bool ParseOnOff(std::optional<bool>& slot, std::string_view command);
+    std::optional<FixedValue> ParseFixedValue(std::string_view context, bool colour);
+    bool ParseMaterialBlock(FixedFunction& fixed);
+    bool ParseAlphaTest(FixedFunction& fixed);
+    bool ParseSetTexture(FixedFunction& fixed);
+    bool ParseCombine(TextureStage& stage, uint32_t line);
+    std::optional<Combiner> ParseCombiner(uint32_t line);
+    std::optional<CombineSource> ParseCombineSource(uint32_t line);
+    bool ParseBindChannels(FixedFunction& fixed);
 
     // Render state (parser_state.cpp). TryStateCommand: false when the current token is not a
     // render-state command; otherwise parses it and sets `ok`.

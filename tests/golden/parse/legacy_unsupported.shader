@@ -1,5 +1,5 @@
-// What Kiln recognises but does not support: fixed-function commands (ignored with a warning),
-// GLSL programs and surface shaders (errors).
+// What Kiln recognises but does not support: GLSL programs and surface shaders (errors), and
+// the fixed-function commands it does not translate (ignored with a warning).
 Shader "Golden/Legacy"
 {
     SubShader
@@ -11,7 +11,8 @@ Shader "Golden/Legacy"
         Pass
         {
             Lighting Off
-            SetTexture [_MainTex] { combine texture }
+            SetTexture [_MainTex] { combine texture matrix [_Rotation] }
+            Fog { Color (1, 0, 0, 1) }
             GLSLPROGRAM
             void main() {}
             ENDGLSL

@@ -140,14 +140,75 @@ TEST(Parser, CommandsAndValuesAreCaseInsensitive) {
     EXPECT_EQ(st.blend.at(0).dst.text, "OneMinusSrcAlpha");
 }
 
-TEST(Parser, LegacyFixedFunctionCommandsWarnAndAreSkipped) {
-    ParseOutcome out = ParseText(
-        "Shader \"x\" { SubShader { Pass {\n Lighting Off\n SetTexture [_MainTex] { combine "
-        "texture }\n Fog { Mode Off }\n Cull Off\n } } }");
-    EXPECT_FALSE(out.diags.has_errors()) << Summarize(out.diags);
-    EXPECT_EQ(out.diags.all().size(), 3u) << Summarize(out.diags);
-    EXPECT_EQ(out.diags.all()[0].code, DiagCode::kLegacyCommandIgnored);
-    EXPECT_EQ(std::get<Pass>(Sub(*out.shader, 0).passes[0]).state.cull->value.text, "Off");
+TEST(Parser, FixedFunctionCommandsAreParsed) {
+    ParseOutcome out = ParseText(R"(Shader "x" { SubShader {
+    Lighting On SeparateSpecular On ColorMaterial AmbientAndDiffuse
+    Material { Diffuse [_Color] Ambient (0.5, 0.5, 0.5) Shininess [_Shininess] Specular (1,1,1,1) }
+    Pass {
+        AlphaTest Greater [_Cutoff]
+        Color (1, 0, 0, 1)
+        BindChannels { Bind "Vertex", vertex Bind "texcoord1", texcoord0 }
+        Fog { Mode Off }
+        SetTexture [_MainTex] { constantColor [_Tint] combine texture * primary DOUBLE, constant }
+        SetTexture [_Detail] { combine one - previous lerp (texture alpha) constant }
+        SetTexture [_Last] { combine texture * previous +- constant Quad }
+        Cull Off
+    } } })");
+    ASSERT_FALSE(out.diags.has_errors()) << Summarize(out.diags);
+    EXPECT_EQ(out.diags.all().size(), 0u) << Summarize(out.diags);  // Fog Mode Off is no loss
+    const SubShader& sub = Sub(*out.shader, 0);
+    EXPECT_EQ(sub.fixed.lighting, true);
+    EXPECT_EQ(sub.fixed.separate_specular, true);
+    EXPECT_EQ(sub.fixed.color_material, "AmbientAndDiffuse");
+    EXPECT_EQ(sub.fixed.diffuse->property, "_Color");
+    EXPECT_EQ(sub.fixed.ambient->numbers, (std::vector<double>{0.5, 0.5, 0.5, 1.0}));
+    EXPECT_EQ(sub.fixed.shininess->property, "_Shininess");
+    const Pass& pass = std::get<Pass>(sub.passes[0]);
+    EXPECT_EQ(pass.state.cull->value.text, "Off");
+    EXPECT_EQ(pass.fixed.alpha_test, "Greater");
+    EXPECT_EQ(pass.fixed.alpha_ref->property, "_Cutoff");
+    EXPECT_EQ(pass.fixed.color->numbers, (std::vector<double>{1, 0, 0, 1}));
+    EXPECT_EQ(pass.fixed.bindings.size(), 2u);
+    EXPECT_EQ(pass.fixed.bindings[1],
+              (std::pair<std::string, std::string>{"texcoord1", "texcoord0"}));
+    ASSERT_EQ(pass.fixed.stages.size(), 3u);
+    const TextureStage& s0 = pass.fixed.stages[0];
+    EXPECT_EQ(s0.texture, "_MainTex");
+    EXPECT_EQ(s0.constant_color->property, "_Tint");
+    EXPECT_EQ(s0.color.op, CombineOp::kMultiply);
+    EXPECT_EQ(s0.color.scale, 2);
+    EXPECT_EQ(s0.color.sources[1].name, "primary");
+    ASSERT_TRUE(s0.alpha);
+    EXPECT_EQ(s0.alpha->sources[0].name, "constant");
+    const Combiner& lerp = pass.fixed.stages[1].color;
+    EXPECT_EQ(lerp.op, CombineOp::kLerp);
+    EXPECT_TRUE(lerp.sources[0].one_minus);
+    EXPECT_TRUE(lerp.sources[1].alpha);
+    EXPECT_EQ(pass.fixed.stages[2].color.op, CombineOp::kMultiplyAddSigned);
+    EXPECT_EQ(pass.fixed.stages[2].color.scale, 4);
+}
+
+TEST(Parser, FixedFunctionMistakesAreReported) {
+    ParseOutcome out = ParseText(R"(Shader "x" { SubShader {
+    SetTexture [_A] { combine texture }
+    Pass {
+        Lighting Maybe
+        SetTexture [_B] { combine texture * nothing }
+        Material { Glow (1,1,1,1) }
+        Fog { Color (1,0,0,1) }
+        SetTexture [_C] { matrix [_M] combine texture }
+    } } })");
+    EXPECT_EQ(Summarize(out.diags),
+              "K2016 2:5 error: 'SetTexture' is not allowed here; it belongs in a Pass\n"
+              "K2005 4:18 error: invalid value 'Maybe' for 'Lighting'; expected On or Off\n"
+              "K2005 5:45 error: expected a combine source (previous, primary, texture or "
+              "constant), found 'nothing'\n"
+              "K2004 6:20 error: unknown command 'Glow' in a Material block; expected Diffuse, "
+              "Ambient, Specular, Emission or Shininess\n"
+              "K2014 7:9 warning: fixed-function 'Fog' settings are ignored: Kiln's "
+              "fixed-function passes are drawn without fog\n"
+              "K2014 8:27 warning: texture 'matrix' of a SetTexture stage is ignored; the "
+              "texture's tiling and offset (_ST) apply\n");
 }
 
 TEST(Parser, DuplicateTagWarnsWithNote) {

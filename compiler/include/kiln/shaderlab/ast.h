@@ -79,6 +79,60 @@ struct RenderState {
     std::optional<StencilState> stencil;
 };
 
+// Legacy fixed-function ShaderLab (Lighting, Material, Color, SetTexture, ...). Unity turns a
+// pass without a program into vertex and fragment programs from these settings; so does Kiln
+// (hlsl/fixed_function.h). Inner levels inherit what they do not set, as render state does.
+struct FixedValue {
+    std::vector<double> numbers;  // a colour (4, alpha 1 when omitted) or a single number
+    std::string property;         // set for a [property] reference
+    SourceRange range;
+};
+
+// One `combine` expression of a SetTexture stage: `src`, `src1 * src2`, `src1 + src2`,
+// `src1 - src2`, `src1 +- src2`, `src1 lerp (src2) src3`, `src1 * src2 + src3` (also with
+// `+-` and `-`), then `Double` or `Quad`.
+struct CombineSource {
+    std::string name;  // previous, primary, texture, constant (lower-case)
+    bool one_minus = false;
+    bool alpha = false;  // `texture alpha`: the source's alpha in every channel
+};
+enum class CombineOp {
+    kNone,
+    kMultiply,
+    kAdd,
+    kSubtract,
+    kAddSigned,
+    kLerp,
+    kMultiplyAdd,
+    kMultiplyAddSigned,
+    kMultiplySubtract
+};
+struct Combiner {
+    CombineOp op = CombineOp::kNone;
+    std::vector<CombineSource> sources;  // 1, 2 or 3
+    int scale = 1;                       // Double: 2, Quad: 4
+};
+
+struct TextureStage {
+    SourceRange range;
+    std::string texture;  // the [property] it samples
+    std::optional<FixedValue> constant_color;
+    Combiner color;                 // default: `combine texture * previous`
+    std::optional<Combiner> alpha;  // after the comma; default: the colour expression's alpha
+};
+
+struct FixedFunction {
+    std::optional<bool> lighting, separate_specular;
+    std::optional<std::string> color_material;  // AmbientAndDiffuse or Emission
+    std::optional<FixedValue> color;            // `Color`: the primary colour when unlit
+    std::optional<FixedValue> diffuse, ambient, specular, emission, shininess;  // `Material`
+    std::optional<std::string> alpha_test;  // comparison (Greater, ...); "Off" disables it
+    std::optional<FixedValue> alpha_ref;
+    std::vector<TextureStage> stages;                           // SetTexture (Pass level only)
+    std::vector<std::pair<std::string, std::string>> bindings;  // BindChannels: source, target
+    bool any = false;  // some fixed-function command was given
+};
+
 struct Tag {
     std::string key;
     std::string value;
@@ -163,6 +217,7 @@ struct Pass {
     std::vector<Tag> tags;
     std::optional<int> lod;  // Unity accepts LOD in a Pass too; it overrides the SubShader's
     RenderState state;
+    FixedFunction fixed;
     std::vector<ProgramBlock> programs;  // CGPROGRAM/HLSLPROGRAM and *INCLUDE, in source order
 };
 
@@ -185,6 +240,7 @@ struct SubShader {
     std::vector<Tag> tags;
     std::optional<int> lod;
     RenderState state;
+    FixedFunction fixed;
     std::vector<ProgramBlock> programs;
     std::vector<PassEntry> passes;
 };
@@ -198,6 +254,7 @@ struct Category {
     std::vector<Tag> tags;
     std::optional<int> lod;
     RenderState state;
+    FixedFunction fixed;
     std::vector<ProgramBlock> programs;
     std::vector<SubShaderEntry> children;
 };
