@@ -81,6 +81,7 @@ Shader "Kiln/Deferred"
             Tags { "LightMode" = "ForwardBase" }
             CGPROGRAM
             #pragma vertex ForwardVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment ForwardFragment
             ENDCG
         }
@@ -91,6 +92,7 @@ Shader "Kiln/Deferred"
             Tags { "LightMode" = "Deferred" }
             CGPROGRAM
             #pragma vertex ForwardVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment GBufferFragment
             ENDCG
         }

@@ -86,6 +86,7 @@ Shader "Kiln/MultiLight"
 
             CGPROGRAM
             #pragma vertex MultiLightVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment MultiLightBaseFragment
             #pragma multi_compile _ VERTEXLIGHT_ON
             ENDCG
@@ -100,6 +101,7 @@ Shader "Kiln/MultiLight"
 
             CGPROGRAM
             #pragma vertex MultiLightVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment MultiLightAddFragment
             #pragma multi_compile DIRECTIONAL POINT SPOT
             ENDCG

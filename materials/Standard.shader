@@ -20,6 +20,7 @@ Shader "Kiln/Standard"
 
             CGPROGRAM
             #pragma vertex ForwardVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment StandardFragment
             #include "MaterialCommon.cginc"
 

@@ -165,6 +165,7 @@ Shader "Kiln/StandardMetallic"
 
             CGPROGRAM
             #pragma vertex MetallicVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment BaseFragment
             #pragma shader_feature_local _NORMALMAP
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
@@ -183,6 +184,7 @@ Shader "Kiln/StandardMetallic"
 
             CGPROGRAM
             #pragma vertex MetallicVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment AddFragment
             #pragma multi_compile DIRECTIONAL POINT SPOT
             #pragma shader_feature_local _NORMALMAP

@@ -1,28 +1,77 @@
-// AutoLight.cginc: light attenuation for the pass's pixel light, chosen by the light-type
-// keyword of `#pragma multi_compile DIRECTIONAL POINT SPOT` (or multi_compile_fwdadd):
-//   DIRECTIONAL (or no keyword)  1
-//   POINT                        inverse square x smooth range window (KilnAttenuation.cginc)
-//   SPOT                         the same x the spot cone
-// from _WorldSpaceLightPos0, kiln_SpotDirection0 and kiln_LightParams0. Kiln has no light
-// cookies: POINT_COOKIE and DIRECTIONAL_COOKIE behave as POINT and DIRECTIONAL. Shadows are not
-// implemented yet: the shadow macros are empty and SHADOW_ATTENUATION is 1.
+// AutoLight.cginc: attenuation and shadows of the pass's pixel light, with Unity's macro names.
+// The light type comes from the keyword of `#pragma multi_compile DIRECTIONAL POINT SPOT` (or the
+// multi_compile_fwdadd shortcuts); none means directional.
+//   DIRECTIONAL            1
+//   POINT                  inverse square x smooth range window (KilnAttenuation.cginc)
+//   SPOT                   the same x the spot cone
+// from _WorldSpaceLightPos0, kiln_SpotDirection0 and kiln_LightParams0: Kiln's physical light
+// units instead of Unity's attenuation textures (docs/shader-library.md). Kiln has no light
+// cookies: POINT_COOKIE and DIRECTIONAL_COOKIE behave as POINT and DIRECTIONAL. Shadows: the
+// SHADOWS_* variants sample the maps (UnityShadowLibrary.cginc), which Kiln's runtime does not
+// render yet; every other variant is unshadowed (attenuation 1).
 #ifndef AUTOLIGHT_INCLUDED
 #define AUTOLIGHT_INCLUDED
 
-#include "UnityCG.cginc"
+#include "HLSLSupport.cginc"
+#include "UnityShadowLibrary.cginc"
 #include "KilnAttenuation.cginc"
 
-#define SHADOW_COORDS(idx1)
-#define UNITY_SHADOW_COORDS(idx1)
-#define TRANSFER_SHADOW(a)
-#define UNITY_TRANSFER_SHADOW(a, coord)
-#define SHADOW_ATTENUATION(a) 1.0
-#define UNITY_SHADOW_ATTENUATION(a, worldPos) 1.0
-#define LIGHTING_COORDS(idx1, idx2)
-#define UNITY_LIGHTING_COORDS(idx1, idx2)
-#define TRANSFER_VERTEX_TO_FRAGMENT(a)
-#define UNITY_TRANSFER_LIGHTING(a, coord)
+#if !defined(POINT) && !defined(SPOT) && !defined(DIRECTIONAL) && !defined(POINT_COOKIE) && \
+    !defined(DIRECTIONAL_COOKIE)
+#define DIRECTIONAL 1
+#endif
 
+// ---- shadows ----
+#if defined(SHADOWS_SCREEN)
+UNITY_DECLARE_SCREENSPACE_SHADOWMAP(_ShadowMapTexture);
+// The screen-space shadow texture, read at the pixel's projected screen position.
+inline fixed unitySampleShadow(unityShadowCoord4 shadowCoord) {
+    return UNITY_SAMPLE_SCREEN_SHADOW(_ShadowMapTexture, shadowCoord);
+}
+#define SHADOW_COORDS(idx1) unityShadowCoord4 _ShadowCoord : TEXCOORD##idx1;
+#define TRANSFER_SHADOW(a) a._ShadowCoord = ComputeScreenPos(a.pos);
+#define TRANSFER_SHADOW_WPOS(a, wpos) a._ShadowCoord = ComputeScreenPos(a.pos);
+#define SHADOW_ATTENUATION(a) unitySampleShadow(a._ShadowCoord)
+#elif defined(SHADOWS_DEPTH) && defined(SPOT)
+#define SHADOW_COORDS(idx1) unityShadowCoord4 _ShadowCoord : TEXCOORD##idx1;
+#define TRANSFER_SHADOW(a) \
+    a._ShadowCoord = mul(unity_WorldToShadow[0], mul(unity_ObjectToWorld, v.vertex));
+#define TRANSFER_SHADOW_WPOS(a, wpos) \
+    a._ShadowCoord = mul(unity_WorldToShadow[0], float4((wpos).xyz, 1.0));
+#define SHADOW_ATTENUATION(a) UnitySampleShadowmap(a._ShadowCoord)
+#elif defined(SHADOWS_CUBE)
+#define SHADOW_COORDS(idx1) unityShadowCoord3 _ShadowCoord : TEXCOORD##idx1;
+#define TRANSFER_SHADOW(a) \
+    a._ShadowCoord.xyz = mul(unity_ObjectToWorld, v.vertex).xyz - _LightPositionRange.xyz;
+#define TRANSFER_SHADOW_WPOS(a, wpos) a._ShadowCoord.xyz = (wpos).xyz - _LightPositionRange.xyz;
+#define SHADOW_ATTENUATION(a) UnitySampleShadowmap(a._ShadowCoord)
+#else
+#define SHADOW_COORDS(idx1)
+#define TRANSFER_SHADOW(a)
+#define TRANSFER_SHADOW_WPOS(a, wpos)
+#define SHADOW_ATTENUATION(a) 1.0
+#endif
+#define READ_SHADOW_COORDS(a) 0
+#define UNITY_READ_SHADOW_COORDS(input) 0
+#define UNITY_SHADOW_W(_w) _w
+
+// Unity's forward-pass shadow with the real-time / baked blend; Kiln's runtime has neither yet.
+half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 screenPos) {
+    float zDist = dot(_WorldSpaceCameraPos - worldPos, UNITY_MATRIX_V[2].xyz);
+    half fade = UnityComputeShadowFade(UnityComputeShadowFadeDistance(worldPos, zDist));
+    half baked = UnitySampleBakedOcclusion(lightmapUV, worldPos);
+    half realtime = 1.0;
+#if defined(SHADOWS_SCREEN)
+    realtime = unitySampleShadow(screenPos);
+#endif
+    return UnityMixRealtimeAndBakedShadows(realtime, baked, fade);
+}
+
+#define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
+#define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) SHADOW_ATTENUATION(a)
+
+// ---- light attenuation ----
 // Attenuation of the pass's pixel light at a world position, by light type.
 float UnityLightAttenuation(float3 worldPos) {
 #if defined(POINT) || defined(SPOT) || defined(POINT_COOKIE)
@@ -39,9 +88,38 @@ float UnityLightAttenuation(float3 worldPos) {
 #endif
 }
 
+// Unity's cookie and falloff textures for spot lights (Kiln binds white: no cookie).
+sampler2D_float _LightTexture0;
+sampler2D_float _LightTextureB0;
+inline fixed UnitySpotCookie(unityShadowCoord4 lightCoord) {
+    // guard: w = 0 behind the spot's plane
+    return tex2D(_LightTexture0, lightCoord.xy / max(abs(lightCoord.w), 1e-7) + 0.5).w;
+}
+inline fixed UnitySpotAttenuate(unityShadowCoord3 lightCoord) {
+    return tex2D(_LightTextureB0, dot(lightCoord, lightCoord).xx).r;
+}
+
+// Interpolated light coordinates: Kiln interpolates the world position, from which
+// LIGHT_ATTENUATION computes the physical falloff.
+#if defined(POINT) || defined(SPOT) || defined(POINT_COOKIE) || defined(DIRECTIONAL_COOKIE)
+#define DECLARE_LIGHT_COORDS(idx) float3 _LightCoord : TEXCOORD##idx;
+#define COMPUTE_LIGHT_COORDS(a) a._LightCoord = mul(unity_ObjectToWorld, v.vertex).xyz;
+#define LIGHT_ATTENUATION(a) (UnityLightAttenuation(a._LightCoord) * SHADOW_ATTENUATION(a))
+#else
+#define DECLARE_LIGHT_COORDS(idx)
+#define COMPUTE_LIGHT_COORDS(a)
+#define LIGHT_ATTENUATION(a) SHADOW_ATTENUATION(a)
+#endif
+#define DECLARE_LIGHT_COORD(input, worldPos) float3 lightCoord = (worldPos).xyz
+
+#define LIGHTING_COORDS(idx1, idx2) DECLARE_LIGHT_COORDS(idx1) SHADOW_COORDS(idx2)
+#define TRANSFER_VERTEX_TO_FRAGMENT(a) COMPUTE_LIGHT_COORDS(a) TRANSFER_SHADOW(a)
+#define UNITY_LIGHTING_COORDS(idx1, idx2) DECLARE_LIGHT_COORDS(idx1) UNITY_SHADOW_COORDS(idx2)
+#define UNITY_TRANSFER_LIGHTING(a, coord) COMPUTE_LIGHT_COORDS(a) UNITY_TRANSFER_SHADOW(a, coord)
+
 // Declares `float destName` = the light's attenuation at worldPos times the shadow term.
 // worldPos may be a float3 or a float4 (the lecture passes its float4 world position).
 #define UNITY_LIGHT_ATTENUATION(destName, input, worldPos) \
-    float destName = UnityLightAttenuation((worldPos).xyz) * SHADOW_ATTENUATION(input)
+    float destName = UnityLightAttenuation((worldPos).xyz) * UNITY_SHADOW_ATTENUATION(input, worldPos)
 
 #endif  // AUTOLIGHT_INCLUDED

@@ -80,6 +80,7 @@ Shader "KILN_SHADER_NAME"
             Tags { "LightMode" = "ForwardBase" }
             CGPROGRAM
             #pragma vertex Vertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment BaseFragment
             ENDCG
         }
@@ -91,6 +92,7 @@ Shader "KILN_SHADER_NAME"
             ZWrite Off
             CGPROGRAM
             #pragma vertex Vertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment AddFragment
             #pragma multi_compile DIRECTIONAL POINT SPOT
             ENDCG

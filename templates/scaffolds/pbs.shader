@@ -20,6 +20,7 @@ Shader "KILN_SHADER_NAME"
 
             CGPROGRAM
             #pragma vertex Vertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment Fragment
             #include "UnityPBSLighting.cginc"
 
