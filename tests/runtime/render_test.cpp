@@ -145,6 +145,52 @@ TEST_F(RuntimeTest, ColorPropertyIsDecodedFromSrgbWithTheStandardFormula) {
     EXPECT_FLOAT_EQ(ldr[0], 1.0f);
 }
 
+class ProbeShaderTest : public RuntimeTest {
+  protected:
+    // The centre pixel of a 64x48 render of `scene` without lights.
+    glm::vec4 CenterPixel(const runtime::Scene& scene) {
+        runtime::FrameSettings settings;
+        settings.width = 64;
+        settings.height = 48;
+        settings.default_light = false;
+        const runtime::LinearImage image = Render(scene, settings);
+        const size_t center = (size_t{24} * 64 + 32) * 4;
+        if (image.rgba.size() < center + 4) {
+            return glm::vec4(-1.0f);
+        }
+        return {image.rgba[center], image.rgba[center + 1], image.rgba[center + 2],
+                image.rgba[center + 3]};
+    }
+};
+
+TEST_F(ProbeShaderTest, DefaultTexturesTakeTheShapeTheShaderDeclares) {
+    // 3D "black", cube "white" and 2D-array "gray" (128/255) defaults, each bound as an image
+    // view of its own type: the validation layer (on in TearDown) rejects any mismatch.
+    const glm::vec4 c = CenterPixel(LoneSphere("texture_shapes.material", 0));
+    EXPECT_EQ(c.r, 0.0f);
+    EXPECT_EQ(c.g, 1.0f);
+    EXPECT_NEAR(c.b, 128.0 / 255.0, 1e-6);
+}
+
+TEST_F(ProbeShaderTest, ReflectionProbeCubeIsTheAmbientSky) {
+    // unity_SpecCube0 is the scene's uniform ambient radiance (a float cube, so values above 1
+    // survive), decoded with unity_SpecCube0_HDR = (1, 1, 0, 0). RGBA16F stores the radiance to
+    // 11 significant bits: tolerance 1e-3 relative.
+    runtime::Scene scene = LoneSphere("texture_environment.material", 0);
+    scene.ambient = glm::vec3(0.25f, 1.5f, 3.0f);
+    const glm::vec4 c = CenterPixel(scene);
+    EXPECT_NEAR(c.r, 0.25f, 0.25e-3f);
+    EXPECT_NEAR(c.g, 1.5f, 1.5e-3f);
+    EXPECT_NEAR(c.b, 3.0f, 3.0e-3f);
+}
+
+TEST_F(ProbeShaderTest, WorldTransformParamsCarryTheTransformsHandedness) {
+    runtime::Scene scene = LoneSphere("texture_mirror.material", 0);
+    EXPECT_EQ(CenterPixel(scene).r, 1.0f);
+    scene.instances[0].world = glm::scale(scene.instances[0].world, glm::vec3(-1, 1, 1));
+    EXPECT_EQ(CenterPixel(scene).r, 0.0f);
+}
+
 TEST_F(RuntimeTest, DisplayTransformEncodesSrgb) {
     std::vector<float> rgba = {0.214041f, 0.0f, 1.0f, 1.0f, 0.0031308f, 0.5f, 4.0f, 1.0f};
     color_.ApplyDisplay(rgba);

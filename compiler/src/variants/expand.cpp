@@ -113,13 +113,23 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                    " shader_feature combinations";
     }
     ex.permutations = overflow ? UINT64_MAX : product;
-    if (overflow || product > request.max_variants) {
-        auto& d =
-            diags.Error(DiagCode::kTooManyVariants, file, pass_range,
-                        (formula.empty() ? std::string("1") : formula) + " = " +
-                            (overflow ? std::string("more than 2^64") : std::to_string(product)) +
-                            " variants in pass " + pass_label + ", over the limit of " +
-                            std::to_string(request.max_variants) + " (--max-variants)");
+    // The limit applies to the variants actually built: the product less what the shortcut rules
+    // and skip_variants exclude. Enumerating is cheap up to a few million combinations; beyond
+    // that (or past the limit by a factor no rule could bring back) the product alone decides.
+    const uint64_t enumerable = std::max<uint64_t>(uint64_t{1} << 22, request.max_variants);
+    auto too_many = [&](uint64_t built) {
+        std::string count = overflow ? std::string("more than 2^64") : std::to_string(product);
+        std::string message = (formula.empty() ? std::string("1") : formula) + " = " + count +
+                              " variants in pass " + pass_label;
+        if (built != product) {
+            message = std::to_string(built) + " variants in pass " + pass_label + " (" +
+                      (formula.empty() ? std::string("1") : formula) + " = " + count +
+                      " keyword combinations, less those the shortcut rules and skip_variants "
+                      "exclude)";
+        }
+        auto& d = diags.Error(DiagCode::kTooManyVariants, file, pass_range,
+                              message + ", over the limit of " +
+                                  std::to_string(request.max_variants) + " (--max-variants)");
         for (size_t s = 0; s < n; ++s) {
             if (!is_feature(s) && pragmas.sets[s].keywords.size() > 1) {
                 d.notes.push_back({file, pragmas.sets[s].range,
@@ -127,19 +137,25 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                                        " choices from '#pragma " + pragmas.sets[s].pragma + "'"});
             }
         }
+    };
+    if (overflow || product > enumerable) {
+        too_many(product);
         return std::nullopt;
     }
 
     std::set<std::string> skip;
     for (const auto& a : pragmas.skip_variants)
         skip.insert(a.text);
-    // The multi_compile product (features fixed per combination), odometer order.
+    // The multi_compile product (features fixed per combination), odometer order. Past the limit
+    // keys are only counted, for the message.
+    uint64_t built = 0;
+    std::vector<std::string> enabled;
     for (const std::vector<uint32_t>& combo : combos) {
         std::vector<size_t> index(n, 0);
         while (true) {
             pack::VariantKey key;
             bool skipped = false;
-            std::vector<std::string> enabled;
+            enabled.clear();
             for (size_t s = 0; s < n; ++s) {
                 const uint32_t k = is_feature(s) ? combo[s] : choices[s][index[s]];
                 key.Set(ex.layout[s].shift, ex.layout[s].bits, k);
@@ -148,8 +164,10 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                 if (!kw.empty())
                     enabled.push_back(kw);
             }
-            if (!skipped && SatisfiesRules(pragmas.rules, enabled))
-                ex.keys.push_back(key);
+            if (!skipped && SatisfiesRules(pragmas.rules, enabled)) {
+                if (++built <= request.max_variants)
+                    ex.keys.push_back(key);
+            }
             size_t s = 0;
             for (; s < n; ++s) {
                 if (is_feature(s))
@@ -161,6 +179,10 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
             if (s == n)
                 break;
         }
+    }
+    if (built > request.max_variants) {
+        too_many(built);
+        return std::nullopt;
     }
     std::sort(ex.keys.begin(), ex.keys.end());
     ex.keys.erase(std::unique(ex.keys.begin(), ex.keys.end()), ex.keys.end());

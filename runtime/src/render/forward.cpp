@@ -89,6 +89,9 @@ struct Planner {
                                                              : "DIRECTIONAL");
         } else {
             keywords.emplace_back("DIRECTIONAL");
+            // Objects without lightmaps take ambient light from the light probes (unity_SH*), as in
+            // Unity; passes that do not declare the keyword ignore it.
+            keywords.emplace_back("LIGHTPROBE_SH");
             if (!vertex.empty()) {
                 keywords.emplace_back("VERTEXLIGHT_ON");
             }
@@ -167,10 +170,25 @@ struct Planner {
                 if (kind == pack::ResourceKind::kSeparateSampler && name.rfind("sampler", 0) == 0) {
                     name = name.substr(7);  // sampler_MainTex -> _MainTex
                 }
+                if (kind == pack::ResourceKind::kStorageImage ||
+                    kind == pack::ResourceKind::kStorageBuffer) {
+                    return Error{m.name + ": resource '" + name +
+                                 "' is a storage resource, which forward passes cannot bind"};
+                }
+                vk::ImageShape shape = vk::ImageShape::k2D;  // a lone sampler has none
+                if (kind != pack::ResourceKind::kSeparateSampler) {
+                    const std::optional<vk::ImageShape> declared = render::ShapeOf(res);
+                    if (!declared) {
+                        return Error{m.name + ": texture '" + name +
+                                     "' is 1D or a texel buffer, which the runtime cannot bind"};
+                    }
+                    shape = *declared;
+                }
                 render::BoundTexture t;
                 auto it = m.textures.find(name);
                 if (auto e = textures.Get(
-                        it == m.textures.end() ? render::TextureBinding{} : it->second, t)) {
+                        it == m.textures.end() ? render::UnsetTexture(name) : it->second, shape,
+                        t)) {
                     return e;
                 }
                 if (!t.warning.empty()) {
@@ -186,9 +204,6 @@ struct Planner {
                 } else if (kind == pack::ResourceKind::kSeparateSampler) {
                     w.type = VK_DESCRIPTOR_TYPE_SAMPLER;
                     w.image.imageView = VK_NULL_HANDLE;
-                } else if (kind != pack::ResourceKind::kCombinedImageSampler) {
-                    return Error{m.name + ": resource '" + name +
-                                 "' is a storage resource, which forward passes cannot bind"};
                 }
                 d.writes.push_back(w);
             }

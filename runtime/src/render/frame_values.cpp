@@ -34,6 +34,43 @@ glm::mat4 Perspective(float yfov, float aspect, float znear, float zfar) {
     return p;
 }
 
+// UnityPerCamera's depth and projection helpers and UnityPerCameraRare.
+Values CameraValues(const CameraSetup& camera) {
+    Values v;
+    const glm::mat4& p = camera.projection;
+    const bool ortho = p[2][3] == 0.0f;
+    const float n = camera.znear;
+    // Unity's definitions, also for orthographic cameras (whose shaders test unity_OrthoParams.w).
+    if (camera.zfar > 0) {
+        // Perspective: z = f (d - n) / (d (f - n)), so 1/d = (1 - f/n)/f * z + (f/n)/f.
+        const float f = camera.zfar;
+        v["_ZBufferParams"] = {1 - f / n, f / n, (1 - f / n) / f, 1 / n};
+    } else {
+        // Infinite far plane: z = 1 - n/d, 1/d = (1 - z)/n.
+        v["_ZBufferParams"] = {-1e30f, 1e30f, -1 / n, 1 / n};
+    }
+    v["unity_OrthoParams"] = {ortho ? 1 / p[0][0] : 0, ortho ? 1 / p[1][1] : 0, 0, ortho ? 1.0f : 0};
+    v["unity_CameraProjection"] = Mat(p);
+    v["unity_CameraInvProjection"] = Mat(glm::inverse(p));
+    // Unity's camera space looks down +z (view space looks down -z).
+    const glm::mat4 world_to_camera = glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1)) * camera.view;
+    v["unity_WorldToCamera"] = Mat(world_to_camera);
+    v["unity_CameraToWorld"] = Mat(glm::inverse(world_to_camera));
+    // Frustum planes (a, b, c, d), normals pointing inwards, from the rows of the
+    // view-projection matrix (Gribb and Hartmann 2001); depth runs 0..1.
+    const glm::mat4 vp = glm::transpose(p * camera.view);  // vp[i]: row i
+    const glm::vec4 planes[6] = {vp[3] + vp[0], vp[3] - vp[0], vp[3] + vp[1],
+                                 vp[3] - vp[1], vp[2],         vp[3] - vp[2]};
+    std::vector<float> packed;
+    for (const glm::vec4& plane : planes) {
+        const float length = glm::length(glm::vec3(plane));
+        const glm::vec4 unit = length > 0 ? plane / length : plane;
+        packed.insert(packed.end(), {unit.x, unit.y, unit.z, unit.w});
+    }
+    v["unity_CameraWorldClipPlanes"] = packed;
+    return v;
+}
+
 }  // namespace
 
 float Luminance(const glm::vec3& c) {
@@ -98,9 +135,29 @@ Values FrameValues(const runtime::Scene& scene,
     v["_ProjectionParams"] = {1, camera.znear, far, camera.zfar > 0 ? 1 / far : 0};
     v["_ScreenParams"] = {w, h, 1 + 1 / w, 1 + 1 / h};
     v["unity_MatrixV"] = Mat(camera.view);
+    v["unity_MatrixInvV"] = Mat(glm::inverse(camera.view));
     v["unity_MatrixVP"] = Mat(camera.projection * camera.view);
     v["glstate_matrix_projection"] = Mat(camera.projection);
-    v["unity_AmbientSky"] = Vec(glm::vec4(scene.ambient, 1));
+    for (const auto& [name, value] : CameraValues(camera)) {
+        v[name] = value;
+    }
+    // A uniform sky: every ambient colour is the same radiance. UNITY_LIGHTMODEL_AMBIENT is
+    // glstate_lightmodel_ambient * 2, as in Unity.
+    const glm::vec4 ambient(scene.ambient, 1);
+    v["unity_AmbientSky"] = Vec(ambient);
+    v["unity_AmbientEquator"] = Vec(ambient);
+    v["unity_AmbientGround"] = Vec(ambient);
+    v["unity_IndirectSpecColor"] = Vec(ambient);
+    v["glstate_lightmodel_ambient"] = Vec(ambient * 0.5f);
+    // The reflection probe is the ambient sky itself (render/textures.cpp): a linear float
+    // cube (DecodeHDR multiplier 1, exponent 1), one probe (blend weight BoxMin.w = 1), no box
+    // projection (ProbePosition.w = 0).
+    for (const char* probe : {"unity_SpecCube0", "unity_SpecCube1"}) {
+        v[std::string(probe) + "_HDR"] = {1, 1, 0, 0};
+        v[std::string(probe) + "_BoxMin"] = {-1e30f, -1e30f, -1e30f, 1};
+        v[std::string(probe) + "_BoxMax"] = {1e30f, 1e30f, 1e30f, 1};
+        v[std::string(probe) + "_ProbePosition"] = {0, 0, 0, 0};
+    }
     // A constant sky of radiance `ambient`: ShadeSH9 then returns E / pi = ambient.
     reference::SH9 sh;
     reference::AddConstantRadiance(sh, glm::dvec3(scene.ambient));
@@ -124,6 +181,9 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
         } else {
             v["_WorldSpaceLightPos0"] = {light->position.x, light->position.y, light->position.z,
                                          1};
+            // Unity: w = 1 / range (the shadow-cube distance scale); unlimited lights 0.
+            v["_LightPositionRange"] = {light->position.x, light->position.y, light->position.z,
+                                        light->range > 0 ? 1 / light->range : 0};
         }
         v["kiln_SpotDirection0"] = {light->direction.x, light->direction.y, light->direction.z, 0};
         const float inv_range2 = light->range > 0 ? 1 / (light->range * light->range) : 0;
@@ -157,7 +217,11 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
 }
 
 Values ObjectValues(const glm::mat4& world) {
-    return {{"unity_ObjectToWorld", Mat(world)}, {"unity_WorldToObject", Mat(glm::inverse(world))}};
+    // w: -1 for a mirroring transform, so tangent-space bitangents keep their handedness.
+    const float mirror = glm::determinant(glm::mat3(world)) < 0 ? -1.0f : 1.0f;
+    return {{"unity_ObjectToWorld", Mat(world)},
+            {"unity_WorldToObject", Mat(glm::inverse(world))},
+            {"unity_WorldTransformParams", {0, 0, 0, mirror}}};
 }
 
 const runtime::Light* MainLight(const std::vector<runtime::Light>& lights) {

@@ -19,7 +19,9 @@
 namespace kiln::render {
 
 struct TextureBinding {
-    enum class Source { kDefault, kSceneImage, kFile };
+    // kAmbient: the scene's ambient radiance as a constant environment (the reflection-probe
+    // cube unity_SpecCube0/1 of a uniform sky).
+    enum class Source { kDefault, kSceneImage, kFile, kAmbient };
     Source source = Source::kDefault;
     std::string default_name = "white";  // "white", "black", "gray", "bump", "red"
     int image = -1;                      // kSceneImage

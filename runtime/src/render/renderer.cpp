@@ -132,6 +132,7 @@ std::optional<Error> Renderer::State::Sampler(bool repeat, bool nearest, VkSampl
 }
 
 std::optional<Error> Renderer::State::DefaultTexture(const std::string& requested,
+                                                     vk::ImageShape shape,
                                                      const vk::Image*& out) {
     // Unity's built-in defaults; an unknown or empty name is "gray".
     static const std::map<std::string, std::array<uint8_t, 4>> kDefaults = {
@@ -140,16 +141,16 @@ std::optional<Error> Renderer::State::DefaultTexture(const std::string& requeste
         {"bump", {128, 128, 255, 128}},  {"red", {255, 0, 0, 255}},
     };
     const std::string name = kDefaults.count(requested) ? requested : "gray";
-    if (auto it = default_textures.find(name); it != default_textures.end()) {
+    if (auto it = default_textures.find({name, shape}); it != default_textures.end()) {
         out = &it->second;
         return std::nullopt;
     }
     const std::array<uint8_t, 4> texel = kDefaults.at(name);
     vk::Image image;
-    if (auto e = vk::CreateTexture(context, 1, 1, texel, false, image)) {
+    if (auto e = vk::CreateConstantImage(context, shape, VK_FORMAT_R8G8B8A8_UNORM, texel, image)) {
         return e;
     }
-    out = &(default_textures[name] = image);
+    out = &(default_textures[{name, shape}] = image);
     return std::nullopt;
 }
 

@@ -40,7 +40,7 @@ struct Renderer::State {
     VkRenderPass render_pass = VK_NULL_HANDLE;
     std::deque<PipelineEntry> pipelines;  // deque: entries are handed out by pointer
     std::map<std::pair<bool, bool>, VkSampler> samplers;  // (repeat, nearest)
-    std::map<std::string, vk::Image> default_textures;
+    std::map<std::pair<std::string, vk::ImageShape>, vk::Image> default_textures;
     std::vector<std::string> notes;  // pipeline-cache notes etc., reported with the next frame
 
     ~State();
@@ -50,7 +50,11 @@ struct Renderer::State {
                                      const vk::Pipeline*& out,
                                      uint32_t& created);
     std::optional<Error> Sampler(bool repeat, bool nearest, VkSampler& out);
-    std::optional<Error> DefaultTexture(const std::string& name, const vk::Image*& out);
+    // Unity's named defaults ("white", "black", "gray", "bump", "red"; others are "gray") in
+    // the shape the shader declares.
+    std::optional<Error> DefaultTexture(const std::string& name,
+                                        vk::ImageShape shape,
+                                        const vk::Image*& out);
     std::vector<const pack::Pack*> PackList() const;
 };
 

@@ -1,20 +1,91 @@
 #include "render/textures.h"
 
+#include <glm/gtc/packing.hpp>
 #include <stb/stb_image.h>
 
+#include <array>
+#include <cstring>
+
 namespace kiln::render {
+namespace {
+
+const char* ShapeName(vk::ImageShape shape) {
+    switch (shape) {
+        case vk::ImageShape::k2D: return "2D";
+        case vk::ImageShape::k3D: return "3D";
+        case vk::ImageShape::kCube: return "cube";
+        case vk::ImageShape::k2DArray: return "2D-array";
+        case vk::ImageShape::kCubeArray: return "cube-array";
+    }
+    return "?";
+}
+
+}  // namespace
+
+std::optional<vk::ImageShape> ShapeOf(const pack::ResourceRec& resource) {
+    const bool arrayed = resource.arrayed != 0;
+    switch (pack::ImageDim(resource.dim)) {
+        case pack::ImageDim::k2D:
+            return arrayed ? vk::ImageShape::k2DArray : vk::ImageShape::k2D;
+        case pack::ImageDim::k3D:
+            return vk::ImageShape::k3D;
+        case pack::ImageDim::kCube:
+            return arrayed ? vk::ImageShape::kCubeArray : vk::ImageShape::kCube;
+        default:
+            return std::nullopt;
+    }
+}
+
+TextureBinding UnsetTexture(std::string_view name) {
+    TextureBinding binding;
+    // Kiln has no reflection probes: the environment is the scene's uniform ambient sky, which is
+    // also what the spherical harmonics (unity_SH*) hold, so diffuse and specular ambient agree.
+    if (name == "unity_SpecCube0" || name == "unity_SpecCube1") {
+        binding.source = TextureBinding::Source::kAmbient;
+    }
+    return binding;
+}
 
 FrameTextures::~FrameTextures() {
     for (auto& [key, image] : images_) {
         vk::DestroyImage(s_.context, image);
     }
+    for (auto& [shape, image] : ambient_) {
+        vk::DestroyImage(s_.context, image);
+    }
+}
+
+std::optional<runtime::Error> FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
+    auto it = ambient_.find(shape);
+    if (it == ambient_.end()) {
+        // Linear radiance above 1 needs a float texel; RGBA16F is filterable on every device.
+        const glm::vec4 radiance(scene_.ambient, 1.0f);
+        std::array<uint16_t, 4> half{};
+        for (int i = 0; i < 4; ++i) {
+            half[size_t(i)] = glm::packHalf1x16(radiance[i]);
+        }
+        std::array<uint8_t, 8> texel{};
+        std::memcpy(texel.data(), half.data(), texel.size());
+        vk::Image image;
+        if (auto e = vk::CreateConstantImage(s_.context, shape, VK_FORMAT_R16G16B16A16_SFLOAT,
+                                             texel, image)) {
+            return e;
+        }
+        it = ambient_.emplace(shape, image).first;
+    }
+    if (auto e = s_.Sampler(false, false, out.sampler)) {
+        return e;
+    }
+    out.view = it->second.view;
+    return std::nullopt;
 }
 
 std::optional<runtime::Error> FrameTextures::Default(const TextureBinding& binding,
+                                                     vk::ImageShape shape,
                                                      std::string warning,
                                                      BoundTexture& out) {
     const vk::Image* image = nullptr;
-    if (auto e = s_.DefaultTexture(binding.default_name, image)) {
+    if (auto e = s_.DefaultTexture(binding.default_name, shape, image)) {
         return e;
     }
     if (auto e = s_.Sampler(true, false, out.sampler)) {
@@ -26,22 +97,35 @@ std::optional<runtime::Error> FrameTextures::Default(const TextureBinding& bindi
     return std::nullopt;
 }
 
-std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding, BoundTexture& out) {
+std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
+                                                 vk::ImageShape shape,
+                                                 BoundTexture& out) {
     out = BoundTexture{};
+    if (binding.source == TextureBinding::Source::kAmbient) {
+        return Ambient(shape, out);
+    }
+    if (binding.source == TextureBinding::Source::kDefault) {
+        return Default(binding, shape, {}, out);
+    }
+    if (shape != vk::ImageShape::k2D) {
+        return Default(binding, shape,
+                       std::string("the shader declares a ") + ShapeName(shape) +
+                           " texture and images are 2D; using the default " + ShapeName(shape) +
+                           " texture",
+                       out);
+    }
     std::string key;
     if (binding.source == TextureBinding::Source::kSceneImage) {
         if (binding.image < 0 || size_t(binding.image) >= scene_.images.size() ||
             scene_.images[size_t(binding.image)].rgba8.empty()) {
-            return Default(binding,
+            return Default(binding, shape,
                            "image " + std::to_string(binding.image) +
                                " has no pixels; using the default texture",
                            out);
         }
         key = "#" + std::to_string(binding.image);
-    } else if (binding.source == TextureBinding::Source::kFile) {
-        key = binding.file;
     } else {
-        return Default(binding, {}, out);
+        key = binding.file;
     }
     if (auto e = s_.Sampler(binding.repeat, binding.nearest, out.sampler)) {
         return e;
@@ -59,7 +143,7 @@ std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding, 
             int w = 0, h = 0, n = 0;
             stbi_uc* pixels = stbi_load(binding.file.c_str(), &w, &h, &n, 4);
             if (!pixels) {
-                return Default(binding,
+                return Default(binding, shape,
                                "cannot decode '" + binding.file + "': " + stbi_failure_reason() +
                                    "; using the default texture",
                                out);

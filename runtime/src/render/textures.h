@@ -1,11 +1,14 @@
 // Textures for one frame: scene images and .material files uploaded on first use (in the colour
-// space the property asks for), the renderer's default textures otherwise.
+// space the property asks for), the renderer's default textures otherwise, each in the shape
+// (2D, 3D, cube, arrays) the shader declares.
 #ifndef KILN_RUNTIME_RENDER_TEXTURES_H_
 #define KILN_RUNTIME_RENDER_TEXTURES_H_
 
 #include <map>
 #include <string>
 #include <tuple>
+
+#include "vk/resources.h"
 
 #include "render/material_binding.h"
 #include "render/renderer_state.h"
@@ -19,6 +22,13 @@ struct BoundTexture {
     std::string warning;  // why a default texture stands in
 };
 
+// The shape a shader declares for a sampled resource; nullopt for 1D and buffer textures.
+std::optional<vk::ImageShape> ShapeOf(const pack::ResourceRec& resource);
+
+// What stands in for a texture the material does not set: the engine's own textures
+// (unity_SpecCube0/1: the ambient environment) or the default texture.
+TextureBinding UnsetTexture(std::string_view name);
+
 class FrameTextures {
   public:
     FrameTextures(runtime::Renderer::State& s, const runtime::Scene& scene)
@@ -27,16 +37,23 @@ class FrameTextures {
     FrameTextures(const FrameTextures&) = delete;
     FrameTextures& operator=(const FrameTextures&) = delete;
 
-    std::optional<runtime::Error> Get(const TextureBinding& binding, BoundTexture& out);
+    // Image files and scene images are 2D: a shader that declares another shape gets the
+    // binding's default texture in its shape, with a warning.
+    std::optional<runtime::Error> Get(const TextureBinding& binding,
+                                      vk::ImageShape shape,
+                                      BoundTexture& out);
 
   private:
     std::optional<runtime::Error> Default(const TextureBinding& binding,
+                                          vk::ImageShape shape,
                                           std::string warning,
                                           BoundTexture& out);
+    std::optional<runtime::Error> Ambient(vk::ImageShape shape, BoundTexture& out);
     runtime::Renderer::State& s_;
     const runtime::Scene& scene_;
     // (source key, srgb) -> uploaded image; the key is "#<image>" or the file path.
     std::map<std::pair<std::string, bool>, vk::Image> images_;
+    std::map<vk::ImageShape, vk::Image> ambient_;  // Source::kAmbient, per shape
 };
 
 }  // namespace kiln::render

@@ -37,6 +37,7 @@ struct Context {
     VkQueue queue = VK_NULL_HANDLE;
     VkCommandPool command_pool = VK_NULL_HANDLE;
     bool validation = false;
+    bool image_cube_array = false;  // the imageCubeArray feature is enabled
     ValidationLog* log = nullptr;  // owned; the messenger's user data
 };
 

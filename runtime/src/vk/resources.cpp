@@ -254,6 +254,97 @@ std::optional<runtime::Error> CreateTexture(const Context& c,
     return std::nullopt;
 }
 
+std::optional<runtime::Error> CreateConstantImage(const Context& c,
+                                                  ImageShape shape,
+                                                  VkFormat format,
+                                                  std::span<const uint8_t> texel,
+                                                  Image& out) {
+    if (shape == ImageShape::kCubeArray && !c.image_cube_array) {
+        return runtime::Error{"the device cannot sample cube-map arrays (imageCubeArray)"};
+    }
+    const bool cube = shape == ImageShape::kCube || shape == ImageShape::kCubeArray;
+    const uint32_t layers = cube ? 6u : 1u;  // a cube array of one cube is six layers
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+    info.imageType = shape == ImageShape::k3D ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {1, 1, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = layers;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    Image img;
+    img.format = format;
+    img.width = img.height = 1;
+    if (VkResult r = vkCreateImage(c.device, &info, nullptr, &img.image); r != VK_SUCCESS) {
+        return VkError("cannot create an image", r);
+    }
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(c.device, img.image, &req);
+    if (auto e = Allocate(c, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, img.memory)) {
+        DestroyImage(c, img);
+        return e;
+    }
+    vkBindImageMemory(c.device, img.image, img.memory, 0);
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = img.image;
+    switch (shape) {
+        case ImageShape::k2D: view.viewType = VK_IMAGE_VIEW_TYPE_2D; break;
+        case ImageShape::k3D: view.viewType = VK_IMAGE_VIEW_TYPE_3D; break;
+        case ImageShape::kCube: view.viewType = VK_IMAGE_VIEW_TYPE_CUBE; break;
+        case ImageShape::k2DArray: view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY; break;
+        case ImageShape::kCubeArray: view.viewType = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY; break;
+    }
+    view.format = format;
+    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+    if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &img.view); r != VK_SUCCESS) {
+        DestroyImage(c, img);
+        return VkError("cannot create an image view", r);
+    }
+    std::vector<uint8_t> texels;
+    for (uint32_t i = 0; i < layers; ++i) {
+        texels.insert(texels.end(), texel.begin(), texel.end());
+    }
+    Buffer staging;
+    if (auto e = CreateBufferWithData(c, texels, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging)) {
+        DestroyImage(c, img);
+        return e;
+    }
+    auto e = SubmitOnce(c, [&](VkCommandBuffer cmd) {
+        VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = img.image;
+        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             0, 0, nullptr, 0, nullptr, 1, &b);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers};
+        copy.imageExtent = {1, 1, 1};
+        vkCmdCopyBufferToImage(cmd, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               1, &copy);
+        b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        b.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                             0, 0, nullptr, 0, nullptr, 1, &b);
+    });
+    DestroyBuffer(c, staging);
+    if (e) {
+        DestroyImage(c, img);
+        return e;
+    }
+    out = img;
+    return std::nullopt;
+}
+
 std::optional<runtime::Error> ReadBack(const Context& c,
                                        const Image& image,
                                        uint32_t bytes_per_pixel,

@@ -56,6 +56,18 @@ std::optional<runtime::Error> CreateTexture(const Context& c,
                                             bool srgb,
                                             Image& out);
 
+// The shape of a sampled image as a shader declares it (SPIR-V Dim + Arrayed).
+enum class ImageShape { k2D, k3D, kCube, k2DArray, kCubeArray };
+
+// A 1x1(x1) image of `shape` whose every texel (every face and layer) is `texel`, in
+// SHADER_READ_ONLY_OPTIMAL: the stand-in for a texture nothing supplied. `texel` holds one texel
+// of `format` (4 bytes for RGBA8, 8 for RGBA16F, 16 for RGBA32F).
+std::optional<runtime::Error> CreateConstantImage(const Context& c,
+                                                  ImageShape shape,
+                                                  VkFormat format,
+                                                  std::span<const uint8_t> texel,
+                                                  Image& out);
+
 // Copies a colour image (in TRANSFER_SRC_OPTIMAL) into a host buffer.
 std::optional<runtime::Error> ReadBack(const Context& c,
                                        const Image& image,

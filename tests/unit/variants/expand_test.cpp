@@ -146,6 +146,29 @@ TEST(Expand, MaxVariantsErrorShowsTheMultiplication) {
     EXPECT_EQ(ExpandVariants(p, r, "\"FORWARD\"", "t.shader", {}, ok)->keys.size(), 48u);
 }
 
+TEST(Expand, MaxVariantsCountsWhatTheRulesLeave) {
+    // 3 x 2 x 2 x 4 = 48 combinations; the rule keeps X only with B or C and skip_variants drops
+    // F3: 48 - 8 (A with X) = 40 - 10 (F3 among them) = 30 variants.
+    PassPragmas p;
+    p.sets = {Set({"A", "B", "C"}), Set({"", "X"}), Set({"", "Y"}), Set({"", "F1", "F2", "F3"})};
+    p.rules = {{"X", {"B", "C"}, {}, "multi_compile_test"}};
+    p.skip_variants = {{"F3", {}}};
+    VariantRequest r;
+    r.max_variants = 30;
+    DiagnosticList ok;
+    auto ex = ExpandVariants(p, r, "\"FORWARD\"", "t.shader", {}, ok);
+    ASSERT_TRUE(ex);
+    EXPECT_EQ(ex->keys.size(), 30u);
+    r.max_variants = 29;
+    DiagnosticList diags;
+    EXPECT_FALSE(ExpandVariants(p, r, "\"FORWARD\"", "t.shader", {}, diags));
+    ASSERT_EQ(diags.all().size(), 1u);
+    EXPECT_EQ(diags.all()[0].message,
+              "30 variants in pass \"FORWARD\" (3 x 2 x 2 x 4 = 48 keyword combinations, less "
+              "those the shortcut rules and skip_variants exclude), over the limit of 29 "
+              "(--max-variants)");
+}
+
 TEST(Expand, KeyWiderThan64BitsIsRejected) {
     PassPragmas p;
     for (int i = 0; i < 65; ++i)
