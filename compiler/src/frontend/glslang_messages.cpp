@@ -71,6 +71,43 @@ std::string HlslTypeSpellings(const std::string& text) {
     return std::regex_replace(t, kVector, "'$2$1'");
 }
 
+// For a write to a uniform, glslang points past the statement: the column of the last
+// assignment target ("name", "name.xyz", "name[i]" before "=", "+=", ...) before that point.
+uint32_t AssignedGlobal(const GlslangMessage& m, std::string_view line, uint32_t& width) {
+    if (m.text.find("can't modify a uniform") == std::string::npos) {
+        return 0;
+    }
+    static const std::regex kTarget(
+        R"(([A-Za-z_][A-Za-z0-9_]*)(\s*(\.[A-Za-z_][A-Za-z0-9_]*|\[[^\]]*\]))*\s*([-+*/%&|^]?=)(?!=))");
+    const std::string text(line.substr(0, m.column > 0 ? std::min<size_t>(m.column, line.size())
+                                                       : line.size()));
+    uint32_t col = 0;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), kTarget);
+         it != std::sregex_iterator(); ++it) {
+        col = static_cast<uint32_t>(it->position(1) + 1);
+        width = static_cast<uint32_t>(it->length(1));
+    }
+    return col;
+}
+
+// Where glslang's HLSL front end rejects what Unity's compiler (FXC) accepts, and a source
+// rewrite would not be safe, the diagnostic says what Unity does and how to write it portably.
+void ExplainUnityDifference(const GlslangMessage& m, Diagnostic& d) {
+    if (m.text.find("can't modify a uniform") != std::string::npos) {
+        d.message = "cannot write to a shader global: globals are uniforms, and uniforms are "
+                    "read-only";
+        d.notes.push_back({d.file, d.range,
+                           "Unity's compiler accepts this write and keeps the value private to "
+                           "the invocation; copy the global into a local variable, or declare it "
+                           "'static' if neither materials nor the engine set it"});
+    } else if (m.text.find("no matching overloaded function found") != std::string::npos) {
+        d.notes.push_back({d.file, d.range,
+                           "if an argument is a vector where the parameter is a scalar or a "
+                           "shorter vector: Unity's compiler truncates it (warning X3206), "
+                           "glslang does not; pass the components, as in 'f(v.x)'"});
+    }
+}
+
 }  // namespace
 
 std::vector<GlslangMessage> ParseInfoLog(const std::string& log) {
@@ -197,7 +234,9 @@ Diagnostic ToDiagnostic(const GlslangMessage& m, const SourceLookup& lookup) {
     uint32_t col = 0, width = 1;
     if (file) {
         const std::string_view text = file->Line(line);
-        if (m.column > 0 && (m.text == "Expected" || m.token.empty())) {
+        if (const uint32_t target = AssignedGlobal(m, text, width); target > 0) {
+            col = target;
+        } else if (m.column > 0 && (m.text == "Expected" || m.token.empty())) {
             col = std::min<uint32_t>(m.column, static_cast<uint32_t>(text.size()) + 1);
         } else if (const uint32_t found = FindToken(text, m.token); found > 0) {
             col = found;
@@ -218,6 +257,7 @@ Diagnostic ToDiagnostic(const GlslangMessage& m, const SourceLookup& lookup) {
         d.range.end = d.range.begin;
         d.range.end.column += 1;
     }
+    ExplainUnityDifference(m, d);
     return d;
 }
 

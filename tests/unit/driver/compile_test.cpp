@@ -116,6 +116,41 @@ TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
         << "glslang stops at the first error of a declaration; the next line is not reported";
 }
 
+// Two of glslang's differences from Unity's compiler are reported with what Unity does and how
+// to write the code portably (docs/unity-compat.md explains why they are not rewritten).
+TEST(Compile, WriteToAGlobalExplainsUnitysBehaviour) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "global.shader",
+        Replace(PassShader("", "            void Brighten() { _Tint.rgb *= 2; }\n"
+                               "            float4 Use() { Brighten(); return _Tint; }\n"),
+                "SV_Target { return _Tint; }", "SV_Target { return Use(); }"));
+    CompileRun run = Compile({path});
+    EXPECT_FALSE(run.out.ok);
+    EXPECT_EQ(Brief(run.diags),
+              "global.shader:13:31 K5001 cannot write to a shader global: globals are uniforms, and "
+              "uniforms are read-only\n"
+              "  note: Unity's compiler accepts this write and keeps the value private to the "
+              "invocation; copy the global into a local variable, or declare it 'static' if "
+              "neither materials nor the engine set it\n");
+}
+
+TEST(Compile, VectorArgumentToAScalarParameterExplainsUnitysTruncation) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "truncate.shader",
+        Replace(PassShader("", "            float Square(float x) { return x * x; }\n"
+                               "            float4 Use() { return Square(_Tint.rgb); }\n"),
+                "SV_Target { return _Tint; }", "SV_Target { return Use(); }"));
+    CompileRun run = Compile({path});
+    EXPECT_FALSE(run.out.ok);
+    EXPECT_EQ(Brief(run.diags),
+              "truncate.shader:14:35 K5001 no matching overloaded function found 'Square'\n"
+              "  note: if an argument is a vector where the parameter is a scalar or a shorter "
+              "vector: Unity's compiler truncates it (warning X3206), glslang does not; pass the "
+              "components, as in 'f(v.x)'\n");
+}
+
 TEST(Compile, ErrorInCgIncludeIsReportedAtItsOwnLine) {
     ScratchDir dir;
     const std::string path =
