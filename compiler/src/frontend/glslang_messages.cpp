@@ -79,8 +79,8 @@ uint32_t AssignedGlobal(const GlslangMessage& m, std::string_view line, uint32_t
     }
     static const std::regex kTarget(
         R"(([A-Za-z_][A-Za-z0-9_]*)(\s*(\.[A-Za-z_][A-Za-z0-9_]*|\[[^\]]*\]))*\s*([-+*/%&|^]?=)(?!=))");
-    const std::string text(line.substr(0, m.column > 0 ? std::min<size_t>(m.column, line.size())
-                                                       : line.size()));
+    const std::string text(
+        line.substr(0, m.column > 0 ? std::min<size_t>(m.column, line.size()) : line.size()));
     uint32_t col = 0;
     for (auto it = std::sregex_iterator(text.begin(), text.end(), kTarget);
          it != std::sregex_iterator(); ++it) {
@@ -94,8 +94,9 @@ uint32_t AssignedGlobal(const GlslangMessage& m, std::string_view line, uint32_t
 // rewrite would not be safe, the diagnostic says what Unity does and how to write it portably.
 void ExplainUnityDifference(const GlslangMessage& m, Diagnostic& d) {
     if (m.text.find("can't modify a uniform") != std::string::npos) {
-        d.message = "cannot write to a shader global: globals are uniforms, and uniforms are "
-                    "read-only";
+        d.message =
+            "cannot write to a shader global: globals are uniforms, and uniforms are "
+            "read-only";
         d.notes.push_back({d.file, d.range,
                            "Unity's compiler accepts this write and keeps the value private to "
                            "the invocation; copy the global into a local variable, or declare it "

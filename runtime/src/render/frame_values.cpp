@@ -49,11 +49,13 @@ Values CameraValues(const CameraSetup& camera) {
         // Infinite far plane: z = 1 - n/d, 1/d = (1 - z)/n.
         v["_ZBufferParams"] = {-1e30f, 1e30f, -1 / n, 1 / n};
     }
-    v["unity_OrthoParams"] = {ortho ? 1 / p[0][0] : 0, ortho ? 1 / p[1][1] : 0, 0, ortho ? 1.0f : 0};
+    v["unity_OrthoParams"] = {ortho ? 1 / p[0][0] : 0, ortho ? 1 / p[1][1] : 0, 0,
+                              ortho ? 1.0f : 0};
     v["unity_CameraProjection"] = Mat(p);
     v["unity_CameraInvProjection"] = Mat(glm::inverse(p));
     // Unity's camera space looks down +z (view space looks down -z).
-    const glm::mat4 world_to_camera = glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1)) * camera.view;
+    const glm::mat4 world_to_camera =
+        glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1)) * camera.view;
     v["unity_WorldToCamera"] = Mat(world_to_camera);
     v["unity_CameraToWorld"] = Mat(glm::inverse(world_to_camera));
     // Frustum planes (a, b, c, d), normals pointing inwards, from the rows of the

@@ -1,7 +1,7 @@
 #include "render/textures.h"
 
-#include <glm/gtc/packing.hpp>
 #include <stb/stb_image.h>
+#include <glm/gtc/packing.hpp>
 
 #include <array>
 #include <cstring>
@@ -11,11 +11,16 @@ namespace {
 
 const char* ShapeName(vk::ImageShape shape) {
     switch (shape) {
-        case vk::ImageShape::k2D: return "2D";
-        case vk::ImageShape::k3D: return "3D";
-        case vk::ImageShape::kCube: return "cube";
-        case vk::ImageShape::k2DArray: return "2D-array";
-        case vk::ImageShape::kCubeArray: return "cube-array";
+        case vk::ImageShape::k2D:
+            return "2D";
+        case vk::ImageShape::k3D:
+            return "3D";
+        case vk::ImageShape::kCube:
+            return "cube";
+        case vk::ImageShape::k2DArray:
+            return "2D-array";
+        case vk::ImageShape::kCubeArray:
+            return "cube-array";
     }
     return "?";
 }

@@ -38,7 +38,7 @@ struct Context {
     VkCommandPool command_pool = VK_NULL_HANDLE;
     bool validation = false;
     bool image_cube_array = false;  // the imageCubeArray feature is enabled
-    ValidationLog* log = nullptr;  // owned; the messenger's user data
+    ValidationLog* log = nullptr;   // owned; the messenger's user data
 };
 
 // Picks a discrete GPU, then an integrated or virtual one, then a CPU device (lavapipe).

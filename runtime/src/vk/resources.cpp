@@ -291,11 +291,21 @@ std::optional<runtime::Error> CreateConstantImage(const Context& c,
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = img.image;
     switch (shape) {
-        case ImageShape::k2D: view.viewType = VK_IMAGE_VIEW_TYPE_2D; break;
-        case ImageShape::k3D: view.viewType = VK_IMAGE_VIEW_TYPE_3D; break;
-        case ImageShape::kCube: view.viewType = VK_IMAGE_VIEW_TYPE_CUBE; break;
-        case ImageShape::k2DArray: view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY; break;
-        case ImageShape::kCubeArray: view.viewType = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY; break;
+        case ImageShape::k2D:
+            view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+            break;
+        case ImageShape::k3D:
+            view.viewType = VK_IMAGE_VIEW_TYPE_3D;
+            break;
+        case ImageShape::kCube:
+            view.viewType = VK_IMAGE_VIEW_TYPE_CUBE;
+            break;
+        case ImageShape::k2DArray:
+            view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+            break;
+        case ImageShape::kCubeArray:
+            view.viewType = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
+            break;
     }
     view.format = format;
     view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
@@ -331,10 +341,10 @@ std::optional<runtime::Error> CreateConstantImage(const Context& c,
         b.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
         b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                             VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
-                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                             0, 0, nullptr, 0, nullptr, 1, &b);
+        vkCmdPipelineBarrier(
+            cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+            VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0,
+            nullptr, 0, nullptr, 1, &b);
     });
     DestroyBuffer(c, staging);
     if (e) {

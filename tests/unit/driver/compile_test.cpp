@@ -120,28 +120,31 @@ TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
 // to write the code portably (docs/unity-compat.md explains why they are not rewritten).
 TEST(Compile, WriteToAGlobalExplainsUnitysBehaviour) {
     ScratchDir dir;
-    const std::string path = dir.Write(
-        "global.shader",
-        Replace(PassShader("", "            void Brighten() { _Tint.rgb *= 2; }\n"
-                               "            float4 Use() { Brighten(); return _Tint; }\n"),
-                "SV_Target { return _Tint; }", "SV_Target { return Use(); }"));
+    const std::string path =
+        dir.Write("global.shader",
+                  Replace(PassShader("",
+                                     "            void Brighten() { _Tint.rgb *= 2; }\n"
+                                     "            float4 Use() { Brighten(); return _Tint; }\n"),
+                          "SV_Target { return _Tint; }", "SV_Target { return Use(); }"));
     CompileRun run = Compile({path});
     EXPECT_FALSE(run.out.ok);
-    EXPECT_EQ(Brief(run.diags),
-              "global.shader:13:31 K5001 cannot write to a shader global: globals are uniforms, and "
-              "uniforms are read-only\n"
-              "  note: Unity's compiler accepts this write and keeps the value private to the "
-              "invocation; copy the global into a local variable, or declare it 'static' if "
-              "neither materials nor the engine set it\n");
+    EXPECT_EQ(
+        Brief(run.diags),
+        "global.shader:13:31 K5001 cannot write to a shader global: globals are uniforms, and "
+        "uniforms are read-only\n"
+        "  note: Unity's compiler accepts this write and keeps the value private to the "
+        "invocation; copy the global into a local variable, or declare it 'static' if "
+        "neither materials nor the engine set it\n");
 }
 
 TEST(Compile, VectorArgumentToAScalarParameterExplainsUnitysTruncation) {
     ScratchDir dir;
-    const std::string path = dir.Write(
-        "truncate.shader",
-        Replace(PassShader("", "            float Square(float x) { return x * x; }\n"
-                               "            float4 Use() { return Square(_Tint.rgb); }\n"),
-                "SV_Target { return _Tint; }", "SV_Target { return Use(); }"));
+    const std::string path =
+        dir.Write("truncate.shader",
+                  Replace(PassShader("",
+                                     "            float Square(float x) { return x * x; }\n"
+                                     "            float4 Use() { return Square(_Tint.rgb); }\n"),
+                          "SV_Target { return _Tint; }", "SV_Target { return Use(); }"));
     CompileRun run = Compile({path});
     EXPECT_FALSE(run.out.ok);
     EXPECT_EQ(Brief(run.diags),
@@ -383,6 +386,39 @@ TEST(Compile, HlslProgramHasNoImplicitIncludes) {
 })");
     CompileRun run = Compile({shader});
     EXPECT_TRUE(run.out.ok) << Brief(run.diags);
+}
+
+// As in Unity, Lighting.cginc alone reaches DotClamped (through UnityGlobalIllumination ->
+// UnityImageBasedLighting -> UnityStandardBRDF -> UnityDeprecated), so a tutorial shader written
+// that way compiles against Kiln's templates.
+TEST(Compile, LightingCgincAloneReachesDotClamped) {
+    ScratchDir dir;
+    const std::string shader = dir.Write("lit.shader", R"(Shader "Test/LightingOnly" {
+    Properties { _Tint ("Tint", Color) = (1, 1, 1, 1) }
+    SubShader { Pass {
+        Tags { "LightMode" = "ForwardBase" }
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #include "Lighting.cginc"
+        float4 _Tint;
+        struct v2f { float4 pos : SV_POSITION; float3 normal : TEXCOORD0; };
+        v2f vert(appdata_base v) {
+            v2f o;
+            o.pos = UnityObjectToClipPos(v.vertex);
+            o.normal = UnityObjectToWorldNormal(v.normal);
+            return o;
+        }
+        float4 frag(v2f i) : SV_Target {
+            float3 n = normalize(i.normal);
+            return _Tint * _LightColor0 * DotClamped(_WorldSpaceLightPos0.xyz, n);
+        }
+        ENDCG
+    } }
+})");
+    CompileRun run = Compile({shader});
+    EXPECT_TRUE(run.out.ok) << Brief(run.diags);
+    EXPECT_EQ(Brief(run.diags), "");
 }
 
 }  // namespace

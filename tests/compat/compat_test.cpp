@@ -1,0 +1,297 @@
+// The Unity compatibility corpus: Unity's own hand-written (non-surface) built-in shaders
+// (../shared/unity-builtin-2022.3/Shaders, read in place, skipped when absent) compiled unmodified
+// by the `kiln` binary, once against Unity's CGIncludes (-I) and once against Kiln's templates.
+// Each compile runs in its own process under `timeout`, so a crash or a hang is a result, not the
+// end of the test. Known failures are in allowlist.txt with the code they must fail with.
+//
+// CI runs the subset in ci_subset.txt; KILN_COMPAT=full runs every non-surface shader. The
+// results table goes to the test log and to compat-<mode>.md in the working directory.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/compile_support.h"
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kCorpus = fs::path(KILN_SHARED_DIR) / "unity-builtin-2022.3" / "Shaders";
+
+enum class Mode { kUnity, kKiln };
+
+struct Allowed {
+    bool unity = false, kiln = false;
+    std::string code, reason;
+};
+
+std::string TrimSpace(std::string s) {
+    const size_t b = s.find_first_not_of(" \t");
+    const size_t e = s.find_last_not_of(" \t\r");
+    return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+std::map<std::string, Allowed> ReadAllowList() {
+    std::map<std::string, Allowed> out;
+    std::istringstream in(ReadFile(DataPath("compat/allowlist.txt")));
+    std::string line;
+    while (std::getline(in, line)) {
+        if (TrimSpace(line).empty() || line[0] == '#')
+            continue;
+        std::vector<std::string> f;
+        std::stringstream fields(line);
+        for (std::string x; std::getline(fields, x, '|');)
+            f.push_back(TrimSpace(x));
+        EXPECT_EQ(f.size(), 4u) << "allowlist.txt: " << line;
+        if (f.size() != 4)
+            continue;
+        Allowed a;
+        a.unity = f[1] == "both" || f[1] == "unity";
+        a.kiln = f[1] == "both" || f[1] == "kiln";
+        a.code = f[2];
+        a.reason = f[3];
+        out[f[0]] = a;
+    }
+    return out;
+}
+
+bool IsSurfaceShader(const fs::path& file) {
+    static const std::regex kSurface(R"(^\s*#\s*pragma\s+surface\s)");
+    std::istringstream in(ReadFile(file.string()));
+    for (std::string line; std::getline(in, line);) {
+        if (std::regex_search(line, kSurface))
+            return true;
+    }
+    return false;
+}
+
+// The shaders to compile, relative to the corpus root, sorted.
+std::vector<std::string> CorpusShaders(bool full) {
+    std::vector<std::string> out;
+    if (full) {
+        for (const auto& e : fs::recursive_directory_iterator(kCorpus)) {
+            if (e.is_regular_file() && e.path().extension() == ".shader" &&
+                !IsSurfaceShader(e.path())) {
+                out.push_back(fs::relative(e.path(), kCorpus).generic_string());
+            }
+        }
+    } else {
+        std::istringstream in(ReadFile(DataPath("compat/ci_subset.txt")));
+        for (std::string line; std::getline(in, line);) {
+            line = TrimSpace(line);
+            if (!line.empty() && line[0] != '#')
+                out.push_back(line);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string Quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+struct Outcome {
+    enum Kind { kCompiled, kFailed, kCrashed, kTimedOut } kind = kFailed;
+    std::string first_error;  // "file:line:col: error: ... [Kxxxx]"
+    std::string code;         // Kxxxx of the first error
+    double seconds = 0;
+};
+
+// Runs `kiln compile` in its own process, writing into `dir`; a signal or the timeout is a crash
+// or a hang.
+Outcome CompileInProcess(const ScratchDir& dir,
+                         const std::string& shader,
+                         Mode mode,
+                         const std::string& extra_args) {
+    const std::string log = dir.path() + "/log.txt";
+    std::string command = "timeout 600 " + Quote(KILN_BINARY) + " compile " +
+                          Quote((kCorpus / shader).string()) + " -o " +
+                          Quote(dir.path() + "/out.kpack") + " --no-cache " + extra_args;
+    if (mode == Mode::kUnity)
+        command += " -I " + Quote((kCorpus / "CGIncludes").string());
+    command += " >" + Quote(log) + " 2>&1 </dev/null";
+    const auto start = std::chrono::steady_clock::now();
+    const int status = std::system(command.c_str());
+    Outcome o;
+    o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    std::istringstream text(ReadFile(log));
+    for (std::string line; std::getline(text, line);) {
+        if (line.find(": error: ") != std::string::npos || line.find("internal") == 0) {
+            o.first_error = line;
+            std::smatch m;
+            if (std::regex_search(line, m, std::regex(R"(\[(K\d{4})\]\s*$)")))
+                o.code = m[1];
+            break;
+        }
+    }
+    if (code == 0) {
+        o.kind = Outcome::kCompiled;
+    } else if (code == 124) {
+        o.kind = Outcome::kTimedOut;
+    } else if (code == 1) {
+        o.kind = Outcome::kFailed;
+    } else {
+        o.kind = Outcome::kCrashed;  // a signal (128 + n) or an unexpected exit status
+        o.first_error = "exit status " + std::to_string(code) + "; " + o.first_error;
+    }
+    return o;
+}
+
+const char* KindName(Outcome::Kind k) {
+    switch (k) {
+        case Outcome::kCompiled:
+            return "compiles";
+        case Outcome::kFailed:
+            return "fails";
+        case Outcome::kCrashed:
+            return "CRASH";
+        case Outcome::kTimedOut:
+            return "HANG";
+    }
+    return "?";
+}
+
+void RunCorpus(Mode mode) {
+    if (!fs::is_directory(kCorpus)) {
+        GTEST_SKIP() << kCorpus << " is absent (../shared not checked out): corpus skipped";
+    }
+    const char* env = std::getenv("KILN_COMPAT");
+    const bool full = env && std::string(env) == "full";
+    const std::vector<std::string> shaders = CorpusShaders(full);
+    const std::map<std::string, Allowed> allow = ReadAllowList();
+    const char* mode_name = mode == Mode::kUnity ? "unity" : "kiln";
+
+    std::ostringstream table;
+    table << "# Unity corpus, "
+          << (mode == Mode::kUnity ? "Unity's CGIncludes" : "Kiln's templates") << " ("
+          << (full ? "full" : "CI subset") << ", " << shaders.size() << " shaders)\n\n"
+          << "| shader | result | seconds | note |\n|---|---|---|---|\n";
+    size_t compiled = 0, allowed_failures = 0;
+    double total = 0;
+    const ScratchDir dir;
+    for (const std::string& shader : shaders) {
+        const Outcome o = CompileInProcess(dir, shader, mode, "");
+        total += o.seconds;
+        auto a = allow.find(shader);
+        const bool listed =
+            a != allow.end() && (mode == Mode::kUnity ? a->second.unity : a->second.kiln);
+        std::string note;
+        if (o.kind == Outcome::kCompiled) {
+            ++compiled;
+            if (listed) {
+                ADD_FAILURE()
+                    << shader << " compiles in " << mode_name
+                    << " mode but is allow-listed: take it off tests/compat/allowlist.txt";
+            }
+        } else if (listed && o.kind == Outcome::kFailed && o.code == a->second.code) {
+            ++allowed_failures;
+            note = "allow-listed: " + a->second.reason;
+        } else {
+            note = o.first_error;
+            ADD_FAILURE() << shader << " (" << mode_name << " mode) " << KindName(o.kind) << ": "
+                          << o.first_error
+                          << (listed ? " (allow-listed with " + a->second.code + ")" : "");
+        }
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%.1f", o.seconds);
+        table << "| " << shader << " | " << KindName(o.kind) << " | " << seconds << " | " << note
+              << " |\n";
+    }
+    char summary[160];
+    std::snprintf(summary, sizeof summary,
+                  "\n%zu of %zu compile, %zu allow-listed failures, %.0f s in all\n", compiled,
+                  shaders.size(), allowed_failures, total);
+    table << summary;
+    std::cout << table.str();
+    std::ofstream(std::string("compat-") + mode_name + ".md") << table.str();
+    if (full) {
+        // The allow-list stays under 10% of the non-surface shaders.
+        EXPECT_LT(allow.size() * 10, shaders.size()) << "allow-list too long";
+    }
+}
+
+TEST(UnityCorpus, CompilesAgainstUnitysCGIncludes) {
+    RunCorpus(Mode::kUnity);
+}
+
+TEST(UnityCorpus, CompilesAgainstKilnsTemplates) {
+    RunCorpus(Mode::kKiln);
+}
+
+// Standard and the deferred-lighting shader in every variant Unity builds without materials
+// (above) and with a material that enables _NORMALMAP and _METALLICGLOSSMAP, in both modes; the
+// Standard pack built against Unity's CGIncludes then renders a glTF sample with that material
+// and the validation layer on.
+TEST(UnityCorpus, StandardWithANormalMappedMetallicMaterialCompilesInBothModesAndRenders) {
+    if (!fs::is_directory(kCorpus)) {
+        GTEST_SKIP() << kCorpus << " is absent (../shared not checked out): corpus skipped";
+    }
+    const ScratchDir dir;
+    const fs::path box = fs::path(KILN_SHARED_DIR) / "gltf-samples" / "BoxTextured" / "glTF";
+    const fs::path normals =
+        fs::path(KILN_SHARED_DIR) / "gltf-samples" / "NormalTangentTest" / "glTF";
+    const std::string material = dir.Write(
+        "normal_metallic.material",
+        R"({"kiln_material": 1, "shader": "Standard", "keywords": ["_NORMALMAP", "_METALLICGLOSSMAP"],
+  "properties": {"_MainTex": ")" +
+            (box / "CesiumLogoFlat.png").string() + R"(",
+    "_BumpMap": ")" +
+            (normals / "NormalTangentTest_Normal.png").string() + R"(",
+    "_MetallicGlossMap": ")" +
+            (normals / "NormalTangentTest_OcclusionRoughnessMetallic.png").string() + R"("}})");
+    const std::string sidecar =
+        dir.Write("box.kiln.json",
+                  R"({"kiln_materials": 1, "materials": {"Texture": "normal_metallic.material"}})");
+    for (const char* shader : {"DefaultResourcesExtra/Standard.shader",
+                               "DefaultResourcesExtra/Internal-DeferredShading.shader"}) {
+        for (Mode mode : {Mode::kUnity, Mode::kKiln}) {
+            const Outcome o = CompileInProcess(dir, shader, mode, "--materials " + Quote(material));
+            EXPECT_EQ(o.kind, Outcome::kCompiled)
+                << shader << (mode == Mode::kUnity ? " (unity mode): " : " (kiln mode): ")
+                << o.first_error;
+            std::cout << shader << (mode == Mode::kUnity ? " unity" : " kiln") << " mode with "
+                      << "_NORMALMAP _METALLICGLOSSMAP: " << KindName(o.kind) << " in " << o.seconds
+                      << " s\n";
+            if (o.kind != Outcome::kCompiled || mode != Mode::kUnity ||
+                std::string(shader).find("Standard") == std::string::npos) {
+                continue;
+            }
+            if (!fs::exists(box / "BoxTextured.gltf") || !fs::exists(normals)) {
+                std::cout << "glTF samples absent: render skipped\n";
+                continue;
+            }
+            const std::string log = dir.path() + "/render.txt";
+            const std::string command =
+                Quote(KILN_BINARY) + " render " + Quote((box / "BoxTextured.gltf").string()) +
+                " --pack " + Quote(dir.path() + "/out.kpack") + " --materials " + Quote(sidecar) +
+                " --validation --width 160 --height 120 -o " + Quote(dir.path() + "/box.png") +
+                " >" + Quote(log) + " 2>&1";
+            const int status = std::system(command.c_str());
+            const std::string output = ReadFile(log);
+            EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << output;
+            EXPECT_NE(output.find("validation messages: 0"), std::string::npos) << output;
+            std::cout << output;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace kiln::test
