@@ -39,6 +39,34 @@ std::optional<runtime::Error> Allocate(const Context& c,
     return std::nullopt;
 }
 
+// Creates `info`'s image in device-local memory and a view of every mip level and layer.
+std::optional<runtime::Error> CreateImageAndView(const Context& c,
+                                                 const VkImageCreateInfo& info,
+                                                 VkImageViewType view_type,
+                                                 VkImageAspectFlags aspect,
+                                                 Image& img) {
+    if (VkResult r = vkCreateImage(c.device, &info, nullptr, &img.image); r != VK_SUCCESS) {
+        return VkError("cannot create an image", r);
+    }
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(c.device, img.image, &req);
+    if (auto e = Allocate(c, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, img.memory)) {
+        DestroyImage(c, img);
+        return e;
+    }
+    vkBindImageMemory(c.device, img.image, img.memory, 0);
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = img.image;
+    view.viewType = view_type;
+    view.format = info.format;
+    view.subresourceRange = {aspect, 0, info.mipLevels, 0, info.arrayLayers};
+    if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &img.view); r != VK_SUCCESS) {
+        DestroyImage(c, img);
+        return VkError("cannot create an image view", r);
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<runtime::Error> CreateBuffer(const Context& c,
@@ -122,24 +150,8 @@ std::optional<runtime::Error> CreateImage(const Context& c,
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    if (VkResult r = vkCreateImage(c.device, &info, nullptr, &img.image); r != VK_SUCCESS) {
-        return VkError("cannot create an image", r);
-    }
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(c.device, img.image, &req);
-    if (auto e = Allocate(c, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, img.memory)) {
-        DestroyImage(c, img);
+    if (auto e = CreateImageAndView(c, info, VK_IMAGE_VIEW_TYPE_2D, aspect, img)) {
         return e;
-    }
-    vkBindImageMemory(c.device, img.image, img.memory, 0);
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = img.image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = format;
-    view.subresourceRange = {aspect, 0, mip_levels, 0, 1};
-    if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &img.view); r != VK_SUCCESS) {
-        DestroyImage(c, img);
-        return VkError("cannot create an image view", r);
     }
     out = img;
     return std::nullopt;
@@ -275,43 +287,15 @@ std::optional<runtime::Error> CreateConstantImage(const Context& c,
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    static constexpr VkImageViewType kViewTypes[] = {
+        VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_VIEW_TYPE_3D, VK_IMAGE_VIEW_TYPE_CUBE,
+        VK_IMAGE_VIEW_TYPE_2D_ARRAY, VK_IMAGE_VIEW_TYPE_CUBE_ARRAY};  // by ImageShape
     Image img;
     img.format = format;
     img.width = img.height = 1;
-    if (VkResult r = vkCreateImage(c.device, &info, nullptr, &img.image); r != VK_SUCCESS) {
-        return VkError("cannot create an image", r);
-    }
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(c.device, img.image, &req);
-    if (auto e = Allocate(c, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, img.memory)) {
-        DestroyImage(c, img);
+    if (auto e = CreateImageAndView(c, info, kViewTypes[size_t(shape)], VK_IMAGE_ASPECT_COLOR_BIT,
+                                    img)) {
         return e;
-    }
-    vkBindImageMemory(c.device, img.image, img.memory, 0);
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = img.image;
-    switch (shape) {
-        case ImageShape::k2D:
-            view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-            break;
-        case ImageShape::k3D:
-            view.viewType = VK_IMAGE_VIEW_TYPE_3D;
-            break;
-        case ImageShape::kCube:
-            view.viewType = VK_IMAGE_VIEW_TYPE_CUBE;
-            break;
-        case ImageShape::k2DArray:
-            view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-            break;
-        case ImageShape::kCubeArray:
-            view.viewType = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
-            break;
-    }
-    view.format = format;
-    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
-    if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &img.view); r != VK_SUCCESS) {
-        DestroyImage(c, img);
-        return VkError("cannot create an image view", r);
     }
     std::vector<uint8_t> texels;
     for (uint32_t i = 0; i < layers; ++i) {
