@@ -115,7 +115,7 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
     ex.permutations = overflow ? UINT64_MAX : product;
     // The limit applies to the variants actually built: the product less what the shortcut rules
     // and skip_variants exclude. Enumerating is cheap up to a few million combinations; beyond
-    // that (or past the limit by a factor no rule could bring back) the product alone decides.
+    // that (and beyond the limit itself) the product alone decides.
     const uint64_t enumerable = std::max<uint64_t>(uint64_t{1} << 22, request.max_variants);
     auto too_many = [&](uint64_t built) {
         std::string count = overflow ? std::string("more than 2^64") : std::to_string(product);
