@@ -3,6 +3,7 @@
 #include <stb/stb_image.h>
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -67,7 +68,8 @@ std::optional<runtime::Error> FrameTextures::Ambient(vk::ImageShape shape, Bound
         const glm::vec4 radiance(scene_.ambient, 1.0f);
         std::array<uint16_t, 4> half{};
         for (int i = 0; i < 4; ++i) {
-            half[size_t(i)] = glm::packHalf1x16(radiance[i]);
+            // guard: beyond binary16's largest value the texel would be infinite
+            half[size_t(i)] = glm::packHalf1x16(std::min(radiance[i], 65504.0f));
         }
         std::array<uint8_t, 8> texel{};
         std::memcpy(texel.data(), half.data(), texel.size());
