@@ -4,6 +4,8 @@
 #include <set>
 #include <vector>
 
+#include "hlsl/identifier.h"
+
 namespace kiln::hlsl {
 namespace {
 
@@ -13,13 +15,6 @@ struct Item {
     std::string name;              // function name
     std::set<std::string> idents;  // identifiers used (for functions: excluding its name)
 };
-
-bool IdentStart(char c) {
-    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-}
-bool IdentChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
 
 // Marks the bytes of directive lines (first non-blank character '#').
 std::vector<bool> DirectiveMask(const std::string& s) {

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hlsl/identifier.h"
+
 namespace kiln::hlsl {
 namespace {
 
@@ -16,13 +18,6 @@ struct Token {
     bool ident = false;
     std::string_view text;
 };
-
-bool IdentStart(char c) {
-    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-}
-bool IdentChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
 
 // Tokens of the preprocessed text; directive lines (#line, #pragma, #extension) are skipped.
 std::vector<Token> Tokenize(const std::string& s) {

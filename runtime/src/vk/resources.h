@@ -74,6 +74,7 @@ std::optional<runtime::Error> ReadBack(const Context& c,
                                        uint32_t bytes_per_pixel,
                                        std::vector<uint8_t>& out);
 
+// A layout transition of mip levels [base_mip, base_mip + mip_count) of every array layer.
 void ImageBarrier(VkCommandBuffer cmd,
                   VkImage image,
                   VkImageAspectFlags aspect,
