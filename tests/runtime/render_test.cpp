@@ -116,6 +116,35 @@ TEST_F(RuntimeTest, PixelLightCountLimitsAdditivePassesAndTheRestBecomeVertexLig
     EXPECT_EQ(stats.vertex_lit, 1u);  // the other three lit per vertex (VERTEXLIGHT_ON)
 }
 
+// -Os keeps every uniform-block member (the stages share one buffer per block) and renders what
+// -O renders. Tolerance 1e-3 linear: the two pass lists may fold and reorder float arithmetic
+// differently, a few ulps per term, far below one 8-bit step (about 1.5e-3 at mid-grey in linear).
+TEST_F(RuntimeTest, SizeOptimizedPackRendersLikeTheDefault) {
+    runtime::RendererOptions options;
+    options.validation = true;
+    options.float32_target = true;
+    runtime::Renderer small;
+    ASSERT_FALSE(runtime::Renderer::Create(options, small));
+    auto e = small.AddPack(KILN_SIZE_PACK);
+    ASSERT_FALSE(e) << e->message;
+    runtime::FrameSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    const runtime::Scene scene = LoneSphere("multi_light.material", 2);
+    runtime::LinearImage expected = Render(scene, settings), got;
+    runtime::FrameStats stats;
+    e = small.Render(scene, settings, color_, got, stats);
+    ASSERT_FALSE(e) << e->message;
+    EXPECT_EQ(stats.add_passes, 2u);
+    ASSERT_EQ(got.rgba.size(), expected.rgba.size());
+    float worst = 0;
+    for (size_t i = 0; i < got.rgba.size(); ++i)
+        worst = std::max(worst, std::abs(got.rgba[i] - expected.rgba[i]));
+    EXPECT_LT(worst, 1e-3f);
+    EXPECT_GT(Covered(got), got.rgba.size() / 4 / 10);
+    EXPECT_TRUE(small.ValidationMessages().empty());
+}
+
 TEST_F(RuntimeTest, ColorPropertyIsDecodedFromSrgbWithTheStandardFormula) {
     // Unlit writes _Color; the material file says (0.5, 0.25, 0.75) in sRGB.
     runtime::Scene scene = LoneSphere("unlit_color.material", 0);

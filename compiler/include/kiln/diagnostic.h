@@ -75,6 +75,7 @@ enum class DiagCode : uint16_t {
     kVariantKeyTooWide = 4011,
     kUnknownSkipKeyword = 4012,
     kNoVariantsLeft = 4013,
+    kEntryPointNotFound = 4014,
 
     kHlslError = 5001,
     kHlslWarning = 5002,

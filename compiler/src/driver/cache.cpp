@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr uint32_t kEntryMagic = 0x4341434B;  // "KCAC"
-constexpr uint32_t kEntryVersion = 1;
+// 2: a stage whose entry point does not exist is an error (version 1 cached an empty module).
+constexpr uint32_t kEntryVersion = 2;
 
 void PutU32(std::string& s, uint32_t x) {
     for (int i = 0; i < 4; ++i)

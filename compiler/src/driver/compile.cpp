@@ -18,6 +18,7 @@
 #include "hlsl/includer.h"
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
+#include "kiln/pack/names.h"
 #include "kiln/shaderlab/parse.h"
 #include "spirv/optimize.h"
 
@@ -181,7 +182,9 @@ void PreprocessAndDedup(CompileState& st) {
             if (!out.ok)
                 return;
             hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(out.text);
-            t.reduced = hlsl::ReduceToEntryPoint(rewritten.text, EntryOf(st, t));
+            hlsl::Reduced reduced = hlsl::ReduceToEntryPoint(rewritten.text, EntryOf(st, t));
+            t.reduced = std::move(reduced.text);
+            t.functions_if_entry_missing = std::move(reduced.functions_if_entry_missing);
             if (rewritten.changed())
                 t.rewritten = std::move(rewritten.text);
         },
@@ -220,6 +223,21 @@ void PreprocessAndDedup(CompileState& st) {
     }
 }
 
+// The `#pragma vertex|fragment` of a stage whose function does not exist, with the closest name.
+Diagnostic MissingEntryPoint(const CompileState& st, const driver::StageTask& t) {
+    const auto& pr = st.passes[t.pass].pragmas;
+    const variants::EntryPoint& e = t.stage == pack::Stage::kVertex ? *pr.vertex : *pr.fragment;
+    Diagnostic d{Severity::kError,
+                 DiagCode::kEntryPointNotFound,
+                 st.shaders[st.passes[t.pass].shader].file->path(),
+                 e.range,
+                 std::string(t.stage == pack::Stage::kVertex ? "vertex" : "fragment") +
+                     " entry point '" + e.name + "' is not a function of this program",
+                 {}};
+    d.message += pack::DidYouMean(e.name, t.functions_if_entry_missing);
+    return d;
+}
+
 // Phase 4: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats) {
     const hlsl::IncludePaths paths = IncludePathsFor(st.options);
@@ -243,6 +261,10 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
             ++compiles;
             frontend::StageOutput out = frontend::Compile(job.stage, task.reduced, main, job.entry,
                                                           includer, st.options.debug_info);
+            if (out.entry_missing) {
+                job.diags.push_back(MissingEntryPoint(st, task));
+                return;
+            }
             if (!out.ok) {
                 // Positions in the reduced text are lines of the original files but not their
                 // columns: compile the assembled source once more for exact diagnostics (or,

@@ -43,6 +43,7 @@ struct StageTask {
     std::string rewritten;  // preprocessed and rewritten, kept only when a rewrite applied
     bool preprocess_ok = false;
     std::string preprocess_log;
+    std::vector<std::string> functions_if_entry_missing;  // hlsl::Reduced's, for suggestions
     size_t job = 0;
 };
 

@@ -96,6 +96,12 @@ StageOutput Compile(pack::Stage stage,
         out.info_log += program.getInfoLog();
         return out;
     }
+    // glslang links a program without its entry point, warning "Entry point not found", and
+    // would emit an entry point that does nothing.
+    if (std::string(program.getInfoLog()).find("Entry point not found") != std::string::npos) {
+        out.entry_missing = true;
+        return out;
+    }
     glslang::SpvOptions options;
     options.generateDebugInfo = debug_info;
     options.disableOptimizer = true;  // SPIRV-Tools runs legalization and -O afterwards

@@ -30,6 +30,9 @@ struct StageOutput {
     std::string text;             // Preprocess: the preprocessed source
     std::vector<uint32_t> spirv;  // Compile: unoptimized SPIR-V
     std::string info_log;         // glslang's messages, converted by glslang_messages.h
+    // Compile: glslang found no function named like the entry point (it would otherwise emit an
+    // empty entry point and only warn); ok is false.
+    bool entry_missing = false;
 };
 
 // `name` is the main file's name (an include's "including file" for the first level).

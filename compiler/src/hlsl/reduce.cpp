@@ -1,5 +1,6 @@
 #include "hlsl/reduce.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 #include <vector>
@@ -119,9 +120,19 @@ std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& dire
 
 }  // namespace
 
-std::string ReduceToEntryPoint(const std::string& text, const std::string& entry_point) {
+Reduced ReduceToEntryPoint(const std::string& text, const std::string& entry_point) {
     const std::vector<bool> directive = DirectiveMask(text);
     std::vector<Item> items = SplitItems(text, directive);
+    Reduced out;
+    const bool entry_found = std::any_of(items.begin(), items.end(), [&](const Item& it) {
+        return it.is_function && it.name == entry_point;
+    });
+    if (!entry_found) {
+        for (const Item& it : items) {
+            if (it.is_function)
+                out.functions_if_entry_missing.push_back(it.name);
+        }
+    }
 
     std::set<std::string> reachable = {entry_point};
     for (const Item& it : items) {
@@ -149,8 +160,7 @@ std::string ReduceToEntryPoint(const std::string& text, const std::string& entry
         for (size_t k = items[i].begin; k < items[i].end; ++k)
             drop[k] = true;
     }
-    std::string out;
-    out.reserve(text.size());
+    out.text.reserve(text.size());
     size_t line_begin = 0;
     for (size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
@@ -161,17 +171,17 @@ std::string ReduceToEntryPoint(const std::string& text, const std::string& entry
             std::string_view line(text.data() + i, eol - i);
             const size_t hash = line.find('#');
             if (line.substr(hash + 1).find("pragma") != 0)
-                out.append(line);
+                out.text.append(line);
             i = eol - 1;
             continue;
         }
         if (c == '\n') {
-            out += '\n';
+            out.text += '\n';
             line_begin = i + 1;
             continue;
         }
         if (!drop[i])
-            out += c;
+            out.text += c;
     }
     return out;
 }

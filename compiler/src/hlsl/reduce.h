@@ -8,10 +8,18 @@
 #define KILN_HLSL_REDUCE_H_
 
 #include <string>
+#include <vector>
 
 namespace kiln::hlsl {
 
-std::string ReduceToEntryPoint(const std::string& preprocessed, const std::string& entry_point);
+struct Reduced {
+    std::string text;
+    // Set only when no top-level function is named like the entry point: every top-level
+    // function's name, for the "did you mean" of a missing entry point.
+    std::vector<std::string> functions_if_entry_missing;
+};
+
+Reduced ReduceToEntryPoint(const std::string& preprocessed, const std::string& entry_point);
 
 }  // namespace kiln::hlsl
 

@@ -1,5 +1,7 @@
 #include "spirv/optimize.h"
 
+#include <string_view>
+
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
@@ -18,6 +20,20 @@ spvtools::MessageConsumer Collect(std::string& out) {
     };
 }
 
+// SPIRV-Tools' -Os list without eliminate-dead-members: that pass drops the uniform-block members
+// one stage does not read, so the stages of a variant (and the runtime's one buffer per block)
+// would disagree on the block's layout.
+bool RegisterSizePassesKeepingBlockLayouts(spvtools::Optimizer& opt) {
+    spvtools::Optimizer size(kEnv);
+    size.RegisterSizePasses();
+    std::vector<std::string> flags;
+    for (const char* name : size.GetPassNames()) {
+        if (std::string_view(name) != "eliminate-dead-members")
+            flags.push_back(std::string("--") + name);
+    }
+    return opt.RegisterPassesFromFlags(flags);
+}
+
 }  // namespace
 
 std::string SpirvToolsVersion() {
@@ -30,8 +46,8 @@ bool Optimize(std::vector<uint32_t>& words, OptLevel level, std::string& message
     opt.RegisterLegalizationPasses();
     if (level == OptLevel::kPerformance)
         opt.RegisterPerformancePasses();
-    if (level == OptLevel::kSize)
-        opt.RegisterSizePasses();
+    if (level == OptLevel::kSize && !RegisterSizePassesKeepingBlockLayouts(opt))
+        return false;
     spvtools::OptimizerOptions options;
     options.set_run_validator(false);  // validated once at the end, after every change
     std::vector<uint32_t> out;

@@ -61,7 +61,7 @@ struct State {
                 .notes.push_back({file, slot->range, "first entry point given here"});
             return;
         }
-        slot = EntryPoint{p.args[0].text, p.range};
+        slot = EntryPoint{p.args[0].text, p.args[0].range};  // the name: diagnostics point at it
     }
 
     void Target(const Pragma& p) {

@@ -45,7 +45,7 @@ struct Shortcut {
 
 struct EntryPoint {
     std::string name;
-    SourceRange range;
+    SourceRange range;  // of the name
 };
 
 struct PassPragmas {

@@ -44,4 +44,9 @@ std::string ClosestName(std::string_view name, const std::vector<std::string>& c
     return best;
 }
 
+std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates) {
+    const std::string near = ClosestName(name, candidates);
+    return near.empty() ? std::string() : "; did you mean '" + near + "'?";
+}
+
 }  // namespace kiln::pack

@@ -92,6 +92,25 @@ TEST(Compile, FunctionsNoEntryPointReachesAreNotCompiled) {
     EXPECT_EQ(Brief(run.diags), "");
 }
 
+// glslang only warns when the entry point does not exist and emits a stage that does nothing.
+TEST(Compile, AnEntryPointThatIsNotAFunctionIsAnErrorAtItsPragma) {
+    ScratchDir dir;
+    const std::string frag = dir.Write(
+        "frag.shader", Replace(PassShader(""), "#pragma fragment frag", "#pragma fragment fragg"));
+    CompileRun run = Compile({frag});
+    EXPECT_FALSE(run.out.ok);
+    EXPECT_EQ(Brief(run.diags),
+              "frag.shader:8:30 K4014 fragment entry point 'fragg' is not a function of this "
+              "program; did you mean 'frag'?\n");
+    const std::string vert = dir.Write(
+        "vert.shader", Replace(PassShader(""), "#pragma vertex vert", "#pragma vertex shade"));
+    run = Compile({vert});
+    EXPECT_FALSE(run.out.ok);
+    EXPECT_EQ(Brief(run.diags),
+              "vert.shader:7:28 K4014 vertex entry point 'shade' is not a function of this "
+              "program\n");
+}
+
 TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
     ScratchDir dir;
     const std::string path =
@@ -264,7 +283,7 @@ TEST(Compile, StageInterfaceMismatchIsAnError) {
         "}\n");
     CompileRun run = Compile({path});
     EXPECT_EQ(Brief(run.diags),
-              "io.shader:5:9 K5004 fragment input COLOR0 and vertex output TEXCOORD0 share "
+              "io.shader:5:26 K5004 fragment input COLOR0 and vertex output TEXCOORD0 share "
               "location 0; declare the vertex outputs and fragment inputs in the same order\n"
               "  note: in shader \"Test/IO\" pass #1 of SubShader 1, variant (no keywords)\n");
 }

@@ -15,7 +15,7 @@ TEST(Reduce, DropsFunctionsTheEntryPointDoesNotReachAndKeepsLines) {
         "float unused(float x)\n{\n  return x;\n}\n"
         "float4 vert(S s) : SV_POSITION { return s.p * helper(1); }\n"
         "float4 frag() : SV_Target { return _Color; }\n";
-    const std::string reduced = ReduceToEntryPoint(text, "vert");
+    const std::string reduced = ReduceToEntryPoint(text, "vert").text;
     EXPECT_EQ(reduced,
               "#line 1 \"a.shader\"\n"
               "\n"
@@ -36,8 +36,8 @@ TEST(Reduce, VariantsDifferingOnlyInUnreachedCodeGiveTheSameText) {
         "cbuffer C : register(b0) { float4 x; }\n"
         "float4 frag() : SV_Target { return 2 * x; }\n"
         "float4 vert() : SV_POSITION { return x; }\n";
-    EXPECT_EQ(ReduceToEntryPoint(a, "vert"), ReduceToEntryPoint(b, "vert"));
-    EXPECT_NE(ReduceToEntryPoint(a, "frag"), ReduceToEntryPoint(b, "frag"));
+    EXPECT_EQ(ReduceToEntryPoint(a, "vert").text, ReduceToEntryPoint(b, "vert").text);
+    EXPECT_NE(ReduceToEntryPoint(a, "frag").text, ReduceToEntryPoint(b, "frag").text);
 }
 
 TEST(Reduce, TransitiveCallsAndGlobalInitializersAreKept) {
@@ -47,7 +47,17 @@ TEST(Reduce, TransitiveCallsAndGlobalInitializersAreKept) {
         "float b() { return 2; }\n"
         "float a() { return b(); }\n"
         "float4 main() : SV_Target { return a() + k; }\n";
-    EXPECT_EQ(ReduceToEntryPoint(text, "main"), text);
+    EXPECT_EQ(ReduceToEntryPoint(text, "main").text, text);
+    EXPECT_TRUE(ReduceToEntryPoint(text, "main").functions_if_entry_missing.empty());
+}
+
+TEST(Reduce, AMissingEntryPointListsTheFunctionsThatExist) {
+    const std::string text =
+        "struct S { float4 p : POSITION; };\n"
+        "float4 vert(S s) : SV_POSITION { return s.p; }\n"
+        "float4 frag() : SV_Target { return 1; }\n";
+    const Reduced r = ReduceToEntryPoint(text, "fragg");
+    EXPECT_EQ(r.functions_if_entry_missing, (std::vector<std::string>{"vert", "frag"}));
 }
 
 }  // namespace

@@ -137,7 +137,7 @@ TEST(PassPragmas, Problems) {
               "K4009 5:1 error: '#pragma multi_compile' needs at least one keyword\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma vertex other").diags),
               "K4004 5:1 error: second '#pragma vertex' in one program\n"
-              "  note 3:1: first entry point given here\n");
+              "  note 3:16: first entry point given here\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma skip_variants NOPE").diags),
               "K4012 5:23 warning: skip_variants names 'NOPE', which no keyword set declares\n");
 }

@@ -12,6 +12,10 @@ namespace kiln::pack {
 // Case-insensitive Levenshtein distance.
 std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates);
 
+// "; did you mean 'X'?" for the closest candidate, or "" when none is close: the one spelling of
+// a suggestion appended to a diagnostic's message.
+std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates);
+
 }  // namespace kiln::pack
 
 #endif  // KILN_PACK_NAMES_H_
