@@ -25,6 +25,14 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 enum class DiagCode : uint16_t {
     kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
     kCannotWriteFile = 2,
+    kBadCommandLine = 3,    // an unknown subcommand or option value the CLI reports itself
+    kBadPack = 4,           // a pack that cannot be read (the reader's reason in the message)
+    kUnknownPackName = 5,   // a shader or pass name the pack does not hold
+    kMissingVariant = 6,    // the pack holds no variant with the requested keywords
+    kBadScene = 7,          // a scene that cannot be loaded or rendered as asked
+    kRenderFailed = 8,      // the renderer failed (device, pipeline, validation messages)
+    kBadColorConfig = 9,    // an OpenColorIO config, display or view that does not exist
+    kRenderWarning = 10,    // the runtime's warnings (scene content it skipped or changed)
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,
@@ -76,6 +84,7 @@ enum class DiagCode : uint16_t {
     kUnknownSkipKeyword = 4012,
     kNoVariantsLeft = 4013,
     kEntryPointNotFound = 4014,
+    kUnknownKeyword = 4015,
 
     kHlslError = 5001,
     kHlslWarning = 5002,
@@ -148,9 +157,11 @@ class DiagnosticList {
 };
 
 // Compiler-style text: "file:line:col: error: message [K1234]" followed by the source line and a
-// caret/underline when `source` is the file the diagnostic points into, then its notes.
+// caret/underline when `source` is the file the diagnostic points into, then its notes. `color`
+// adds ANSI colours (a terminal's choice: the CLI's --color).
 std::string FormatDiagnosticsText(const DiagnosticList& diags,
-                                  const std::vector<const SourceFile*>& sources);
+                                  const std::vector<const SourceFile*>& sources,
+                                  bool color = false);
 // A JSON array of diagnostics (format in docs/diagnostics.md).
 std::string FormatDiagnosticsJson(const DiagnosticList& diags);
 

@@ -28,6 +28,9 @@ struct SourceRange {
     friend bool operator==(const SourceRange&, const SourceRange&) = default;
 };
 
+// For diagnostics about a whole file or the command line: line 0, printed without a position.
+inline constexpr SourceRange kNoPosition{{0, 0, 0}, {0, 0, 0}};
+
 // An immutable source file with a line index built on construction.
 class SourceFile {
   public:

@@ -95,7 +95,10 @@ size_t Utf8Length(std::string_view s, size_t i) {
 // Appends " 12 | text\n    |   ^~~~\n" for a range that starts on a known line. Control bytes and
 // invalid UTF-8 are shown as '?', and long lines are cut to a window around the caret, so that
 // binary input never reaches the terminal and the caret stays aligned.
-void AppendSnippet(std::string& out, const SourceFile* source, const SourceRange& range) {
+void AppendSnippet(std::string& out,
+                   const SourceFile* source,
+                   const SourceRange& range,
+                   bool color) {
     if (source == nullptr || range.begin.line == 0 || range.begin.line > source->line_count()) {
         return;
     }
@@ -137,21 +140,39 @@ void AppendSnippet(std::string& out, const SourceFile* source, const SourceRange
     }
     const std::string number = std::to_string(range.begin.line);
     out += " " + number + " | " + text + "\n";
-    out += " " + std::string(number.size(), ' ') + " | " + caret + "\n";
+    out += " " + std::string(number.size(), ' ') + " | " + (color ? "\033[1;32m" : "") + caret +
+           (color ? "\033[0m" : "") + "\n";
+}
+
+// clang's colours: bold position and message, red errors, magenta warnings, cyan notes.
+const char* SeverityColor(std::string_view severity) {
+    if (severity == "warning")
+        return "\033[1;35m";
+    if (severity == "note")
+        return "\033[1;36m";
+    return "\033[1;31m";
 }
 
 void AppendHeader(std::string& out,
                   const std::string& file,
                   const SourceRange& range,
                   std::string_view severity,
-                  const std::string& message) {
+                  const std::string& message,
+                  bool color) {
+    if (color)
+        out += "\033[1m";
     out += file.empty() ? "kiln" : file;
     if (range.begin.line > 0) {
         out += ":" + std::to_string(range.begin.line) + ":" + std::to_string(range.begin.column);
     }
     out += ": ";
+    if (color)
+        out += SeverityColor(severity);
     out += severity;
-    out += ": " + message;
+    out += color ? ":\033[0m\033[1m " : ": ";
+    out += message;
+    if (color)
+        out += "\033[0m";
 }
 
 nlohmann::ordered_json RangeJson(const SourceRange& r) {
@@ -162,16 +183,17 @@ nlohmann::ordered_json RangeJson(const SourceRange& r) {
 }  // namespace
 
 std::string FormatDiagnosticsText(const DiagnosticList& diags,
-                                  const std::vector<const SourceFile*>& sources) {
+                                  const std::vector<const SourceFile*>& sources,
+                                  bool color) {
     std::string out;
     for (const Diagnostic& d : diags.all()) {
-        AppendHeader(out, d.file, d.range, SeverityName(d.severity), d.message);
+        AppendHeader(out, d.file, d.range, SeverityName(d.severity), d.message, color);
         out += " [" + FormatDiagCode(d.code) + "]\n";
-        AppendSnippet(out, FindSource(sources, d.file), d.range);
+        AppendSnippet(out, FindSource(sources, d.file), d.range, color);
         for (const DiagnosticNote& n : d.notes) {
-            AppendHeader(out, n.file, n.range, "note", n.message);
+            AppendHeader(out, n.file, n.range, "note", n.message, color);
             out += '\n';
-            AppendSnippet(out, FindSource(sources, n.file), n.range);
+            AppendSnippet(out, FindSource(sources, n.file), n.range, color);
         }
     }
     return out;

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <set>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -73,7 +74,7 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
         driver::ShaderUnit unit;
         Result<SourceFile> read = ReadSourceFile(path);
         if (!read) {
-            st.diags.Error(DiagCode::kCannotReadFile, path, {}, read.error().message);
+            st.diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, read.error().message);
             continue;
         }
         unit.file = std::make_shared<const SourceFile>(std::move(read).value());
@@ -82,6 +83,26 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
         if (unit.ast)
             unit.passes = driver::FlattenPasses(*unit.ast, path, st.diags);
         st.shaders.push_back(std::move(unit));
+    }
+}
+
+// --keywords names keywords some pass declares: a typo would otherwise build nothing more and
+// exit 0.
+void CheckRequestedKeywords(CompileState& st) {
+    if (!st.options.keywords || st.diags.has_errors())
+        return;
+    std::set<std::string> declared;
+    for (const driver::PassUnit& pu : st.passes) {
+        for (const variants::KeywordSet& set : pu.pragmas.sets)
+            declared.insert(set.keywords.begin(), set.keywords.end());
+    }
+    const std::vector<std::string> names(declared.begin(), declared.end());
+    for (const std::string& k : *st.options.keywords) {
+        if (declared.count(k) || variants::IsNoKeyword(k))
+            continue;
+        st.diags.Error(DiagCode::kUnknownKeyword, "", kNoPosition,
+                       "--keywords names '" + k + "', which no pass of the compiled shaders "
+                       "declares" + pack::DidYouMean(k, names));
     }
 }
 
@@ -117,6 +138,7 @@ void ExpandPasses(CompileState& st) {
             st.passes.push_back(std::move(pu));
         }
     }
+    CheckRequestedKeywords(st);
     for (size_t p = 0; p < st.passes.size(); ++p) {
         driver::PassUnit& pu = st.passes[p];
         const driver::ShaderUnit& unit = st.shaders[pu.shader];

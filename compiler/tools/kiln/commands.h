@@ -13,6 +13,7 @@
 #include "kiln/compile.h"
 #include "kiln/diagnostic.h"
 #include "kiln/material/material.h"
+#include "kiln/pack/reader.h"
 
 namespace kiln::cli {
 
@@ -28,6 +29,7 @@ enum class DiagFormat { kText, kJson };
 
 struct GlobalOptions {
     DiagFormat diag_format = DiagFormat::kText;
+    bool color = false;  // --color, resolved: ANSI colours in text diagnostics
 };
 
 // Prints diagnostics to stderr in the chosen format.
@@ -35,6 +37,18 @@ void PrintDiagnostics(const DiagnosticList& diags,
                       const std::vector<const SourceFile*>& sources,
                       const GlobalOptions& global);
 int ExitCodeFor(const DiagnosticList& diags);
+// One error without a source position (a command-line value, a pack, a scene), printed in the
+// chosen format; returns its exit code.
+int ReportError(const GlobalOptions& global,
+                DiagCode code,
+                const std::string& file,
+                const std::string& message);
+
+// Maps and opens a pack, or reports why not (K0004) and returns false.
+bool OpenPack(const std::string& path,
+              pack::MappedFile& file,
+              pack::Pack& pack,
+              const GlobalOptions& global);
 
 // The one conversion of material issues into the CLI's diagnostics.
 void AddMaterialIssues(std::vector<kiln::material::MaterialIssue> issues,

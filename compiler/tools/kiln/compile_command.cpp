@@ -95,7 +95,7 @@ void ReadMaterialKeywords(const std::string& path,
                           DiagnosticList& diags) {
     Result<SourceFile> read = ReadSourceFile(path);
     if (!read) {
-        diags.Error(DiagCode::kCannotReadFile, path, {}, read.error().message);
+        diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, read.error().message);
         return;
     }
     files.push_back(std::make_unique<SourceFile>(std::move(read).value()));
@@ -143,7 +143,7 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
         if (path.size() >= 10 && path.compare(path.size() - 10, 10, ".kiln.json") == 0) {
             runtime::Scene scene;
             if (auto e = runtime::LoadMaterialSidecar(path, scene)) {
-                diags.Error(DiagCode::kCannotReadFile, path, {}, e->message);
+                diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, e->message);
                 continue;
             }
             for (const auto& [gltf_name, file] : scene.material_files)
@@ -221,7 +221,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         if (out.ok) {
             Result<bool> written = WriteFileAtomic(o->output, out.pack);
             if (!written) {
-                diags.Error(DiagCode::kCannotWriteFile, o->output, {}, written.error().message);
+                diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition, written.error().message);
             }
         }
         if (out.ok && !diags.has_errors() && (o->md || !o->mf.empty())) {
@@ -236,7 +236,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
             Result<bool> written =
                 WriteFileAtomic(dep_path, std::vector<uint8_t>(text.begin(), text.end()));
             if (!written) {
-                diags.Error(DiagCode::kCannotWriteFile, dep_path, {}, written.error().message);
+                diags.Error(DiagCode::kCannotWriteFile, dep_path, kNoPosition, written.error().message);
             }
         }
         if (o->stats) {

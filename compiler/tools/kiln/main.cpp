@@ -1,11 +1,17 @@
 // kiln: the command-line driver. A thin layer over the kiln_compiler library: flags in,
 // library calls, diagnostics out.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <map>
 
 #include "commands.h"
+#include "kiln/pack/format.h"
+#include "kiln/pack/names.h"
 
 namespace kiln::cli {
 
@@ -15,8 +21,18 @@ void PrintDiagnostics(const DiagnosticList& diags,
     if (global.diag_format == DiagFormat::kJson) {
         std::fprintf(stderr, "%s\n", FormatDiagnosticsJson(diags).c_str());
     } else {
-        std::fputs(FormatDiagnosticsText(diags, sources).c_str(), stderr);
+        std::fputs(FormatDiagnosticsText(diags, sources, global.color).c_str(), stderr);
     }
+}
+
+int ReportError(const GlobalOptions& global,
+                DiagCode code,
+                const std::string& file,
+                const std::string& message) {
+    DiagnosticList diags;
+    diags.Error(code, file, kNoPosition, message);
+    PrintDiagnostics(diags, {}, global);
+    return ExitCodeFor(diags);
 }
 
 int ExitCodeFor(const DiagnosticList& diags) {
@@ -26,6 +42,48 @@ int ExitCodeFor(const DiagnosticList& diags) {
     return diags.has_errors() ? kExitInputError : kExitOk;
 }
 
+namespace {
+
+// --color=auto: a terminal on stderr, NO_COLOR unset (no-color.org) and TERM not "dumb".
+bool AutoColor() {
+    const char* no_color = std::getenv("NO_COLOR");
+    const char* term = std::getenv("TERM");
+    return isatty(STDERR_FILENO) && (no_color == nullptr || *no_color == '\0') &&
+           !(term != nullptr && std::strcmp(term, "dumb") == 0);
+}
+
+std::string VersionText() {
+    return ProducerVersion() + "; pack format " + std::to_string(pack::kFormatMajor) + "." +
+           std::to_string(pack::kFormatMinor);
+}
+
+// The value of a global option given as "--name value" or "--name=value", or "".
+std::string GlobalValue(const std::vector<std::string>& args, const std::string& name) {
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == name && i + 1 < args.size())
+            return args[i + 1];
+        if (args[i].rfind(name + "=", 0) == 0)
+            return args[i].substr(name.size() + 1);
+    }
+    return "";
+}
+
+// The first word that is not an option (or a global option's value): the subcommand the user
+// meant, for the "did you mean" of a mistyped one.
+std::string FirstWord(const std::vector<std::string>& args) {
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--diagnostics-format" || a == "--color") {
+            ++i;
+            continue;
+        }
+        if (!a.empty() && a[0] != '-')
+            return a;
+    }
+    return "";
+}
+
+}  // namespace
 }  // namespace kiln::cli
 
 // Compiler-style spellings CLI11 cannot declare: -O0/-O/-Os, -MD, -MF.
@@ -55,8 +113,9 @@ int main(int argc, char** argv) {
     using namespace kiln::cli;
     try {
         CLI::App app{"kiln: shader-variant compiler for Vulkan", "kiln"};
-        app.require_subcommand(1);
-        app.set_version_flag("--version", "kiln 0.2.0");
+        app.require_subcommand(0, 1);
+        app.set_version_flag("-V,--version", VersionText, "Print kiln's version and those of "
+                             "glslang and SPIRV-Tools it compiles with (packs record them)");
         GlobalOptions global;
         const std::map<std::string, DiagFormat> formats{{"text", DiagFormat::kText},
                                                         {"json", DiagFormat::kJson}};
@@ -64,7 +123,14 @@ int main(int argc, char** argv) {
                        "How diagnostics are printed on stderr: text or json")
             ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))
             ->option_text("text|json");
+        std::string color = "auto";
+        app.add_option("--color", color,
+                       "Colour text diagnostics: auto (a terminal, unless NO_COLOR is set), "
+                       "always or never")
+            ->check(CLI::IsMember({"auto", "always", "never"}))
+            ->option_text("auto|always|never");
         app.fallthrough();
+        app.add_subcommand("version", "Print the versions (as --version)");
 
         const std::map<std::string, std::function<int()>> commands{
             {"parse", AddParseCommand(app, global)},
@@ -76,15 +142,51 @@ int main(int argc, char** argv) {
             {"new", AddNewCommand(app, global)},
             {"render", AddRenderCommand(app, global)}};
 
+        std::vector<std::string> args = RewriteArgs(argc, argv);
+        std::vector<std::string> names;
+        for (const auto& [name, run] : commands)
+            names.push_back(name);
+        names.push_back("version");
+        const std::vector<std::string> words(args.rbegin(), args.rend());  // parse consumes args
+        const std::string word = FirstWord(words);
         try {
-            std::vector<std::string> args = RewriteArgs(argc, argv);
             app.parse(args);
         } catch (const CLI::ParseError& e) {
-            const int code = app.exit(e);
-            return code == 0 ? kExitOk : kExitUsageError;
+            if (e.get_exit_code() == 0)
+                return app.exit(e) == 0 ? kExitOk : kExitUsageError;  // --help, --version
+            // The parse stopped early: read the global options from the words themselves.
+            global.diag_format = GlobalValue(words, "--diagnostics-format") == "json"
+                                     ? DiagFormat::kJson
+                                     : DiagFormat::kText;
+            const std::string c = GlobalValue(words, "--color");
+            global.color = c == "always" || (c != "never" && AutoColor());
+            if (!word.empty() && std::find(names.begin(), names.end(), word) == names.end()) {
+                std::string all;
+                for (const std::string& n : names)
+                    all += (all.empty() ? "" : ", ") + n;
+                ReportError(global, kiln::DiagCode::kBadCommandLine, "",
+                            "unknown command '" + word + "'" + kiln::pack::DidYouMean(word, names) +
+                                " (commands: " + all + ")");
+            } else {
+                ReportError(global, kiln::DiagCode::kBadCommandLine, "", e.what());
+                if (global.diag_format == DiagFormat::kText) {
+                    std::fprintf(stderr, "run 'kiln %s--help' for the options\n",
+                                 word.empty() ? "" : (word + " ").c_str());
+                }
+            }
+            return kExitUsageError;
         }
-        // require_subcommand(1): exactly one subcommand was parsed.
-        return commands.at(app.get_subcommands().front()->get_name())();
+        global.color = color == "always" || (color == "auto" && AutoColor());
+        if (app.get_subcommands().empty()) {
+            std::fputs(app.help().c_str(), stderr);
+            return kExitUsageError;
+        }
+        const std::string command = app.get_subcommands().front()->get_name();
+        if (command == "version") {
+            std::printf("%s\n", VersionText().c_str());
+            return kExitOk;
+        }
+        return commands.at(command)();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "kiln: internal compiler error: %s [K9001]\n", e.what());
         return kExitInternalError;

@@ -42,20 +42,14 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
     return [args, &global] {
         pack::MappedFile mapped;
         pack::Pack p;
-        std::optional<pack::PackError> err = pack::MappedFile::Map(args->pack, mapped);
-        if (!err)
-            err = pack::Pack::Open(mapped.bytes(), p);
-        if (err) {
-            std::fprintf(stderr, "%s: error: %s [%s]\n", args->pack.c_str(), err->message.c_str(),
-                         pack::PackErrorCodeName(err->code));
+        if (!OpenPack(args->pack, mapped, p, global))
             return int(kExitInputError);
-        }
         DiagnosticList diags;
         std::vector<std::unique_ptr<SourceFile>> files;
         for (const std::string& path : args->files) {
             Result<SourceFile> read = ReadSourceFile(path);
             if (!read) {
-                diags.Error(DiagCode::kCannotReadFile, path, {}, read.error().message);
+                diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, read.error().message);
                 continue;
             }
             files.push_back(std::make_unique<SourceFile>(std::move(read).value()));
@@ -76,7 +70,7 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
     };
 }
 
-std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& /*global*/) {
+std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global) {
     auto* cmd = app.add_subcommand("new", "Write a new .shader from a templates/ scaffold");
     struct Args {
         std::string scaffold;
@@ -94,21 +88,20 @@ std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& /*global*
     cmd->add_option("-o,--output", args->output, "Output file (default: <last name part>.shader)");
     cmd->add_option("--templates", args->templates_dir, "Templates folder (default: built-in)");
     cmd->add_flag("-f,--force", args->force, "Overwrite an existing file");
-    return [args] {
+    return [args, &global] {
         const std::string templates =
             args->templates_dir.empty() ? DefaultTemplatesDir() : args->templates_dir;
         const std::string scaffold_path = templates + "/scaffolds/" + args->scaffold + ".shader";
         Result<SourceFile> scaffold = ReadSourceFile(scaffold_path);
         if (!scaffold) {
-            std::fprintf(stderr, "%s: error: %s [K0001]\n", scaffold_path.c_str(),
-                         scaffold.error().message.c_str());
-            return int(kExitInputError);
+            return ReportError(global, DiagCode::kCannotReadFile, scaffold_path,
+                               scaffold.error().message);
         }
         for (char c : args->name) {
             if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) {
-                std::fprintf(stderr,
-                             "kiln new: error: shader name must not contain quotes, "
-                             "backslashes or control characters\n");
+                ReportError(global, DiagCode::kBadCommandLine, "",
+                            "shader name must not contain quotes, backslashes or control "
+                            "characters");
                 return int(kExitUsageError);
             }
         }
@@ -125,17 +118,13 @@ std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& /*global*
                      ".shader";
         }
         if (fs::exists(output) && !args->force) {
-            std::fprintf(stderr, "%s: error: file exists; pass --force to overwrite [K0002]\n",
-                         output.c_str());
-            return int(kExitInputError);
+            return ReportError(global, DiagCode::kCannotWriteFile, output,
+                               "file exists; pass --force to overwrite");
         }
         Result<bool> written =
             WriteFileAtomic(output, std::vector<uint8_t>(text.begin(), text.end()));
-        if (!written) {
-            std::fprintf(stderr, "%s: error: %s [K0002]\n", output.c_str(),
-                         written.error().message.c_str());
-            return int(kExitInputError);
-        }
+        if (!written)
+            return ReportError(global, DiagCode::kCannotWriteFile, output, written.error().message);
         std::printf("wrote %s (shader \"%s\", %s scaffold)\n", output.c_str(), args->name.c_str(),
                     args->scaffold.c_str());
         return int(kExitOk);

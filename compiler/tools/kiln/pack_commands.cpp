@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "kiln/pack/names.h"
 #include "kiln/pack/reader.h"
 
 namespace kiln::cli {
@@ -40,18 +41,21 @@ const char* kFieldNames[] = {"Cull",
                              "StencilFailBack",
                              "StencilZFailBack"};
 
-// Opens a pack or prints why not; returns false on failure.
-bool OpenPack(const std::string& path, MappedFile& file, Pack& pack) {
+}  // namespace
+
+bool OpenPack(const std::string& path, MappedFile& file, Pack& pack, const GlobalOptions& global) {
     std::optional<PackError> err = MappedFile::Map(path, file);
     if (!err)
         err = Pack::Open(file.bytes(), pack);
     if (err) {
-        std::fprintf(stderr, "%s: error: %s [%s]\n", path.c_str(), err->message.c_str(),
-                     PackErrorCodeName(err->code));
+        ReportError(global, DiagCode::kBadPack, path,
+                    err->message + " (" + PackErrorCodeName(err->code) + ")");
         return false;
     }
     return true;
 }
+
+namespace {
 
 nlohmann::json InfoJson(const Pack& p) {
     nlohmann::json shaders = nlohmann::json::array();
@@ -167,7 +171,7 @@ nlohmann::json InfoJson(const Pack& p) {
 
 }  // namespace
 
-std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions&) {
+std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) {
     struct Options {
         std::string file;
         bool json = false;
@@ -176,10 +180,10 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions&) {
     CLI::App* cmd = app.add_subcommand("info", "Describe a variant pack");
     cmd->add_option("pack", o->file, "A .kpack file")->required();
     cmd->add_flag("--json", o->json, "Print JSON");
-    return [o]() {
+    return [o, &global]() {
         MappedFile file;
         Pack pack;
-        if (!OpenPack(o->file, file, pack))
+        if (!OpenPack(o->file, file, pack, global))
             return int(kExitInputError);
         const nlohmann::json j = InfoJson(pack);
         if (o->json) {
@@ -219,7 +223,27 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions&) {
     };
 }
 
-std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions&) {
+// The shader names of a pack, for suggestions.
+std::vector<std::string> ShaderNames(const Pack& pack) {
+    std::vector<std::string> names;
+    for (uint32_t s = 0; s < pack.Count(SectionTag::kShaders); ++s)
+        names.emplace_back(pack.String(pack.Shader(s).name));
+    return names;
+}
+
+// A shader's pass names and LightMode tags, for suggestions.
+std::vector<std::string> PassNames(const Pack& pack, uint32_t shader) {
+    const nlohmann::json j = InfoJson(pack)["shaders"][shader]["passes"];
+    std::vector<std::string> names;
+    for (const auto& p : j) {
+        names.push_back(p["name"].get<std::string>());
+        if (p["tags"].contains("LightMode"))
+            names.push_back(p["tags"]["LightMode"].get<std::string>());
+    }
+    return names;
+}
+
+std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global) {
     struct Options {
         std::string file, shader, pass, stage, output;
         std::vector<std::string> keywords;
@@ -234,22 +258,26 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions&) {
         ->required()
         ->check(CLI::IsMember({"vert", "frag", "vertex", "fragment"}));
     cmd->add_option("-o,--output", o->output, "Output .spv")->required();
-    return [o]() {
+    return [o, &global]() {
         MappedFile file;
         Pack pack;
-        if (!OpenPack(o->file, file, pack))
+        if (!OpenPack(o->file, file, pack, global))
             return int(kExitInputError);
         const auto shader = pack.FindShader(o->shader);
         if (!shader) {
-            std::fprintf(stderr, "%s: error: no shader \"%s\" in the pack\n", o->file.c_str(),
-                         o->shader.c_str());
-            return int(kExitInputError);
+            return ReportError(global, DiagCode::kUnknownPackName, o->file,
+                               "no shader \"" + o->shader + "\" in the pack" +
+                                   pack::DidYouMean(o->shader, ShaderNames(pack)));
         }
         const auto pass = pack.FindPass(*shader, o->pass);
         if (!pass) {
-            std::fprintf(stderr, "%s: error: shader \"%s\" has no pass \"%s\"\n", o->file.c_str(),
-                         o->shader.c_str(), o->pass.c_str());
-            return int(kExitInputError);
+            return ReportError(global, DiagCode::kUnknownPackName, o->file,
+                               "shader \"" + o->shader + "\" has no pass \"" + o->pass + "\"" +
+                                   pack::DidYouMean(o->pass, PassNames(pack, *shader)));
+        }
+        if (auto bad = pack.CheckKeywords(*pass, o->keywords)) {
+            return ReportError(global, DiagCode::kUnknownKeyword, o->file,
+                               "shader \"" + o->shader + "\" pass \"" + o->pass + "\": " + *bad);
         }
         const VariantKey key = pack.KeyFor(*pass, o->keywords);
         const auto variant = pack.FindVariant(*pass, key);
@@ -257,22 +285,19 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions&) {
             std::string kws;
             for (const auto& k : o->keywords)
                 kws += " " + k;
-            std::fprintf(stderr,
-                         "%s: error: shader \"%s\" pass \"%s\" has no variant with keywords%s "
-                         "(stripped or never built)\n",
-                         o->file.c_str(), o->shader.c_str(), o->pass.c_str(),
-                         kws.empty() ? " (none)" : kws.c_str());
-            return int(kExitInputError);
+            return ReportError(global, DiagCode::kMissingVariant, o->file,
+                               "shader \"" + o->shader + "\" pass \"" + o->pass +
+                                   "\" has no variant with keywords" +
+                                   (kws.empty() ? " (none)" : kws) +
+                                   " (stripped or never built)");
         }
         const VariantRec v = pack.Variant(*variant);
         const bool vert = o->stage[0] == 'v';
         const auto bytes = pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module));
         Result<bool> written = WriteFileAtomic(o->output, {bytes.begin(), bytes.end()});
-        if (!written) {
-            std::fprintf(stderr, "%s: error: %s\n", o->output.c_str(),
-                         written.error().message.c_str());
-            return int(kExitInputError);
-        }
+        if (!written)
+            return ReportError(global, DiagCode::kCannotWriteFile, o->output,
+                               written.error().message);
         return int(kExitOk);
     };
 }

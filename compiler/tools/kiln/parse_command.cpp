@@ -28,7 +28,7 @@ std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global)
         for (const std::string& path : opts->files) {
             Result<SourceFile> file = ReadSourceFile(path);
             if (!file) {
-                diags.Error(DiagCode::kCannotReadFile, path, {{0, 0, 0}, {0, 0, 0}},
+                diags.Error(DiagCode::kCannotReadFile, path, kNoPosition,
                             file.error().message);
                 continue;
             }

@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "commands.h"
@@ -26,17 +27,47 @@ std::string DefaultPack() {
     return KILN_DEFAULT_PACK;
 }
 
+DiagCode CodeFor(runtime::ErrorKind kind) {
+    switch (kind) {
+        case runtime::ErrorKind::kScene:
+            return DiagCode::kBadScene;
+        case runtime::ErrorKind::kMissingVariant:
+            return DiagCode::kMissingVariant;
+        case runtime::ErrorKind::kColor:
+            return DiagCode::kBadColorConfig;
+        case runtime::ErrorKind::kPack:
+            return DiagCode::kBadPack;
+        case runtime::ErrorKind::kFailed:
+            break;
+    }
+    return DiagCode::kRenderFailed;
+}
+
+// --camera: "auto" or an index from 0.
+std::string ParseCamera(const std::string& text, int& camera) {
+    if (text == "auto") {
+        camera = runtime::FrameSettings::kCameraAuto;
+        return "";
+    }
+    char* end = nullptr;
+    const long n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || n < 0 || n > 1000000)
+        return "expected a camera index from 0, or auto";
+    camera = int(n);
+    return "";
+}
+
 }  // namespace
 
-std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
+std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global) {
     auto* cmd = app.add_subcommand("render", "Render a glTF scene headless with the runtime");
     struct Args {
         std::string scene, output = "out.png", exr, materials, usage, pipeline_cache;
         std::vector<std::string> packs;
         runtime::FrameSettings frame;
         runtime::ColorOptions color;
-        bool validation = false, closest = false;
-        std::string device;
+        bool validation = false, closest = false, no_default_light = false;
+        std::string device, camera;
     };
     auto a = std::make_shared<Args>();
     cmd->add_option("scene", a->scene, ".gltf or .glb file")->required();
@@ -45,16 +76,27 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
                     "shipped materials.kpack)");
     cmd->add_option("-o,--output", a->output, "PNG to write (8-bit, display-encoded)");
     cmd->add_option("--exr", a->exr, "Also write the linear image as 32-bit float OpenEXR");
-    cmd->add_option("--width", a->frame.width, "Image width")->check(CLI::Range(1, 16384));
-    cmd->add_option("--height", a->frame.height, "Image height")->check(CLI::Range(1, 16384));
-    cmd->add_option("--camera", a->frame.camera,
-                    "Scene camera index (default: the first, or "
-                    "one framing the scene)");
+    cmd->add_option("--width", a->frame.width, "Image width, 1 to 16384 (default 960)")
+        ->check(CLI::Range(1, 16384).description(""))
+        ->option_text("W");
+    cmd->add_option("--height", a->frame.height, "Image height, 1 to 16384 (default 540)")
+        ->check(CLI::Range(1, 16384).description(""))
+        ->option_text("H");
+    cmd->add_option("--camera", a->camera,
+                    "Scene camera index from 0, or auto: one framing the scene (default: the "
+                    "first camera, else auto)")
+        ->check(CLI::Validator(
+            [](std::string& v) {
+                int ignored = 0;
+                return ParseCamera(v, ignored);
+            },
+            ""))
+        ->option_text("N|auto");
     cmd->add_option("--pixel-lights", a->frame.pixel_lights,
                     "Additive per-light passes per object at most (default 4)");
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
     cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
-    cmd->add_flag("!--no-default-light", a->frame.default_light,
+    cmd->add_flag("--no-default-light", a->no_default_light,
                   "Do not add a directional light to scenes that have none");
     cmd->add_option("--ocio-config", a->color.config_path,
                     "OpenColorIO config (default: $OCIO, else Kiln's built-in sRGB config)");
@@ -70,24 +112,33 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
     cmd->add_option("--usage", a->usage, "Write every variant lookup to this JSON file");
     cmd->add_option("--pipeline-cache", a->pipeline_cache, "Persist the VkPipelineCache here");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
-    return [a] {
-        auto fail = [](const std::string& message) {
-            std::fprintf(stderr, "kiln render: error: %s\n", message.c_str());
-            return int(kExitInputError);
+    return [a, &global] {
+        // Every warning and error goes into one list, printed once (one JSON array).
+        DiagnosticList diags;
+        auto finish = [&](int code) {
+            PrintDiagnostics(diags, {}, global);
+            return code;
         };
+        auto fail = [&](const runtime::Error& e, const std::string& file = "") {
+            diags.Error(CodeFor(e.kind), file, kNoPosition, e.message);
+            return finish(int(kExitInputError));
+        };
+        a->frame.default_light = !a->no_default_light;
+        if (!a->camera.empty())
+            ParseCamera(a->camera, a->frame.camera);  // validated by the option's check
         runtime::Scene scene;
         std::vector<std::string> warnings;
         if (auto e = runtime::LoadGltf(a->scene, scene, warnings)) {
-            return fail(e->message);
+            return fail(*e);
         }
         if (!a->materials.empty()) {
             if (auto e = runtime::LoadMaterialSidecar(a->materials, scene)) {
-                return fail(e->message);
+                return fail(runtime::Error{e->message, runtime::ErrorKind::kScene});
             }
         }
         runtime::ColorPipeline color;
         if (auto e = runtime::ColorPipeline::Create(a->color, color)) {
-            return fail(e->message);
+            return fail(*e);
         }
         runtime::RendererOptions options;
         options.validation = a->validation;
@@ -97,44 +148,46 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
                                              : runtime::MissingVariantPolicy::kError;
         runtime::Renderer renderer;
         if (auto e = runtime::Renderer::Create(options, renderer)) {
-            return fail(e->message);
+            return fail(*e);
         }
         if (a->packs.empty()) {
             a->packs.push_back(DefaultPack());
         }
         for (const std::string& p : a->packs) {
             if (auto e = renderer.AddPack(p)) {
-                return fail(e->message);
+                return fail(*e);
             }
         }
         runtime::LinearImage image;
         runtime::FrameStats stats;
         auto error = renderer.Render(scene, a->frame, color, image, stats);
         for (const std::string& w : warnings) {
-            std::fprintf(stderr, "kiln render: warning: %s\n", w.c_str());
+            diags.Warning(DiagCode::kRenderWarning, "", kNoPosition, w);
         }
         for (const std::string& w : stats.warnings) {
-            std::fprintf(stderr, "kiln render: warning: %s\n", w.c_str());
+            diags.Warning(DiagCode::kRenderWarning, "", kNoPosition, w);
         }
         if (!a->usage.empty()) {
             if (auto e = renderer.WriteUsage(a->usage)) {
-                return fail(e->message);
+                return fail(*e);
             }
         }
         if (error) {
-            return fail(error->message);
+            return fail(*error);
         }
         const std::vector<std::string> messages = renderer.ValidationMessages();
         for (const std::string& m : messages) {
-            std::fprintf(stderr, "kiln render: validation: %s\n", m.c_str());
+            diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);
         }
+        if (!messages.empty())
+            return finish(int(kExitInputError));  // no image from a render the layer rejected
         if (!a->exr.empty()) {
             if (auto e = runtime::WriteExr(a->exr, image)) {
-                return fail(e->message);
+                return fail(*e, a->exr);
             }
         }
         if (auto e = runtime::WriteDisplayPng(a->output, image, color)) {
-            return fail(e->message);
+            return fail(*e, a->output);
         }
         std::printf(
             "%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes, %u "
@@ -142,9 +195,8 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions&) {
             a->output.c_str(), image.width, image.height, stats.camera.c_str(), stats.objects,
             stats.base_passes, stats.add_passes, stats.pipelines_created,
             renderer.DeviceName().c_str(), color.description().c_str(),
-            a->validation ? (", validation messages: " + std::to_string(messages.size())).c_str()
-                          : "");
-        return messages.empty() ? int(kExitOk) : int(kExitInputError);
+            a->validation ? ", validation messages: 0" : "");
+        return finish(int(kExitOk));
     };
 }
 

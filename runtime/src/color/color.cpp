@@ -5,11 +5,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "kiln/pack/names.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
 namespace kiln::runtime {
 namespace {
+
+std::string JoinNames(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names)
+        out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
 
 constexpr const char* kLinear = "Linear Rec.709 (sRGB)";
 constexpr const char* kSrgb = "sRGB - Texture";
@@ -73,22 +84,26 @@ std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPip
             path.empty() ? builtin : OCIO::Config::CreateFromFile(path.c_str());
         const std::string display =
             options.display.empty() ? config->getDefaultDisplay() : options.display;
-        bool known_display = false;
-        for (int i = 0; i < config->getNumDisplays(); ++i) {
-            known_display |= display == config->getDisplay(i);
-        }
-        if (!known_display) {
+        std::vector<std::string> displays;
+        for (int i = 0; i < config->getNumDisplays(); ++i)
+            displays.emplace_back(config->getDisplay(i));
+        if (std::find(displays.begin(), displays.end(), display) == displays.end()) {
             return Error{"display '" + display + "' is not in the OpenColorIO config" +
-                         (path.empty() ? std::string(" (built-in: sRGB)") : " '" + path + "'")};
+                             (path.empty() ? std::string(" (built-in)") : " '" + path + "'") +
+                             pack::DidYouMean(display, displays) + " (displays: " +
+                             JoinNames(displays) + ")",
+                         ErrorKind::kColor};
         }
         const std::string view =
             options.view.empty() ? config->getDefaultView(display.c_str()) : options.view;
-        bool known_view = false;
-        for (int i = 0; i < config->getNumViews(display.c_str()); ++i) {
-            known_view |= view == config->getView(display.c_str(), i);
-        }
-        if (!known_view) {
-            return Error{"view '" + view + "' is not a view of display '" + display + "'"};
+        std::vector<std::string> views;
+        for (int i = 0; i < config->getNumViews(display.c_str()); ++i)
+            views.emplace_back(config->getView(display.c_str(), i));
+        if (std::find(views.begin(), views.end(), view) == views.end()) {
+            return Error{"view '" + view + "' is not a view of display '" + display + "'" +
+                             pack::DidYouMean(view, views) + " (views: " + JoinNames(views) +
+                             ")",
+                         ErrorKind::kColor};
         }
         impl->display = config
                             ->getProcessor(OCIO::ROLE_SCENE_LINEAR, display.c_str(), view.c_str(),
@@ -97,10 +112,11 @@ std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPip
         description = (path.empty() ? std::string("built-in config") : "config '" + path + "'") +
                       ", display '" + display + "', view '" + view + "'";
     } catch (const OCIO::Exception& e) {
-        return Error{std::string("opencolorio: ") + e.what()};
+        return Error{std::string("opencolorio: ") + e.what(), ErrorKind::kColor};
     }
     if (!std::isfinite(options.exposure) || std::fabs(options.exposure) > 64) {
-        return Error{"exposure must be a finite number of stops within [-64, 64]"};
+        return Error{"exposure must be a finite number of stops within [-64, 64]",
+                     ErrorKind::kColor};
     }
     impl->exposure_scale = std::exp2(options.exposure);
     out.impl_ = std::move(impl);

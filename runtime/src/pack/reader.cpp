@@ -13,6 +13,8 @@
 
 #include <xxhash.h>
 
+#include "kiln/pack/names.h"
+
 namespace kiln::pack {
 namespace {
 
@@ -441,6 +443,29 @@ VariantKey Pack::KeyFor(uint32_t pass, const std::vector<std::string>& enabled) 
         }
     }
     return key;
+}
+
+std::optional<std::string> Pack::CheckKeywords(uint32_t pass,
+                                               const std::vector<std::string>& enabled) const {
+    if (pass >= Count(SectionTag::kPasses))
+        return "no pass " + std::to_string(pass) + " in the pack";
+    std::vector<std::string> declared;
+    const PassRec p = Pass(pass);
+    for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
+        const KeywordSetRec set = KeywordSet(s);
+        for (uint32_t k = 0; k < set.keyword_count; ++k) {
+            const std::string_view kw = Keyword(set.first_keyword + k);
+            if (!kw.empty())
+                declared.emplace_back(kw);
+        }
+    }
+    for (const std::string& name : enabled) {
+        if (std::find(declared.begin(), declared.end(), name) == declared.end()) {
+            return "keyword '" + name + "' is not declared by the pass" +
+                   DidYouMean(name, declared);
+        }
+    }
+    return std::nullopt;
 }
 
 std::vector<std::string> Pack::KeywordsOf(uint32_t pass, VariantKey key) const {

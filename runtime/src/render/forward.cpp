@@ -259,10 +259,15 @@ std::optional<Error> RenderForward(Renderer::State& s,
                                    FrameStats& stats) {
     if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
         settings.height > 16384) {
-        return Error{"image size must be between 1x1 and 16384x16384"};
+        return Error{"image size must be between 1x1 and 16384x16384", ErrorKind::kScene};
     }
     if (s.packs.empty()) {
         return Error{"no variant pack loaded"};
+    }
+    if (scene.instances.empty()) {
+        return Error{(scene.path.empty() ? std::string("the scene") : scene.path) +
+                         ": nothing to draw (no node of the scene has a mesh)",
+                     ErrorKind::kScene};
     }
     render::CameraSetup camera;
     if (auto e = render::ChooseCamera(scene, settings, camera)) {

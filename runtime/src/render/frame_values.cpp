@@ -83,12 +83,16 @@ std::optional<runtime::Error> ChooseCamera(const runtime::Scene& scene,
                                            const runtime::FrameSettings& settings,
                                            CameraSetup& out) {
     const float aspect = float(settings.width) / float(settings.height);
-    if (settings.camera >= 0 && size_t(settings.camera) >= scene.cameras.size()) {
+    using Settings = runtime::FrameSettings;
+    if (settings.camera < Settings::kCameraAuto ||
+        (settings.camera >= 0 && size_t(settings.camera) >= scene.cameras.size())) {
         return runtime::Error{"camera " + std::to_string(settings.camera) +
-                              " does not exist (the scene has " +
-                              std::to_string(scene.cameras.size()) + ")"};
+                                  " does not exist (the scene has " +
+                                  std::to_string(scene.cameras.size()) +
+                                  "; use an index from 0, or the automatic camera)",
+                              runtime::ErrorKind::kScene};
     }
-    if (!scene.cameras.empty()) {
+    if (!scene.cameras.empty() && settings.camera != Settings::kCameraAuto) {
         const runtime::Camera& c = scene.cameras[size_t(std::max(settings.camera, 0))];
         out.name =
             c.name.empty() ? "camera " + std::to_string(std::max(settings.camera, 0)) : c.name;

@@ -202,11 +202,12 @@ std::optional<Error> Renderer::AddPack(const std::string& path) {
     auto loaded = std::make_unique<LoadedPack>();
     loaded->path = path;
     if (auto e = pack::MappedFile::Map(path, loaded->file)) {
-        return Error{path + ": " + e->message};
+        return Error{path + ": " + e->message, ErrorKind::kPack};
     }
     if (auto e = pack::Pack::Open(loaded->file.bytes(), loaded->pack)) {
         return Error{path + ": " + std::string(pack::PackErrorCodeName(e->code)) + ": " +
-                     e->message};
+                         e->message,
+                     ErrorKind::kPack};
     }
     loaded->selector =
         std::make_unique<VariantSelector>(loaded->pack, state_->options.missing_variant);

@@ -84,14 +84,15 @@ std::optional<Error> VariantSelector::Select(uint32_t pass,
     const std::string what = "shader '" + shader + "' pass '" + PassLabel(pack, pass) +
                              "' has no variant for keywords '" + JoinKeywords(requested) + "'";
     if (ranked.empty()) {
-        return Error{what + " and no variants at all"};
+        return Error{what + " and no variants at all", ErrorKind::kMissingVariant};
     }
     if (policy_ == MissingVariantPolicy::kClosest) {
         out = VariantChoice{ranked[0].second, false,
                             what + "; using the closest, " + closest.substr(0, closest.find(','))};
         return std::nullopt;
     }
-    return Error{what + " (stripped or never compiled); closest present: " + closest};
+    return Error{what + " (stripped or never compiled); closest present: " + closest,
+                 ErrorKind::kMissingVariant};
 }
 
 std::optional<Error> WriteUsageFile(const std::string& path,

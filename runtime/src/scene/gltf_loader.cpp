@@ -258,7 +258,7 @@ std::optional<Error> LoadGltf(const std::string& path,
     std::string err, warn;
     const bool binary = std::filesystem::path(path).extension() == ".glb";
     if (!std::filesystem::exists(path)) {
-        return Error{path + ": no such file"};
+        return Error{path + ": no such file", ErrorKind::kScene};
     }
     const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
                            : loader.LoadASCIIFromFile(&model, &err, &warn, path);
@@ -266,7 +266,8 @@ std::optional<Error> LoadGltf(const std::string& path,
         warnings.push_back(path + ": " + warn);
     }
     if (!ok) {
-        return Error{path + ": " + (err.empty() ? std::string("not a glTF file") : err)};
+        return Error{path + ": " + (err.empty() ? std::string("not a glTF file") : err),
+                     ErrorKind::kScene};
     }
     Scene scene;
     scene.path = path;
@@ -314,9 +315,22 @@ std::optional<Error> LoadGltf(const std::string& path,
         }
     }
     std::vector<bool> visiting(model.nodes.size(), false);
+    std::optional<Error> bad_node;  // tinygltf lets cycles and bad indices through
     std::function<void(int, const glm::mat4&)> visit = [&](int index, const glm::mat4& parent) {
-        if (index < 0 || size_t(index) >= model.nodes.size() || visiting[size_t(index)]) {
-            return;  // a cycle or a bad index: tinygltf lets both through
+        if (bad_node)
+            return;
+        if (index < 0 || size_t(index) >= model.nodes.size()) {
+            bad_node = Error{path + ": node " + std::to_string(index) + " does not exist (the file has " +
+                                 std::to_string(model.nodes.size()) + " nodes)",
+                             ErrorKind::kScene};
+            return;
+        }
+        if (visiting[size_t(index)]) {
+            bad_node = Error{path + ": node " + std::to_string(index) + " '" +
+                                 model.nodes[size_t(index)].name +
+                                 "' is its own ancestor (a cycle in the node hierarchy)",
+                             ErrorKind::kScene};
+            return;
         }
         visiting[size_t(index)] = true;
         const tinygltf::Node& node = model.nodes[size_t(index)];
@@ -377,7 +391,13 @@ std::optional<Error> LoadGltf(const std::string& path,
         visiting[size_t(index)] = false;
     };
     std::vector<int> roots;
-    if (model.defaultScene >= 0 && size_t(model.defaultScene) < model.scenes.size()) {
+    if (model.defaultScene >= 0 && size_t(model.defaultScene) >= model.scenes.size()) {
+        return Error{path + ": the default scene " + std::to_string(model.defaultScene) +
+                         " does not exist (the file has " + std::to_string(model.scenes.size()) +
+                         " scenes)",
+                     ErrorKind::kScene};
+    }
+    if (model.defaultScene >= 0) {
         roots = model.scenes[size_t(model.defaultScene)].nodes;
     } else if (!model.scenes.empty()) {
         roots = model.scenes[0].nodes;
@@ -389,6 +409,8 @@ std::optional<Error> LoadGltf(const std::string& path,
     for (int root : roots) {
         visit(root, glm::mat4(1.0f));
     }
+    if (bad_node)
+        return bad_node;
     const std::filesystem::path sidecar =
         std::filesystem::path(path).replace_extension(".kiln.json");
     if (std::filesystem::exists(sidecar)) {

@@ -89,6 +89,12 @@ class Pack {
     // The key selecting, in each keyword set, the enabled keyword (or the set's first keyword
     // when none of its keywords is enabled). Names in no set are ignored.
     VariantKey KeyFor(uint32_t pass, const std::vector<std::string>& enabled) const;
+    // nullopt when every name in `enabled` is a keyword of the pass; else a message naming the
+    // first that is not, with the closest declared keyword. For keyword lists that must not
+    // hold typos (kiln extract); KeyFor ignores such names, as Unity ignores a material keyword
+    // its shader does not declare.
+    std::optional<std::string> CheckKeywords(uint32_t pass,
+                                             const std::vector<std::string>& enabled) const;
     // The keyword names a key selects (no-keyword entries omitted).
     std::vector<std::string> KeywordsOf(uint32_t pass, VariantKey key) const;
 

@@ -30,7 +30,10 @@ struct RendererOptions {
 
 struct FrameSettings {
     uint32_t width = 960, height = 540;
-    int camera = -1;             // scene camera index; -1: the first, or one framing the scene
+    // A scene camera index; kCameraDefault: the first, or one framing the scene when it has
+    // none; kCameraAuto: one framing the scene. Other negative values are an error.
+    static constexpr int kCameraDefault = -1, kCameraAuto = -2;
+    int camera = kCameraDefault;
     uint32_t pixel_lights = 4;   // at most this many additive (ForwardAdd) passes per object
     float time = 0;              // seconds, for _Time
     glm::vec3 background{0.0f};  // linear clear colour

@@ -8,8 +8,18 @@
 
 namespace kiln::runtime {
 
+// What kind of failure, for callers that report stable codes (the kiln CLI's K0xxx).
+enum class ErrorKind {
+    kFailed,          // the device, a pipeline, a file write: anything not below
+    kScene,           // the scene or the frame settings ask for something that does not exist
+    kMissingVariant,  // a pack lacks the variant a material needs
+    kColor,           // an OpenColorIO config, display or view that does not exist
+    kPack,            // a pack that cannot be read
+};
+
 struct Error {
     std::string message;
+    ErrorKind kind = ErrorKind::kFailed;
 };
 
 }  // namespace kiln::runtime
