@@ -105,6 +105,80 @@ TEST_F(RuntimeTest, NPointLightsRunNAdditivePasses) {
     }
 }
 
+// The image's alpha (and so the EXR's) is coverage: 1 on the opaque sphere however many additive
+// passes light it, 0 on the background. It once held 1 + the number of additive passes.
+TEST_F(RuntimeTest, AlphaIsCoverageWhateverTheNumberOfAdditivePasses) {
+    runtime::FrameSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    settings.pixel_lights = 8;
+    runtime::FrameStats stats;
+    const runtime::LinearImage image = Render(LoneSphere("multi_light.material", 3), settings, &stats);
+    ASSERT_EQ(stats.add_passes, 3u);
+    size_t covered = 0, background = 0;
+    for (size_t i = 3; i < image.rgba.size(); i += 4) {
+        const float a = image.rgba[i];
+        ASSERT_TRUE(a == 0.0f || a == 1.0f) << "alpha " << a << " at pixel " << i / 4;
+        (a == 1.0f ? covered : background)++;
+    }
+    EXPECT_GT(covered, image.rgba.size() / 4 / 10);
+    EXPECT_GT(background, image.rgba.size() / 4 / 10);
+}
+
+// An image wider than the device allows (lavapipe: 16384) is downscaled with a warning instead of
+// creating an invalid image (which only the validation layer used to notice).
+TEST_F(RuntimeTest, ImagesLargerThanTheDeviceLimitAreDownscaledWithAWarning) {
+    runtime::Scene scene = SphereOnFloor("");
+    scene.material_files.clear();  // the glTF material on Kiln/StandardMetallic
+    runtime::SceneImage big;
+    big.name = "wide";
+    big.width = 17000;
+    big.height = 2;
+    big.rgba8.assign(size_t(big.width) * big.height * 4, 200);
+    scene.images.push_back(big);
+    scene.materials[0].base_color_texture.image = 0;
+    runtime::FrameSettings settings;
+    settings.width = 32;
+    settings.height = 24;
+    runtime::FrameStats stats;
+    Render(scene, settings, &stats);
+    std::string all;
+    for (const std::string& w : stats.warnings)
+        all += w + "\n";
+    EXPECT_NE(all.find("image 0 'wide' is 17000x2, larger than the device's limit of 16384; "
+                       "downscaled to 8500x1"),
+              std::string::npos)
+        << all;
+}
+
+TEST_F(RuntimeTest, ASceneWithNothingToDrawIsAnError) {
+    runtime::Scene scene = SphereOnFloor(RuntimeData("lambert.material"));
+    scene.instances.clear();
+    runtime::LinearImage image;
+    runtime::FrameStats stats;
+    const auto e = renderer_.Render(scene, {}, color_, image, stats);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->kind, runtime::ErrorKind::kScene);
+    EXPECT_EQ(e->message, "the scene: nothing to draw (no node of the scene has a mesh)");
+}
+
+TEST_F(RuntimeTest, NegativeCameraIndicesOtherThanTheNamedModesAreErrors) {
+    runtime::Scene scene = SphereOnFloor(RuntimeData("lambert.material"));
+    runtime::FrameSettings settings;
+    settings.width = 16;
+    settings.height = 12;
+    settings.camera = -3;
+    runtime::LinearImage image;
+    runtime::FrameStats stats;
+    auto e = renderer_.Render(scene, settings, color_, image, stats);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->kind, runtime::ErrorKind::kScene);
+    settings.camera = runtime::FrameSettings::kCameraAuto;
+    e = renderer_.Render(scene, settings, color_, image, stats);
+    ASSERT_FALSE(e) << e->message;
+    EXPECT_EQ(stats.camera, "automatic");
+}
+
 TEST_F(RuntimeTest, PixelLightCountLimitsAdditivePassesAndTheRestBecomeVertexLights) {
     runtime::FrameSettings settings;
     settings.width = 64;

@@ -129,6 +129,12 @@ struct Planner {
         if (auto e = vk::ResolveRenderState(pack, pass, number, overrides, state)) {
             return Error{m.name + ": pass '" + PassLabel(pack, pass) + "': " + e->message};
         }
+        if (additive) {
+            // The frame's alpha is coverage (docs/runtime.md): an additive pass adds light, and
+            // its Blend One One would add 1 to the alpha per light.
+            for (vk::BlendTarget& t : state.targets)
+                t.mask &= ~VkColorComponentFlags(VK_COLOR_COMPONENT_A_BIT);
+        }
         Draw d;
         if (auto e =
                 s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created)) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <vector>
 
 namespace kiln::render {
 namespace {
@@ -24,6 +25,37 @@ const char* ShapeName(vk::ImageShape shape) {
             return "cube-array";
     }
     return "?";
+}
+
+// Halves an RGBA8 image (2x2 box filter, odd edges clamped) until both sides fit `limit`, the
+// device's maxImageDimension2D. Averages the stored values: for sRGB images this darkens
+// high-contrast detail slightly, acceptable for an image the device cannot hold at all.
+bool FitToLimit(uint32_t& w, uint32_t& h, std::vector<uint8_t>& rgba, uint32_t limit) {
+    bool changed = false;
+    while (w > limit || h > limit) {
+        const uint32_t nw = std::max(1u, w / 2), nh = std::max(1u, h / 2);
+        std::vector<uint8_t> out(size_t(nw) * nh * 4);
+        for (uint32_t y = 0; y < nh; ++y) {
+            for (uint32_t x = 0; x < nw; ++x) {
+                for (uint32_t c = 0; c < 4; ++c) {
+                    uint32_t sum = 0;
+                    for (uint32_t dy = 0; dy < 2; ++dy) {
+                        for (uint32_t dx = 0; dx < 2; ++dx) {
+                            const uint32_t sx = std::min(w - 1, x * 2 + dx);
+                            const uint32_t sy = std::min(h - 1, y * 2 + dy);
+                            sum += rgba[(size_t(sy) * w + sx) * 4 + c];
+                        }
+                    }
+                    out[(size_t(y) * nw + x) * 4 + c] = uint8_t((sum + 2) / 4);
+                }
+            }
+        }
+        rgba = std::move(out);
+        w = nw;
+        h = nh;
+        changed = true;
+    }
+    return changed;
 }
 
 }  // namespace
@@ -139,29 +171,40 @@ std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
     }
     auto it = images_.find({key, binding.srgb});
     if (it == images_.end()) {
-        vk::Image image;
+        uint32_t w = 0, h = 0;
+        std::vector<uint8_t> rgba;
+        std::string name;
         if (binding.source == TextureBinding::Source::kSceneImage) {
             const runtime::SceneImage& si = scene_.images[size_t(binding.image)];
-            if (auto e = vk::CreateTexture(s_.context, si.width, si.height, si.rgba8, binding.srgb,
-                                           image)) {
-                return e;
-            }
+            w = si.width;
+            h = si.height;
+            rgba = si.rgba8;
+            name = "image " + std::to_string(binding.image) + " '" + si.name + "'";
         } else {
-            int w = 0, h = 0, n = 0;
-            stbi_uc* pixels = stbi_load(binding.file.c_str(), &w, &h, &n, 4);
+            int iw = 0, ih = 0, n = 0;
+            stbi_uc* pixels = stbi_load(binding.file.c_str(), &iw, &ih, &n, 4);
             if (!pixels) {
                 return Default(binding, shape,
                                "cannot decode '" + binding.file + "': " + stbi_failure_reason() +
                                    "; using the default texture",
                                out);
             }
-            auto e = vk::CreateTexture(s_.context, uint32_t(w), uint32_t(h),
-                                       std::span<const uint8_t>(pixels, size_t(w) * size_t(h) * 4),
-                                       binding.srgb, image);
+            w = uint32_t(iw);
+            h = uint32_t(ih);
+            rgba.assign(pixels, pixels + size_t(w) * h * 4);
             stbi_image_free(pixels);
-            if (e) {
-                return e;
-            }
+            name = "'" + binding.file + "'";
+        }
+        const uint32_t limit = s_.context.properties.limits.maxImageDimension2D;
+        const uint32_t w0 = w, h0 = h;
+        if (FitToLimit(w, h, rgba, limit)) {
+            out.warning = name + " is " + std::to_string(w0) + "x" + std::to_string(h0) +
+                          ", larger than the device's limit of " + std::to_string(limit) +
+                          "; downscaled to " + std::to_string(w) + "x" + std::to_string(h);
+        }
+        vk::Image image;
+        if (auto e = vk::CreateTexture(s_.context, w, h, rgba, binding.srgb, image)) {
+            return e;
         }
         it = images_.emplace(std::pair{key, binding.srgb}, image).first;
     }
