@@ -104,8 +104,8 @@ TEST(Materials, StandardMetallicFeaturesAreShaderFeaturesThatStripAway) {
     EXPECT_EQ(VariantsOf(none, "ForwardBase"), 1u);
     EXPECT_EQ(VariantsOf(none, "ForwardAdd"), 3u);
     CompileOptions material;
-    material.material_keywords["Kiln/StandardMetallic"] = {{"_NORMALMAP", "_EMISSION"}};
-    material.material_keywords["Some/OtherShader"] = {{"_METALLICGLOSSMAP"}};
+    material.materials["Kiln/StandardMetallic"] = {{{"_NORMALMAP", "_EMISSION"}, {}}};
+    material.materials["Some/OtherShader"] = {{{"_METALLICGLOSSMAP"}, {}}};
     CompileRun one = Compile({file}, material);
     ASSERT_TRUE(one.out.ok) << Brief(one.diags);
     EXPECT_EQ(VariantsOf(one, "ForwardBase"), 2u);

@@ -21,6 +21,12 @@
 
 namespace kiln {
 
+// One material instance's part in the shader_feature combinations (CompileOptions::materials).
+struct MaterialRequest {
+    std::set<std::string> keywords;        // its "keywords"
+    std::map<std::string, double> values;  // its scalar property values
+};
+
 enum class OptimizationLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
 
 // Unity 2022.3: the UNITY_VERSION Kiln's compile environment reproduces by default
@@ -40,8 +46,10 @@ struct CompileOptions {
     unsigned jobs = 0;        // 0: all cores
     // shader_feature variants, as in Unity: the all-off combination plus one combination per
     // material instance of the shader (keyed by shader name), plus `keywords` (--keywords) for
-    // every shader; or, with all_features (--all-features), every combination.
-    std::map<std::string, std::vector<std::set<std::string>>> material_keywords;
+    // every shader; or, with all_features (--all-features), every combination. A material's
+    // combination is its keywords and those its values of [Toggle]/[ToggleOff]/[KeywordEnum]
+    // properties enable (unset properties: their defaults).
+    std::map<std::string, std::vector<MaterialRequest>> materials;
     std::optional<std::set<std::string>> keywords;
     bool all_features = false;
     uint64_t max_variants = 4096;  // per pass

@@ -69,6 +69,7 @@ enum class DiagCode : uint16_t {
     kDuplicateTag = 3010,
     kUnknownTextureDefault = 3011,
     kDuplicatePassName = 3012,
+    kUnknownLightMode = 3013,
 
     kUnknownPragma = 4001,
     kUnsupportedStage = 4002,
@@ -85,6 +86,7 @@ enum class DiagCode : uint16_t {
     kNoVariantsLeft = 4013,
     kEntryPointNotFound = 4014,
     kUnknownKeyword = 4015,
+    kMisspelledPragma = 4016,
 
     kHlslError = 5001,
     kHlslWarning = 5002,

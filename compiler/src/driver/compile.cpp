@@ -20,6 +20,7 @@
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
 #include "kiln/pack/names.h"
+#include "kiln/pack/property_keywords.h"
 #include "kiln/shaderlab/parse.h"
 #include "spirv/optimize.h"
 
@@ -86,6 +87,27 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
     }
 }
 
+// A material's keywords: those it lists and those its [Toggle]/[ToggleOff]/[KeywordEnum] property
+// values enable (the property's default when the material does not set it), as in Unity.
+std::set<std::string> MaterialKeywords(const shaderlab::Shader& shader, const MaterialRequest& m) {
+    std::set<std::string> out = m.keywords;
+    for (const shaderlab::Property& p : shader.properties) {
+        for (const shaderlab::Attribute& a : p.attributes) {
+            const pack::PropertyKeywords driven = pack::KeywordsDrivenBy(p.name, a.name, a.raw_args);
+            if (driven.kind == pack::PropertyKeywords::Kind::kNone)
+                continue;
+            auto v = m.values.find(p.name);
+            const double value = v != m.values.end()       ? v->second
+                                 : p.default_value.empty() ? 0.0
+                                                           : p.default_value[0];
+            const std::string k = pack::KeywordEnabledBy(driven, value);
+            if (!k.empty())
+                out.insert(k);
+        }
+    }
+    return out;
+}
+
 // --keywords names keywords some pass declares: a typo would otherwise build nothing more and
 // exit 0.
 void CheckRequestedKeywords(CompileState& st) {
@@ -116,10 +138,10 @@ void ExpandPasses(CompileState& st) {
         request.max_variants = st.options.max_variants;
         if (st.options.keywords)
             request.feature_combinations.push_back(*st.options.keywords);
-        if (auto it = st.options.material_keywords.find(unit.ast ? unit.ast->name : "");
-            unit.ast && it != st.options.material_keywords.end()) {
-            request.feature_combinations.insert(request.feature_combinations.end(),
-                                                it->second.begin(), it->second.end());
+        if (auto it = st.options.materials.find(unit.ast ? unit.ast->name : "");
+            unit.ast && it != st.options.materials.end()) {
+            for (const MaterialRequest& m : it->second)
+                request.feature_combinations.push_back(MaterialKeywords(*unit.ast, m));
         }
         for (size_t f = 0; f < unit.passes.size(); ++f) {
             const driver::FlatPass& fp = unit.passes[f];

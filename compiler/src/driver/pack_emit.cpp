@@ -5,6 +5,7 @@
 
 #include "driver/compile_state.h"
 #include "driver/parallel.h"
+#include "kiln/pack/property_keywords.h"
 #include "kiln/shaderlab/ast.h"
 #include "pack/pack_builder.h"
 #include "spirv/bindings.h"
@@ -207,7 +208,14 @@ void CheckInterfaces(CompileState& st) {
             auto m = members.find(prop.name);
             auto r = resources.find(prop.name);
             if (m == members.end() && r == resources.end()) {
-                if (!every_feature_built)
+                // A [Toggle]/[ToggleOff]/[KeywordEnum] property is a keyword switch; Unity's
+                // shaders rarely read its value.
+                const bool switch_only =
+                    std::any_of(prop.attributes.begin(), prop.attributes.end(), [&](const auto& a) {
+                        return pack::KeywordsDrivenBy(prop.name, a.name, a.raw_args).kind !=
+                               pack::PropertyKeywords::Kind::kNone;
+                    });
+                if (!every_feature_built || switch_only)
                     continue;
                 st.diags.Warning(
                     DiagCode::kPropertyUnused, file, prop.name_range,

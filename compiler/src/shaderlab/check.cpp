@@ -1,4 +1,6 @@
 // Semantic checks over a parsed Shader (see Check() in kiln/shaderlab/parse.h).
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -53,6 +55,7 @@ struct State {
     void CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pass);
     void CheckEntries(const std::vector<SubShaderEntry>& entries);
     void CheckSubShader(const SubShader& sub);
+    void CheckLightMode(const std::vector<Tag>& tags);
 };
 
 void State::CheckProperties() {
@@ -203,6 +206,27 @@ void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
     }
 }
 
+// A LightMode no pipeline knows means the pass is never drawn: a warning with the closest value.
+void State::CheckLightMode(const std::vector<Tag>& tags) {
+    for (const Tag& t : tags) {
+        if (t.key != "LightMode")
+            continue;
+        const auto& modes = pack::KnownLightModes();
+        const bool known = std::any_of(modes.begin(), modes.end(), [&](const std::string& m) {
+            return m.size() == t.value.size() &&
+                   std::equal(m.begin(), m.end(), t.value.begin(), [](char a, char b) {
+                       return std::tolower(static_cast<unsigned char>(a)) ==
+                              std::tolower(static_cast<unsigned char>(b));
+                   });
+        });
+        if (!known) {
+            Warning(DiagCode::kUnknownLightMode, t.range,
+                    "unknown LightMode '" + t.value + "': no pipeline draws this pass" +
+                        pack::DidYouMean(t.value, modes));
+        }
+    }
+}
+
 void State::CheckSubShader(const SubShader& sub) {
     CheckState(sub.state);
     CheckPrograms(sub.programs, false);
@@ -214,6 +238,7 @@ void State::CheckSubShader(const SubShader& sub) {
         }
         CheckState(pass->state);
         CheckPrograms(pass->programs, true);
+        CheckLightMode(pass->tags);
         if (pass->name.empty()) {
             continue;
         }

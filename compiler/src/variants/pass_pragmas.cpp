@@ -4,6 +4,8 @@
 #include <map>
 #include <set>
 
+#include "kiln/pack/names.h"
+
 namespace kiln::variants {
 namespace {
 
@@ -20,6 +22,8 @@ const std::set<std::string> kIgnoredPragmas = {"fragmentoption",
                                                "never_use_dxc",
                                                "use_dxc",
                                                "glsl_es",
+                                               "glsl_es2",
+                                               "glsl",
                                                "enable_cbuffer",
                                                "dynamic_branch",
                                                "pack_matrix",
@@ -228,8 +232,39 @@ struct State {
         }
         if (KeywordPragma(p) || kIgnoredPragmas.count(p.name))
             return;
+        // As in Unity an unknown pragma is ignored, but one spelled like a pragma Kiln reads is
+        // a typo whose variants or entry point would silently disappear: an error.
+        const std::string near = pack::ClosestName(p.name, KnownPragmas());
+        if (!near.empty()) {
+            diags.Error(DiagCode::kMisspelledPragma, file, p.range,
+                        "unknown pragma '" + p.name + "'; did you mean '" + near + "'?");
+            return;
+        }
         diags.Warning(DiagCode::kUnknownPragma, file, p.range,
                       "unknown pragma '" + p.name + "' is ignored");
+    }
+
+    // Every pragma name Kiln reads, for the typo check.
+    static const std::vector<std::string>& KnownPragmas() {
+        static const std::vector<std::string> names = [] {
+            std::vector<std::string> n = {"vertex",         "fragment",         "target",
+                                          "require",        "skip_variants",    "only_renderers",
+                                          "exclude_renderers"};
+            n.insert(n.end(), kIgnoredPragmas.begin(), kIgnoredPragmas.end());
+            n.insert(n.end(), kOtherStages.begin(), kOtherStages.end());
+            for (const char* base : {"multi_compile", "shader_feature"}) {
+                for (const char* local : {"", "_local"}) {
+                    for (const char* stage : {"", "_vertex", "_fragment"})
+                        n.push_back(std::string(base) + local + stage);
+                }
+            }
+            for (const char* s : {"fwdbase", "fwdbasealpha", "fwdadd", "fwdadd_fullshadows",
+                                  "lightpass", "prepassfinal", "shadowcaster", "shadowcollector",
+                                  "fog", "instancing", "particles"})
+                n.push_back(std::string("multi_compile_") + s);
+            return n;
+        }();
+        return names;
     }
 };
 

@@ -105,10 +105,14 @@ void ReadMaterialKeywords(const std::string& path,
         AddMaterialIssues(issues, *files.back(), diags);
         return;
     }
-    std::set<std::string> keywords;
+    MaterialRequest request;
     for (const material::Keyword& k : m.keywords)
-        keywords.insert(k.name);
-    out.material_keywords[m.shader].push_back(std::move(keywords));
+        request.keywords.insert(k.name);
+    for (const material::PropertyValue& v : m.properties) {
+        if (v.kind == material::PropertyValue::Kind::kNumbers && v.numbers.size() == 1)
+            request.values[v.name] = v.numbers[0];
+    }
+    out.materials[m.shader].push_back(std::move(request));
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
 // ValidateMaterial: a parsed material against its shader's Properties and keywords in a pack.
 #include "kiln/material/material.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
+
+#include "material/keywords.h"
 
 namespace kiln::material {
 namespace {
@@ -148,6 +151,24 @@ void CheckKeywords(State& s, const Material& m, const pack::ShaderRec& shader) {
     }
 }
 
+// A listed keyword that a keyword-switch property's value turns off (or, for a KeywordEnum, that
+// is not the entry its value selects) is still enabled: the material contradicts itself.
+void CheckSwitches(State& s, const Material& m, uint32_t shader) {
+    for (const PropertySwitch& sw : PropertySwitches(m, s.pack, shader)) {
+        for (const Keyword& k : m.keywords) {
+            const auto& driven = sw.driven.keywords;
+            if (k.name == sw.enabled || std::find(driven.begin(), driven.end(), k.name) == driven.end())
+                continue;
+            s.Add(IssueSeverity::kWarning, IssueCode::kKeywordContradictsProperty, k.pos,
+                  "keyword '" + k.name + "' is listed, but property '" + sw.property + "' = " +
+                      Number(sw.value) +
+                      (sw.enabled.empty() ? " turns it off" : " selects '" + sw.enabled + "'") +
+                      (sw.set_by_material ? "" : " (its default)"),
+                  "the property drives the keyword as in Unity: set the property, not the keyword");
+        }
+    }
+}
+
 }  // namespace
 
 bool ValidateMaterial(const Material& m,
@@ -187,6 +208,7 @@ bool ValidateMaterial(const Material& m,
         CheckProperty(s, v, it->second, material_dir);
     }
     CheckKeywords(s, m, shader);
+    CheckSwitches(s, m, *shader_index);
     return s.ok;
 }
 

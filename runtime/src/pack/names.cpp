@@ -44,6 +44,20 @@ std::string ClosestName(std::string_view name, const std::vector<std::string>& c
     return best;
 }
 
+const std::vector<std::string>& KnownLightModes() {
+    static const std::vector<std::string> modes = {
+        // Built-in render pipeline (Kiln's runtime draws ForwardBase, ForwardAdd and Always).
+        "Always", "ForwardBase", "ForwardAdd", "Deferred", "ShadowCaster", "MotionVectors",
+        "PrepassBase", "PrepassFinal", "Vertex", "VertexLMRGBM", "VertexLM", "Meta",
+        // Scriptable pipelines.
+        "SRPDefaultUnlit", "UniversalForward", "UniversalForwardOnly", "UniversalGBuffer",
+        "Universal2D", "DepthOnly", "DepthNormals", "DepthNormalsOnly", "GBuffer", "Forward",
+        "ForwardOnly", "DepthForwardOnly", "TransparentDepthPrepass", "TransparentDepthPostpass",
+        "TransparentBackface", "DistortionVectors", "FullScreenDebug", "Picking",
+        "SceneSelectionPass"};
+    return modes;
+}
+
 std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates) {
     const std::string near = ClosestName(name, candidates);
     return near.empty() ? std::string() : "; did you mean '" + near + "'?";

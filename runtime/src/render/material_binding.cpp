@@ -156,9 +156,7 @@ std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const p
             Decode(pack, *p, color, numbers);
             m.values[v.name] = numbers;
         }
-        for (const material::Keyword& k : mat.keywords) {
-            m.keywords.push_back(k.name);
-        }
+        m.keywords = material::EnabledKeywords(mat, pack, *shader);
         for (const material::RenderStateOverride& o : mat.render_state) {
             m.overrides.push_back({o.field, o.values});
         }

@@ -111,6 +111,35 @@ TEST(Compile, AnEntryPointThatIsNotAFunctionIsAnErrorAtItsPragma) {
               "program\n");
 }
 
+// [Toggle(KW)] and [KeywordEnum] properties are keyword switches: no K5005 "unused" warning,
+// and a material's value of them chooses the shader_feature combination built, as in Unity.
+TEST(Compile, KeywordSwitchPropertiesDriveTheCombinationsAMaterialNeeds) {
+    ScratchDir dir;
+    std::string text = Replace(PassShader("            #pragma shader_feature _RIMLIGHT\n"
+                                          "            #pragma shader_feature _Q_LOW _Q_HIGH\n"),
+                               "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1) }",
+                               "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1)\n"
+                               "        [Toggle(_RIMLIGHT)] _Rim (\"Rim\", Float) = 0\n"
+                               "        [KeywordEnum(Low, High)] _Q (\"Q\", Float) = 0 }");
+    const std::string path = dir.Write("switch.shader", text);
+    CompileOptions every;
+    every.all_features = true;
+    CompileRun all = Compile({path}, every);
+    ASSERT_TRUE(all.out.ok) << Brief(all.diags);
+    EXPECT_EQ(Brief(all.diags), "") << "no K5005 for keyword switches";
+    EXPECT_EQ(all.out.stats.variants, 4u);
+
+    CompileOptions material;
+    material.materials["Test/Pass"] = {{{}, {{"_Rim", 1.0}, {"_Q", 1.0}}}};
+    CompileRun one = Compile({path}, material);
+    ASSERT_TRUE(one.out.ok) << Brief(one.diags);
+    EXPECT_EQ(one.out.stats.variants, 2u);  // all-off + (_RIMLIGHT, _Q_HIGH)
+    material.materials["Test/Pass"] = {{{}, {{"_Rim", 0.0}}}};  // _Q's default: _Q_LOW
+    CompileRun off = Compile({path}, material);
+    ASSERT_TRUE(off.out.ok) << Brief(off.diags);
+    EXPECT_EQ(off.out.stats.variants, 1u) << "the all-off combination is (_Q_LOW)";
+}
+
 TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
     ScratchDir dir;
     const std::string path =

@@ -113,6 +113,9 @@ const pack::Pack& TestPack() {
         _Gloss ("Gloss", Range(0.25, 2)) = 1
         _Count ("Count", Int) = 1
         _MainTex ("Tex", 2D) = "white" {}
+        [Toggle(_RIMLIGHT)] _Rim ("Rim", Float) = 0
+        [ToggleOff] _Specular ("Specular", Float) = 1
+        [KeywordEnum(Low, High Quality)] _Mode ("Mode", Float) = 0
     }
     SubShader { Pass {
         CGPROGRAM
@@ -121,6 +124,9 @@ const pack::Pack& TestPack() {
         #pragma multi_compile DIRECTIONAL POINT
         #pragma shader_feature _ _RED _GREEN
         #pragma shader_feature _GLOW
+        #pragma shader_feature _RIMLIGHT
+        #pragma shader_feature _SPECULAR_OFF
+        #pragma shader_feature _MODE_LOW _MODE_HIGH_QUALITY
         float4 _Color; float4 _Offset; float _Gloss; int _Count; sampler2D _MainTex;
         float4 vert(float4 p : POSITION) : SV_POSITION { return p + _Offset; }
         float4 frag() : SV_Target { return _Color * _Gloss * _Count * tex2D(_MainTex, 0); }
@@ -156,6 +162,34 @@ TEST(MaterialValidate, AcceptsWellTypedValues) {
                            "_Count": 3, "_MainTex": "x.png"})",
                        R"(["_RED", "_GLOW"])"),
               "");
+}
+
+// As in Unity, [Toggle], [ToggleOff] and [KeywordEnum] properties drive their keywords; a
+// property the material does not set contributes through its default.
+TEST(MaterialKeywords, TogglesAndKeywordEnumsDriveKeywords) {
+    auto enabled = [](const std::string& props, const std::string& keywords = "[]") {
+        const std::string text = "{\"shader\": \"Test/M\", \"properties\": " + props +
+                                 ", \"keywords\": " + keywords + "}";
+        Material m;
+        std::vector<MaterialIssue> issues;
+        EXPECT_TRUE(material::ParseMaterial(text, m, issues)) << Brief(issues);
+        std::string out;
+        for (const std::string& k :
+             material::EnabledKeywords(m, TestPack(), *TestPack().FindShader("Test/M")))
+            out += k + " ";
+        return out;
+    };
+    EXPECT_EQ(enabled("{}"), "_MODE_LOW ");
+    EXPECT_EQ(enabled(R"({"_Rim": 1})"), "_MODE_LOW _RIMLIGHT ");
+    EXPECT_EQ(enabled(R"({"_Specular": 0, "_Mode": 1})"), "_MODE_HIGH_QUALITY _SPECULAR_OFF ");
+    EXPECT_EQ(enabled(R"({"_Mode": 7})", R"(["_GLOW"])"), "_GLOW _MODE_HIGH_QUALITY ");
+}
+
+TEST(MaterialValidate, AKeywordItsToggleTurnsOffIsAWarning) {
+    EXPECT_EQ(Validate(R"({"_Rim": 0})", R"(["_RIMLIGHT"])"),
+              "3:14 K6016 keyword '_RIMLIGHT' is listed, but property '_Rim' = 0 turns it off "
+              "(the property drives the keyword as in Unity: set the property, not the keyword)\n");
+    EXPECT_EQ(Validate(R"({"_Rim": 1})", R"(["_RIMLIGHT"])"), "");
 }
 
 TEST(MaterialValidate, UnknownShaderAndPropertySuggestTheClosestName) {

@@ -43,6 +43,7 @@ enum class IssueCode : uint16_t {
     kRenderState = 6013,          // unknown render-state field or value
     kTextureNotFound = 6014,      // warning: texture file missing beside the material
     kDuplicate = 6015,            // the same property or keyword twice
+    kKeywordContradictsProperty = 6016,  // warning: a listed keyword its [Toggle] property turns off
 };
 
 struct MaterialIssue {
@@ -100,6 +101,13 @@ bool ValidateMaterial(const Material& m,
                       const pack::Pack& pack,
                       const std::string& material_dir,
                       std::vector<MaterialIssue>& issues);
+
+// The keywords `m` enables on `shader` of `pack`: its "keywords" plus those its values of
+// [Toggle]/[ToggleOff]/[KeywordEnum] properties enable (kiln/pack/property_keywords.h; a property
+// the material does not set contributes through its default), as in Unity. Sorted, unique.
+std::vector<std::string> EnabledKeywords(const Material& m,
+                                         const pack::Pack& pack,
+                                         uint32_t shader);
 
 using pack::ClosestName;  // kiln/pack/names.h
 

@@ -16,6 +16,10 @@ std::string ClosestName(std::string_view name, const std::vector<std::string>& c
 // a suggestion appended to a diagnostic's message.
 std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates);
 
+// The LightMode tag values Unity's pipelines draw (built-in, URP, HDRP): a pass tagged otherwise
+// is never drawn, so the compiler warns (K3013) with the closest of these.
+const std::vector<std::string>& KnownLightModes();
+
 }  // namespace kiln::pack
 
 #endif  // KILN_PACK_NAMES_H_
