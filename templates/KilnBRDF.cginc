@@ -2,8 +2,9 @@
 // parameterization, after Filament's "Physically Based Rendering in Filament" (section 4.4-4.6).
 //
 // Conventions: a = roughness = perceptualRoughness^2 (Burley 2012), perceptualRoughness =
-// 1 - smoothness (Unity). Light colours follow the library's convention (pi x radiance), so the
-// rendering equation term is f * C * (n . l) * pi; BRDF_Specular below includes that pi.
+// 1 - smoothness (Unity). Light colours follow Unity's convention: C = irradiance / pi (the
+// runtime turns glTF lux and candela into C, docs/runtime.md "Light units"), so the rendering
+// equation term f * E * (n . l) is f * pi * C * (n . l); BRDF_Specular below includes that pi.
 #ifndef KILN_BRDF_INCLUDED
 #define KILN_BRDF_INCLUDED
 
@@ -55,7 +56,7 @@ float3 F_SchlickLerp(float3 f0, float3 f90, float VoH) {
     return lerp(f0, f90, Pow5(1.0 - saturate(VoH)));
 }
 
-// Lambertian diffuse BRDF 1/pi, times pi for the library's light convention: 1.
+// Lambertian diffuse BRDF 1/pi, times the pi of the light convention (C = E / pi): 1.
 float Fd_Lambert() {
     return 1.0;
 }

@@ -35,7 +35,7 @@ Light KeyLight() {
     l.name = "key";
     l.type = LightType::kDirectional;
     l.color = {1.0f, 0.95f, 0.9f};
-    l.intensity = 1.1f;
+    l.intensity = 3.5f;  // lux
     l.direction = glm::normalize(glm::vec3(-0.5f, -1.0f, -0.35f));
     return l;
 }
@@ -44,7 +44,7 @@ Light PointLight() {
     l.name = "point";
     l.type = LightType::kPoint;
     l.color = {0.4f, 0.6f, 1.0f};
-    l.intensity = 3.0f;
+    l.intensity = 9.5f;  // candela
     l.range = 6.0f;
     l.position = {-1.6f, 1.2f, 1.4f};
     return l;
@@ -54,7 +54,7 @@ Light SpotLight() {
     l.name = "spot";
     l.type = LightType::kSpot;
     l.color = {1.0f, 0.5f, 0.7f};
-    l.intensity = 8.0f;
+    l.intensity = 25.0f;  // candela
     l.range = 10.0f;
     l.position = {1.8f, 2.6f, 1.0f};
     l.direction = glm::normalize(glm::vec3(0.6f, 0.0f, 0.2f) - l.position);
@@ -65,7 +65,9 @@ Light SpotLight() {
 
 // The light arriving at p from l: direction towards the light and colour x attenuation.
 void Incoming(const Light& l, const dvec3& p, dvec3& dir, dvec3& color) {
-    const dvec3 c = dvec3(l.color) * double(l.intensity);
+    // glTF lux and candela to Unity's light colour: irradiance / pi (the shaders, like the
+    // reference, leave out the Lambertian 1/pi).
+    const dvec3 c = dvec3(l.color) * double(l.intensity) / M_PI;
     if (l.type == LightType::kDirectional) {
         dir = -glm::normalize(dvec3(l.direction));
         color = c;
@@ -169,6 +171,31 @@ class ReferenceImageTest : public RuntimeTest {
             << ")";
     }
 };
+
+// Physical light units (docs/runtime.md): a 1-lux white directional light straight onto a white
+// Lambertian floor gives radiance albedo / pi * E = 1/pi (0.318), not 1. The Lambert BRDF is
+// written out here, independently of the runtime's conversion. Tolerance 2e-3: float32 target,
+// float shading arithmetic (a few ulps), and the sRGB-decoded white of the material is exact.
+TEST_F(RuntimeTest, OneLuxOnAWhiteLambertianSurfaceGivesOneOverPi) {
+    runtime::Scene scene = SphereOnFloor(RuntimeData("lambert_white.material"));
+    scene.instances.erase(scene.instances.begin());  // the floor only
+    scene.ambient = glm::vec3(0.0f);
+    Light sun;
+    sun.type = LightType::kDirectional;
+    sun.intensity = 1.0f;  // lux
+    sun.direction = {0, -1, 0};
+    scene.lights = {sun};
+    runtime::FrameSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    const runtime::LinearImage image = Render(scene, settings);
+    const size_t centre = (size_t(settings.height / 2) * settings.width + settings.width / 2) * 4;
+    ASSERT_EQ(image.rgba[centre + 3], 1.0f) << "the floor covers the centre";
+    const double albedo = 1.0, irradiance = 1.0, n_dot_l = 1.0;
+    const double expected = albedo / M_PI * irradiance * n_dot_l;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(image.rgba[centre + size_t(c)], expected, 2e-3) << "channel " << c;
+}
 
 TEST_F(ReferenceImageTest, LambertMatchesTheReference) {
     runtime::Scene scene = SphereOnFloor("");

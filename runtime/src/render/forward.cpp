@@ -333,10 +333,11 @@ std::optional<Error> RenderForward(Renderer::State& s,
         key.name = "default light";
         key.type = LightType::kDirectional;
         key.direction = glm::normalize(glm::vec3(-0.35f, -0.8f, -0.5f));
+        key.intensity = 3.14159265f;  // pi lux: _LightColor0 = 1, Unity's default light
         scene_lights.push_back(key);
         planner.Warn(
             "the scene has no KHR_lights_punctual lights: lit by a default directional "
-            "light of 1 lux shining along (-0.35, -0.8, -0.5)");
+            "light of pi lux (Unity's intensity 1) shining along (-0.35, -0.8, -0.5)");
     }
     const Light* main = render::MainLight(scene_lights);
 

@@ -179,7 +179,7 @@ Values FrameValues(const runtime::Scene& scene,
 Values LightValues(const runtime::Light* light, const std::vector<const runtime::Light*>& vertex) {
     Values v;
     if (light) {
-        const glm::vec3 c = light->color * light->intensity;
+        const glm::vec3 c = runtime::ShaderLightColor(*light);
         v["_LightColor0"] = {c.r, c.g, c.b, 1};
         if (light->type == runtime::LightType::kDirectional) {
             const glm::vec3 d = -light->direction;  // towards the light
@@ -208,7 +208,7 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
         y[i] = l.position.y;
         z[i] = l.position.z;
         atten[i] = l.range > 0 ? 1 / (l.range * l.range) : 0;
-        const glm::vec3 c = l.color * l.intensity;
+        const glm::vec3 c = runtime::ShaderLightColor(l);
         colors[i * 4 + 0] = c.r;
         colors[i * 4 + 1] = c.g;
         colors[i * 4 + 2] = c.b;

@@ -422,6 +422,11 @@ std::optional<Error> LoadGltf(const std::string& path,
     return std::nullopt;
 }
 
+glm::vec3 ShaderLightColor(const Light& light) {
+    constexpr float kPi = 3.14159265358979f;
+    return light.color * (light.intensity / kPi);
+}
+
 std::pair<glm::vec3, glm::vec3> SceneBounds(const Scene& scene) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const Instance& inst : scene.instances) {

@@ -84,6 +84,12 @@ struct Light {
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // world, unit: where the light shines
 };
 
+// The light colour Unity's shader convention expects (_LightColor0, unity_LightColor) for a light
+// of glTF intensity: lux for directional lights, candela (at 1 m) for point and spot lights.
+// Unity's shaders leave out the Lambertian 1/pi, so the colour is irradiance / pi: a 1-lux white
+// light on a white Lambertian surface facing it shades to 1/pi (docs/runtime.md).
+glm::vec3 ShaderLightColor(const Light& light);
+
 struct Camera {
     std::string name;
     bool perspective = true;
