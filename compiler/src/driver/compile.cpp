@@ -16,6 +16,7 @@
 #include "frontend/glslang_messages.h"
 #include "frontend/glslang_stage.h"
 #include "hlsl/assemble.h"
+#include "hlsl/identifier.h"
 #include "hlsl/includer.h"
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
@@ -57,11 +58,40 @@ std::string LineName(const std::string& path) {
     return hlsl::IsLineSafeName(path) ? path : std::string("<unprintable path>");
 }
 
-// glslang's info log as Kiln diagnostics (positions resolved against the files read).
-void AppendLog(CompileState& st, const std::string& log, std::vector<Diagnostic>& out) {
+// The distinct identifiers of a program text, for "did you mean" on an unknown name.
+std::vector<std::string> Identifiers(const std::string& text) {
+    std::set<std::string> names;
+    for (size_t i = 0; i < text.size();) {
+        if (hlsl::IdentStart(text[i]) && (i == 0 || !hlsl::IdentChar(text[i - 1]))) {
+            size_t j = i;
+            while (j < text.size() && hlsl::IdentChar(text[j]))
+                ++j;
+            names.insert(text.substr(i, j - i));
+            i = j;
+        } else {
+            ++i;
+        }
+    }
+    return {names.begin(), names.end()};
+}
+
+// glslang's info log as Kiln diagnostics (positions resolved against the files read). `program`,
+// when given, is the text compiled (its identifiers feed suggestions).
+void AppendLog(CompileState& st,
+               const std::string& log,
+               std::vector<Diagnostic>& out,
+               const std::string* program = nullptr) {
     auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
+    frontend::MessageContext context;
+    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
+    context.include_search.push_back("the including file's folder");
+    for (const std::string& dir : paths.dirs)
+        context.include_search.push_back(dir + " (-I)");
+    context.include_search.push_back(paths.templates_dir + " (Kiln's templates)");
+    if (program != nullptr)
+        context.identifiers = [program] { return Identifiers(*program); };
     for (const auto& m : frontend::ParseInfoLog(log))
-        out.push_back(frontend::ToDiagnostic(m, lookup));
+        out.push_back(frontend::ToDiagnostic(m, lookup, context));
 }
 
 void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
@@ -246,7 +276,7 @@ void PreprocessAndDedup(CompileState& st) {
             job.stage = t.stage;
             job.entry = EntryOf(st, t);
             job.first_task = i;
-            AppendLog(st, t.preprocess_log, job.diags);
+            AppendLog(st, t.preprocess_log, job.diags, &t.source);
             t.job = st.jobs.size();
             st.jobs.push_back(std::move(job));
             continue;
@@ -317,7 +347,7 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
                 out = frontend::Compile(job.stage,
                                         task.rewritten.empty() ? task.source : task.rewritten, main,
                                         job.entry, includer, st.options.debug_info);
-                AppendLog(st, out.info_log, job.diags);
+                AppendLog(st, out.info_log, job.diags, &task.reduced);
                 if (out.ok || job.diags.empty()) {
                     job.diags.push_back({Severity::kInternal,
                                          DiagCode::kInternalError,

@@ -6,6 +6,9 @@
 #include <regex>
 #include <sstream>
 
+#include "hlsl/identifier.h"
+#include "kiln/pack/names.h"
+
 namespace kiln::frontend {
 namespace {
 
@@ -220,7 +223,73 @@ std::string RewordMessage(const std::string& token, const std::string& text) {
     return t;
 }
 
-Diagnostic ToDiagnostic(const GlslangMessage& m, const SourceLookup& lookup) {
+namespace {
+
+// glslang reports a missing ';' at the token after it; when that token starts a line, the ';' is
+// missing at the end of the previous token (clang's position). Returns the offset just after
+// that token, or npos.
+size_t MissingSemicolonAt(std::string_view text, size_t at) {
+    while (at > 0 && hlsl::IdentChar(text[at - 1]))
+        --at;  // to the start of the token glslang stopped at
+    size_t prev = at;
+    bool newline = false;
+    while (prev > 0 && std::isspace(static_cast<unsigned char>(text[prev - 1]))) {
+        newline |= text[prev - 1] == '\n';
+        --prev;
+    }
+    return newline && prev > 0 ? prev : std::string_view::npos;
+}
+
+void Improve(const GlslangMessage& m,
+             const SourceFile* file,
+             const MessageContext& context,
+             Diagnostic& d) {
+    if (d.message == "expected ';'" && file != nullptr) {
+        const size_t at = MissingSemicolonAt(file->text(), d.range.begin.offset + 1);
+        if (at != std::string_view::npos) {
+            d.range.begin = file->LocAt(static_cast<uint32_t>(at));
+            d.range.end = file->LocAt(static_cast<uint32_t>(at));
+            d.range.end.column += 1;
+            d.message = "expected ';' at the end of this line";
+        }
+        return;
+    }
+    const std::string include_error = "could not process include directive for header name:";
+    if (d.message.rfind(include_error, 0) == 0) {
+        const std::string name = Trim(d.message.substr(include_error.size()));
+        d.message = "cannot find include file '" + name + "'";
+        if (file != nullptr) {
+            const std::string_view line = file->Line(d.range.begin.line);
+            const size_t found = line.find(name);
+            if (found != std::string_view::npos) {
+                const uint32_t start = static_cast<uint32_t>(line.data() - file->text().data());
+                d.range.begin = file->LocAt(start + static_cast<uint32_t>(found));
+                d.range.end = file->LocAt(start + static_cast<uint32_t>(found + name.size()));
+            }
+        }
+        if (!context.include_search.empty()) {
+            std::string dirs;
+            for (const std::string& dir : context.include_search)
+                dirs += (dirs.empty() ? "" : ", ") + dir;
+            d.notes.push_back({d.file, kNoPosition, "searched, in order: " + dirs});
+        }
+        return;
+    }
+    const bool unknown_name = d.message.find("unknown variable") != std::string::npos ||
+                              d.message.find("undeclared identifier") != std::string::npos ||
+                              d.message.find("no matching overloaded function") != std::string::npos;
+    if (unknown_name && IsIdentifier(m.token) && context.identifiers) {
+        std::vector<std::string> names = context.identifiers();
+        names.erase(std::remove(names.begin(), names.end(), m.token), names.end());
+        d.message += pack::DidYouMean(m.token, names);
+    }
+}
+
+}  // namespace
+
+Diagnostic ToDiagnostic(const GlslangMessage& m,
+                        const SourceLookup& lookup,
+                        const MessageContext& context) {
     Diagnostic d;
     d.severity = m.severity;
     d.code = m.severity == Severity::kWarning ? DiagCode::kHlslWarning : DiagCode::kHlslError;
@@ -259,6 +328,7 @@ Diagnostic ToDiagnostic(const GlslangMessage& m, const SourceLookup& lookup) {
         d.range.end.column += 1;
     }
     ExplainUnityDifference(m, d);
+    Improve(m, file.get(), context, d);
     return d;
 }
 

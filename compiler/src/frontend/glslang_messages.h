@@ -30,9 +30,23 @@ std::vector<GlslangMessage> ParseInfoLog(const std::string& log);
 
 using SourceLookup = std::function<std::shared_ptr<const SourceFile>(const std::string& name)>;
 
+// What the caller knows beyond the log, for better messages.
+struct MessageContext {
+    // Where #include looked, in order (a note on "cannot find include file").
+    std::vector<std::string> include_search;
+    // The identifiers of the program, for the "did you mean" of an unknown name; called only
+    // when a message needs them.
+    std::function<std::vector<std::string>()> identifiers;
+};
+
 // Converts to a Kiln diagnostic (K5001 error / K5002 warning) in Kiln's message style, with a
-// range on the file's own line and column.
-Diagnostic ToDiagnostic(const GlslangMessage& message, const SourceLookup& lookup);
+// range on the file's own line and column. A missing ';' is placed after the token it should
+// follow (glslang reports it at the next token, often on the next line); a missing include file
+// is placed on its name with the search path in a note; an unknown name gets the closest
+// identifier of the program.
+Diagnostic ToDiagnostic(const GlslangMessage& message,
+                        const SourceLookup& lookup,
+                        const MessageContext& context = {});
 
 // House style for a glslang message: "'=' : cannot convert from ' const float'" -> "cannot
 // convert from 'const float'".

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "kiln/pack/names.h"
 #include "program_scan.h"
 
 namespace kiln::shaderlab {
@@ -535,7 +536,18 @@ bool Parser::ReportMisplacedOrUnknown(Level level) {
               "'" + Clip(t.text) + "' is not allowed " + where + "; it belongs in " + home);
         return false;
     }
-    Error(DiagCode::kUnknownCommand, t.range, "unknown command '" + Clip(t.text) + "' " + where);
+    // Every command word ShaderLab has, for the "did you mean" of a typo such as ZWirte.
+    static const std::vector<std::string> kCommands = {
+        "Pass",     "UsePass",      "GrabPass",   "LOD",          "SubShader", "Category",
+        "Properties", "Fallback",   "CustomEditor", "Dependency", "Name",      "Tags",
+        "Cull",     "ZTest",        "ZWrite",     "ZClip",        "Blend",     "BlendOp",
+        "ColorMask", "Offset",      "AlphaToMask", "Stencil",     "Conservative", "Lighting",
+        "Material", "SetTexture",   "Fog",        "AlphaTest",    "ColorMaterial",
+        "SeparateSpecular", "BindChannels", "CGPROGRAM", "HLSLPROGRAM", "CGINCLUDE",
+        "HLSLINCLUDE"};
+    Error(DiagCode::kUnknownCommand, t.range,
+          "unknown command '" + Clip(t.text) + "' " + where +
+              pack::DidYouMean(std::string(t.text), kCommands));
     return false;
 }
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "kiln/pack/names.h"
+
 namespace kiln::shaderlab {
 namespace {
 
@@ -76,14 +78,10 @@ const Words kStencilOps = {"Keep",    "Zero",   "Replace",  "IncrSat",
 
 constexpr int kMaxRenderTargets = 8;
 
-std::string JoinWords(const Words& words, size_t max = 8) {
+std::string JoinWords(const Words& words) {
     std::string out;
-    const size_t n = std::min(words.size(), max);
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < words.size(); ++i) {
         out += (i == 0 ? "" : ", ") + std::string(words[i]);
-    }
-    if (words.size() > max) {
-        out += ", ...";
     }
     return out;
 }
@@ -153,7 +151,8 @@ std::optional<StateValue> Parser::ParseEnumValue(std::string_view command, const
     }
     Error(DiagCode::kInvalidValue, t.range,
           "invalid value " + Describe(t) + " for '" + std::string(command) + "'; expected " +
-              JoinWords(allowed) + " or a [property] reference");
+              JoinWords(allowed) + " or a [property] reference" +
+              pack::DidYouMean(t.text, std::vector<std::string>(allowed.begin(), allowed.end())));
     return std::nullopt;
 }
 

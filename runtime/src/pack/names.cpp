@@ -14,6 +14,28 @@ std::string Lower(std::string_view s) {
     return out;
 }
 
+// Optimal string alignment distance: Levenshtein plus the swap of two adjacent characters as one
+// edit (the commonest typo: ZWirte, _Tnit).
+size_t Distance(const std::string& a, const std::string& b) {
+    const size_t w = b.size() + 1;
+    std::vector<size_t> d((a.size() + 1) * w);
+    for (size_t i = 0; i <= a.size(); ++i)
+        d[i * w] = i;
+    for (size_t j = 0; j <= b.size(); ++j)
+        d[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t cost = a[i - 1] != b[j - 1];
+            size_t v = std::min({d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1,
+                                 d[(i - 1) * w + j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                v = std::min(v, d[(i - 2) * w + j - 2] + 1);
+            d[i * w + j] = v;
+        }
+    }
+    return d[a.size() * w + b.size()];
+}
+
 }  // namespace
 
 std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates) {
@@ -21,23 +43,9 @@ std::string ClosestName(std::string_view name, const std::vector<std::string>& c
     size_t best_distance = std::max<size_t>(1, name.size() / 3) + 1;
     const std::string a = Lower(name);
     for (const std::string& c : candidates) {
-        // Levenshtein distance, one row.
-        const std::string b = Lower(c);
-        std::vector<size_t> row(b.size() + 1);
-        for (size_t j = 0; j <= b.size(); ++j) {
-            row[j] = j;
-        }
-        for (size_t i = 1; i <= a.size(); ++i) {
-            size_t diagonal = row[0];
-            row[0] = i;
-            for (size_t j = 1; j <= b.size(); ++j) {
-                const size_t up = row[j];
-                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-                diagonal = up;
-            }
-        }
-        if (row[b.size()] < best_distance) {
-            best_distance = row[b.size()];
+        const size_t d = Distance(a, Lower(c));
+        if (d < best_distance) {
+            best_distance = d;
             best = c;
         }
     }
