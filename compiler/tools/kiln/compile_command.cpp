@@ -44,7 +44,8 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
                                             : "expected a version such as 2022.3 or a "
                                               "UNITY_VERSION number such as 202230";
             },
-            "VERSION"));
+            ""))
+        ->option_text("VERSION");
     cmd.add_option("--materials", f.materials,
                    ".material files or <scene>.kiln.json sidecars: build the shader_feature "
                    "combinations they enable");
@@ -54,8 +55,10 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
     cmd.add_flag("--all-features", f.all_features,
                  "Build every shader_feature combination (default: the all-off one and those "
                  "the materials enable, as Unity does)");
-    cmd.add_option("--max-variants", f.max_variants, "Largest number of variants a pass may have")
-        ->check(CLI::PositiveNumber);
+    cmd.add_option("--max-variants", f.max_variants,
+                   "Largest number of variants a pass may have (default 4096)")
+        ->check(CLI::PositiveNumber.description(""))
+        ->option_text("N");
     cmd.add_option("--templates-dir", f.templates_dir,
                    "The built-in include library (default: Kiln's templates/)");
     cmd.add_option("-j,--jobs", f.jobs, "Parallel compile jobs (default: all cores)");
@@ -190,14 +193,28 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
     cmd->add_option("files", o->files, "ShaderLab files")->required();
     cmd->add_option("-o,--output", o->output, "The pack to write")->required();
     AddCompilerOptions(*cmd, o->flags);
-    cmd->add_option("--opt", o->opt, "Optimization: 0 (-O0), 1 (-O, default) or s (-Os)")
-        ->check(CLI::IsMember({"0", "1", "s"}));
+    // -O0/-O/-Os, -MD and -MF are rewritten to these before parsing (main.cpp); the help shows
+    // the compiler spellings only, as README does.
+    cmd->add_option("--opt", o->opt, "")
+        ->check(CLI::Validator(
+            [](std::string& v) {
+                return v == "0" || v == "1" || v == "s" ? std::string()
+                                                        : "-O" + v + ": expected -O0, -O or -Os";
+            },
+            ""))
+        ->group("");
     cmd->add_flag("-g", o->debug, "Keep debug information in the SPIR-V");
     cmd->add_option("--cache-dir", o->cache_dir, "Compile cache (default: the user cache folder)");
     cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the compile cache");
-    cmd->add_flag("--md", o->md, "Write a depfile of every file read (-MD)");
-    cmd->add_option("--mf", o->mf, "Depfile path (-MF; default: OUTPUT.d)");
+    cmd->add_flag("--md", o->md, "")->group("");
+    cmd->add_option("--mf", o->mf, "")->group("");
     cmd->add_flag("--stats", o->stats, "Print variant and compile counts on stdout");
+    cmd->footer(
+        "Compiler-style options:\n"
+        "  -O0 | -O | -Os              Optimization: none, performance (the default; also -O1,\n"
+        "                              -O2, -O3) or size\n"
+        "  -MD                         Write a depfile of every file read\n"
+        "  -MF FILE                    The depfile's path (default: OUTPUT.d)");
 
     return [o, &global]() {
         DiagnosticList diags;

@@ -93,10 +93,12 @@ std::vector<std::string> RewriteArgs(int argc, char** argv) {
         const std::string a = argv[i];
         if (a == "-O0") {
             args.push_back("--opt=0");
-        } else if (a == "-O") {
+        } else if (a == "-O" || a == "-O1" || a == "-O2" || a == "-O3") {
             args.push_back("--opt=1");
         } else if (a == "-Os") {
             args.push_back("--opt=s");
+        } else if (a.size() > 2 && a.rfind("-O", 0) == 0 && a[2] != '-') {
+            args.push_back("--opt=" + a.substr(2));  // rejected with the valid spellings
         } else if (a == "-MD") {
             args.push_back("--md");
         } else if (a == "-MF") {
@@ -168,7 +170,10 @@ int main(int argc, char** argv) {
                             "unknown command '" + word + "'" + kiln::pack::DidYouMean(word, names) +
                                 " (commands: " + all + ")");
             } else {
-                ReportError(global, kiln::DiagCode::kBadCommandLine, "", e.what());
+                std::string what = e.what();
+                if (what.rfind(": ", 0) == 0)
+                    what.erase(0, 2);  // a hidden option's empty name
+                ReportError(global, kiln::DiagCode::kBadCommandLine, "", what);
                 if (global.diag_format == DiagFormat::kText) {
                     std::fprintf(stderr, "run 'kiln %s--help' for the options\n",
                                  word.empty() ? "" : (word + " ").c_str());
