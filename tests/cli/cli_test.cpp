@@ -14,30 +14,6 @@
 namespace kiln::test {
 namespace {
 
-struct RunResult {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-RunResult RunKiln(const std::string& args) {
-    // ctest runs tests in parallel: each test and call gets its own capture files.
-    static int call = 0;
-    const std::string stem = testing::TempDir() + "/kiln_cli_" +
-                             testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-                             std::to_string(call++);
-    const std::string out_path = stem + ".out";
-    const std::string err_path = stem + ".err";
-    const std::string cmd =
-        std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
-    const int status = std::system(cmd.c_str());
-    RunResult r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = ReadFile(out_path);
-    r.err = ReadFile(err_path);
-    return r;
-}
-
 std::string WriteTemp(const std::string& name, const std::string& text) {
     const std::string path = testing::TempDir() + "/kiln_cli_" + name;
     WriteFile(path, text);

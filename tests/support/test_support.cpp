@@ -1,8 +1,14 @@
 #include "support/test_support.h"
 
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include <gtest/gtest.h>
 
 namespace kiln::test {
 
@@ -23,6 +29,25 @@ void WriteFile(const std::string& path, const std::string& text) {
 
 std::string DataPath(const std::string& relative) {
     return std::string(KILN_TEST_DATA_DIR) + "/" + relative;
+}
+
+RunResult RunKiln(const std::string& args) {
+    // ctest runs tests in parallel: each test and call gets its own capture files.
+    static int call = 0;
+    const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = test != nullptr ? test->name() : "suite_setup";
+    std::replace(name.begin(), name.end(), '/', '_');  // parameterized tests: "Test/param"
+    const std::string stem = testing::TempDir() + "/kiln_cli_" + name + "_" + std::to_string(call++);
+    const std::string out_path = stem + ".out";
+    const std::string err_path = stem + ".err";
+    const std::string cmd =
+        std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
+    const int status = std::system(cmd.c_str());
+    RunResult r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = ReadFile(out_path);
+    r.err = ReadFile(err_path);
+    return r;
 }
 
 ParseOutcome ParseText(const std::string& text, const std::string& name) {

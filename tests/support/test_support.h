@@ -16,6 +16,14 @@ std::string ReadFile(const std::string& path);
 void WriteFile(const std::string& path, const std::string& text);
 std::string DataPath(const std::string& relative);  // under tests/
 
+// The kiln binary run with `args` (a shell command line), its output captured.
+struct RunResult {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+RunResult RunKiln(const std::string& args);
+
 // Parses and checks `text` as "test.shader".
 struct ParseOutcome {
     std::optional<shaderlab::Shader> shader;

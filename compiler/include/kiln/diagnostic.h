@@ -70,6 +70,7 @@ enum class DiagCode : uint16_t {
     kUnknownTextureDefault = 3011,
     kDuplicatePassName = 3012,
     kUnknownLightMode = 3013,
+    kMisspelledLightMode = 3014,
 
     kUnknownPragma = 4001,
     kUnsupportedStage = 4002,

@@ -206,7 +206,9 @@ void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
     }
 }
 
-// A LightMode no pipeline knows means the pass is never drawn: a warning with the closest value.
+// A LightMode no pipeline knows means the pass is never drawn. One spelled like a known value is a
+// typo: an error with that value (as for pragmas, K4016). Others may belong to a custom pipeline:
+// a warning.
 void State::CheckLightMode(const std::vector<Tag>& tags) {
     for (const Tag& t : tags) {
         if (t.key != "LightMode")
@@ -219,10 +221,17 @@ void State::CheckLightMode(const std::vector<Tag>& tags) {
                               std::tolower(static_cast<unsigned char>(b));
                    });
         });
-        if (!known) {
+        if (known)
+            continue;
+        const std::string near = pack::ClosestName(t.value, modes);
+        if (!near.empty()) {
+            Error(DiagCode::kMisspelledLightMode, t.range,
+                  "unknown LightMode '" + t.value + "'; did you mean '" + near +
+                      "'? as written no pipeline draws this pass");
+        } else {
             Warning(DiagCode::kUnknownLightMode, t.range,
-                    "unknown LightMode '" + t.value + "': no pipeline draws this pass" +
-                        pack::DidYouMean(t.value, modes));
+                    "unknown LightMode '" + t.value +
+                        "': no Unity pipeline draws this pass (a custom pipeline may)");
         }
     }
 }

@@ -119,8 +119,14 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             PrintDiagnostics(diags, {}, global);
             return code;
         };
-        auto fail = [&](const runtime::Error& e, const std::string& file = "") {
-            diags.Error(CodeFor(e.kind), file, kNoPosition, e.message);
+        auto fail = [&](const runtime::Error& e, std::string file = "") {
+            std::string message = e.message;
+            const std::string prefix = a->scene + ": ";
+            if (file.empty() && message.rfind(prefix, 0) == 0) {
+                file = a->scene;  // "scene.gltf: what" -> a diagnostic in scene.gltf
+                message.erase(0, prefix.size());
+            }
+            diags.Error(CodeFor(e.kind), file, kNoPosition, message);
             return finish(int(kExitInputError));
         };
         a->frame.default_light = !a->no_default_light;

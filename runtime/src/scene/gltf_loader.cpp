@@ -326,9 +326,10 @@ std::optional<Error> LoadGltf(const std::string& path,
             return;
         }
         if (visiting[size_t(index)]) {
-            bad_node = Error{path + ": node " + std::to_string(index) + " '" +
-                                 model.nodes[size_t(index)].name +
-                                 "' is its own ancestor (a cycle in the node hierarchy)",
+            const std::string& name = model.nodes[size_t(index)].name;
+            bad_node = Error{path + ": node " + std::to_string(index) +
+                                 (name.empty() ? "" : " '" + name + "'") +
+                                 " is its own ancestor (a cycle in the node hierarchy)",
                              ErrorKind::kScene};
             return;
         }
