@@ -37,6 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 (void)pack.Spirv(pack.Module(vr.fragment_module));
             }
             (void)pack.FindVariant(p, pack.KeyFor(p, {"SPOT", "POINT"}));
+            (void)pack.CheckKeywords(p, {"SPOT", "POINTT"});
         }
     }
     return 0;

@@ -71,6 +71,12 @@ TEST(PackReader, RoundTripOfACompiledPack) {
     }
     EXPECT_FALSE(p.FindVariant(*by_name, VariantKey(3)));  // index 3 of a 3-keyword set
     EXPECT_FALSE(p.FindShader("Nope"));
+    // KeyFor ignores names no set declares (as Unity ignores such material keywords);
+    // CheckKeywords names the first with the closest declared keyword.
+    EXPECT_FALSE(p.CheckKeywords(*by_name, {"POINT"}));
+    EXPECT_EQ(p.CheckKeywords(*by_name, {"POINT", "SPOTT"}),
+              "keyword 'SPOTT' is not declared by the pass; did you mean 'SPOT'?");
+    EXPECT_EQ(p.CheckKeywords(999, {}), "no pass 999 in the pack");
 }
 
 TEST(PackReader, EveryTruncatedPrefixIsRejected) {
