@@ -83,6 +83,38 @@ std::string FirstWord(const std::vector<std::string>& args) {
     return "";
 }
 
+// A command line CLI11 rejected, as a K0003 diagnostic in the format the words ask for (the
+// parse stopped early, so the global options are read from the words themselves); a mistyped
+// subcommand gets the closest one.
+int ReportParseError(const CLI::ParseError& e,
+                     const std::vector<std::string>& words,
+                     const std::vector<std::string>& commands) {
+    GlobalOptions global;
+    global.diag_format = GlobalValue(words, "--diagnostics-format") == "json" ? DiagFormat::kJson
+                                                                              : DiagFormat::kText;
+    const std::string c = GlobalValue(words, "--color");
+    global.color = c == "always" || (c != "never" && AutoColor());
+    const std::string word = FirstWord(words);
+    if (!word.empty() && std::find(commands.begin(), commands.end(), word) == commands.end()) {
+        std::string all;
+        for (const std::string& n : commands)
+            all += (all.empty() ? "" : ", ") + n;
+        ReportError(global, DiagCode::kBadCommandLine, "",
+                    "unknown command '" + word + "'" + pack::DidYouMean(word, commands) +
+                        " (commands: " + all + ")");
+        return kExitUsageError;
+    }
+    std::string what = e.what();
+    if (what.rfind(": ", 0) == 0)
+        what.erase(0, 2);  // a hidden option's empty name
+    ReportError(global, DiagCode::kBadCommandLine, "", what);
+    if (global.diag_format == DiagFormat::kText) {
+        std::fprintf(stderr, "run 'kiln %s--help' for the options\n",
+                     word.empty() ? "" : (word + " ").c_str());
+    }
+    return kExitUsageError;
+}
+
 }  // namespace
 }  // namespace kiln::cli
 
@@ -150,36 +182,12 @@ int main(int argc, char** argv) {
             names.push_back(name);
         names.push_back("version");
         const std::vector<std::string> words(args.rbegin(), args.rend());  // parse consumes args
-        const std::string word = FirstWord(words);
         try {
             app.parse(args);
         } catch (const CLI::ParseError& e) {
             if (e.get_exit_code() == 0)
                 return app.exit(e) == 0 ? kExitOk : kExitUsageError;  // --help, --version
-            // The parse stopped early: read the global options from the words themselves.
-            global.diag_format = GlobalValue(words, "--diagnostics-format") == "json"
-                                     ? DiagFormat::kJson
-                                     : DiagFormat::kText;
-            const std::string c = GlobalValue(words, "--color");
-            global.color = c == "always" || (c != "never" && AutoColor());
-            if (!word.empty() && std::find(names.begin(), names.end(), word) == names.end()) {
-                std::string all;
-                for (const std::string& n : names)
-                    all += (all.empty() ? "" : ", ") + n;
-                ReportError(global, kiln::DiagCode::kBadCommandLine, "",
-                            "unknown command '" + word + "'" + kiln::pack::DidYouMean(word, names) +
-                                " (commands: " + all + ")");
-            } else {
-                std::string what = e.what();
-                if (what.rfind(": ", 0) == 0)
-                    what.erase(0, 2);  // a hidden option's empty name
-                ReportError(global, kiln::DiagCode::kBadCommandLine, "", what);
-                if (global.diag_format == DiagFormat::kText) {
-                    std::fprintf(stderr, "run 'kiln %s--help' for the options\n",
-                                 word.empty() ? "" : (word + " ").c_str());
-                }
-            }
-            return kExitUsageError;
+            return ReportParseError(e, words, names);
         }
         global.color = color == "always" || (color == "auto" && AutoColor());
         if (app.get_subcommands().empty()) {
