@@ -185,6 +185,14 @@ void CheckInterfaces(CompileState& st) {
         }
         if (!any_pass)
             continue;
+        // Properties render state reads (`Cull [_Cull]`, `Blend [_SrcBlend] [_DstBlend]`) are used.
+        std::set<std::string> state_refs;
+        for (const FlatPass& fp : unit.passes) {
+            for (const StateSetting& setting : fp.state) {
+                if (setting.value.kind == shaderlab::StateValue::Kind::kPropertyRef)
+                    state_refs.insert(setting.value.text);
+            }
+        }
         if (!every_feature_built) {
             every_feature_built = true;
             for (const PassUnit& pu : st.passes) {
@@ -215,7 +223,7 @@ void CheckInterfaces(CompileState& st) {
                         return pack::KeywordsDrivenBy(prop.name, a.name, a.raw_args).kind !=
                                pack::PropertyKeywords::Kind::kNone;
                     });
-                if (!every_feature_built || switch_only)
+                if (!every_feature_built || switch_only || state_refs.count(prop.name))
                     continue;
                 st.diags.Warning(
                     DiagCode::kPropertyUnused, file, prop.name_range,

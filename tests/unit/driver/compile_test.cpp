@@ -111,8 +111,9 @@ TEST(Compile, AnEntryPointThatIsNotAFunctionIsAnErrorAtItsPragma) {
               "program\n");
 }
 
-// [Toggle(KW)] and [KeywordEnum] properties are keyword switches: no K5005 "unused" warning,
-// and a material's value of them chooses the shader_feature combination built, as in Unity.
+// [Toggle(KW)] and [KeywordEnum] properties are keyword switches and render state reads [Enum]
+// properties: no K5005 "unused" warning for either; a material's value of a switch chooses the
+// shader_feature combination built, as in Unity.
 TEST(Compile, KeywordSwitchPropertiesDriveTheCombinationsAMaterialNeeds) {
     ScratchDir dir;
     std::string text = Replace(PassShader("            #pragma shader_feature _RIMLIGHT\n"
@@ -120,7 +121,10 @@ TEST(Compile, KeywordSwitchPropertiesDriveTheCombinationsAMaterialNeeds) {
                                "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1) }",
                                "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1)\n"
                                "        [Toggle(_RIMLIGHT)] _Rim (\"Rim\", Float) = 0\n"
-                               "        [KeywordEnum(Low, High)] _Q (\"Q\", Float) = 0 }");
+                               "        [KeywordEnum(Low, High)] _Q (\"Q\", Float) = 0\n"
+                               "        [Enum(UnityEngine.Rendering.CullMode)] _Cull (\"C\", Float) "
+                               "= 2 }");
+    text = Replace(text, "Name \"FORWARD\"", "Name \"FORWARD\"\n            Cull [_Cull]");
     const std::string path = dir.Write("switch.shader", text);
     CompileOptions every;
     every.all_features = true;
