@@ -183,6 +183,26 @@ TEST(Cli, VersionNamesTheLibrariesPacksRecord) {
     }
 }
 
+// README and --help spell every option the same way, and the help shows no CLI11 internals.
+TEST(Cli, HelpUsesReadmesSpellings) {
+    const std::string readme = ReadFile(DataPath("../README.md"));
+    const RunResult compile = RunKiln("compile --help");
+    for (const char* spelling : {"-O0 | -O | -Os", "-MD", "-MF FILE", "--unity-version VERSION",
+                                 "--max-variants N", "--all-features", "--keywords"}) {
+        EXPECT_NE(compile.out.find(spelling), std::string::npos) << spelling;
+    }
+    EXPECT_NE(readme.find("[-O0|-O|-Os]"), std::string::npos);
+    EXPECT_NE(readme.find("-MD -MF out.d"), std::string::npos);
+    EXPECT_EQ(compile.out.find("--opt"), std::string::npos) << compile.out;
+    const RunResult render = RunKiln("render --help");
+    EXPECT_NE(render.out.find("--camera N|auto"), std::string::npos) << render.out;
+    EXPECT_NE(readme.find("[--camera N|auto]"), std::string::npos);
+    for (const char* internal : {"{false}", "UINT:INT", ":POSITIVE", "TEXT:VERSION"}) {
+        EXPECT_EQ(render.out.find(internal), std::string::npos) << internal;
+        EXPECT_EQ(compile.out.find(internal), std::string::npos) << internal;
+    }
+}
+
 TEST(Cli, ColorFollowsTheFlagAndNoColor) {
     const std::string bad = DataPath("cli/mistakes/command_typo.shader");
     EXPECT_NE(RunKiln("--color=always parse -q " + bad).err.find("\033[1;31merror:"),
