@@ -79,7 +79,7 @@ const Mistake kMistakes[] = {
     {"nothing to draw", "render {D}/nothing_to_draw.gltf -o {T}/out.png", 1, "K0007",
      "nothing_to_draw.gltf", "nothing to draw"},
     {"node cycle", "render {D}/node_cycle.gltf -o {T}/out.png", 1, "K0007", "node_cycle.gltf",
-     "is its own ancestor"},
+     "node 0 is a scene root and a child of node 2 'loop'"},
     {"default scene out of range", "render {D}/bad_default_scene.gltf -o {T}/out.png", 1, "K0007",
      "bad_default_scene.gltf", "the default scene 5 does not exist (the file has 1 scenes)"},
     {"negative camera", "render {D}/triangle.gltf --camera -1 -o {T}/out.png", 2, "K0003", "",

@@ -35,13 +35,20 @@ bool ReadAccessor(const tinygltf::Model& m,
     const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
     const size_t elem = size_t(comps) * size_t(csize);
     const size_t stride = view.byteStride ? view.byteStride : elem;
-    const size_t base = view.byteOffset + a.byteOffset;
-    if (a.count > 0 && (base > data.size() || view.byteOffset + view.byteLength > data.size() ||
-                        (a.count - 1) * stride + elem > view.byteLength - a.byteOffset ||
-                        a.byteOffset > view.byteLength)) {
+    // Every size from the file is checked without wrapping: the view lies in its buffer, the
+    // accessor's offset in its view, and the last element ends in the view. A count near 2^64
+    // (whose products wrap) fails here, so count <= the buffer's size bounds the allocation.
+    const bool view_fits = view.byteOffset <= data.size() &&
+                           view.byteLength <= data.size() - view.byteOffset &&
+                           a.byteOffset <= view.byteLength;
+    const size_t room = view_fits ? view.byteLength - a.byteOffset : 0;
+    const bool fits = view_fits && (a.count == 0 || (elem <= room && (a.count - 1) <=
+                                                         (room - elem) / std::max<size_t>(stride, 1)));
+    if (!fits) {
         why = "accessor " + std::to_string(index) + " reads past its buffer view";
         return false;
     }
+    const size_t base = view.byteOffset + a.byteOffset;
     out.assign(a.count * size_t(want), 0.0f);
     for (size_t i = 0; i < a.count; ++i) {
         const unsigned char* p = data.data() + base + i * stride;

@@ -13,9 +13,9 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 
 #include "scene/accessors.h"
+#include "scene/node_tree.h"
 
 namespace kiln::runtime {
 namespace {
@@ -60,7 +60,11 @@ std::optional<Error> ReadPrimitive(const tinygltf::Model& m,
     out.has_tangents = optional("TANGENT", 4, tan);
     out.has_colors = false;
     if (attr("COLOR_0") >= 0) {
-        const int comps = m.accessors[size_t(attr("COLOR_0"))].type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+        const int color = attr("COLOR_0");
+        const int comps = size_t(color) < m.accessors.size() &&
+                                  m.accessors[size_t(color)].type == TINYGLTF_TYPE_VEC3
+                              ? 3
+                              : 4;  // a bad index is reported by ReadAccessor
         out.has_colors = optional("COLOR_0", comps, col);
         if (out.has_colors && comps == 3) {
             std::vector<float> rgba(n * 4);
@@ -314,28 +318,9 @@ std::optional<Error> LoadGltf(const std::string& path,
                                "' rejected: " + light_problem[i]);
         }
     }
-    std::vector<bool> visiting(model.nodes.size(), false);
-    std::optional<Error> bad_node;  // tinygltf lets cycles and bad indices through
-    std::function<void(int, const glm::mat4&)> visit = [&](int index, const glm::mat4& parent) {
-        if (bad_node)
-            return;
-        if (index < 0 || size_t(index) >= model.nodes.size()) {
-            bad_node = Error{path + ": node " + std::to_string(index) + " does not exist (the file has " +
-                                 std::to_string(model.nodes.size()) + " nodes)",
-                             ErrorKind::kScene};
-            return;
-        }
-        if (visiting[size_t(index)]) {
-            const std::string& name = model.nodes[size_t(index)].name;
-            bad_node = Error{path + ": node " + std::to_string(index) +
-                                 (name.empty() ? "" : " '" + name + "'") +
-                                 " is its own ancestor (a cycle in the node hierarchy)",
-                             ErrorKind::kScene};
-            return;
-        }
-        visiting[size_t(index)] = true;
+    // One node of the walk (node_tree.h checked the hierarchy), at its world transform.
+    auto add = [&](int index, const glm::mat4& world) {
         const tinygltf::Node& node = model.nodes[size_t(index)];
-        const glm::mat4 world = parent * LocalMatrix(node);
         if (node.mesh >= 0 && size_t(node.mesh) < scene.meshes.size()) {
             scene.instances.push_back({uint32_t(node.mesh), world, node.name});
         }
@@ -386,12 +371,8 @@ std::optional<Error> LoadGltf(const std::string& path,
                 scene.lights.push_back(l);
             }
         }
-        for (int child : node.children) {
-            visit(child, world);
-        }
-        visiting[size_t(index)] = false;
     };
-    std::vector<int> roots;
+    const std::vector<int>* roots = nullptr;  // no scenes: every parentless node
     if (model.defaultScene >= 0 && size_t(model.defaultScene) >= model.scenes.size()) {
         return Error{path + ": the default scene " + std::to_string(model.defaultScene) +
                          " does not exist (the file has " + std::to_string(model.scenes.size()) +
@@ -399,19 +380,19 @@ std::optional<Error> LoadGltf(const std::string& path,
                      ErrorKind::kScene};
     }
     if (model.defaultScene >= 0) {
-        roots = model.scenes[size_t(model.defaultScene)].nodes;
+        roots = &model.scenes[size_t(model.defaultScene)].nodes;
     } else if (!model.scenes.empty()) {
-        roots = model.scenes[0].nodes;
-    } else {
-        for (size_t i = 0; i < model.nodes.size(); ++i) {
-            roots.push_back(int(i));
-        }
+        roots = &model.scenes[0].nodes;
     }
-    for (int root : roots) {
-        visit(root, glm::mat4(1.0f));
+    std::vector<NodeVisit> order;
+    if (auto e = WalkNodeTree(model, path, roots, order))
+        return e;
+    std::vector<glm::mat4> world(model.nodes.size(), glm::mat4(1.0f));
+    for (const NodeVisit& v : order) {
+        const glm::mat4 parent = v.parent < 0 ? glm::mat4(1.0f) : world[size_t(v.parent)];
+        world[size_t(v.node)] = parent * LocalMatrix(model.nodes[size_t(v.node)]);
+        add(v.node, world[size_t(v.node)]);
     }
-    if (bad_node)
-        return bad_node;
     const std::filesystem::path sidecar =
         std::filesystem::path(path).replace_extension(".kiln.json");
     if (std::filesystem::exists(sidecar)) {
