@@ -57,6 +57,8 @@ const Mistake kMistakes[] = {
      "undeclared_property.shader:25:36", "did you mean '_Smoothness'?"},
     {"unknown identifier", "compile {D}/unknown_identifier.shader -o {T}/out.kpack", 1, "K5001",
      "unknown_identifier.shader:25:28", "did you mean '_Tint'?"},
+    {"stray brace", "compile {D}/stray_brace.shader -o {T}/out.kpack", 1, "K5001",
+     "stray_brace.shader:22:13", "syntax error"},
     // ShaderLab.
     {"command typo", "compile {D}/command_typo.shader -o {T}/out.kpack", 1, "K2004",
      "command_typo.shader:14:13", "did you mean 'ZWrite'?"},

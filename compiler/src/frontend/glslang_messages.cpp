@@ -132,11 +132,23 @@ std::vector<GlslangMessage> ParseInfoLog(const std::string& log) {
                 const std::string file = line.substr(0, open);
                 const uint32_t ln =
                     static_cast<uint32_t>(std::strtoul(line.c_str() + open + 1, nullptr, 10));
+                bool attached = false;
                 for (auto it = out.rbegin(); it != out.rend(); ++it) {
                     if (it->file == file && it->line == ln && it->column == 0) {
                         it->column = col;
+                        attached = true;
                         break;
                     }
+                }
+                if (!attached) {
+                    // The only message of some parse failures (a stray top-level '}'): it is
+                    // the error itself.
+                    GlslangMessage m;
+                    m.file = file;
+                    m.line = ln;
+                    m.column = col;
+                    m.text = "syntax error";
+                    out.push_back(std::move(m));
                 }
             }
             continue;

@@ -23,6 +23,20 @@ TEST(GlslangMessages, ParsesLocationsTokensAndDropsCascades) {
     EXPECT_EQ(msgs[2].severity, Severity::kWarning);
 }
 
+// A stray top-level '}' gets only the column line: once dropped, it left no diagnostic and the
+// compile ended in an internal compiler error.
+TEST(GlslangMessages, AColumnLineWithoutItsErrorIsTheError) {
+    auto msgs = ParseInfoLog(
+        "s.shader(22): error at column 13, HLSL parsing failed.\n"
+        "ERROR: 1 compilation errors.  No code generated.\n");
+    ASSERT_EQ(msgs.size(), 1u);
+    EXPECT_EQ(msgs[0].file, "s.shader");
+    EXPECT_EQ(msgs[0].line, 22u);
+    EXPECT_EQ(msgs[0].column, 13u);
+    EXPECT_EQ(msgs[0].severity, Severity::kError);
+    EXPECT_EQ(RewordMessage(msgs[0].token, msgs[0].text), "syntax error");
+}
+
 TEST(GlslangMessages, RewordsIntoHouseStyle) {
     EXPECT_EQ(RewordMessage(";", "Expected"), "expected ';'");
     EXPECT_EQ(RewordMessage("foo", "undeclared identifier"), "undeclared identifier 'foo'");
