@@ -57,6 +57,7 @@ const std::vector<std::string>& KnownLightModes() {
         // Built-in render pipeline (Kiln's runtime draws ForwardBase, ForwardAdd and Always).
         "Always", "ForwardBase", "ForwardAdd", "Deferred", "ShadowCaster", "MotionVectors",
         "PrepassBase", "PrepassFinal", "Vertex", "VertexLMRGBM", "VertexLM", "Meta",
+        "GrabPass",  // Unity's own built-in shaders tag passes so (Internal-*)
         // Scriptable pipelines.
         "SRPDefaultUnlit", "UniversalForward", "UniversalForwardOnly", "UniversalGBuffer",
         "Universal2D", "DepthOnly", "DepthNormals", "DepthNormalsOnly", "GBuffer", "Forward",
