@@ -81,6 +81,8 @@ void AppendLog(CompileState& st,
                const std::string& log,
                std::vector<Diagnostic>& out,
                const std::string* program = nullptr) {
+    if (log.empty())
+        return;  // the common case: a clean compile
     auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
     frontend::MessageContext context;
     const hlsl::IncludePaths paths = IncludePathsFor(st.options);

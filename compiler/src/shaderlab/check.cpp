@@ -1,6 +1,5 @@
 // Semantic checks over a parsed Shader (see Check() in kiln/shaderlab/parse.h).
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -215,11 +214,7 @@ void State::CheckLightMode(const std::vector<Tag>& tags) {
             continue;
         const auto& modes = pack::KnownLightModes();
         const bool known = std::any_of(modes.begin(), modes.end(), [&](const std::string& m) {
-            return m.size() == t.value.size() &&
-                   std::equal(m.begin(), m.end(), t.value.begin(), [](char a, char b) {
-                       return std::tolower(static_cast<unsigned char>(a)) ==
-                              std::tolower(static_cast<unsigned char>(b));
-                   });
+            return EqualsIgnoreCase(m, t.value);
         });
         if (known)
             continue;
