@@ -29,6 +29,11 @@ struct MaterialRequest {
 
 enum class OptimizationLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
 
+// Where glslang and SPIRV-Tools run: in `kiln-worker` processes (the default: a crash, a hang or
+// an exhausted allocation in them becomes a diagnostic) or inside the calling process
+// (--in-process, for debugging).
+enum class Isolation { kWorkers, kInProcess };
+
 // Unity 2022.3: the UNITY_VERSION Kiln's compile environment reproduces by default
 // (docs/unity-compat.md).
 inline constexpr int kDefaultUnityVersion = 202230;
@@ -54,6 +59,12 @@ struct CompileOptions {
     bool all_features = false;
     uint64_t max_variants = 4096;  // per pass
     std::string cache_dir;         // empty: no cache
+    Isolation isolation = Isolation::kWorkers;
+    std::string worker_path;  // empty: $KILN_WORKER, else kiln-worker beside the program
+    // Per program (one stage of one variant, or its preprocessing), in a worker: the wall-clock
+    // limit (--program-timeout) and the resident-memory limit (--program-memory).
+    double program_timeout_seconds = 60;
+    uint64_t program_memory_mib = 2048;
     // Called from the driver thread as work completes (phase, done, total).
     std::function<void(const char*, size_t, size_t)> progress;
 };

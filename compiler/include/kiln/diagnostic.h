@@ -33,6 +33,7 @@ enum class DiagCode : uint16_t {
     kRenderFailed = 8,      // the renderer failed (device, pipeline, validation messages)
     kBadColorConfig = 9,    // an OpenColorIO config, display or view that does not exist
     kRenderWarning = 10,    // the runtime's warnings (scene content it skipped or changed)
+    kWorkerUnavailable = 11,  // no compile worker process could be found or started
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,
@@ -97,6 +98,12 @@ enum class DiagCode : uint16_t {
     kGlobalNotAProperty = 5006,
     kBlockLayoutMismatch = 5007,
     kPropertyTypeMismatch = 5008,
+    kCompilerCrashed = 5009,      // glslang or SPIRV-Tools crashed in its worker process
+    kCompilerTimeLimit = 5010,    // ... did not finish within --program-timeout
+    kCompilerMemoryLimit = 5011,  // ... used more than --program-memory
+    kProgramNestingTooDeep = 5012,  // parentheses, braces or #if nested past the limit
+    kMacroExpansionTooLarge = 5013, // a macro whose expansion is over the budget
+    kExpressionTooLong = 5014,      // one statement or expression with too many terms
 
     // K6xxx: material instances; the values are kiln::material::IssueCode's (runtime).
     kMaterialFirst = 6001,

@@ -12,12 +12,14 @@
 
 #include "driver/cache.h"
 #include "driver/compile_state.h"
+#include "driver/isolation.h"
 #include "driver/parallel.h"
 #include "frontend/glslang_messages.h"
 #include "frontend/glslang_stage.h"
 #include "hlsl/assemble.h"
 #include "hlsl/identifier.h"
 #include "hlsl/includer.h"
+#include "hlsl/precheck.h"
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
 #include "kiln/pack/names.h"
@@ -37,22 +39,6 @@ namespace fs = std::filesystem;
 using driver::CompileState;
 
 namespace {
-
-spirv::OptLevel ToSpirv(OptimizationLevel level) {
-    switch (level) {
-        case OptimizationLevel::kNone:
-            return spirv::OptLevel::kNone;
-        case OptimizationLevel::kSize:
-            return spirv::OptLevel::kSize;
-        case OptimizationLevel::kPerformance:
-            return spirv::OptLevel::kPerformance;
-    }
-    return spirv::OptLevel::kPerformance;
-}
-
-hlsl::IncludePaths IncludePathsFor(const CompileOptions& o) {
-    return {o.include_dirs, o.templates_dir.empty() ? DefaultTemplatesDir() : o.templates_dir};
-}
 
 std::string LineName(const std::string& path) {
     return hlsl::IsLineSafeName(path) ? path : std::string("<unprintable path>");
@@ -85,7 +71,7 @@ void AppendLog(CompileState& st,
         return;  // the common case: a clean compile
     auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
     frontend::MessageContext context;
-    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
+    const hlsl::IncludePaths paths = driver::IncludePathsFor(st.options);
     context.include_search.push_back("the including file's folder");
     for (const std::string& dir : paths.dirs)
         context.include_search.push_back(dir + " (-I)");
@@ -115,6 +101,9 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
         unit.ast = shaderlab::ParseAndCheck(*unit.file, st.diags);
         if (unit.ast)
             unit.passes = driver::FlattenPasses(*unit.ast, path, st.diags);
+        hlsl::Prechecker precheck(*unit.file, {}, st.diags);
+        for (const driver::FlatPass& fp : unit.passes)
+            precheck.CheckPass(fp.blocks);
         st.shaders.push_back(std::move(unit));
     }
 }
@@ -243,21 +232,25 @@ const std::string& EntryOf(const CompileState& st, const driver::StageTask& t) {
     return t.stage == pack::Stage::kVertex ? pr.vertex->name : pr.fragment->name;
 }
 
-// Phase 3: preprocess every task and dedup the reduced texts into jobs.
+// Phase 3: preprocess every task (in the workers) and dedup the reduced texts into jobs.
 void PreprocessAndDedup(CompileState& st) {
-    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
     driver::ParallelFor(
         st.tasks.size(), st.options.jobs,
         [&](size_t i) {
             driver::StageTask& t = st.tasks[i];
-            hlsl::Includer includer(paths, st.files);
-            const std::string& main = st.shaders[st.passes[t.pass].shader].file->path();
-            frontend::StageOutput out = frontend::Preprocess(t.stage, t.source, main, includer);
-            t.preprocess_ok = out.ok;
-            t.preprocess_log = std::move(out.info_log);
-            if (!out.ok)
+            worker::Request request =
+                driver::StageRequest(st, t, worker::RequestKind::kPreprocess);
+            request.source = t.source;
+            worker::Outcome o = st.exec->Run(request);
+            if ((t.failure = driver::OutcomeDiagnostic(st, t, o)))
                 return;
-            hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(out.text);
+            for (const std::string& f : o.response.files_read)
+                st.files.Get(f);  // for diagnostics and the depfile (a no-op in-process)
+            t.preprocess_ok = o.response.ok;
+            t.preprocess_log = std::move(o.response.info_log);
+            if (!t.preprocess_ok)
+                return;
+            hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(o.response.text);
             hlsl::Reduced reduced = hlsl::ReduceToEntryPoint(rewritten.text, EntryOf(st, t));
             t.reduced = std::move(reduced.text);
             t.functions_if_entry_missing = std::move(reduced.functions_if_entry_missing);
@@ -278,7 +271,10 @@ void PreprocessAndDedup(CompileState& st) {
             job.stage = t.stage;
             job.entry = EntryOf(st, t);
             job.first_task = i;
-            AppendLog(st, t.preprocess_log, job.diags, &t.source);
+            if (t.failure)
+                job.diags.push_back(*t.failure);
+            else
+                AppendLog(st, t.preprocess_log, job.diags, &t.source);
             t.job = st.jobs.size();
             st.jobs.push_back(std::move(job));
             continue;
@@ -314,67 +310,96 @@ Diagnostic MissingEntryPoint(const CompileState& st, const driver::StageTask& t)
     return d;
 }
 
+// A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
+// the compile that follows replaces it.
+std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
+                                                const driver::Cache& cache,
+                                                const std::string& key) {
+    std::optional<std::vector<uint32_t>> cached = cache.Load(key);
+    if (!cached)
+        return std::nullopt;
+    worker::Request check;
+    check.kind = worker::RequestKind::kValidate;
+    check.words = *cached;
+    const worker::Outcome o = st.exec->Run(check);
+    if (o.status != worker::Outcome::Status::kOk || !o.response.ok)
+        return std::nullopt;
+    return cached;
+}
+
+// One job through glslang and SPIRV-Tools in a worker; its diagnostics go to job.diags.
+void CompileJob(CompileState& st, driver::Job& job) {
+    const driver::StageTask& task = st.tasks[job.first_task];
+    const std::string& main = st.shaders[st.passes[task.pass].shader].file->path();
+    worker::Request request = driver::StageRequest(st, task, worker::RequestKind::kCompile);
+    request.source = task.reduced;
+    worker::Outcome o = st.exec->Run(request);
+    if (auto failure = driver::OutcomeDiagnostic(st, task, o)) {
+        job.diags.push_back(std::move(*failure));
+        return;
+    }
+    const worker::Response& out = o.response;
+    if (out.entry_missing) {
+        job.diags.push_back(MissingEntryPoint(st, task));
+        return;
+    }
+    if (out.failed_in == worker::Component::kGlslang) {
+        // Positions in the reduced text are lines of the original files but not their columns:
+        // compile the assembled source once more for exact diagnostics (or, when a rewrite was
+        // needed, the rewritten text, whose lines are right).
+        request.source = task.rewritten.empty() ? task.source : task.rewritten;
+        request.optimize = false;
+        o = st.exec->Run(request);
+        if (auto failure = driver::OutcomeDiagnostic(st, task, o)) {
+            job.diags.push_back(std::move(*failure));
+            return;
+        }
+        AppendLog(st, o.response.info_log, job.diags, &task.reduced);
+        if (o.response.ok || job.diags.empty()) {
+            job.diags.push_back({Severity::kInternal,
+                                 DiagCode::kInternalError,
+                                 main,
+                                 {},
+                                 "stage compiles from its source but not after reduction to its "
+                                 "entry point",
+                                 {}});
+        }
+        return;
+    }
+    AppendLog(st, out.info_log, job.diags);  // warnings
+    if (!out.ok) {
+        job.diags.push_back({Severity::kError,
+                             DiagCode::kSpirvInvalid,
+                             main,
+                             {},
+                             "SPIR-V legalization failed: " + out.messages,
+                             {}});
+        return;
+    }
+    job.words = std::move(o.response.words);
+    job.ok = true;
+}
+
 // Phase 4: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats) {
-    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
     const driver::Cache cache(st.options.cache_dir);
     std::atomic<size_t> compiles{0}, hits{0};
     driver::ParallelFor(
         st.jobs.size(), st.options.jobs,
         [&](size_t j) {
             driver::Job& job = st.jobs[j];
-            const driver::StageTask& task = st.tasks[job.first_task];
-            const std::string& main = st.shaders[st.passes[task.pass].shader].file->path();
-            hlsl::Includer includer(paths, st.files);
-            if (!task.preprocess_ok)
+            if (!st.tasks[job.first_task].preprocess_ok)
                 return;  // reported by PreprocessAndDedup
-            if (auto cached = cache.Load(job.cache_key)) {
+            if (auto cached = LoadCached(st, cache, job.cache_key)) {
                 job.words = std::move(*cached);
                 job.ok = job.from_cache = true;
                 ++hits;
                 return;
             }
             ++compiles;
-            frontend::StageOutput out = frontend::Compile(job.stage, task.reduced, main, job.entry,
-                                                          includer, st.options.debug_info);
-            if (out.entry_missing) {
-                job.diags.push_back(MissingEntryPoint(st, task));
-                return;
-            }
-            if (!out.ok) {
-                // Positions in the reduced text are lines of the original files but not their
-                // columns: compile the assembled source once more for exact diagnostics (or,
-                // when a rewrite was needed, the rewritten text, whose lines are right).
-                ++compiles;
-                out = frontend::Compile(job.stage,
-                                        task.rewritten.empty() ? task.source : task.rewritten, main,
-                                        job.entry, includer, st.options.debug_info);
-                AppendLog(st, out.info_log, job.diags, &task.reduced);
-                if (out.ok || job.diags.empty()) {
-                    job.diags.push_back({Severity::kInternal,
-                                         DiagCode::kInternalError,
-                                         main,
-                                         {},
-                                         "stage compiles from its source but not after "
-                                         "reduction to its entry point",
-                                         {}});
-                }
-                return;
-            }
-            AppendLog(st, out.info_log, job.diags);  // warnings
-            std::string messages;
-            if (!spirv::Optimize(out.spirv, ToSpirv(st.options.opt_level), messages)) {
-                job.diags.push_back({Severity::kError,
-                                     DiagCode::kSpirvInvalid,
-                                     main,
-                                     {},
-                                     "SPIR-V legalization failed: " + messages,
-                                     {}});
-                return;
-            }
-            job.words = std::move(out.spirv);
-            job.ok = true;
-            cache.Store(job.cache_key, job.words);
+            CompileJob(st, job);
+            if (job.ok)
+                cache.Store(job.cache_key, job.words);
         },
         [&](size_t done) { Progress(st.options, "compiling", done, st.jobs.size()); });
     stats.glslang_compiles = compiles;
@@ -420,9 +445,14 @@ CompileOutput Run(const std::vector<std::string>& paths,
                   DiagnosticList& diags,
                   bool build_pack) {
     frontend::InitializeGlslang();  // before any thread starts
-    CompileState st{options, diags, {}, {}, {}, {}, {}, {}};
+    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
     LoadShaders(st, paths);
+    std::unique_ptr<worker::Executor> exec;
+    if (!diags.has_errors()) {
+        exec = driver::MakeExecutor(st);
+        st.exec = exec.get();
+    }
     if (!diags.has_errors())
         ExpandPasses(st);
     bool preprocessed = false;

@@ -16,6 +16,7 @@
 #include "spirv/reflection.h"
 #include "variants/expand.h"
 #include "variants/pass_pragmas.h"
+#include "worker/executor.h"
 
 namespace kiln::driver {
 
@@ -44,6 +45,7 @@ struct StageTask {
     bool preprocess_ok = false;
     std::string preprocess_log;
     std::vector<std::string> functions_if_entry_missing;  // hlsl::Reduced's, for suggestions
+    std::optional<Diagnostic> failure;  // preprocessing crashed, timed out, or was refused
     size_t job = 0;
 };
 
@@ -65,11 +67,13 @@ struct FinalModule {
     std::vector<uint32_t> words;
     spirv::Reflection reflection;
     std::string error;
+    std::optional<Diagnostic> failure;  // the worker crashed or ran out of time or memory
 };
 
 struct CompileState {
     const CompileOptions& options;
     DiagnosticList& diags;
+    worker::Executor* exec = nullptr;  // where glslang and SPIRV-Tools run (driver/isolation.h)
     hlsl::FileCache files;
     std::vector<ShaderUnit> shaders;
     std::vector<PassUnit> passes;

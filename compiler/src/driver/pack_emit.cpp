@@ -4,6 +4,7 @@
 #include <set>
 
 #include "driver/compile_state.h"
+#include "driver/isolation.h"
 #include "driver/parallel.h"
 #include "kiln/pack/property_keywords.h"
 #include "kiln/shaderlab/ast.h"
@@ -65,14 +66,20 @@ void FinishModules(CompileState& st) {
             fm.error = "internal: " + error;
             return;
         }
-        if (!spirv::StripReflectionInfo(fm.words, st.options.debug_info, error)) {
-            fm.error = "internal: " + error;
+        // Stripping and spirv-val run in a worker, as every third-party step does.
+        const StageTask& task = st.tasks[st.jobs[j].first_task];
+        worker::Request request = StageRequest(st, task, worker::RequestKind::kFinish);
+        request.words = std::move(fm.words);
+        worker::Outcome o = st.exec->Run(request);
+        if ((fm.failure = OutcomeDiagnostic(st, task, o)))
+            return;
+        if (!o.response.ok) {
+            fm.error = o.response.failed_in == worker::Component::kSpirvVal
+                           ? "generated SPIR-V fails validation: " + o.response.messages
+                           : "internal: " + o.response.messages;
             return;
         }
-        if (!spirv::Validate(fm.words, error)) {
-            fm.error = "generated SPIR-V fails validation: " + error;
-            return;
-        }
+        fm.words = std::move(o.response.words);
         fm.ok = true;
     });
     for (size_t p = 0; p < st.passes.size(); ++p) {
@@ -81,6 +88,13 @@ void FinishModules(CompileState& st) {
         for (const auto& [j, fm] : st.finals[p]) {
             if (fm.ok)
                 continue;
+            if (fm.failure) {
+                Diagnostic& d = st.diags.Add(fm.failure->severity, fm.failure->code,
+                                             fm.failure->file, fm.failure->range,
+                                             fm.failure->message);
+                d.notes = fm.failure->notes;
+                continue;
+            }
             const StageTask& t = st.tasks[st.jobs[j].first_task];
             const bool internal = fm.error.rfind("internal: ", 0) == 0;
             st.diags.Add(internal ? Severity::kInternal : Severity::kError,

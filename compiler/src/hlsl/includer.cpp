@@ -1,5 +1,6 @@
 #include "hlsl/includer.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <string_view>
 
@@ -69,6 +70,15 @@ glslang::TShader::Includer::IncludeResult* Includer::includeSystem(const char* h
                                                                    const char* includer,
                                                                    size_t depth) {
     return Serve(Resolve(header, includer ? includer : "", false), depth);
+}
+
+std::vector<std::string> Includer::Served() const {
+    std::vector<std::string> out;
+    for (const auto& file : held_) {
+        if (std::find(out.begin(), out.end(), file->path()) == out.end())
+            out.push_back(file->path());
+    }
+    return out;
 }
 
 void Includer::releaseInclude(IncludeResult* result) {

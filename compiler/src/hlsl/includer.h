@@ -32,6 +32,10 @@ class Includer : public glslang::TShader::Includer {
     // Resolution without glslang: the path `header` resolves to, or "" when not found.
     std::string Resolve(const std::string& header, const std::string& includer, bool local) const;
 
+    // The path of every file served so far, in the order first served (for depfiles and for the
+    // diagnostics of a compile that ran in a worker process).
+    std::vector<std::string> Served() const;
+
   private:
     IncludeResult* Serve(const std::string& path, size_t depth);
 

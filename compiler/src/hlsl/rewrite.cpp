@@ -154,6 +154,18 @@ void OneVectorSwizzles(const std::vector<Token>& tok, std::vector<Edit>& edits, 
     }
 }
 
+// fxc's infinity literal `1.#INF` (also how its disassembler prints infinity): glslang's scanner
+// reads it, but its preprocessed output spells it `1.INF`, which glslang then cannot parse. A
+// number token `1.INF` exists only that way, so it is put back.
+void InfinityLiterals(const std::vector<Token>& tok, std::vector<Edit>& edits, size_t& count) {
+    for (const Token& t : tok) {
+        if (!t.ident && t.text == "1.INF") {
+            edits.push_back({t.begin, t.end, "1.#INF"});
+            ++count;
+        }
+    }
+}
+
 // Index of the bracket that opens the one closing at `close`, or SIZE_MAX.
 size_t MatchBack(const std::vector<Token>& tok, size_t close) {
     const std::string_view c = tok[close].text;
@@ -232,6 +244,7 @@ RewriteResult RewriteForGlslang(const std::string& preprocessed) {
     std::vector<Edit> edits;
     OneVectorSwizzles(tok, edits, r.one_vector_swizzles);
     MatrixSwizzles(preprocessed, tok, edits, r.matrix_swizzles);
+    InfinityLiterals(tok, edits, r.infinity_literals);
     if (edits.empty()) {
         r.text = preprocessed;
         return r;

@@ -12,6 +12,8 @@
 // - Multi-element matrix swizzles read as values: `M._14_24_34` (or `._m03_m13_m23`), which
 //   glslang 12 compiles into invalid SPIR-V (or crashes on), becomes
 //   `float3((M)._14, (M)._24, (M)._34)`. Writes through such swizzles are left alone.
+// - fxc's infinity literal `1.#INF`, which glslang reads but its preprocessor prints as `1.INF`,
+//   is put back as it was written.
 #ifndef KILN_HLSL_REWRITE_H_
 #define KILN_HLSL_REWRITE_H_
 
@@ -23,7 +25,8 @@ struct RewriteResult {
     std::string text;
     size_t one_vector_swizzles = 0;  // `.x` dropped after a 1-vector
     size_t matrix_swizzles = 0;      // multi-element matrix swizzles expanded
-    bool changed() const { return one_vector_swizzles + matrix_swizzles > 0; }
+    size_t infinity_literals = 0;    // `1.INF` from the preprocessor put back as `1.#INF`
+    bool changed() const { return one_vector_swizzles + matrix_swizzles + infinity_literals > 0; }
 };
 
 RewriteResult RewriteForGlslang(const std::string& preprocessed);

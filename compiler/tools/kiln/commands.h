@@ -68,6 +68,9 @@ struct CompilerFlags {
     uint64_t max_variants = 4096;
     std::string templates_dir;
     unsigned jobs = 0;
+    bool in_process = false;
+    double program_timeout = 60;
+    uint64_t program_memory = 2048;
 };
 void AddCompilerOptions(CLI::App& cmd, CompilerFlags& flags);
 // The library's options from the flags; reads the --materials files (kept in `files` for the

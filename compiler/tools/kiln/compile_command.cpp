@@ -62,6 +62,17 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
     cmd.add_option("--templates-dir", f.templates_dir,
                    "The built-in include library (default: Kiln's templates/)");
     cmd.add_option("-j,--jobs", f.jobs, "Parallel compile jobs (default: all cores)");
+    cmd.add_flag("--in-process", f.in_process,
+                 "Run glslang and SPIRV-Tools inside kiln instead of in kiln-worker processes "
+                 "(for debugging: a crash in them then ends kiln)");
+    cmd.add_option("--program-timeout", f.program_timeout,
+                   "Seconds one program may take in a worker (default 60)")
+        ->check(CLI::PositiveNumber.description(""))
+        ->option_text("S");
+    cmd.add_option("--program-memory", f.program_memory,
+                   "MiB of memory one program may use in a worker (default 2048)")
+        ->check(CLI::Range(uint64_t{16}, uint64_t{1} << 24).description(""))
+        ->option_text("MIB");
 }
 
 std::optional<int> ParseUnityVersion(const std::string& text) {
@@ -162,6 +173,9 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
     o.max_variants = f.max_variants;
     o.templates_dir = f.templates_dir;
     o.jobs = f.jobs;
+    o.isolation = f.in_process ? Isolation::kInProcess : Isolation::kWorkers;
+    o.program_timeout_seconds = f.program_timeout;
+    o.program_memory_mib = f.program_memory;
     return o;
 }
 

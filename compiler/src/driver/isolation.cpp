@@ -1,0 +1,152 @@
+#include "driver/isolation.h"
+
+#include <csignal>
+#include <cstdio>
+
+#include "driver/parallel.h"
+
+namespace kiln::driver {
+namespace {
+
+using worker::Outcome;
+
+std::string SignalName(int signal) {
+    switch (signal) {
+        case SIGSEGV:
+            return "SIGSEGV, a segmentation fault";
+        case SIGABRT:
+            return "SIGABRT, an abort";
+        case SIGBUS:
+            return "SIGBUS, a bus error";
+        case SIGFPE:
+            return "SIGFPE, an arithmetic exception";
+        case SIGILL:
+            return "SIGILL, an illegal instruction";
+        case SIGKILL:
+            return "SIGKILL";
+        default:
+            return "signal " + std::to_string(signal);
+    }
+}
+
+std::string Seconds(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", s);
+    return buf;
+}
+
+// "the fragment stage of shader "X" pass FORWARD".
+std::string StageOfPass(const CompileState& st, const StageTask& task) {
+    const PassUnit& pu = st.passes[task.pass];
+    const ShaderUnit& unit = st.shaders[pu.shader];
+    return std::string(task.stage == pack::Stage::kVertex ? "the vertex" : "the fragment") +
+           " stage of shader \"" + unit.ast->name + "\" pass " + unit.passes[pu.flat].label;
+}
+
+}  // namespace
+
+std::unique_ptr<worker::Executor> MakeExecutor(CompileState& st) {
+    const CompileOptions& o = st.options;
+    if (o.isolation == Isolation::kInProcess)
+        return worker::MakeInProcessExecutor(st.files);
+    worker::PoolOptions pool;
+    pool.worker_path = worker::FindWorker(o.worker_path);
+    if (pool.worker_path.empty()) {
+        st.diags.Error(DiagCode::kWorkerUnavailable, "", kNoPosition,
+                       (o.worker_path.empty()
+                            ? std::string("cannot find the compile worker 'kiln-worker' (looked "
+                                          "at $KILN_WORKER, beside this program and in the build "
+                                          "tree)")
+                            : "the compile worker '" + o.worker_path + "' is not an executable") +
+                           "; compile with --in-process to run glslang inside kiln instead");
+        return nullptr;
+    }
+    pool.workers = ResolveJobs(o.jobs);
+    pool.timeout_seconds = o.program_timeout_seconds;
+    pool.memory_limit_bytes = o.program_memory_mib << 20;
+    return worker::MakeWorkerPool(pool);
+}
+
+hlsl::IncludePaths IncludePathsFor(const CompileOptions& o) {
+    return {o.include_dirs, o.templates_dir.empty() ? DefaultTemplatesDir() : o.templates_dir};
+}
+
+worker::Request StageRequest(const CompileState& st,
+                             const StageTask& task,
+                             worker::RequestKind kind) {
+    const PassUnit& pu = st.passes[task.pass];
+    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
+    worker::Request r;
+    r.kind = kind;
+    r.stage = task.stage;
+    r.name = st.shaders[pu.shader].file->path();
+    r.entry = task.stage == pack::Stage::kVertex ? pu.pragmas.vertex->name
+                                                 : pu.pragmas.fragment->name;
+    r.include_dirs = paths.dirs;
+    r.templates_dir = paths.templates_dir;
+    r.debug_info = st.options.debug_info;
+    switch (st.options.opt_level) {
+        case OptimizationLevel::kNone:
+            r.opt_level = 0;
+            break;
+        case OptimizationLevel::kPerformance:
+            r.opt_level = 1;
+            break;
+        case OptimizationLevel::kSize:
+            r.opt_level = 2;
+            break;
+    }
+    return r;
+}
+
+std::optional<Diagnostic> OutcomeDiagnostic(const CompileState& st,
+                                            const StageTask& task,
+                                            const Outcome& outcome) {
+    const PassUnit& pu = st.passes[task.pass];
+    const ShaderUnit& unit = st.shaders[pu.shader];
+    const std::string who = worker::ComponentName(outcome.component);
+    const std::string what = StageOfPass(st, task);
+    Diagnostic d{Severity::kError, DiagCode::kCompilerCrashed, unit.file->path(),
+                 unit.passes[pu.flat].program->range, "", {}};
+    switch (outcome.status) {
+        case Outcome::Status::kOk:
+            return std::nullopt;
+        case Outcome::Status::kCrashed:
+            d.message = who + " crashed (" +
+                        (outcome.signal != 0 ? SignalName(outcome.signal)
+                                             : "it exited with status " +
+                                                   std::to_string(outcome.exit_code)) +
+                        ") on " + what +
+                        "; this is a fault in the third-party compiler, not a Kiln diagnostic of "
+                        "your code: simplify the code it fails on, or report it upstream";
+            break;
+        case Outcome::Status::kTimedOut:
+            d.code = DiagCode::kCompilerTimeLimit;
+            d.message = who + " did not finish " + what + " within the limit of " +
+                        Seconds(st.options.program_timeout_seconds) +
+                        " s per program (--program-timeout)";
+            break;
+        case Outcome::Status::kOutOfMemory:
+            d.code = DiagCode::kCompilerMemoryLimit;
+            d.message = who + " used more than the limit of " +
+                        std::to_string(st.options.program_memory_mib) + " MiB per program on " +
+                        what + " (--program-memory)";
+            break;
+        case Outcome::Status::kUnavailable:
+            d.code = DiagCode::kWorkerUnavailable;
+            d.message = "no compile worker could be started for " + what + ": " +
+                        outcome.detail + "; compile with --in-process to run glslang inside kiln";
+            break;
+        case Outcome::Status::kBroken:
+            d.severity = Severity::kInternal;
+            d.code = DiagCode::kInternalError;
+            d.message = "the compile worker failed on " + what + ": " + outcome.detail;
+            break;
+    }
+    const auto keywords = variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, task.key);
+    d.notes.push_back({unit.file->path(), unit.passes[pu.flat].program->range,
+                       "in the variant " + variants::DescribeKeywords(keywords)});
+    return d;
+}
+
+}  // namespace kiln::driver

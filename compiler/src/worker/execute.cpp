@@ -1,0 +1,101 @@
+#include "worker/execute.h"
+
+#include "frontend/glslang_stage.h"
+#include "hlsl/includer.h"
+#include "spirv/optimize.h"
+
+namespace kiln::worker {
+namespace {
+
+void Enter(ExecuteContext& context, Component c) {
+    if (context.phase)
+        context.phase(c);
+}
+
+Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& includer) {
+    Enter(context, Component::kGlslangPreprocessor);
+    frontend::StageOutput out = frontend::Preprocess(r.stage, r.source, r.name, includer);
+    Response resp;
+    resp.ok = out.ok;
+    resp.failed_in = out.ok ? Component::kNone : Component::kGlslangPreprocessor;
+    resp.text = std::move(out.text);
+    resp.info_log = std::move(out.info_log);
+    return resp;
+}
+
+Response Compile(const Request& r, ExecuteContext& context, hlsl::Includer& includer) {
+    Enter(context, Component::kGlslang);
+    frontend::StageOutput out =
+        frontend::Compile(r.stage, r.source, r.name, r.entry, includer, r.debug_info);
+    Response resp;
+    resp.ok = out.ok;
+    resp.entry_missing = out.entry_missing;
+    resp.info_log = std::move(out.info_log);
+    if (!out.ok) {
+        resp.failed_in = Component::kGlslang;
+        return resp;
+    }
+    resp.words = std::move(out.spirv);
+    if (!r.optimize)
+        return resp;
+    Enter(context, Component::kSpirvOpt);
+    if (!spirv::Optimize(resp.words, static_cast<spirv::OptLevel>(r.opt_level), resp.messages)) {
+        resp.ok = false;
+        resp.failed_in = Component::kSpirvOpt;
+        resp.words.clear();
+    }
+    return resp;
+}
+
+Response Finish(const Request& r, ExecuteContext& context) {
+    Response resp;
+    resp.words = r.words;
+    Enter(context, Component::kSpirvOpt);
+    if (!spirv::StripReflectionInfo(resp.words, r.debug_info, resp.messages)) {
+        resp.failed_in = Component::kSpirvOpt;
+        return resp;
+    }
+    Enter(context, Component::kSpirvVal);
+    resp.ok = spirv::Validate(resp.words, resp.messages);
+    resp.failed_in = resp.ok ? Component::kNone : Component::kSpirvVal;
+    return resp;
+}
+
+Response Validate(const Request& r, ExecuteContext& context) {
+    Response resp;
+    Enter(context, Component::kSpirvVal);
+    resp.ok = spirv::Validate(r.words, resp.messages);
+    resp.failed_in = resp.ok ? Component::kNone : Component::kSpirvVal;
+    return resp;
+}
+
+}  // namespace
+
+Response Execute(const Request& request, ExecuteContext& context) {
+    frontend::InitializeGlslang();
+    const hlsl::IncludePaths paths{request.include_dirs, request.templates_dir};
+    hlsl::Includer includer(paths, context.files);
+    Response resp;
+    switch (request.kind) {
+        case RequestKind::kPreprocess:
+            resp = Preprocess(request, context, includer);
+            break;
+        case RequestKind::kCompile:
+            resp = Compile(request, context, includer);
+            break;
+        case RequestKind::kFinish:
+            resp = Finish(request, context);
+            break;
+        case RequestKind::kValidate:
+            resp = Validate(request, context);
+            break;
+        case RequestKind::kSelfTest:
+            resp.messages = "self tests run only in a worker process";
+            break;
+    }
+    resp.files_read = includer.Served();
+    Enter(context, Component::kNone);
+    return resp;
+}
+
+}  // namespace kiln::worker

@@ -1,0 +1,311 @@
+// The worker pool (executor.h): spawning, one request at a time per process over a Unix socket,
+// time and memory limits enforced from this side, restart after any failure.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "worker/execute.h"
+#include "worker/executor.h"
+
+extern char** environ;
+
+#ifndef KILN_WORKER_BUILD_PATH
+#define KILN_WORKER_BUILD_PATH ""
+#endif
+
+namespace kiln::worker {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kTickMs = 20;  // how often a running request's memory is looked at
+constexpr int kWorkerFd = 3;
+
+class InProcessExecutor : public Executor {
+  public:
+    explicit InProcessExecutor(hlsl::FileCache& files) : files_(files) {}
+    Outcome Run(const Request& request) override {
+        ExecuteContext context{files_, {}};
+        Outcome o;
+        o.response = Execute(request, context);
+        return o;
+    }
+
+  private:
+    hlsl::FileCache& files_;
+};
+
+// Resident memory of a process, in bytes (0 when it cannot be read).
+uint64_t ResidentBytes(pid_t pid) {
+    char path[64];
+    std::snprintf(path, sizeof path, "/proc/%d/statm", static_cast<int>(pid));
+    FILE* f = std::fopen(path, "r");
+    if (f == nullptr)
+        return 0;
+    unsigned long long size = 0, resident = 0;
+    const int n = std::fscanf(f, "%llu %llu", &size, &resident);
+    std::fclose(f);
+    if (n != 2)
+        return 0;
+    return resident * static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
+}
+
+bool SendAll(int fd, const std::string& bytes) {
+    size_t at = 0;
+    while (at < bytes.size()) {
+        const ssize_t n = send(fd, bytes.data() + at, bytes.size() - at, MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        at += static_cast<size_t>(n);
+    }
+    return true;
+}
+
+struct Worker {
+    pid_t pid = -1;
+    int fd = -1;
+    std::string buffer;  // bytes received, not yet framed
+};
+
+class WorkerPool : public Executor {
+  public:
+    explicit WorkerPool(PoolOptions options)
+        : options_(std::move(options)), workers_(std::max(1u, options_.workers)),
+          busy_(workers_.size(), false) {}
+
+    ~WorkerPool() override {
+        for (Worker& w : workers_)
+            Stop(w, /*kill_now=*/false);
+    }
+
+    Outcome Run(const Request& request) override {
+        size_t slot = 0;
+        {
+            std::unique_lock<std::mutex> lock(mu_);
+            cv_.wait(lock, [&] {
+                for (slot = 0; slot < busy_.size(); ++slot) {
+                    if (!busy_[slot])
+                        return true;
+                }
+                return false;
+            });
+            busy_[slot] = true;
+        }
+        Outcome o = RunOn(workers_[slot], request);
+        {
+            std::lock_guard<std::mutex> lock(mu_);
+            busy_[slot] = false;
+        }
+        cv_.notify_one();
+        return o;
+    }
+
+  private:
+    bool Spawn(Worker& w, std::string& why) const;
+    Outcome RunOn(Worker& w, const Request& request) const;
+    // Ends a worker; fills `o` with how it ended when given.
+    void Stop(Worker& w, bool kill_now, Outcome* o = nullptr) const;
+
+    PoolOptions options_;
+    std::vector<Worker> workers_;
+    std::mutex mu_;
+    std::condition_variable cv_;
+    std::vector<bool> busy_;
+};
+
+bool WorkerPool::Spawn(Worker& w, std::string& why) const {
+    int sv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
+        why = std::string("socketpair: ") + std::strerror(errno);
+        return false;
+    }
+    // The child's end moves to fd 3 there; keep it away from 3 here so dup2 clears CLOEXEC.
+    const int child_end = fcntl(sv[1], F_DUPFD_CLOEXEC, 10);
+    close(sv[1]);
+    if (child_end < 0) {
+        close(sv[0]);
+        why = std::string("fcntl: ") + std::strerror(errno);
+        return false;
+    }
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, child_end, kWorkerFd);
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    sigset_t none, defaults;
+    sigemptyset(&none);
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGPIPE);
+    posix_spawnattr_setsigmask(&attr, &none);
+    posix_spawnattr_setsigdefault(&attr, &defaults);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+    const std::string fd = std::to_string(kWorkerFd);
+    const std::string memory = std::to_string(options_.memory_limit_bytes);
+    const std::string stack = std::to_string(options_.stack_bytes);
+    std::vector<const char*> argv = {options_.worker_path.c_str(), "--fd", fd.c_str(),
+                                     "--memory-limit", memory.c_str(), "--stack", stack.c_str(),
+                                     nullptr};
+    pid_t pid = -1;
+    const int rc = posix_spawn(&pid, options_.worker_path.c_str(), &actions, &attr,
+                               const_cast<char* const*>(argv.data()), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attr);
+    close(child_end);
+    if (rc != 0) {
+        close(sv[0]);
+        why = "cannot start '" + options_.worker_path + "': " + std::strerror(rc);
+        return false;
+    }
+    w.pid = pid;
+    w.fd = sv[0];
+    w.buffer.clear();
+    return true;
+}
+
+void WorkerPool::Stop(Worker& w, bool kill_now, Outcome* o) const {
+    if (w.pid < 0)
+        return;
+    if (kill_now)
+        kill(w.pid, SIGKILL);
+    if (w.fd >= 0)
+        close(w.fd);  // a live worker reads end-of-file and exits
+    w.fd = -1;
+    int status = 0;
+    // A worker that closed its socket is exiting; give it two seconds before killing it.
+    const auto give_up = Clock::now() + std::chrono::seconds(2);
+    pid_t r = 0;
+    while ((r = waitpid(w.pid, &status, WNOHANG)) == 0 && Clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (r == 0) {
+        kill(w.pid, SIGKILL);
+        r = waitpid(w.pid, &status, 0);
+    }
+    if (o != nullptr && r == w.pid) {
+        if (WIFSIGNALED(status))
+            o->signal = WTERMSIG(status);
+        else if (WIFEXITED(status))
+            o->exit_code = WEXITSTATUS(status);
+    }
+    w.pid = -1;
+    w.buffer.clear();
+}
+
+Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
+    Outcome o;
+    if (w.pid < 0 && !Spawn(w, o.detail)) {
+        o.status = Outcome::Status::kUnavailable;
+        return o;
+    }
+    const auto fail = [&](Outcome::Status status, bool kill_now) {
+        o.status = status;
+        Stop(w, kill_now, &o);
+        return o;
+    };
+    if (!SendAll(w.fd, WithLength(EncodeRequest(request))))
+        return fail(Outcome::Status::kCrashed, false);
+    const auto deadline =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                           std::chrono::duration<double>(options_.timeout_seconds));
+    char chunk[1 << 16];
+    for (;;) {
+        bool bad = false;
+        while (std::optional<std::string> payload = TakeFrame(w.buffer, bad)) {
+            const std::optional<Frame> frame = SplitFrame(*payload);
+            if (!frame) {
+                o.detail = "an unknown frame";
+                return fail(Outcome::Status::kBroken, true);
+            }
+            if (frame->type == FrameType::kPhase) {
+                if (const auto c = DecodePhase(frame->payload))
+                    o.component = *c;
+                continue;
+            }
+            if (frame->type == FrameType::kFailure) {
+                const auto f = DecodeFailure(frame->payload);
+                o.detail = f ? f->detail : "";
+                return fail(f && f->reason == "memory" ? Outcome::Status::kOutOfMemory
+                                                       : Outcome::Status::kBroken,
+                            false);
+            }
+            std::optional<Response> resp;
+            if (frame->type == FrameType::kResponse)
+                resp = DecodeResponse(frame->payload);
+            if (!resp) {
+                o.detail = "a malformed response";
+                return fail(Outcome::Status::kBroken, true);
+            }
+            o.response = std::move(*resp);
+            return o;
+        }
+        if (bad) {
+            o.detail = "a frame over the size limit";
+            return fail(Outcome::Status::kBroken, true);
+        }
+        if (Clock::now() >= deadline)
+            return fail(Outcome::Status::kTimedOut, true);
+        if (ResidentBytes(w.pid) > options_.memory_limit_bytes)
+            return fail(Outcome::Status::kOutOfMemory, true);
+        pollfd p{w.fd, POLLIN, 0};
+        const int ready = poll(&p, 1, kTickMs);
+        if (ready < 0 && errno != EINTR)
+            return fail(Outcome::Status::kCrashed, true);
+        if (ready <= 0)
+            continue;
+        const ssize_t n = recv(w.fd, chunk, sizeof chunk, 0);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return fail(Outcome::Status::kCrashed, false);
+        w.buffer.append(chunk, static_cast<size_t>(n));
+    }
+}
+
+bool IsExecutable(const std::string& path) {
+    std::error_code ec;
+    return !path.empty() && std::filesystem::is_regular_file(path, ec) &&
+           access(path.c_str(), X_OK) == 0;
+}
+
+}  // namespace
+
+std::unique_ptr<Executor> MakeInProcessExecutor(hlsl::FileCache& files) {
+    return std::make_unique<InProcessExecutor>(files);
+}
+
+std::unique_ptr<Executor> MakeWorkerPool(const PoolOptions& options) {
+    return std::make_unique<WorkerPool>(options);
+}
+
+std::string FindWorker(const std::string& explicit_path) {
+    if (!explicit_path.empty())
+        return IsExecutable(explicit_path) ? explicit_path : "";
+    if (const char* env = std::getenv("KILN_WORKER"); env != nullptr && *env != '\0')
+        return IsExecutable(env) ? env : "";
+    std::error_code ec;
+    const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const std::string beside = (self.parent_path() / "kiln-worker").string();
+        if (IsExecutable(beside))
+            return beside;
+    }
+    return IsExecutable(KILN_WORKER_BUILD_PATH) ? KILN_WORKER_BUILD_PATH : "";
+}
+
+}  // namespace kiln::worker

@@ -1,0 +1,318 @@
+#include "worker/protocol.h"
+
+namespace kiln::worker {
+namespace {
+
+// Field tags. A string list repeats its tag once per element.
+enum Tag : uint8_t {
+    kKind = 1,
+    kStage,
+    kName,
+    kSource,
+    kEntry,
+    kIncludeDir,
+    kTemplatesDir,
+    kDebugInfo,
+    kOptLevel,
+    kOptimize,
+    kWords,
+    kOk,
+    kEntryMissing,
+    kFailedIn,
+    kText,
+    kInfoLog,
+    kMessages,
+    kFileRead,
+    kReason,
+    kDetail,
+};
+
+void PutU32(std::string& s, uint32_t x) {
+    for (int i = 0; i < 4; ++i)
+        s += static_cast<char>(x >> (8 * i));
+}
+
+uint32_t GetU32(std::string_view s, size_t at) {
+    uint32_t x = 0;
+    for (int i = 0; i < 4; ++i)
+        x |= uint32_t(uint8_t(s[at + size_t(i)])) << (8 * i);
+    return x;
+}
+
+class Writer {
+  public:
+    explicit Writer(FrameType type) { PutU32(out_, uint32_t(type)); }
+    void Bytes(Tag tag, std::string_view bytes) {
+        out_ += static_cast<char>(tag);
+        PutU32(out_, static_cast<uint32_t>(bytes.size()));
+        out_.append(bytes);
+    }
+    void U8(Tag tag, uint8_t v) { Bytes(tag, std::string_view(reinterpret_cast<char*>(&v), 1)); }
+    void Words(Tag tag, const std::vector<uint32_t>& words) {
+        std::string b;
+        b.reserve(words.size() * 4);
+        for (uint32_t w : words)
+            PutU32(b, w);
+        Bytes(tag, b);
+    }
+    std::string Take() { return std::move(out_); }
+
+  private:
+    std::string out_;
+};
+
+// Calls fn(tag, bytes) for every field; false when a field runs past the end.
+template <typename Fn>
+bool ForEachField(std::string_view fields, Fn&& fn) {
+    size_t at = 0;
+    while (at < fields.size()) {
+        if (fields.size() - at < 5)
+            return false;
+        const auto tag = static_cast<uint8_t>(fields[at]);
+        const uint32_t size = GetU32(fields, at + 1);
+        at += 5;
+        if (size > fields.size() - at)
+            return false;
+        if (!fn(tag, fields.substr(at, size)))
+            return false;
+        at += size;
+    }
+    return true;
+}
+
+bool ToU8(std::string_view b, uint8_t& v) {
+    if (b.size() != 1)
+        return false;
+    v = static_cast<uint8_t>(b[0]);
+    return true;
+}
+
+bool ToBool(std::string_view b, bool& v) {
+    uint8_t x = 0;
+    if (!ToU8(b, x) || x > 1)
+        return false;
+    v = x == 1;
+    return true;
+}
+
+bool ToWords(std::string_view b, std::vector<uint32_t>& words) {
+    if (b.size() % 4 != 0)
+        return false;
+    words.resize(b.size() / 4);
+    for (size_t i = 0; i < words.size(); ++i)
+        words[i] = GetU32(b, i * 4);
+    return true;
+}
+
+bool ToComponent(std::string_view b, Component& c) {
+    uint8_t x = 0;
+    if (!ToU8(b, x) || x > uint8_t(Component::kSpirvVal))
+        return false;
+    c = static_cast<Component>(x);
+    return true;
+}
+
+}  // namespace
+
+const char* ComponentName(Component c) {
+    switch (c) {
+        case Component::kNone:
+            return "the compile worker";
+        case Component::kGlslangPreprocessor:
+            return "glslang's preprocessor";
+        case Component::kGlslang:
+            return "glslang";
+        case Component::kSpirvOpt:
+            return "SPIRV-Tools' optimizer";
+        case Component::kSpirvVal:
+            return "SPIRV-Tools' validator";
+    }
+    return "the compile worker";
+}
+
+std::string EncodeRequest(const Request& r) {
+    Writer w(FrameType::kRequest);
+    w.U8(kKind, uint8_t(r.kind));
+    w.U8(kStage, uint8_t(r.stage));
+    w.Bytes(kName, r.name);
+    w.Bytes(kSource, r.source);
+    w.Bytes(kEntry, r.entry);
+    for (const std::string& d : r.include_dirs)
+        w.Bytes(kIncludeDir, d);
+    w.Bytes(kTemplatesDir, r.templates_dir);
+    w.U8(kDebugInfo, r.debug_info);
+    w.U8(kOptLevel, r.opt_level);
+    w.U8(kOptimize, r.optimize);
+    w.Words(kWords, r.words);
+    return w.Take();
+}
+
+std::string EncodeResponse(const Response& r) {
+    Writer w(FrameType::kResponse);
+    w.U8(kOk, r.ok);
+    w.U8(kEntryMissing, r.entry_missing);
+    w.U8(kFailedIn, uint8_t(r.failed_in));
+    w.Bytes(kText, r.text);
+    w.Bytes(kInfoLog, r.info_log);
+    w.Bytes(kMessages, r.messages);
+    w.Words(kWords, r.words);
+    for (const std::string& f : r.files_read)
+        w.Bytes(kFileRead, f);
+    return w.Take();
+}
+
+std::string EncodePhase(Component c) {
+    Writer w(FrameType::kPhase);
+    w.U8(kFailedIn, uint8_t(c));
+    return w.Take();
+}
+
+std::string EncodeFailure(std::string_view reason, std::string_view detail) {
+    Writer w(FrameType::kFailure);
+    w.Bytes(kReason, reason);
+    w.Bytes(kDetail, detail);
+    return w.Take();
+}
+
+std::optional<Frame> SplitFrame(std::string_view payload) {
+    if (payload.size() < 4)
+        return std::nullopt;
+    const uint32_t type = GetU32(payload, 0);
+    switch (static_cast<FrameType>(type)) {
+        case FrameType::kRequest:
+        case FrameType::kResponse:
+        case FrameType::kPhase:
+        case FrameType::kFailure:
+            return Frame{static_cast<FrameType>(type), payload.substr(4)};
+    }
+    return std::nullopt;
+}
+
+std::optional<Request> DecodeRequest(std::string_view fields) {
+    Request r;
+    const bool ok = ForEachField(fields, [&r](uint8_t tag, std::string_view b) {
+        uint8_t x = 0;
+        switch (tag) {
+            case kKind:
+                if (!ToU8(b, x) || x < uint8_t(RequestKind::kPreprocess) ||
+                    x > uint8_t(RequestKind::kSelfTest))
+                    return false;
+                r.kind = static_cast<RequestKind>(x);
+                return true;
+            case kStage:
+                if (!ToU8(b, x) || x > uint8_t(pack::Stage::kFragment))
+                    return false;
+                r.stage = static_cast<pack::Stage>(x);
+                return true;
+            case kName:
+                r.name = b;
+                return true;
+            case kSource:
+                r.source = b;
+                return true;
+            case kEntry:
+                r.entry = b;
+                return true;
+            case kIncludeDir:
+                r.include_dirs.emplace_back(b);
+                return true;
+            case kTemplatesDir:
+                r.templates_dir = b;
+                return true;
+            case kDebugInfo:
+                return ToBool(b, r.debug_info);
+            case kOptLevel:
+                return ToU8(b, r.opt_level) && r.opt_level <= 2;
+            case kOptimize:
+                return ToBool(b, r.optimize);
+            case kWords:
+                return ToWords(b, r.words);
+            default:
+                return true;  // a newer sender's field
+        }
+    });
+    return ok ? std::optional<Request>(std::move(r)) : std::nullopt;
+}
+
+std::optional<Response> DecodeResponse(std::string_view fields) {
+    Response r;
+    const bool ok = ForEachField(fields, [&r](uint8_t tag, std::string_view b) {
+        switch (tag) {
+            case kOk:
+                return ToBool(b, r.ok);
+            case kEntryMissing:
+                return ToBool(b, r.entry_missing);
+            case kFailedIn:
+                return ToComponent(b, r.failed_in);
+            case kText:
+                r.text = b;
+                return true;
+            case kInfoLog:
+                r.info_log = b;
+                return true;
+            case kMessages:
+                r.messages = b;
+                return true;
+            case kWords:
+                return ToWords(b, r.words);
+            case kFileRead:
+                r.files_read.emplace_back(b);
+                return true;
+            default:
+                return true;
+        }
+    });
+    return ok ? std::optional<Response>(std::move(r)) : std::nullopt;
+}
+
+std::optional<Component> DecodePhase(std::string_view fields) {
+    std::optional<Component> out;
+    const bool ok = ForEachField(fields, [&out](uint8_t tag, std::string_view b) {
+        Component c{};
+        if (tag != kFailedIn)
+            return true;
+        if (!ToComponent(b, c))
+            return false;
+        out = c;
+        return true;
+    });
+    return ok ? out : std::nullopt;
+}
+
+std::optional<Failure> DecodeFailure(std::string_view fields) {
+    Failure f;
+    const bool ok = ForEachField(fields, [&f](uint8_t tag, std::string_view b) {
+        if (tag == kReason)
+            f.reason = b;
+        else if (tag == kDetail)
+            f.detail = b;
+        return true;
+    });
+    return ok ? std::optional<Failure>(std::move(f)) : std::nullopt;
+}
+
+std::optional<std::string> TakeFrame(std::string& buffer, bool& bad) {
+    bad = false;
+    if (buffer.size() < 4)
+        return std::nullopt;
+    const uint32_t size = GetU32(buffer, 0);
+    if (size > kMaxFrameBytes) {
+        bad = true;
+        return std::nullopt;
+    }
+    if (buffer.size() - 4 < size)
+        return std::nullopt;
+    std::string payload = buffer.substr(4, size);
+    buffer.erase(0, size_t{size} + 4);
+    return payload;
+}
+
+std::string WithLength(const std::string& payload) {
+    std::string out;
+    out.reserve(payload.size() + 4);
+    PutU32(out, static_cast<uint32_t>(payload.size()));
+    out += payload;
+    return out;
+}
+
+}  // namespace kiln::worker

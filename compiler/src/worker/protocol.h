@@ -1,0 +1,95 @@
+// The compile-worker protocol: one request (a program's text and options) in, one response
+// (SPIR-V, glslang's log, SPIRV-Tools' messages) out. The same messages serve the in-process
+// executor, the worker processes (worker/pool.h) and, later, distributed compilation.
+//
+// A frame on the wire is u32 length (little-endian) + payload. A payload is a u32 frame type then
+// fields: u8 tag, u32 size, bytes. Unknown tags are skipped; every read is bounds-checked, since a
+// worker that went wrong may send anything.
+#ifndef KILN_WORKER_PROTOCOL_H_
+#define KILN_WORKER_PROTOCOL_H_
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kiln/pack/format.h"
+
+namespace kiln::worker {
+
+// The largest frame either side accepts (a preprocessed Unity shader is well under 8 MiB).
+inline constexpr uint32_t kMaxFrameBytes = 256u << 20;
+
+enum class RequestKind : uint8_t {
+    kPreprocess = 1,  // glslang's preprocessor over `source` (includes resolved by the worker)
+    kCompile = 2,     // glslang HLSL -> SPIR-V, then SPIRV-Tools legalization and -O/-Os
+    kFinish = 3,      // SPIRV-Tools: strip reflection info from `words`, then spirv-val
+    kValidate = 4,    // spirv-val over `words` (a compile-cache entry)
+    kSelfTest = 5,    // tests of the isolation itself: `source` is crash|hang|allocate|exit
+};
+
+// The third-party component a request was in when it ended (for diagnostics).
+enum class Component : uint8_t { kNone, kGlslangPreprocessor, kGlslang, kSpirvOpt, kSpirvVal };
+const char* ComponentName(Component c);
+
+struct Request {
+    RequestKind kind = RequestKind::kCompile;
+    pack::Stage stage = pack::Stage::kVertex;
+    std::string name;    // the main file's name: its folder is searched for `#include "x"`
+    std::string source;  // program text
+    std::string entry;   // kCompile: the entry point
+    std::vector<std::string> include_dirs;  // -I, in order
+    std::string templates_dir;              // the built-in include library
+    bool debug_info = false;                // kCompile/kFinish: keep debug info (-g)
+    uint8_t opt_level = 1;                  // kCompile: spirv::OptLevel
+    bool optimize = true;                   // kCompile: run SPIRV-Tools after glslang
+    std::vector<uint32_t> words;            // kFinish/kValidate
+};
+
+struct Response {
+    bool ok = false;
+    bool entry_missing = false;  // kCompile: no function named like the entry point
+    Component failed_in = Component::kNone;
+    std::string text;      // kPreprocess: the preprocessed text
+    std::string info_log;  // glslang's messages (frontend/glslang_messages.h reads them)
+    std::string messages;  // SPIRV-Tools' messages when it failed
+    std::vector<uint32_t> words;
+    std::vector<std::string> files_read;  // every include served, for diagnostics and depfiles
+};
+
+// Frame types.
+enum class FrameType : uint32_t {
+    kRequest = 0x4b525131,   // "1QRK"
+    kResponse = 0x4b525331,  // a Response
+    kPhase = 0x4b525031,     // the worker entered a component (field 1: Component), ahead of time
+    kFailure = 0x4b524631,   // the worker cannot go on (field 1: reason: "memory", "exception")
+};
+
+std::string EncodeRequest(const Request& r);
+std::string EncodeResponse(const Response& r);
+std::string EncodePhase(Component c);
+std::string EncodeFailure(std::string_view reason, std::string_view detail);
+
+// A frame's payload split into its type and fields; nullopt when malformed.
+struct Frame {
+    FrameType type{};
+    std::string_view payload;  // fields, after the type
+};
+std::optional<Frame> SplitFrame(std::string_view payload);
+std::optional<Request> DecodeRequest(std::string_view fields);
+std::optional<Response> DecodeResponse(std::string_view fields);
+std::optional<Component> DecodePhase(std::string_view fields);
+struct Failure {
+    std::string reason, detail;
+};
+std::optional<Failure> DecodeFailure(std::string_view fields);
+
+// Length-prefixed framing over a byte buffer: the next complete payload at the front of `buffer`
+// (removed from it), nullopt when incomplete; `bad` is set when the length is over the limit.
+std::optional<std::string> TakeFrame(std::string& buffer, bool& bad);
+std::string WithLength(const std::string& payload);
+
+}  // namespace kiln::worker
+
+#endif  // KILN_WORKER_PROTOCOL_H_

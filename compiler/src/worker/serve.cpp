@@ -1,0 +1,211 @@
+// The worker process's side (kiln/compile_worker.h): read a request, run it on a deep stack,
+// answer; exit on end-of-file, when the parent dies, or after anything that may have left the
+// third-party libraries' global state damaged (an exhausted allocation, an exception).
+#include "kiln/compile_worker.h"
+
+#include <pthread.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "worker/execute.h"
+#include "worker/protocol.h"
+
+namespace kiln {
+namespace {
+
+using worker::Component;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+struct Args {
+    int fd = -1;
+    uint64_t memory_limit = 0;
+    uint64_t stack = uint64_t{256} << 20;
+};
+
+bool ParseArgs(int argc, char** argv, Args& a) {
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string flag = argv[i];
+        char* end = nullptr;
+        errno = 0;
+        const unsigned long long v = std::strtoull(argv[i + 1], &end, 10);
+        if (errno != 0 || end == argv[i + 1] || *end != '\0')
+            return false;
+        if (flag == "--fd" && v < 1024)
+            a.fd = static_cast<int>(v);
+        else if (flag == "--memory-limit")
+            a.memory_limit = v;
+        else if (flag == "--stack" && v >= (1u << 20))
+            a.stack = v;
+        else
+            return false;
+    }
+    return a.fd >= 0;
+}
+
+bool Send(int fd, const std::string& payload) {
+    const std::string bytes = worker::WithLength(payload);
+    size_t at = 0;
+    while (at < bytes.size()) {
+        const ssize_t n = send(fd, bytes.data() + at, bytes.size() - at, MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        at += static_cast<size_t>(n);
+    }
+    return true;
+}
+
+// The next request's payload; nullopt at end-of-file or on a read error.
+std::optional<std::string> Receive(int fd, std::string& buffer) {
+    char chunk[1 << 16];
+    for (;;) {
+        bool bad = false;
+        if (auto payload = worker::TakeFrame(buffer, bad))
+            return payload;
+        if (bad)
+            return std::nullopt;
+        const ssize_t n = recv(fd, chunk, sizeof chunk, 0);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return std::nullopt;
+        buffer.append(chunk, static_cast<size_t>(n));
+    }
+}
+
+// Requests that test the isolation itself (worker_test.cpp): they do what a broken compiler does.
+[[noreturn]] void SelfTest(const std::string& what) {
+    if (what == "hang") {
+        for (;;)
+            pause();
+    }
+    if (what == "allocate") {
+        std::vector<std::vector<char>> hog;
+        for (;;)
+            hog.emplace_back(size_t{64} << 20, '\1');  // touched: resident, not just reserved
+    }
+    if (what == "exit")
+        std::_Exit(7);
+    raise(SIGSEGV);
+    std::abort();
+}
+
+int Serve(int fd) {
+    hlsl::FileCache files;
+    std::string buffer;
+    for (;;) {
+        const std::optional<std::string> payload = Receive(fd, buffer);
+        if (!payload)
+            return 0;  // the parent closed its end
+        const auto frame = worker::SplitFrame(*payload);
+        std::optional<worker::Request> request;
+        if (frame && frame->type == worker::FrameType::kRequest)
+            request = worker::DecodeRequest(frame->payload);
+        if (!request) {
+            Send(fd, worker::EncodeFailure("protocol", "a malformed request"));
+            return 2;
+        }
+        if (request->kind == worker::RequestKind::kSelfTest)
+            SelfTest(request->source);
+        worker::ExecuteContext context{files, [fd](Component c) {
+                                           if (c != Component::kNone)
+                                               Send(fd, worker::EncodePhase(c));
+                                       }};
+        try {
+            if (!Send(fd, worker::EncodeResponse(worker::Execute(*request, context))))
+                return 0;
+        } catch (const std::bad_alloc&) {
+            Send(fd, worker::EncodeFailure("memory", "an allocation failed"));
+            return 3;
+        } catch (const std::exception& e) {
+            Send(fd, worker::EncodeFailure("exception", e.what()));
+            return 4;
+        }
+    }
+}
+
+struct ThreadArgs {
+    int fd;
+    int rc;
+};
+
+void* ServeThread(void* p) {
+    auto* a = static_cast<ThreadArgs*>(p);
+    a->rc = Serve(a->fd);
+    return nullptr;
+}
+
+void LimitResources(const Args& a) {
+    const rlimit no_core{0, 0};
+    setrlimit(RLIMIT_CORE, &no_core);
+    // The parent kills a worker whose resident memory passes the limit; the address-space limit
+    // is the backstop for an allocation too fast to be seen (not under AddressSanitizer, whose
+    // shadow memory is terabytes of address space).
+    if (!kAddressSanitizer && a.memory_limit > 0) {
+        const uint64_t slack = uint64_t{1} << 30;
+        const rlim_t as = static_cast<rlim_t>(a.memory_limit * 2 + a.stack + slack);
+        const rlimit limit{as, as};
+        setrlimit(RLIMIT_AS, &limit);
+    }
+}
+
+}  // namespace
+
+int RunCompileWorker(int argc, char** argv) {
+    Args args;
+    if (!ParseArgs(argc, argv, args)) {
+        std::fprintf(stderr,
+                     "kiln-worker: a compile worker started by kiln; usage: kiln-worker --fd N "
+                     "[--memory-limit BYTES] [--stack BYTES]\n");
+        return 2;
+    }
+    // Never outlive the compile, even when a request hangs. (PR_SET_PDEATHSIG would fire when
+    // the parent's spawning thread ends, not the parent.)
+    const pid_t parent = getppid();
+    std::thread([parent] {
+        while (getppid() == parent)
+            std::this_thread::sleep_for(std::chrono::milliseconds(500));
+        std::_Exit(0);
+    }).detach();
+    LimitResources(args);
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setstacksize(&attr, static_cast<size_t>(args.stack));
+    ThreadArgs targs{args.fd, 0};
+    pthread_t thread;
+    if (pthread_create(&thread, &attr, ServeThread, &targs) != 0) {
+        std::fprintf(stderr, "kiln-worker: cannot start a thread with a %llu-byte stack\n",
+                     static_cast<unsigned long long>(args.stack));
+        return 2;
+    }
+    pthread_join(thread, nullptr);
+    pthread_attr_destroy(&attr);
+    return targs.rc;
+}
+
+}  // namespace kiln
