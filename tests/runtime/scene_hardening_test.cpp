@@ -43,17 +43,36 @@ struct Loaded {
     std::vector<std::string> warnings;
 };
 
-Loaded Load(const json& gltf) {
+fs::path ScratchDir() {
     const fs::path dir = fs::temp_directory_path() / "kiln_scene_hardening";
     fs::create_directories(dir);
-    const fs::path file = dir / (std::string(::testing::UnitTest::GetInstance()
-                                                 ->current_test_info()
-                                                 ->name()) +
-                                 ".gltf");
-    std::ofstream(file) << gltf.dump();
+    return dir;
+}
+
+Loaded LoadFile(const fs::path& file) {
     Loaded out;
     out.error = runtime::LoadGltf(file.string(), out.scene, out.warnings);
     return out;
+}
+
+// Writes `text` as <test name><extension> and loads it.
+Loaded LoadText(const std::string& text, const std::string& extension = ".gltf") {
+    const fs::path file =
+        ScratchDir() /
+        (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + extension);
+    std::ofstream(file, std::ios::binary) << text;
+    return LoadFile(file);
+}
+
+Loaded Load(const json& gltf) {
+    return LoadText(gltf.dump());
+}
+
+std::string AllWarnings(const Loaded& l) {
+    std::string all;
+    for (const std::string& w : l.warnings)
+        all += w + "\n";
+    return all;
 }
 
 TEST(GltfHardening, TheTriangleLoads) {
@@ -81,9 +100,7 @@ TEST(GltfHardening, AttributeIndicesOutOfRangeAreReportedNotFollowed) {
     g["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = -5;
     const Loaded l = Load(g);
     ASSERT_FALSE(l.error) << l.error->message;
-    std::string all;
-    for (const std::string& w : l.warnings)
-        all += w + "\n";
+    const std::string all = AllWarnings(l);
     EXPECT_NE(all.find("attribute COLOR_0 ignored: accessor 100000000 does not exist"),
               std::string::npos)
         << all;
@@ -149,6 +166,113 @@ TEST(GltfHardening, SharedChildrenAndCyclesAreErrors) {
     EXPECT_NE(l.error->message.find("node 1 is a scene root and a child of node 0"),
               std::string::npos)
         << l.error->message;
+}
+
+// tinygltf's JSON parser recurses once per level: 100,000 levels of extras crashed it.
+TEST(GltfHardening, JsonNestedTooDeepIsRejectedBeforeParsing) {
+    std::string text = Triangle().dump();
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    text.insert(1, "\"extras\": " + deep + ", ");
+    Loaded l = LoadText(text);
+    ASSERT_TRUE(l.error);
+    EXPECT_EQ(l.error->kind, runtime::ErrorKind::kScene);
+    EXPECT_NE(l.error->message.find("JSON nested more than 128 deep"), std::string::npos)
+        << l.error->message;
+    // Brackets inside strings do not count, and 100 levels are fine.
+    text = Triangle().dump();
+    text.insert(1, "\"extras\": {\"s\": \"" + std::string(1000, '[') + "\", \"a\": " +
+                       std::string(100, '[') + std::string(100, ']') + "}, ");
+    l = LoadText(text);
+    EXPECT_FALSE(l.error) << l.error->message;
+}
+
+TEST(GltfHardening, TheJsonChunkOfABinaryFileIsCheckedToo) {
+    const std::string json_text = "{\"asset\": " + std::string(1000, '[') +
+                                  std::string(1000, ']') + "}";
+    std::string chunk = json_text;
+    while (chunk.size() % 4 != 0)
+        chunk += ' ';
+    auto u32 = [](uint32_t x) {
+        std::string s;
+        for (int i = 0; i < 4; ++i)
+            s += char(x >> (8 * i));
+        return s;
+    };
+    const std::string glb = "glTF" + u32(2) + u32(uint32_t(20 + chunk.size())) +
+                            u32(uint32_t(chunk.size())) + "JSON" + chunk;
+    const Loaded l = LoadText(glb, ".glb");
+    ASSERT_TRUE(l.error);
+    EXPECT_NE(l.error->message.find("JSON nested more than 128 deep"), std::string::npos)
+        << l.error->message;
+}
+
+// A buffer uri naming a directory was read as a file of its "size": std::bad_alloc.
+TEST(GltfHardening, BufferUrisMustNameRegularFiles) {
+    const fs::path dir = ScratchDir() / "a_directory";
+    fs::create_directories(dir);
+    json g = Triangle();
+    g["buffers"][0]["uri"] = "a_directory";
+    Loaded l = Load(g);
+    ASSERT_TRUE(l.error);
+    EXPECT_NE(l.error->message.find("is a directory, not a regular file"), std::string::npos)
+        << l.error->message;
+    // glTF uris are relative: a link beside the file stands for a device a uri could reach.
+    std::error_code ec;
+    fs::remove(ScratchDir() / "zero_link", ec);
+    fs::create_symlink("/dev/zero", ScratchDir() / "zero_link");
+    g["buffers"][0]["uri"] = "zero_link";
+    l = Load(g);
+    ASSERT_TRUE(l.error);
+    EXPECT_NE(l.error->message.find("is a character device"), std::string::npos)
+        << l.error->message;
+}
+
+TEST(GltfHardening, AScenePathThatIsNotARegularFileIsAnError) {
+    Loaded l = LoadFile(ScratchDir());
+    ASSERT_TRUE(l.error);
+    EXPECT_EQ(l.error->kind, runtime::ErrorKind::kScene);
+    EXPECT_NE(l.error->message.find("is a directory"), std::string::npos) << l.error->message;
+    l = LoadFile("/dev/zero");
+    ASSERT_TRUE(l.error);
+    EXPECT_NE(l.error->message.find("is a character device"), std::string::npos)
+        << l.error->message;
+}
+
+// A PNG whose header declares 100000 x 100000 pixels would ask for 40 GB: stb_image refuses to
+// decode more than 1 GiB, and the load fails with tinygltf's message instead of allocating.
+TEST(GltfHardening, ImagesDeclaringTooManyPixelsAreNotDecoded) {
+    auto be32 = [](uint32_t x) {
+        std::string s;
+        for (int i = 3; i >= 0; --i)
+            s += char(x >> (8 * i));
+        return s;
+    };
+    // Signature, then an IHDR chunk: stb_image reads the size before any CRC or data.
+    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be32(13) + "IHDR" +
+                            be32(100000) + be32(100000) + std::string("\x08\x06\0\0\0", 5) +
+                            be32(0) + be32(0) + "IEND" + be32(0);
+    std::ofstream(ScratchDir() / "bomb.png", std::ios::binary) << png;
+    json g = Triangle();
+    g["images"] = {{{"uri", "bomb.png"}}};
+    const Loaded l = Load(g);
+    ASSERT_TRUE(l.error);
+    EXPECT_NE(l.error->message.find("cannot decode image data for image[0]"), std::string::npos)
+        << l.error->message;
+}
+
+// A sidecar that named /dev/zero as a material file read without end.
+TEST(GltfHardening, SidecarsAreBoundedRegularFiles) {
+    runtime::Scene scene;
+    auto e = runtime::LoadMaterialSidecar("/dev/zero", scene);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("is a character device"), std::string::npos) << e->message;
+    const fs::path deep = ScratchDir() / "deep.kiln.json";
+    std::ofstream(deep) << "{\"description\": " << std::string(5000, '[')
+                        << std::string(5000, ']') << "}";
+    e = runtime::LoadMaterialSidecar(deep.string(), scene);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("JSON nested more than 128 deep"), std::string::npos)
+        << e->message;
 }
 
 }  // namespace

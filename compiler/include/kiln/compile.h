@@ -122,9 +122,6 @@ std::string DefaultCacheDir();
 // "kiln 0.2.0; glslang 12.0.0; SPIRV-Tools v2023.1".
 std::string ProducerVersion();
 
-// Writes `bytes` to `path` atomically: a temporary file in the same directory, then rename.
-Result<bool> WriteFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes);
-
 }  // namespace kiln
 
 #endif  // KILN_COMPILE_H_

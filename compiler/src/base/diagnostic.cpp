@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "kiln/base/text.h"
+
 namespace kiln {
 
 std::string FormatDiagCode(DiagCode code) {
@@ -72,26 +74,6 @@ const SourceFile* FindSource(const std::vector<const SourceFile*>& sources,
     return nullptr;
 }
 
-// Length of the valid UTF-8 sequence starting at s[i], or 0 when it is not valid.
-size_t Utf8Length(std::string_view s, size_t i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const size_t n = c < 0x80           ? 1
-                     : (c >> 5) == 0x6  ? 2
-                     : (c >> 4) == 0xe  ? 3
-                     : (c >> 3) == 0x1e ? 4
-                                        : 0;
-    if (n == 0 || i + n > s.size() || c == 0xc0 || c == 0xc1 ||
-        (c == 0xc2 && static_cast<unsigned char>(s[i + 1]) < 0xa0)) {
-        return 0;  // invalid, overlong, or a C1 control character
-    }
-    for (size_t k = 1; k < n; ++k) {
-        if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) {
-            return 0;
-        }
-    }
-    return n;
-}
-
 // Appends " 12 | text\n    |   ^~~~\n" for a range that starts on a known line. Control bytes and
 // invalid UTF-8 are shown as '?', and long lines are cut to a window around the caret, so that
 // binary input never reaches the terminal and the caret stays aligned.
@@ -123,7 +105,7 @@ void AppendSnippet(std::string& out,
     }
     width = std::min(width, line.size() > col ? line.size() - col : 1);
     for (size_t i = 0; i < line.size();) {
-        const size_t n = Utf8Length(line, i);
+        const size_t n = base::Utf8SequenceLength(line, i);
         const auto c = static_cast<unsigned char>(line[i]);
         const bool printable = n > 1 || c == '\t' || (c >= 0x20 && c < 0x7f);
         const size_t step = n > 1 ? n : 1;
@@ -161,7 +143,7 @@ void AppendHeader(std::string& out,
                   bool color) {
     if (color)
         out += "\033[1m";
-    out += file.empty() ? "kiln" : file;
+    out += file.empty() ? "kiln" : base::EscapeForTerminal(file);
     if (range.begin.line > 0) {
         out += ":" + std::to_string(range.begin.line) + ":" + std::to_string(range.begin.column);
     }
@@ -170,7 +152,7 @@ void AppendHeader(std::string& out,
         out += SeverityColor(severity);
     out += severity;
     out += color ? ":\033[0m\033[1m " : ": ";
-    out += message;
+    out += base::EscapeForTerminal(message);
     if (color)
         out += "\033[0m";
 }

@@ -1,10 +1,9 @@
 #include "kiln/source.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <memory>
+
+#include "kiln/base/files.h"
 
 namespace kiln {
 
@@ -39,24 +38,10 @@ std::string_view SourceFile::Line(uint32_t line) const {
 }
 
 Result<SourceFile> ReadSourceFile(const std::string& path) {
-    std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) {
-        return Error{"cannot open '" + path + "': " + std::strerror(errno)};
-    }
-    std::string text;
-    char buf[65536];
-    size_t n = 0;
-    while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) {
-        if (text.size() + n > kMaxSourceFileBytes) {
-            return Error{"'" + path + "' is larger than the " +
-                         std::to_string(kMaxSourceFileBytes >> 20) + " MiB limit"};
-        }
-        text.append(buf, n);
-    }
-    if (std::ferror(f.get())) {
-        return Error{"cannot read '" + path + "': " + std::strerror(errno)};
-    }
-    return SourceFile(path, std::move(text));
+    Result<std::string> text = base::ReadRegularFile(path, kMaxSourceFileBytes);
+    if (!text)
+        return text.error();
+    return SourceFile(path, std::move(text).value());
 }
 
 }  // namespace kiln

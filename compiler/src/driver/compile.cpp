@@ -518,30 +518,4 @@ std::string ProducerVersion() {
            "; SPIRV-Tools " + spirv::SpirvToolsVersion();
 }
 
-Result<bool> WriteFileAtomic(const std::string& path, const std::vector<uint8_t>& bytes) {
-    static std::atomic<uint64_t> counter{0};
-    const std::string tmp =
-        path + ".tmp." + std::to_string(getpid()) + "." + std::to_string(counter++);
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            return Error{"cannot create '" + tmp + "'"};
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            return Error{"cannot write '" + tmp + "'"};
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        return Error{"cannot rename the output into place at '" + path + "': " + ec.message()};
-    }
-    return true;
-}
-
 }  // namespace kiln

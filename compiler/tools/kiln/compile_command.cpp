@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "kiln/base/files.h"
 #include "kiln/compile.h"
 #include "kiln/runtime/scene.h"
 
@@ -252,15 +253,32 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                     std::fputs("\r\033[K", stderr);
             };
         }
+        // gcc's rule: an output that is an input, a directory or a device is refused before any
+        // work (and again when written, against every file the compile read).
+        std::vector<std::string> inputs = o->flags.materials;
+        inputs.insert(inputs.end(), o->files.begin(), o->files.end());
+        const std::string dep_path = o->mf.empty() ? o->output + ".d" : o->mf;
+        std::vector<std::string> outputs = {o->output};
+        if (o->md || !o->mf.empty())
+            outputs.push_back(dep_path);
+        for (const std::string& output : outputs) {
+            if (Result<std::string> ok = base::CheckOutputPath(output, inputs); !ok) {
+                diags.Error(DiagCode::kCannotWriteFile, output, kNoPosition, ok.error().message);
+                PrintDiagnostics(diags, {}, global);
+                return ExitCodeFor(diags);
+            }
+        }
         CompileOutput out = CompileShaders(o->files, options, diags);
+        for (const auto& f : out.files)
+            inputs.push_back(f->path());
         if (out.ok) {
-            Result<bool> written = WriteFileAtomic(o->output, out.pack);
+            Result<bool> written = base::WriteFileAtomically(
+                o->output, std::span<const uint8_t>(out.pack.data(), out.pack.size()), inputs);
             if (!written) {
                 diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition, written.error().message);
             }
         }
         if (out.ok && !diags.has_errors() && (o->md || !o->mf.empty())) {
-            const std::string dep_path = o->mf.empty() ? o->output + ".d" : o->mf;
             std::string text = DepfileEscape(o->output) + ":";
             for (const auto& f : out.files) {
                 text +=
@@ -268,8 +286,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                     DepfileEscape(std::filesystem::absolute(f->path()).lexically_normal().string());
             }
             text += "\n";
-            Result<bool> written =
-                WriteFileAtomic(dep_path, std::vector<uint8_t>(text.begin(), text.end()));
+            Result<bool> written = base::WriteFileAtomically(dep_path, text, inputs);
             if (!written) {
                 diags.Error(DiagCode::kCannotWriteFile, dep_path, kNoPosition, written.error().message);
             }

@@ -18,11 +18,11 @@ namespace kiln::cli {
 void PrintDiagnostics(const DiagnosticList& diags,
                       const std::vector<const SourceFile*>& sources,
                       const GlobalOptions& global) {
-    if (global.diag_format == DiagFormat::kJson) {
-        std::fprintf(stderr, "%s\n", FormatDiagnosticsJson(diags).c_str());
-    } else {
-        std::fputs(FormatDiagnosticsText(diags, sources, global.color).c_str(), stderr);
-    }
+    // Written whole: the text is escaped (kiln/base/text.h), and even so a NUL must not end it.
+    const std::string text = global.diag_format == DiagFormat::kJson
+                                 ? FormatDiagnosticsJson(diags) + "\n"
+                                 : FormatDiagnosticsText(diags, sources, global.color);
+    std::fwrite(text.data(), 1, text.size(), stderr);
 }
 
 int ReportError(const GlobalOptions& global,

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "kiln/base/files.h"
 #include "kiln/material/material.h"
 #include "kiln/pack/reader.h"
 #include "kiln/source.h"
@@ -121,8 +122,7 @@ std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global) {
             return ReportError(global, DiagCode::kCannotWriteFile, output,
                                "file exists; pass --force to overwrite");
         }
-        Result<bool> written =
-            WriteFileAtomic(output, std::vector<uint8_t>(text.begin(), text.end()));
+        Result<bool> written = base::WriteFileAtomically(output, text);
         if (!written)
             return ReportError(global, DiagCode::kCannotWriteFile, output, written.error().message);
         std::printf("wrote %s (shader \"%s\", %s scaffold)\n", output.c_str(), args->name.c_str(),

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "kiln/base/files.h"
 #include "kiln/pack/names.h"
 #include "kiln/pack/reader.h"
 
@@ -294,7 +295,8 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
         const VariantRec v = pack.Variant(*variant);
         const bool vert = o->stage[0] == 'v';
         const auto bytes = pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module));
-        Result<bool> written = WriteFileAtomic(o->output, {bytes.begin(), bytes.end()});
+        Result<bool> written = base::WriteFileAtomically(
+            o->output, std::span<const uint8_t>(bytes.data(), bytes.size()), {o->file});
         if (!written)
             return ReportError(global, DiagCode::kCannotWriteFile, o->output,
                                written.error().message);

@@ -1,5 +1,6 @@
-// Writing output files so that a reader never sees half of one: the bytes go to "<path>.tmp",
-// which is then renamed over `path` (atomic on POSIX file systems).
+// The runtime's outputs (images, usage logs, pipeline caches) through kiln/base/files.h: unique
+// temporary file, fsync, rename; never a device, FIFO or directory. This adapter only turns the
+// result into the runtime's error value.
 #ifndef KILN_RUNTIME_BASE_ATOMIC_FILE_H_
 #define KILN_RUNTIME_BASE_ATOMIC_FILE_H_
 

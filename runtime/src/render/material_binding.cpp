@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+
+#include "kiln/base/files.h"
+#include "scene/gltf_input.h"
 
 namespace kiln::render {
 namespace {
@@ -91,12 +92,10 @@ std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const p
                                                        const std::string& path,
                                                        const runtime::ColorPipeline& color,
                                                        MaterialInstance& out) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        return runtime::Error{path + ": cannot open the material file"};
+    Result<std::string> text = base::ReadRegularFile(path, runtime::kMaxSidecarBytes);
+    if (!text) {
+        return runtime::Error{text.error().message};
     }
-    std::stringstream text;
-    text << in.rdbuf();
     material::Material mat;
     std::vector<material::MaterialIssue> issues;
     auto first_error = [&]() -> std::optional<runtime::Error> {
@@ -108,7 +107,7 @@ std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const p
         }
         return std::nullopt;
     };
-    if (!material::ParseMaterial(text.str(), mat, issues)) {
+    if (!material::ParseMaterial(text.value(), mat, issues)) {
         if (auto e = first_error()) {
             return e;
         }

@@ -15,6 +15,7 @@
 #include <filesystem>
 
 #include "scene/accessors.h"
+#include "scene/gltf_input.h"
 #include "scene/node_tree.h"
 
 namespace kiln::runtime {
@@ -258,20 +259,13 @@ std::optional<Error> LoadGltf(const std::string& path,
                               Scene& out,
                               std::vector<std::string>& warnings) {
     tinygltf::Model model;
-    tinygltf::TinyGLTF loader;
-    std::string err, warn;
-    const bool binary = std::filesystem::path(path).extension() == ".glb";
-    if (!std::filesystem::exists(path)) {
-        return Error{path + ": no such file", ErrorKind::kScene};
-    }
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    std::string warn;
+    const std::optional<Error> failed = LoadGltfModel(path, model, warn);
     if (!warn.empty()) {
         warnings.push_back(path + ": " + warn);
     }
-    if (!ok) {
-        return Error{path + ": " + (err.empty() ? std::string("not a glTF file") : err),
-                     ErrorKind::kScene};
+    if (failed) {
+        return failed;
     }
     Scene scene;
     scene.path = path;
@@ -395,7 +389,8 @@ std::optional<Error> LoadGltf(const std::string& path,
     }
     const std::filesystem::path sidecar =
         std::filesystem::path(path).replace_extension(".kiln.json");
-    if (std::filesystem::exists(sidecar)) {
+    std::error_code ec;
+    if (std::filesystem::exists(sidecar, ec)) {
         if (auto e = LoadMaterialSidecar(sidecar.string(), scene)) {
             return e;
         }

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "kiln/runtime/scene.h"
+
+#include "kiln/base/files.h"
+#include "scene/gltf_input.h"
 
 namespace kiln::runtime {
 
@@ -69,11 +71,14 @@ void GenerateTangents(Primitive& p) {
 }
 
 std::optional<Error> LoadMaterialSidecar(const std::string& path, Scene& scene) {
-    std::ifstream in(path);
-    if (!in) {
-        return Error{path + ": cannot open the material sidecar"};
+    Result<std::string> text = base::ReadRegularFile(path, kMaxSidecarBytes);
+    if (!text) {
+        return Error{text.error().message};
     }
-    nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (JsonDepth(text.value(), kMaxJsonDepth) > kMaxJsonDepth) {
+        return Error{path + ": JSON nested more than " + std::to_string(kMaxJsonDepth) + " deep"};
+    }
+    nlohmann::json doc = nlohmann::json::parse(text.value(), nullptr, /*allow_exceptions=*/false);
     if (doc.is_discarded() || !doc.is_object()) {
         return Error{path + ": not a JSON object"};
     }

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "base/atomic_file.h"
+#include "kiln/base/files.h"
 #include "kiln/pack/records.h"
 
 namespace kiln::vk {
@@ -80,10 +81,13 @@ std::optional<runtime::Error> CreatePipelineCache(const Context& c,
                                                   std::string& note) {
     std::vector<uint8_t> file;
     std::span<const uint8_t> data;
-    if (!path.empty() && std::filesystem::exists(path)) {
-        std::ifstream in(path, std::ios::binary);
-        file.assign(std::istreambuf_iterator<char>(in), {});
-        note = CheckPipelineCacheFile(c, file, data);
+    std::error_code ec;
+    if (!path.empty() && std::filesystem::exists(path, ec)) {
+        constexpr uint64_t kMaxPipelineCacheBytes = uint64_t{1} << 30;
+        Result<std::string> read = base::ReadRegularFile(path, kMaxPipelineCacheBytes);
+        if (read)
+            file.assign(read.value().begin(), read.value().end());
+        note = read ? CheckPipelineCacheFile(c, file, data) : read.error().message;
         if (!note.empty()) {
             note = "pipeline cache '" + path + "' ignored: " + note;
             data = {};

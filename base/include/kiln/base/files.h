@@ -1,0 +1,43 @@
+// Reading inputs and writing outputs the way every part of Kiln must (docs/architecture.md, "Files"):
+// inputs are regular files of bounded size, opened so that a FIFO or device never blocks or
+// streams without end; outputs replace a regular file atomically (a unique temporary file in the
+// same directory, fsync, rename, fsync of the directory), never a device, FIFO or directory, and
+// never one of the inputs.
+#ifndef KILN_BASE_FILES_H_
+#define KILN_BASE_FILES_H_
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "kiln/result.h"
+
+namespace kiln::base {
+
+// The whole of a regular file of at most `max_bytes`. The error says what the path is when it is
+// not a regular file ("is a directory", "is a FIFO"), or that it is over the limit.
+Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes);
+
+// Writes `bytes` to `path` atomically. `inputs` are the files the output was made from: an output
+// that is one of them (the same file, by device and inode) is refused. An output that is a
+// symbolic link is written through: the file it points to is replaced and the link is kept.
+Result<bool> WriteFileAtomically(const std::string& path,
+                                 std::span<const uint8_t> bytes,
+                                 const std::vector<std::string>& inputs = {});
+Result<bool> WriteFileAtomically(const std::string& path,
+                                 std::string_view text,
+                                 const std::vector<std::string>& inputs = {});
+
+// The checks WriteFileAtomically makes before it writes, for a command that wants to refuse a bad
+// output before doing the work: `path` (or the file its symbolic link names) is absent or a
+// regular file, and none of `inputs`. Gives the file that will be replaced.
+Result<std::string> CheckOutputPath(const std::string& path, const std::vector<std::string>& inputs);
+
+// "a directory", "a FIFO", "a character device", ... for a path that exists but is no regular
+// file; "" for a regular file or a path that does not exist.
+std::string NotRegularFileKind(const std::string& path);
+
+}  // namespace kiln::base
+
+#endif  // KILN_BASE_FILES_H_

@@ -1,0 +1,22 @@
+// Text from inputs shown to a person: what a diagnostic echoes from a file (a name, a line) may be
+// binary. Escaped, it can neither cut the output short (a NUL), nor drive the terminal (ESC and
+// other control bytes), nor be invalid UTF-8.
+#ifndef KILN_BASE_TEXT_H_
+#define KILN_BASE_TEXT_H_
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace kiln::base {
+
+// Length of the valid UTF-8 sequence at s[i] that is not a C1 control character, else 0.
+size_t Utf8SequenceLength(std::string_view s, size_t i);
+
+// Printable ASCII and valid UTF-8 are kept; a tab is kept; every other byte (NUL, ESC and the other
+// C0/C1 controls, DEL, bytes of invalid UTF-8) becomes \xNN.
+std::string EscapeForTerminal(std::string_view s);
+
+}  // namespace kiln::base
+
+#endif  // KILN_BASE_TEXT_H_

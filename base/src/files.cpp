@@ -1,0 +1,217 @@
+#include "kiln/base/files.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <random>
+#include <utility>
+
+namespace kiln::base {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string Errno(const std::string& what) {
+    return what + ": " + std::strerror(errno);
+}
+
+std::string KindOf(mode_t mode) {
+    if (S_ISDIR(mode))
+        return "a directory";
+    if (S_ISFIFO(mode))
+        return "a FIFO";
+    if (S_ISCHR(mode))
+        return "a character device";
+    if (S_ISBLK(mode))
+        return "a block device";
+    if (S_ISSOCK(mode))
+        return "a socket";
+    return S_ISREG(mode) ? "" : "not a regular file";
+}
+
+class Fd {
+  public:
+    explicit Fd(int fd) : fd_(fd) {}
+    ~Fd() {
+        if (fd_ >= 0)
+            close(fd_);
+    }
+    Fd(const Fd&) = delete;
+    Fd& operator=(const Fd&) = delete;
+    int get() const { return fd_; }
+    int release() { return std::exchange(fd_, -1); }
+
+  private:
+    int fd_;
+};
+
+bool WriteAll(int fd, const uint8_t* data, size_t size) {
+    while (size > 0) {
+        const ssize_t n = write(fd, data, size);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        data += n;
+        size -= static_cast<size_t>(n);
+    }
+    return true;
+}
+
+// The file an output path names: a symbolic link's target (followed to the end), else the path.
+Result<std::string> OutputTarget(const std::string& path) {
+    std::string target = path;
+    for (int hops = 0; hops < 40; ++hops) {
+        struct stat st {};
+        if (lstat(target.c_str(), &st) != 0)
+            return target;  // does not exist (yet): it will be created
+        if (!S_ISLNK(st.st_mode))
+            return target;
+        std::error_code ec;
+        const fs::path link = fs::read_symlink(target, ec);
+        if (ec)
+            return Error{"cannot read the symbolic link '" + target + "': " + ec.message()};
+        target = (link.is_absolute() ? link : fs::path(target).parent_path() / link).string();
+    }
+    return Error{"'" + path + "' is a loop of symbolic links"};
+}
+
+std::string TempName(const std::string& target) {
+    static std::atomic<uint64_t> counter{0};
+    static const uint64_t seed = std::random_device{}();
+    return target + ".tmp." + std::to_string(getpid()) + "." +
+           std::to_string(seed ^ (counter++ * 0x9e3779b97f4a7c15ull));
+}
+
+}  // namespace
+
+std::string NotRegularFileKind(const std::string& path) {
+    struct stat st {};
+    if (stat(path.c_str(), &st) != 0)
+        return "";
+    return KindOf(st.st_mode);
+}
+
+Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes) {
+    // O_NONBLOCK: opening a FIFO for reading must not wait for a writer.
+    Fd fd(open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
+    if (fd.get() < 0)
+        return Error{Errno("cannot open '" + path + "'")};
+    struct stat st {};
+    if (fstat(fd.get(), &st) != 0)
+        return Error{Errno("cannot read '" + path + "'")};
+    if (!S_ISREG(st.st_mode))
+        return Error{"'" + path + "' is " + KindOf(st.st_mode) + ", not a regular file"};
+    if (static_cast<uint64_t>(st.st_size) > max_bytes) {
+        return Error{"'" + path + "' is larger than the limit of " + std::to_string(max_bytes) +
+                     " bytes"};
+    }
+    std::string out;
+    out.resize(static_cast<size_t>(st.st_size));
+    size_t at = 0;
+    // The size is re-checked while reading: a file that grows is still read only to the limit.
+    for (;;) {
+        if (at == out.size()) {
+            if (out.size() >= max_bytes + 1)
+                break;
+            out.resize(std::min<uint64_t>(max_bytes + 1, out.size() + 65536));
+        }
+        const ssize_t n = read(fd.get(), out.data() + at, out.size() - at);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0)
+            return Error{Errno("cannot read '" + path + "'")};
+        if (n == 0)
+            break;
+        at += static_cast<size_t>(n);
+    }
+    if (at > max_bytes) {
+        return Error{"'" + path + "' is larger than the limit of " + std::to_string(max_bytes) +
+                     " bytes"};
+    }
+    out.resize(at);
+    return out;
+}
+
+Result<std::string> CheckOutputPath(const std::string& path,
+                                    const std::vector<std::string>& inputs) {
+    Result<std::string> resolved = OutputTarget(path);
+    if (!resolved)
+        return resolved;
+    struct stat existing {};
+    if (stat(resolved.value().c_str(), &existing) != 0)
+        return resolved;  // to be created
+    if (!S_ISREG(existing.st_mode)) {
+        return Error{"the output '" + path + "' is " + KindOf(existing.st_mode) +
+                     "; kiln writes only regular files"};
+    }
+    for (const std::string& input : inputs) {
+        struct stat in {};
+        if (stat(input.c_str(), &in) == 0 && in.st_dev == existing.st_dev &&
+            in.st_ino == existing.st_ino) {
+            return Error{"the output '" + path + "' is the input '" + input +
+                         "'; refusing to overwrite it"};
+        }
+    }
+    return resolved;
+}
+
+Result<bool> WriteFileAtomically(const std::string& path,
+                                 std::span<const uint8_t> bytes,
+                                 const std::vector<std::string>& inputs) {
+    Result<std::string> checked = CheckOutputPath(path, inputs);
+    if (!checked)
+        return checked.error();
+    const std::string& target = checked.value();
+    struct stat existing {};
+    const bool exists = stat(target.c_str(), &existing) == 0;
+    std::string temp;
+    int raw = -1;
+    for (int attempt = 0; attempt < 100 && raw < 0; ++attempt) {
+        temp = TempName(target);
+        raw = open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (raw < 0 && errno != EEXIST)
+            return Error{Errno("cannot create a file beside '" + path + "'")};
+    }
+    if (raw < 0)
+        return Error{"cannot create a temporary file beside '" + path + "'"};
+    Fd fd(raw);
+    if (exists)
+        fchmod(fd.get(), existing.st_mode & 07777);
+    if (!WriteAll(fd.get(), bytes.data(), bytes.size()) || fsync(fd.get()) != 0) {
+        const std::string why = Errno("cannot write '" + path + "'");
+        unlink(temp.c_str());
+        return Error{why};
+    }
+    if (close(fd.release()) != 0) {
+        const std::string why = Errno("cannot write '" + path + "'");
+        unlink(temp.c_str());
+        return Error{why};
+    }
+    if (rename(temp.c_str(), target.c_str()) != 0) {
+        const std::string why = Errno("cannot move the output into place at '" + path + "'");
+        unlink(temp.c_str());
+        return Error{why};
+    }
+    // The rename itself is durable once the directory is.
+    std::string dir = fs::path(target).parent_path().string();
+    Fd dfd(open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (dfd.get() >= 0)
+        fsync(dfd.get());
+    return true;
+}
+
+Result<bool> WriteFileAtomically(const std::string& path,
+                                 std::string_view text,
+                                 const std::vector<std::string>& inputs) {
+    return WriteFileAtomically(
+        path, std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(text.data()), text.size()),
+        inputs);
+}
+
+}  // namespace kiln::base

@@ -1,0 +1,106 @@
+#include "scene/gltf_input.h"
+
+#include <tiny_gltf.h>
+
+#include <filesystem>
+
+#include "kiln/base/files.h"
+
+namespace kiln::runtime {
+namespace {
+
+uint32_t GetU32(std::string_view s, size_t at) {
+    uint32_t x = 0;
+    for (size_t i = 0; i < 4; ++i)
+        x |= uint32_t(uint8_t(s[at + i])) << (8 * i);
+    return x;
+}
+
+// The JSON chunk of a .glb, or the whole text of a .gltf; empty when the container is malformed
+// (tinygltf then reports it).
+std::string_view JsonOf(std::string_view bytes, bool binary) {
+    if (!binary)
+        return bytes;
+    constexpr uint32_t kJsonChunk = 0x4E4F534A;  // "JSON"
+    if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF" || GetU32(bytes, 16) != kJsonChunk)
+        return {};
+    const uint32_t length = GetU32(bytes, 12);
+    return length <= bytes.size() - 20 ? bytes.substr(20, length) : std::string_view{};
+}
+
+bool FileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return std::filesystem::exists(path, ec);  // what it is, ReadWholeFile says
+}
+
+std::string ExpandFilePath(const std::string& path, void*) {
+    return path;  // no ~ or $VAR expansion in uris
+}
+
+bool ReadWholeFile(std::vector<unsigned char>* out,
+                   std::string* err,
+                   const std::string& path,
+                   void*) {
+    Result<std::string> bytes = base::ReadRegularFile(path, kMaxSceneFileBytes);
+    if (!bytes) {
+        if (err != nullptr)
+            *err += bytes.error().message + "\n";
+        return false;
+    }
+    out->assign(bytes.value().begin(), bytes.value().end());
+    return true;
+}
+
+}  // namespace
+
+size_t JsonDepth(std::string_view json, size_t limit) {
+    size_t depth = 0, deepest = 0;
+    for (size_t i = 0; i < json.size() && deepest <= limit; ++i) {
+        const char c = json[i];
+        if (c == '"') {
+            for (++i; i < json.size() && json[i] != '"'; ++i)
+                i += json[i] == '\\' ? 1 : 0;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
+std::optional<Error> LoadGltfModel(const std::string& path,
+                                   tinygltf::Model& model,
+                                   std::string& warn) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        return Error{path + ": no such file", ErrorKind::kScene};
+    Result<std::string> bytes = base::ReadRegularFile(path, kMaxSceneFileBytes);
+    if (!bytes)
+        return Error{bytes.error().message, ErrorKind::kScene};
+    const std::string& data = bytes.value();
+    const bool binary = std::filesystem::path(path).extension() == ".glb";
+    if (JsonDepth(JsonOf(data, binary), kMaxJsonDepth) > kMaxJsonDepth) {
+        return Error{path + ": JSON nested more than " + std::to_string(kMaxJsonDepth) +
+                         " deep; not a glTF file Kiln reads",
+                     ErrorKind::kScene};
+    }
+    if (data.size() > std::numeric_limits<unsigned int>::max())
+        return Error{path + ": too large", ErrorKind::kScene};
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks(
+        {&FileExists, &ExpandFilePath, &ReadWholeFile, &tinygltf::WriteWholeFile, nullptr});
+    const std::string dir = std::filesystem::path(path).parent_path().string();
+    std::string err;
+    const auto* p = reinterpret_cast<const unsigned char*>(data.data());
+    const auto n = static_cast<unsigned int>(data.size());
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, p, n, dir)
+                           : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), n, dir);
+    if (!ok) {
+        return Error{path + ": " + (err.empty() ? std::string("not a glTF file") : err),
+                     ErrorKind::kScene};
+    }
+    return std::nullopt;
+}
+
+}  // namespace kiln::runtime

@@ -1,0 +1,37 @@
+// A glTF file and everything it refers to, read within limits before tinygltf sees any of it:
+// regular files only (a buffer uri naming a directory or a device is an error, not an allocation
+// of its "size"), bounded sizes, JSON nested no deeper than kMaxJsonDepth (tinygltf's parser
+// recurses once per level). stb_image itself refuses an image that would decode to more than
+// 1 GiB.
+#ifndef KILN_RUNTIME_SCENE_GLTF_INPUT_H_
+#define KILN_RUNTIME_SCENE_GLTF_INPUT_H_
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "kiln/runtime/status.h"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace kiln::runtime {
+
+inline constexpr uint64_t kMaxSceneFileBytes = uint64_t{1} << 30;  // .gltf, .glb, .bin, images
+inline constexpr uint64_t kMaxSidecarBytes = uint64_t{16} << 20;   // .kiln.json, .material
+inline constexpr size_t kMaxJsonDepth = 128;
+
+// Deepest nesting of arrays and objects in JSON text (strings skipped); stops counting once past
+// `limit`, so the scan is linear whatever the input.
+size_t JsonDepth(std::string_view json, size_t limit);
+
+// Loads `path` (.gltf, or .glb by extension) into `model`; tinygltf's warnings go to `warn`.
+std::optional<Error> LoadGltfModel(const std::string& path,
+                                   tinygltf::Model& model,
+                                   std::string& warn);
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_SCENE_GLTF_INPUT_H_

@@ -1,0 +1,140 @@
+// The worker protocol: what one side encodes the other decodes, and nothing a broken worker can
+// send (a truncated frame, a field running past the end, an oversized length) is read past its end.
+#include <gtest/gtest.h>
+
+#include "worker/protocol.h"
+
+namespace kiln::worker {
+namespace {
+
+Request SampleRequest() {
+    Request r;
+    r.kind = RequestKind::kCompile;
+    r.stage = pack::Stage::kFragment;
+    r.name = "dir/a.shader";
+    r.source = std::string("float4 frag() : SV_Target { return 1; }\0tail", 44);
+    r.entry = "frag";
+    r.include_dirs = {"inc1", "inc2"};
+    r.templates_dir = "/t";
+    r.debug_info = true;
+    r.opt_level = 2;
+    r.optimize = false;
+    r.words = {0x07230203, 0x00010300, 7, 42, 0};
+    return r;
+}
+
+TEST(WorkerProtocol, RequestsRoundTrip) {
+    const Request r = SampleRequest();
+    const std::string bytes = EncodeRequest(r);
+    const auto frame = SplitFrame(bytes);
+    ASSERT_TRUE(frame);
+    EXPECT_EQ(frame->type, FrameType::kRequest);
+    const auto back = DecodeRequest(frame->payload);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->kind, r.kind);
+    EXPECT_EQ(back->stage, r.stage);
+    EXPECT_EQ(back->name, r.name);
+    EXPECT_EQ(back->source, r.source);  // NUL bytes included
+    EXPECT_EQ(back->entry, r.entry);
+    EXPECT_EQ(back->include_dirs, r.include_dirs);
+    EXPECT_EQ(back->templates_dir, r.templates_dir);
+    EXPECT_EQ(back->debug_info, r.debug_info);
+    EXPECT_EQ(back->opt_level, r.opt_level);
+    EXPECT_EQ(back->optimize, r.optimize);
+    EXPECT_EQ(back->words, r.words);
+}
+
+TEST(WorkerProtocol, ResponsesRoundTrip) {
+    Response r;
+    r.ok = true;
+    r.entry_missing = true;
+    r.failed_in = Component::kSpirvVal;
+    r.text = "text";
+    r.info_log = "ERROR: a.shader:3: 'x' : undeclared identifier\n";
+    r.messages = "bad";
+    r.words = {1, 2, 3};
+    r.files_read = {"a.cginc", "b.cginc"};
+    const std::string bytes = EncodeResponse(r);
+    const auto frame = SplitFrame(bytes);
+    ASSERT_TRUE(frame);
+    EXPECT_EQ(frame->type, FrameType::kResponse);
+    const auto back = DecodeResponse(frame->payload);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->ok, r.ok);
+    EXPECT_EQ(back->entry_missing, r.entry_missing);
+    EXPECT_EQ(back->failed_in, r.failed_in);
+    EXPECT_EQ(back->text, r.text);
+    EXPECT_EQ(back->info_log, r.info_log);
+    EXPECT_EQ(back->messages, r.messages);
+    EXPECT_EQ(back->words, r.words);
+    EXPECT_EQ(back->files_read, r.files_read);
+
+    const std::string phase_bytes = EncodePhase(Component::kSpirvOpt);
+    const auto phase = SplitFrame(phase_bytes);
+    ASSERT_TRUE(phase && phase->type == FrameType::kPhase);
+    EXPECT_EQ(DecodePhase(phase->payload), Component::kSpirvOpt);
+    const std::string failure_bytes = EncodeFailure("memory", "an allocation failed");
+    const auto failure = SplitFrame(failure_bytes);
+    ASSERT_TRUE(failure && failure->type == FrameType::kFailure);
+    ASSERT_TRUE(DecodeFailure(failure->payload));
+    EXPECT_EQ(DecodeFailure(failure->payload)->reason, "memory");
+}
+
+// A strict prefix of a request's fields decodes only when it ends exactly between two fields
+// (a shorter request); every other prefix ends inside a field and must be rejected, never read
+// past.
+TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
+    const std::string bytes = EncodeRequest(SampleRequest());
+    const auto full = SplitFrame(bytes);
+    ASSERT_TRUE(full);
+    size_t accepted = 0;
+    for (size_t n = 0; n < full->payload.size(); ++n)
+        accepted += DecodeRequest(full->payload.substr(0, n)) ? 1 : 0;
+    // Fields: kind, stage, name, source, entry, 2 include dirs, templates, debug, opt level,
+    // optimize, words: 12 boundaries before the end, the empty prefix included.
+    EXPECT_EQ(accepted, 12u);
+    for (size_t n = 0; n < 4; ++n)
+        EXPECT_FALSE(SplitFrame(std::string_view(bytes).substr(0, n)));
+}
+
+TEST(WorkerProtocol, BadValuesAndUnknownTagsAreHandled) {
+    // kind 9 does not exist; stage 7 does not exist; a bool of 2; words not a multiple of 4.
+    auto field = [](uint8_t tag, std::string bytes) {
+        std::string f(1, char(tag));
+        const uint32_t n = uint32_t(bytes.size());
+        for (int i = 0; i < 4; ++i)
+            f += char(n >> (8 * i));
+        return f + bytes;
+    };
+    EXPECT_FALSE(DecodeRequest(field(1, std::string(1, '\x09'))));
+    EXPECT_FALSE(DecodeRequest(field(2, std::string(1, '\x07'))));
+    EXPECT_FALSE(DecodeRequest(field(8, std::string(1, '\x02'))));
+    EXPECT_FALSE(DecodeRequest(field(11, "abc")));
+    EXPECT_FALSE(DecodeResponse(field(14, std::string(1, '\x40'))));
+    // A field of an unknown tag (a newer sender's) is skipped.
+    const auto r = DecodeRequest(field(200, "future") + field(5, "frag"));
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->entry, "frag");
+    // A size that runs past the end.
+    std::string past = field(5, "frag");
+    past[1] = '\x7f';
+    EXPECT_FALSE(DecodeRequest(past));
+}
+
+TEST(WorkerProtocol, FramingWaitsForWholeFramesAndRefusesOversizedOnes) {
+    const std::string a = WithLength("first"), b = WithLength("second");
+    std::string buffer = a + b.substr(0, 3);
+    bool bad = false;
+    EXPECT_EQ(TakeFrame(buffer, bad), "first");
+    EXPECT_FALSE(TakeFrame(buffer, bad));
+    EXPECT_FALSE(bad);
+    buffer += b.substr(3);
+    EXPECT_EQ(TakeFrame(buffer, bad), "second");
+    EXPECT_TRUE(buffer.empty());
+    std::string huge = "\xff\xff\xff\x7f";
+    EXPECT_FALSE(TakeFrame(huge, bad));
+    EXPECT_TRUE(bad);
+}
+
+}  // namespace
+}  // namespace kiln::worker
