@@ -163,8 +163,8 @@ Result<std::string> CheckOutputPath(const std::string& path,
 
 Result<bool> WriteFileAtomically(const std::string& path,
                                  std::span<const uint8_t> bytes,
-                                 const std::vector<std::string>& inputs) {
-    Result<std::string> checked = CheckOutputPath(path, inputs);
+                                 const WriteOptions& options) {
+    Result<std::string> checked = CheckOutputPath(path, options.inputs);
     if (!checked)
         return checked.error();
     const std::string& target = checked.value();
@@ -183,7 +183,8 @@ Result<bool> WriteFileAtomically(const std::string& path,
     Fd fd(raw);
     if (exists)
         fchmod(fd.get(), existing.st_mode & 07777);
-    if (!WriteAll(fd.get(), bytes.data(), bytes.size()) || fsync(fd.get()) != 0) {
+    if (!WriteAll(fd.get(), bytes.data(), bytes.size()) ||
+        (options.durable && fsync(fd.get()) != 0)) {
         const std::string why = Errno("cannot write '" + path + "'");
         unlink(temp.c_str());
         return Error{why};
@@ -198,6 +199,8 @@ Result<bool> WriteFileAtomically(const std::string& path,
         unlink(temp.c_str());
         return Error{why};
     }
+    if (!options.durable)
+        return true;
     // The rename itself is durable once the directory is.
     std::string dir = fs::path(target).parent_path().string();
     Fd dfd(open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
@@ -208,10 +211,10 @@ Result<bool> WriteFileAtomically(const std::string& path,
 
 Result<bool> WriteFileAtomically(const std::string& path,
                                  std::string_view text,
-                                 const std::vector<std::string>& inputs) {
+                                 const WriteOptions& options) {
     return WriteFileAtomically(
         path, std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(text.data()), text.size()),
-        inputs);
+        options);
 }
 
 }  // namespace kiln::base

@@ -1,14 +1,15 @@
 #include "driver/cache.h"
 
-#include <unistd.h>
+#include <sys/stat.h>
 
-#include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <mutex>
 
 #include <xxhash.h>
+
+#include "kiln/base/files.h"
 
 namespace kiln::driver {
 namespace fs = std::filesystem;
@@ -17,7 +18,10 @@ namespace {
 
 constexpr uint32_t kEntryMagic = 0x4341434B;  // "KCAC"
 // 2: a stage whose entry point does not exist is an error (version 1 cached an empty module).
-constexpr uint32_t kEntryVersion = 2;
+// 3: the entry carries its key; the hash covers key and payload.
+constexpr uint32_t kEntryVersion = 3;
+constexpr uint32_t kSpirvMagic = 0x07230203;
+constexpr int64_t kStaleTemporarySeconds = 24 * 60 * 60;
 
 void PutU32(std::string& s, uint32_t x) {
     for (int i = 0; i < 4; ++i)
@@ -26,7 +30,7 @@ void PutU32(std::string& s, uint32_t x) {
 uint32_t GetU32(const std::string& s, size_t at) {
     uint32_t x = 0;
     for (int i = 0; i < 4; ++i)
-        x |= uint32_t(uint8_t(s[at + i])) << (8 * i);
+        x |= uint32_t(uint8_t(s[at + size_t(i)])) << (8 * i);
     return x;
 }
 
@@ -52,39 +56,66 @@ std::string Cache::PathFor(const std::string& key) const {
     return (fs::path(dir_) / key.substr(0, 2) / (key + ".spv")).string();
 }
 
+// Entry: magic, version, key length, key, word count, XXH64 of (key + payload) as two u32s, then
+// the payload (the SPIR-V words, little-endian).
 std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
     if (!enabled())
         return std::nullopt;
-    std::ifstream in(PathFor(key), std::ios::binary);
-    if (!in)
+    const std::string path = PathFor(key);
+    struct stat st {};
+    if (lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+        return std::nullopt;  // absent, or damaged: a link, a FIFO, a directory
+    Result<std::string> read = base::ReadRegularFile(path, kMaxEntryBytes);
+    if (!read)
         return std::nullopt;
-    const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (data.size() < 20 || GetU32(data, 0) != kEntryMagic || GetU32(data, 4) != kEntryVersion) {
+    const std::string& data = read.value();
+    if (data.size() < 12 || GetU32(data, 0) != kEntryMagic || GetU32(data, 4) != kEntryVersion)
         return std::nullopt;
+    const uint32_t key_size = GetU32(data, 8);
+    if (key_size != key.size() || data.size() < 24 + uint64_t{key_size} ||
+        data.compare(12, key_size, key) != 0) {
+        return std::nullopt;  // another entry's bytes under this name
     }
-    const uint32_t words = GetU32(data, 8);
-    if (data.size() != 20 + uint64_t{words} * 4 || words == 0)
+    const size_t at = 12 + key_size;
+    const uint32_t words = GetU32(data, at);
+    const size_t payload = at + 12;
+    if (words < 5 || data.size() != payload + uint64_t{words} * 4)
         return std::nullopt;
-    const uint64_t hash = uint64_t{GetU32(data, 12)} | uint64_t{GetU32(data, 16)} << 32;
-    if (XXH64(data.data() + 20, data.size() - 20, 0) != hash)
+    const uint64_t hash = uint64_t{GetU32(data, at + 4)} | uint64_t{GetU32(data, at + 8)} << 32;
+    XXH64_state_t* h = XXH64_createState();
+    XXH64_reset(h, 0);
+    XXH64_update(h, key.data(), key.size());
+    XXH64_update(h, data.data() + payload, data.size() - payload);
+    const uint64_t actual = XXH64_digest(h);
+    XXH64_freeState(h);
+    if (actual != hash || GetU32(data, payload) != kSpirvMagic)
         return std::nullopt;
     std::vector<uint32_t> out(words);
     for (uint32_t i = 0; i < words; ++i)
-        out[i] = GetU32(data, 20 + size_t{i} * 4);
+        out[i] = GetU32(data, payload + size_t{i} * 4);
     return out;
 }
 
 bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) const {
     if (!enabled())
         return false;
-    std::string data;
-    PutU32(data, kEntryMagic);
-    PutU32(data, kEntryVersion);
-    PutU32(data, static_cast<uint32_t>(words.size()));
+    static std::once_flag cleaned;
+    std::call_once(cleaned, [this] { RemoveStaleTemporaries(kStaleTemporarySeconds); });
     std::string payload;
     for (uint32_t w : words)
         PutU32(payload, w);
-    const uint64_t hash = XXH64(payload.data(), payload.size(), 0);
+    XXH64_state_t* h = XXH64_createState();
+    XXH64_reset(h, 0);
+    XXH64_update(h, key.data(), key.size());
+    XXH64_update(h, payload.data(), payload.size());
+    const uint64_t hash = XXH64_digest(h);
+    XXH64_freeState(h);
+    std::string data;
+    PutU32(data, kEntryMagic);
+    PutU32(data, kEntryVersion);
+    PutU32(data, static_cast<uint32_t>(key.size()));
+    data += key;
+    PutU32(data, static_cast<uint32_t>(words.size()));
     PutU32(data, static_cast<uint32_t>(hash));
     PutU32(data, static_cast<uint32_t>(hash >> 32));
     data += payload;
@@ -92,23 +123,36 @@ bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) co
     const fs::path path = PathFor(key);
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
-    static std::atomic<uint64_t> counter{0};
-    const fs::path tmp =
-        path.string() + ".tmp." + std::to_string(getpid()) + "." + std::to_string(counter++);
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            return false;
-        out.write(data.data(), static_cast<std::streamsize>(data.size()));
-        if (!out) {
-            fs::remove(tmp, ec);
-            return false;
+    // A damaged entry that is not a regular file (a directory, a FIFO, a link, which the writer
+    // would follow) is removed first: the cache repairs itself.
+    struct stat st {};
+    if (lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        fs::remove_all(path, ec);
+    base::WriteOptions options;
+    options.durable = false;  // a torn entry fails its hash and is rebuilt
+    return base::WriteFileAtomically(path.string(), data, options).ok();
+}
+
+size_t Cache::RemoveStaleTemporaries(int64_t age_seconds) const {
+    if (!enabled())
+        return 0;
+    size_t removed = 0;
+    std::error_code ec;
+    const auto now = fs::file_time_type::clock::now();
+    for (fs::recursive_directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
+        if (it.depth() > 1) {
+            it.disable_recursion_pending();
+            continue;
         }
+        const std::string name = it->path().filename().string();
+        if (name.find(".tmp.") == std::string::npos || !it->is_regular_file(ec))
+            continue;
+        const auto age = std::chrono::duration_cast<std::chrono::seconds>(
+            now - it->last_write_time(ec));
+        if (!ec && age.count() > age_seconds && fs::remove(it->path(), ec))
+            ++removed;
     }
-    fs::rename(tmp, path, ec);  // atomic on POSIX: readers see the old entry or the new one
-    if (ec)
-        fs::remove(tmp, ec);
-    return !ec;
+    return removed;
 }
 
 }  // namespace kiln::driver

@@ -1,8 +1,13 @@
 // The content-addressed compile cache: optimized (pre-binding) SPIR-V per unique stage program,
 // keyed by a hash of the reduced text, stage, entry point, options and the versions of Kiln,
-// glslang and SPIRV-Tools. Entries are written to a temporary file and renamed, so concurrent
-// kiln processes never see a partial entry; a damaged entry (checked by length and hash) is a
-// miss.
+// glslang and SPIRV-Tools. Entries are written to a unique temporary file and renamed, so
+// concurrent kiln processes never see a partial entry.
+//
+// The cache is never trusted: an entry carries its own key and a hash of key and payload, must be
+// a regular file (not a link, FIFO or directory) of bounded size, and must hold a SPIR-V header;
+// anything else is a miss, and the compile that follows replaces the entry. (The driver also runs
+// spirv-val over every entry it takes.) Temporary files left by killed compiles are removed once
+// a day old.
 #ifndef KILN_DRIVER_CACHE_H_
 #define KILN_DRIVER_CACHE_H_
 
@@ -15,6 +20,9 @@ namespace kiln::driver {
 
 class Cache {
   public:
+    // The largest entry read (a stage of a Unity shader is a few hundred KiB).
+    static constexpr uint64_t kMaxEntryBytes = uint64_t{64} << 20;
+
     explicit Cache(std::string dir) : dir_(std::move(dir)) {}
     bool enabled() const { return !dir_.empty(); }
 
@@ -22,8 +30,12 @@ class Cache {
     // Best effort: false when the entry cannot be written (the compile goes on).
     bool Store(const std::string& key, const std::vector<uint32_t>& words) const;
 
-  private:
+    // Removes "*.tmp.*" files under the cache older than `age_seconds`; returns how many.
+    size_t RemoveStaleTemporaries(int64_t age_seconds) const;
+
     std::string PathFor(const std::string& key) const;
+
+  private:
     std::string dir_;
 };
 

@@ -273,7 +273,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
             inputs.push_back(f->path());
         if (out.ok) {
             Result<bool> written = base::WriteFileAtomically(
-                o->output, std::span<const uint8_t>(out.pack.data(), out.pack.size()), inputs);
+                o->output, std::span<const uint8_t>(out.pack.data(), out.pack.size()), {inputs});
             if (!written) {
                 diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition, written.error().message);
             }
@@ -286,7 +286,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                     DepfileEscape(std::filesystem::absolute(f->path()).lexically_normal().string());
             }
             text += "\n";
-            Result<bool> written = base::WriteFileAtomically(dep_path, text, inputs);
+            Result<bool> written = base::WriteFileAtomically(dep_path, text, {inputs});
             if (!written) {
                 diags.Error(DiagCode::kCannotWriteFile, dep_path, kNoPosition, written.error().message);
             }

@@ -296,7 +296,7 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
         const bool vert = o->stage[0] == 'v';
         const auto bytes = pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module));
         Result<bool> written = base::WriteFileAtomically(
-            o->output, std::span<const uint8_t>(bytes.data(), bytes.size()), {o->file});
+            o->output, std::span<const uint8_t>(bytes.data(), bytes.size()), {{o->file}});
         if (!written)
             return ReportError(global, DiagCode::kCannotWriteFile, o->output,
                                written.error().message);

@@ -19,15 +19,22 @@ namespace kiln::base {
 // not a regular file ("is a directory", "is a FIFO"), or that it is over the limit.
 Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes);
 
-// Writes `bytes` to `path` atomically. `inputs` are the files the output was made from: an output
-// that is one of them (the same file, by device and inode) is refused. An output that is a
-// symbolic link is written through: the file it points to is replaced and the link is kept.
+struct WriteOptions {
+    std::vector<std::string> inputs;  // an output that is one of them is refused
+    // fsync the file before the rename and the directory after it. Off only for files whose
+    // damage is detected and repaired (compile-cache entries carry a hash).
+    bool durable = true;
+};
+
+// Writes `bytes` to `path` atomically. An output that is one of the inputs (the same file, by
+// device and inode) is refused. An output that is a symbolic link is written through: the file it
+// points to is replaced and the link is kept.
 Result<bool> WriteFileAtomically(const std::string& path,
                                  std::span<const uint8_t> bytes,
-                                 const std::vector<std::string>& inputs = {});
+                                 const WriteOptions& options = {});
 Result<bool> WriteFileAtomically(const std::string& path,
                                  std::string_view text,
-                                 const std::vector<std::string>& inputs = {});
+                                 const WriteOptions& options = {});
 
 // The checks WriteFileAtomically makes before it writes, for a command that wants to refuse a bad
 // output before doing the work: `path` (or the file its symbolic link names) is absent or a
