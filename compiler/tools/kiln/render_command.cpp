@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "kiln/base/files.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
@@ -66,7 +67,7 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         std::vector<std::string> packs;
         runtime::FrameSettings frame;
         runtime::ColorOptions color;
-        bool validation = false, closest = false, no_default_light = false;
+        bool validation = false, closest = false, no_default_light = false, trust = false;
         std::string device, camera;
     };
     auto a = std::make_shared<Args>();
@@ -112,6 +113,9 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
     cmd->add_option("--usage", a->usage, "Write every variant lookup to this JSON file");
     cmd->add_option("--pipeline-cache", a->pipeline_cache, "Persist the VkPipelineCache here");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
+    cmd->add_flag("--trust-packs", a->trust,
+                  "Hand the packs' SPIR-V to the driver without validating it first (only for "
+                  "packs you built yourself)");
     return [a, &global] {
         // Every warning and error goes into one list, printed once (one JSON array).
         DiagnosticList diags;
@@ -130,6 +134,19 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             return finish(int(kExitInputError));
         };
         a->frame.default_light = !a->no_default_light;
+        // Outputs that are inputs, directories or devices are refused before any work.
+        std::vector<std::string> inputs = a->packs;
+        inputs.push_back(a->scene);
+        if (!a->materials.empty())
+            inputs.push_back(a->materials);
+        for (const std::string* out : {&a->output, &a->exr, &a->usage, &a->pipeline_cache}) {
+            if (out->empty())
+                continue;
+            if (Result<std::string> ok = base::CheckOutputPath(*out, inputs); !ok) {
+                diags.Error(DiagCode::kCannotWriteFile, *out, kNoPosition, ok.error().message);
+                return finish(int(kExitInputError));
+            }
+        }
         if (!a->camera.empty())
             ParseCamera(a->camera, a->frame.camera);  // validated by the option's check
         runtime::Scene scene;
@@ -150,6 +167,7 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         options.validation = a->validation;
         options.device_filter = a->device;
         options.pipeline_cache = a->pipeline_cache;
+        options.trust_packs = a->trust;
         options.missing_variant = a->closest ? runtime::MissingVariantPolicy::kClosest
                                              : runtime::MissingVariantPolicy::kError;
         runtime::Renderer renderer;

@@ -123,7 +123,8 @@ MappedFile::~MappedFile() {
 }
 
 std::optional<PackError> MappedFile::Map(const std::string& path, MappedFile& out) {
-    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    // O_NONBLOCK: opening a FIFO must not wait for a writer (fstat then refuses it).
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) {
         return PackError{PackErrorCode::kIo, "cannot open '" + path + "': " + std::strerror(errno)};
     }

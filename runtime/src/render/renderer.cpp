@@ -99,7 +99,7 @@ std::optional<Error> Renderer::State::GetPipeline(uint32_t pack,
     PipelineEntry entry{pack, variant, state, {}};
     vk::PipelineTargets targets{render_pass, 1};
     if (auto e = vk::CreatePipeline(context, packs[pack]->pack, variant, state, targets,
-                                    pipeline_cache, entry.pipeline)) {
+                                    pipeline_cache, module_checker.get(), entry.pipeline)) {
         return e;
     }
     ++created;
@@ -193,6 +193,9 @@ std::optional<Error> Renderer::Create(const RendererOptions& options, Renderer& 
     }
     if (!note.empty()) {
         s->notes.push_back(note);
+    }
+    if (!options.trust_packs) {
+        s->module_checker = std::make_unique<vk::ModuleChecker>(s->context.properties.limits);
     }
     out.state_ = std::move(s);
     return std::nullopt;

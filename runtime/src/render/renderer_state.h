@@ -42,6 +42,7 @@ struct Renderer::State {
     std::map<std::pair<bool, bool>, VkSampler> samplers;  // (repeat, nearest)
     std::map<std::pair<std::string, vk::ImageShape>, vk::Image> default_textures;
     std::vector<std::string> notes;  // pipeline-cache notes etc., reported with the next frame
+    std::unique_ptr<vk::ModuleChecker> module_checker;  // null when the packs are trusted
 
     ~State();
     std::optional<Error> GetPipeline(uint32_t pack,

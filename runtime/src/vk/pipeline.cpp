@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstring>
 #include <map>
+#include <set>
 
 namespace kiln::vk {
 namespace {
@@ -99,7 +100,22 @@ std::optional<runtime::Error> CreateLayout(const Context& c,
             return runtime::Error{"descriptor set " + std::to_string(key.first) +
                                   " is beyond the 8 sets the runtime supports"};
         }
+        // The reflection is the pack's too: numbers no Kiln pack uses would reach the driver.
+        if (key.second > kMaxBindingNumber || b.descriptorCount > kMaxDescriptorCount) {
+            return runtime::Error{"the pack's reflection names set " + std::to_string(key.first) +
+                                      " binding " + std::to_string(key.second) + " with " +
+                                      std::to_string(b.descriptorCount) +
+                                      " descriptors, more than any Kiln pack uses",
+                                  runtime::ErrorKind::kPack};
+        }
         set_count = std::max(set_count, key.first + 1);
+    }
+    if (out.push_constant_size > c.properties.limits.maxPushConstantsSize) {
+        return runtime::Error{"the variant's push constants take " +
+                                  std::to_string(out.push_constant_size) +
+                                  " bytes; the device allows " +
+                                  std::to_string(c.properties.limits.maxPushConstantsSize),
+                              runtime::ErrorKind::kPack};
     }
     out.bindings.assign(set_count, {});
     for (const auto& [key, b] : bindings) {
@@ -164,6 +180,7 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
                                              const RenderState& state,
                                              const PipelineTargets& targets,
                                              VkPipelineCache cache,
+                                             ModuleChecker* checker,
                                              Pipeline& out) {
     const pack::VariantRec v = pack.Variant(variant);
     const std::array<pack::ModuleRec, 2> modules = {pack.Module(v.vertex_module),
@@ -173,11 +190,23 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
         DestroyPipeline(c, p);
         return std::optional<runtime::Error>(std::move(e));
     };
+    if (auto e = CreateLayout(c, pack, modules, p.layout)) {
+        return fail(*e);
+    }
+    std::set<std::pair<uint32_t, uint32_t>> layout;
+    for (uint32_t s = 0; s < p.layout.bindings.size(); ++s) {
+        for (const VkDescriptorSetLayoutBinding& b : p.layout.bindings[s])
+            layout.insert({s, b.binding});
+    }
     std::array<std::string, 2> entry_points;
     for (size_t i = 0; i < 2; ++i) {
         const std::span<const uint8_t> spirv = pack.Spirv(modules[i]);
         std::vector<uint32_t> words(spirv.size() / 4);
         std::memcpy(words.data(), spirv.data(), words.size() * 4);
+        if (checker != nullptr) {
+            if (auto e = checker->Check(words, pack::Stage(modules[i].stage), layout))
+                return fail(*e);
+        }
         entry_points[i] = EntryPointName(words);
         if (entry_points[i].empty()) {
             return fail(runtime::Error{"a SPIR-V module of the variant has no entry point"});
@@ -189,9 +218,6 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
             r != VK_SUCCESS) {
             return fail(VkError("cannot create a shader module", r));
         }
-    }
-    if (auto e = CreateLayout(c, pack, modules, p.layout)) {
-        return fail(*e);
     }
 
     // Vertex input: one interleaved binding, an attribute per reflected input location.

@@ -12,6 +12,7 @@
 
 #include "kiln/pack/reader.h"
 #include "vk/context.h"
+#include "vk/spirv_check.h"
 
 namespace kiln::vk {
 
@@ -97,12 +98,15 @@ struct PipelineTargets {
     uint32_t color_count = 1;
 };
 
+// `checker` looks at the variant's SPIR-V and reflection before the driver does
+// (vk/spirv_check.h); null for trusted packs.
 std::optional<runtime::Error> CreatePipeline(const Context& c,
                                              const pack::Pack& pack,
                                              uint32_t variant,
                                              const RenderState& state,
                                              const PipelineTargets& targets,
                                              VkPipelineCache cache,
+                                             ModuleChecker* checker,
                                              Pipeline& out);
 void DestroyPipeline(const Context& c, Pipeline& pipeline);
 

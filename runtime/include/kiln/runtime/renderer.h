@@ -26,6 +26,11 @@ struct RendererOptions {
     MissingVariantPolicy missing_variant = MissingVariantPolicy::kError;
     std::string pipeline_cache;   // a file to seed and save the VkPipelineCache; empty: none
     bool float32_target = false;  // R32G32B32A32_SFLOAT instead of R16G16B16A16_SFLOAT
+    // Every distinct module of a pack goes through spirv-val and checks against the device's
+    // limits and the variant's layout before the driver sees it (a pack's checksum is no proof
+    // of where it came from). True skips that, for packs one built oneself (kiln render
+    // --trust-packs).
+    bool trust_packs = false;
 };
 
 struct FrameSettings {

@@ -1,0 +1,159 @@
+// Packs are not trusted: a pack with a valid checksum but SPIR-V the driver would crash on (an id
+// bound of 0x7fffffff, a Binding decoration of 2^30, a broken instruction) is rejected before it
+// reaches the driver, with the validation layer silent; each distinct module is validated once.
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <xxhash.h>
+
+#include "kiln/pack/format.h"
+#include "kiln/pack/reader.h"
+#include "runtime/runtime_fixture.h"
+#include "vk/spirv_check.h"
+
+namespace kiln::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<uint8_t> ReadBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+uint32_t GetWord(const std::vector<uint8_t>& b, size_t at) {
+    uint32_t w;
+    std::memcpy(&w, b.data() + at, 4);
+    return w;
+}
+void SetWord(std::vector<uint8_t>& b, size_t at, uint32_t w) {
+    std::memcpy(b.data() + at, &w, 4);
+}
+
+// The shipped pack with `patch(bytes, module_offset, word_count)` applied to every module, its
+// checksum recomputed so that the reader accepts it.
+std::string PatchedPack(const std::string& name,
+                        const std::function<void(std::vector<uint8_t>&, size_t, size_t)>& patch) {
+    std::vector<uint8_t> bytes = ReadBytes(KILN_MATERIALS_PACK);
+    {
+        pack::Pack p;
+        EXPECT_FALSE(pack::Pack::Open(bytes, p));
+        std::vector<std::pair<size_t, size_t>> modules;
+        for (uint32_t m = 0; m < p.Count(pack::SectionTag::kModules); ++m) {
+            const auto spirv = p.Spirv(p.Module(m));
+            modules.push_back({size_t(spirv.data() - bytes.data()), spirv.size() / 4});
+        }
+        for (const auto& [at, words] : modules)
+            patch(bytes, at, words);
+    }
+    std::memset(bytes.data() + pack::kChecksumOffset, 0, 8);
+    const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
+    std::memcpy(bytes.data() + pack::kChecksumOffset, &sum, 8);
+    const std::string path = (fs::temp_directory_path() / name).string();
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    return path;
+}
+
+class PackTrustTest : public ::testing::Test {
+  protected:
+    void SetUp() override { PinVulkanLibraries(); }
+
+    // Renders the Lambert material on a sphere from `pack` alone; the error, if any.
+    std::optional<runtime::Error> RenderWith(const std::string& pack) {
+        runtime::RendererOptions options;
+        options.validation = true;
+        runtime::Renderer renderer;
+        if (auto e = runtime::Renderer::Create(options, renderer))
+            return e;
+        if (auto e = renderer.AddPack(pack))
+            return e;
+        runtime::ColorPipeline color;
+        EXPECT_FALSE(runtime::ColorPipeline::Create({}, color));
+        runtime::Scene scene = SphereOnFloor(std::string(KILN_SOURCE_DIR) +
+                                             "/materials/Lambert.material");
+        runtime::FrameSettings settings;
+        settings.width = 64;
+        settings.height = 48;
+        runtime::LinearImage image;
+        runtime::FrameStats stats;
+        auto e = renderer.Render(scene, settings, color, image, stats);
+        for (const std::string& m : renderer.ValidationMessages())
+            ADD_FAILURE() << "the driver saw the module: " << m;
+        return e;
+    }
+};
+
+TEST_F(PackTrustTest, TheShippedPackRenders) {
+    const auto e = RenderWith(KILN_MATERIALS_PACK);
+    EXPECT_FALSE(e) << e->message;
+}
+
+TEST_F(PackTrustTest, AnIdBoundPastSpirvsLimitIsRejected) {
+    const std::string pack = PatchedPack("kiln_bound.kpack", [](auto& b, size_t at, size_t) {
+        SetWord(b, at + 12, 0x7fffffff);
+    });
+    const auto e = RenderWith(pack);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->kind, runtime::ErrorKind::kPack);
+    EXPECT_NE(e->message.find("id bound 2147483647 is over SPIR-V's limit"), std::string::npos)
+        << e->message;
+}
+
+TEST_F(PackTrustTest, ABindingOutsideTheLayoutIsRejected) {
+    const std::string pack = PatchedPack("kiln_binding.kpack", [](auto& b, size_t at, size_t n) {
+        for (size_t i = 5; i < n;) {
+            const uint32_t w = GetWord(b, at + i * 4), count = w >> 16;
+            if ((w & 0xFFFF) == 71 && count >= 4 && GetWord(b, at + (i + 2) * 4) == 33)
+                SetWord(b, at + (i + 3) * 4, 1u << 30);  // OpDecorate %x Binding 2^30
+            i += count == 0 ? n : count;
+        }
+    });
+    const auto e = RenderWith(pack);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("binding 1073741824, which the variant's layout does not have"),
+              std::string::npos)
+        << e->message;
+}
+
+TEST_F(PackTrustTest, AModuleSpirvValRejectsIsRejected) {
+    // The first instruction after the header becomes an unknown opcode of the same length.
+    const std::string pack = PatchedPack("kiln_opcode.kpack", [](auto& b, size_t at, size_t) {
+        const uint32_t w = GetWord(b, at + 20);
+        SetWord(b, at + 20, (w & 0xFFFF0000u) | 0xFFFEu);
+    });
+    const auto e = RenderWith(pack);
+    ASSERT_TRUE(e);
+    EXPECT_NE(e->message.find("spirv-val:"), std::string::npos) << e->message;
+}
+
+TEST(ModuleChecker, EachDistinctModuleIsValidatedOnce) {
+    std::vector<uint8_t> bytes = ReadBytes(KILN_MATERIALS_PACK);
+    pack::Pack p;
+    ASSERT_FALSE(pack::Pack::Open(bytes, p));
+    VkPhysicalDeviceLimits limits{};
+    limits.maxBoundDescriptorSets = 8;
+    vk::ModuleChecker checker(limits);
+    const pack::ModuleRec m = p.Module(0);
+    const auto spirv = p.Spirv(m);
+    std::vector<uint32_t> words(spirv.size() / 4);
+    std::memcpy(words.data(), spirv.data(), spirv.size());
+    std::set<std::pair<uint32_t, uint32_t>> everything;
+    for (uint32_t s = 0; s < 8; ++s) {
+        for (uint32_t b = 0; b < 64; ++b)
+            everything.insert({s, b});
+    }
+    const auto stage = pack::Stage(m.stage);
+    EXPECT_FALSE(checker.Check(words, stage, everything));
+    EXPECT_FALSE(checker.Check(words, stage, everything));
+    EXPECT_EQ(checker.validated_count(), 1u);
+    // The wrong stage for the module is refused even once it is known to be valid.
+    const auto other = stage == pack::Stage::kVertex ? pack::Stage::kFragment : pack::Stage::kVertex;
+    EXPECT_TRUE(checker.Check(words, other, everything));
+    EXPECT_TRUE(checker.Check(words, stage, {}) || words.empty()) << "no layout, but bindings";
+}
+
+}  // namespace
+}  // namespace kiln::testing
