@@ -72,8 +72,8 @@ class PackTrustTest : public ::testing::Test {
             return e;
         runtime::ColorPipeline color;
         EXPECT_FALSE(runtime::ColorPipeline::Create({}, color));
-        runtime::Scene scene = SphereOnFloor(std::string(KILN_SOURCE_DIR) +
-                                             "/materials/Lambert.material");
+        runtime::Scene scene =
+            SphereOnFloor(std::string(KILN_SOURCE_DIR) + "/materials/Lambert.material");
         runtime::FrameSettings settings;
         settings.width = 64;
         settings.height = 48;
@@ -92,9 +92,8 @@ TEST_F(PackTrustTest, TheShippedPackRenders) {
 }
 
 TEST_F(PackTrustTest, AnIdBoundPastSpirvsLimitIsRejected) {
-    const std::string pack = PatchedPack("kiln_bound.kpack", [](auto& b, size_t at, size_t) {
-        SetWord(b, at + 12, 0x7fffffff);
-    });
+    const std::string pack = PatchedPack(
+        "kiln_bound.kpack", [](auto& b, size_t at, size_t) { SetWord(b, at + 12, 0x7fffffff); });
     const auto e = RenderWith(pack);
     ASSERT_TRUE(e);
     EXPECT_EQ(e->kind, runtime::ErrorKind::kPack);
@@ -150,7 +149,8 @@ TEST(ModuleChecker, EachDistinctModuleIsValidatedOnce) {
     EXPECT_FALSE(checker.Check(words, stage, everything));
     EXPECT_EQ(checker.validated_count(), 1u);
     // The wrong stage for the module is refused even once it is known to be valid.
-    const auto other = stage == pack::Stage::kVertex ? pack::Stage::kFragment : pack::Stage::kVertex;
+    const auto other =
+        stage == pack::Stage::kVertex ? pack::Stage::kFragment : pack::Stage::kVertex;
     EXPECT_TRUE(checker.Check(words, other, everything));
     EXPECT_TRUE(checker.Check(words, stage, {}) || words.empty()) << "no layout, but bindings";
 }

@@ -180,15 +180,15 @@ TEST(GltfHardening, JsonNestedTooDeepIsRejectedBeforeParsing) {
         << l.error->message;
     // Brackets inside strings do not count, and 100 levels are fine.
     text = Triangle().dump();
-    text.insert(1, "\"extras\": {\"s\": \"" + std::string(1000, '[') + "\", \"a\": " +
-                       std::string(100, '[') + std::string(100, ']') + "}, ");
+    text.insert(1, "\"extras\": {\"s\": \"" + std::string(1000, '[') +
+                       "\", \"a\": " + std::string(100, '[') + std::string(100, ']') + "}, ");
     l = LoadText(text);
     EXPECT_FALSE(l.error) << l.error->message;
 }
 
 TEST(GltfHardening, TheJsonChunkOfABinaryFileIsCheckedToo) {
-    const std::string json_text = "{\"asset\": " + std::string(1000, '[') +
-                                  std::string(1000, ']') + "}";
+    const std::string json_text =
+        "{\"asset\": " + std::string(1000, '[') + std::string(1000, ']') + "}";
     std::string chunk = json_text;
     while (chunk.size() % 4 != 0)
         chunk += ' ';
@@ -248,9 +248,9 @@ TEST(GltfHardening, ImagesDeclaringTooManyPixelsAreNotDecoded) {
         return s;
     };
     // Signature, then an IHDR chunk: stb_image reads the size before any CRC or data.
-    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be32(13) + "IHDR" +
-                            be32(100000) + be32(100000) + std::string("\x08\x06\0\0\0", 5) +
-                            be32(0) + be32(0) + "IEND" + be32(0);
+    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be32(13) + "IHDR" + be32(100000) +
+                            be32(100000) + std::string("\x08\x06\0\0\0", 5) + be32(0) + be32(0) +
+                            "IEND" + be32(0);
     std::ofstream(ScratchDir() / "bomb.png", std::ios::binary) << png;
     json g = Triangle();
     g["images"] = {{{"uri", "bomb.png"}}};
@@ -267,12 +267,11 @@ TEST(GltfHardening, SidecarsAreBoundedRegularFiles) {
     ASSERT_TRUE(e);
     EXPECT_NE(e->message.find("is a character device"), std::string::npos) << e->message;
     const fs::path deep = ScratchDir() / "deep.kiln.json";
-    std::ofstream(deep) << "{\"description\": " << std::string(5000, '[')
-                        << std::string(5000, ']') << "}";
+    std::ofstream(deep) << "{\"description\": " << std::string(5000, '[') << std::string(5000, ']')
+                        << "}";
     e = runtime::LoadMaterialSidecar(deep.string(), scene);
     ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("JSON nested more than 128 deep"), std::string::npos)
-        << e->message;
+    EXPECT_NE(e->message.find("JSON nested more than 128 deep"), std::string::npos) << e->message;
 }
 
 }  // namespace

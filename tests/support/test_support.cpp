@@ -32,6 +32,10 @@ std::string DataPath(const std::string& relative) {
 }
 
 RunResult RunKiln(const std::string& args) {
+    return RunKilnWithin(args, 0);
+}
+
+RunResult RunKilnWithin(const std::string& args, int seconds) {
     // ctest runs tests in parallel: each test and call gets its own capture files.
     static int call = 0;
     const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
@@ -40,8 +44,10 @@ RunResult RunKiln(const std::string& args) {
     const std::string stem = testing::TempDir() + "/kiln_cli_" + name + "_" + std::to_string(call++);
     const std::string out_path = stem + ".out";
     const std::string err_path = stem + ".err";
+    const std::string limit =
+        seconds > 0 ? "timeout -s KILL " + std::to_string(seconds) + " " : std::string();
     const std::string cmd =
-        std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
+        limit + std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
     const int status = std::system(cmd.c_str());
     RunResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

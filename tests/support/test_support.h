@@ -23,6 +23,8 @@ struct RunResult {
     std::string err;
 };
 RunResult RunKiln(const std::string& args);
+// The same, killed after `seconds` (exit code 137 then): for inputs that once hung.
+RunResult RunKilnWithin(const std::string& args, int seconds);
 
 // Parses and checks `text` as "test.shader".
 struct ParseOutcome {

@@ -25,14 +25,14 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 enum class DiagCode : uint16_t {
     kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
     kCannotWriteFile = 2,
-    kBadCommandLine = 3,    // an unknown subcommand or option value the CLI reports itself
-    kBadPack = 4,           // a pack that cannot be read (the reader's reason in the message)
-    kUnknownPackName = 5,   // a shader or pass name the pack does not hold
-    kMissingVariant = 6,    // the pack holds no variant with the requested keywords
-    kBadScene = 7,          // a scene that cannot be loaded or rendered as asked
-    kRenderFailed = 8,      // the renderer failed (device, pipeline, validation messages)
-    kBadColorConfig = 9,    // an OpenColorIO config, display or view that does not exist
-    kRenderWarning = 10,    // the runtime's warnings (scene content it skipped or changed)
+    kBadCommandLine = 3,      // an unknown subcommand or option value the CLI reports itself
+    kBadPack = 4,             // a pack that cannot be read (the reader's reason in the message)
+    kUnknownPackName = 5,     // a shader or pass name the pack does not hold
+    kMissingVariant = 6,      // the pack holds no variant with the requested keywords
+    kBadScene = 7,            // a scene that cannot be loaded or rendered as asked
+    kRenderFailed = 8,        // the renderer failed (device, pipeline, validation messages)
+    kBadColorConfig = 9,      // an OpenColorIO config, display or view that does not exist
+    kRenderWarning = 10,      // the runtime's warnings (scene content it skipped or changed)
     kWorkerUnavailable = 11,  // no compile worker process could be found or started
 
     kUnterminatedString = 1001,
@@ -98,12 +98,12 @@ enum class DiagCode : uint16_t {
     kGlobalNotAProperty = 5006,
     kBlockLayoutMismatch = 5007,
     kPropertyTypeMismatch = 5008,
-    kCompilerCrashed = 5009,      // glslang or SPIRV-Tools crashed in its worker process
-    kCompilerTimeLimit = 5010,    // ... did not finish within --program-timeout
-    kCompilerMemoryLimit = 5011,  // ... used more than --program-memory
-    kProgramNestingTooDeep = 5012,  // parentheses, braces or #if nested past the limit
-    kMacroExpansionTooLarge = 5013, // a macro whose expansion is over the budget
-    kExpressionTooLong = 5014,      // one statement or expression with too many terms
+    kCompilerCrashed = 5009,         // glslang or SPIRV-Tools crashed in its worker process
+    kCompilerTimeLimit = 5010,       // ... did not finish within --program-timeout
+    kCompilerMemoryLimit = 5011,     // ... used more than --program-memory
+    kProgramNestingTooDeep = 5012,   // parentheses, braces or #if nested past the limit
+    kMacroExpansionTooLarge = 5013,  // a macro whose expansion is over the budget
+    kExpressionTooLong = 5014,       // one statement or expression with too many terms
 
     // K6xxx: material instances; the values are kiln::material::IssueCode's (runtime).
     kMaterialFirst = 6001,

@@ -147,8 +147,8 @@ size_t Cache::RemoveStaleTemporaries(int64_t age_seconds) const {
         const std::string name = it->path().filename().string();
         if (name.find(".tmp.") == std::string::npos || !it->is_regular_file(ec))
             continue;
-        const auto age = std::chrono::duration_cast<std::chrono::seconds>(
-            now - it->last_write_time(ec));
+        const auto age =
+            std::chrono::duration_cast<std::chrono::seconds>(now - it->last_write_time(ec));
         if (!ec && age.count() > age_seconds && fs::remove(it->path(), ec))
             ++removed;
     }

@@ -238,8 +238,7 @@ void PreprocessAndDedup(CompileState& st) {
         st.tasks.size(), st.options.jobs,
         [&](size_t i) {
             driver::StageTask& t = st.tasks[i];
-            worker::Request request =
-                driver::StageRequest(st, t, worker::RequestKind::kPreprocess);
+            worker::Request request = driver::StageRequest(st, t, worker::RequestKind::kPreprocess);
             request.source = t.source;
             worker::Outcome o = st.exec->Run(request);
             if ((t.failure = driver::OutcomeDiagnostic(st, t, o)))

@@ -80,8 +80,8 @@ worker::Request StageRequest(const CompileState& st,
     r.kind = kind;
     r.stage = task.stage;
     r.name = st.shaders[pu.shader].file->path();
-    r.entry = task.stage == pack::Stage::kVertex ? pu.pragmas.vertex->name
-                                                 : pu.pragmas.fragment->name;
+    r.entry =
+        task.stage == pack::Stage::kVertex ? pu.pragmas.vertex->name : pu.pragmas.fragment->name;
     r.include_dirs = paths.dirs;
     r.templates_dir = paths.templates_dir;
     r.debug_info = st.options.debug_info;
@@ -106,16 +106,20 @@ std::optional<Diagnostic> OutcomeDiagnostic(const CompileState& st,
     const ShaderUnit& unit = st.shaders[pu.shader];
     const std::string who = worker::ComponentName(outcome.component);
     const std::string what = StageOfPass(st, task);
-    Diagnostic d{Severity::kError, DiagCode::kCompilerCrashed, unit.file->path(),
-                 unit.passes[pu.flat].program->range, "", {}};
+    Diagnostic d{Severity::kError,
+                 DiagCode::kCompilerCrashed,
+                 unit.file->path(),
+                 unit.passes[pu.flat].program->range,
+                 "",
+                 {}};
     switch (outcome.status) {
         case Outcome::Status::kOk:
             return std::nullopt;
         case Outcome::Status::kCrashed:
             d.message = who + " crashed (" +
-                        (outcome.signal != 0 ? SignalName(outcome.signal)
-                                             : "it exited with status " +
-                                                   std::to_string(outcome.exit_code)) +
+                        (outcome.signal != 0
+                             ? SignalName(outcome.signal)
+                             : "it exited with status " + std::to_string(outcome.exit_code)) +
                         ") on " + what +
                         "; this is a fault in the third-party compiler, not a Kiln diagnostic of "
                         "your code: simplify the code it fails on, or report it upstream";
@@ -134,8 +138,8 @@ std::optional<Diagnostic> OutcomeDiagnostic(const CompileState& st,
             break;
         case Outcome::Status::kUnavailable:
             d.code = DiagCode::kWorkerUnavailable;
-            d.message = "no compile worker could be started for " + what + ": " +
-                        outcome.detail + "; compile with --in-process to run glslang inside kiln";
+            d.message = "no compile worker could be started for " + what + ": " + outcome.detail +
+                        "; compile with --in-process to run glslang inside kiln";
             break;
         case Outcome::Status::kBroken:
             d.severity = Severity::kInternal;
@@ -144,8 +148,8 @@ std::optional<Diagnostic> OutcomeDiagnostic(const CompileState& st,
             break;
     }
     const auto keywords = variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, task.key);
-    d.notes.push_back({unit.file->path(), unit.passes[pu.flat].program->range,
-                       "in the variant " + variants::DescribeKeywords(keywords)});
+    d.notes.push_back(
+        {unit.file->path(), kNoPosition, "in the variant " + variants::DescribeKeywords(keywords)});
     return d;
 }
 

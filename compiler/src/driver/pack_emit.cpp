@@ -89,9 +89,9 @@ void FinishModules(CompileState& st) {
             if (fm.ok)
                 continue;
             if (fm.failure) {
-                Diagnostic& d = st.diags.Add(fm.failure->severity, fm.failure->code,
-                                             fm.failure->file, fm.failure->range,
-                                             fm.failure->message);
+                Diagnostic& d =
+                    st.diags.Add(fm.failure->severity, fm.failure->code, fm.failure->file,
+                                 fm.failure->range, fm.failure->message);
                 d.notes = fm.failure->notes;
                 continue;
             }

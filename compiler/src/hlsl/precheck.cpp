@@ -20,8 +20,8 @@ struct Token {
 };
 
 struct Directive {
-    std::string_view name;  // "define", "if", ...
-    uint32_t begin = 0;     // offset of the '#'
+    std::string_view name;       // "define", "if", ...
+    uint32_t begin = 0;          // offset of the '#'
     size_t first = 0, last = 0;  // its tokens (after the name), [first, last)
 };
 
@@ -55,9 +55,9 @@ size_t SkipTrivia(std::string_view s, size_t i) {
 }
 
 size_t PunctLength(std::string_view s, size_t i) {
-    static constexpr std::string_view kMulti[] = {"<<=", ">>=", "==", "!=", "<=", ">=", "+=",
-                                                  "-=",  "*=",  "/=", "%=", "&=", "|=", "^=",
-                                                  "++",  "--",  "&&", "||", "<<", ">>", "##"};
+    static constexpr std::string_view kMulti[] = {
+        "<<=", ">>=", "==", "!=", "<=", ">=", "+=", "-=", "*=", "/=", "%=",
+        "&=",  "|=",  "^=", "++", "--", "&&", "||", "<<", ">>", "##"};
     for (std::string_view m : kMulti) {
         if (s.compare(i, m.size(), m) == 0)
             return m.size();
@@ -129,8 +129,8 @@ Scan Tokenize(std::string_view s) {
 }
 
 bool IsBinaryOperator(std::string_view t) {
-    static constexpr std::string_view kOps[] = {"+",  "-",  "*",  "/",  "%",  "&",  "|",
-                                                "^",  "&&", "||", "<<", ">>", "<",  ">",
+    static constexpr std::string_view kOps[] = {"+",  "-",  "*",  "/",  "%",  "&", "|",
+                                                "^",  "&&", "||", "<<", ">>", "<", ">",
                                                 "<=", ">=", "==", "!=", "?",  ":"};
     for (std::string_view op : kOps) {
         if (t == op)
@@ -146,9 +146,9 @@ uint64_t SaturatingAdd(uint64_t a, uint64_t b) {
 
 struct Macro {
     std::string name;
-    uint32_t file_offset = 0;          // of the name in the #define
-    uint64_t own_tokens = 0;           // body tokens that are not identifiers
-    std::vector<std::string> refs;     // body identifiers that are not parameters
+    uint32_t file_offset = 0;       // of the name in the #define
+    uint64_t own_tokens = 0;        // body tokens that are not identifiers
+    std::vector<std::string> refs;  // body identifiers that are not parameters
 };
 
 // Estimated tokens of `root` fully expanded under `macros` (by name): every identifier of a body
@@ -231,8 +231,8 @@ void CheckNesting(const BlockState& b, const PrecheckLimits& limits, DiagnosticL
                 if (++conditions > limits.max_nesting) {
                     report(conditions_reported, DiagCode::kProgramNestingTooDeep, d.begin,
                            d.begin + 1,
-                           "#if directives nested more than " +
-                               std::to_string(limits.max_nesting) + " deep");
+                           "#if directives nested more than " + std::to_string(limits.max_nesting) +
+                               " deep");
                 }
             } else if (d.name == "endif" && conditions > 0) {
                 --conditions;
@@ -333,13 +333,12 @@ void Prechecker::CheckPass(const std::vector<const ProgramBlock*>& blocks) {
             Diagnostic& d = diags_.Error(
                 DiagCode::kMacroExpansionTooLarge, file_.path(), b.RangeOf(t.begin, t.end),
                 "macro '" + macro.name + "' expands to about " + std::to_string(size) +
-                    " tokens, more than the budget of " +
-                    std::to_string(limits_.max_macro_tokens) + " for one use");
+                    " tokens, more than the budget of " + std::to_string(limits_.max_macro_tokens) +
+                    " for one use");
             const SourceLoc def = file_.LocAt(macro.file_offset);
-            d.notes.push_back(
-                {file_.path(),
-                 {def, file_.LocAt(macro.file_offset + uint32_t(macro.name.size()))},
-                 "'" + macro.name + "' is defined here"});
+            d.notes.push_back({file_.path(),
+                               {def, file_.LocAt(macro.file_offset + uint32_t(macro.name.size()))},
+                               "'" + macro.name + "' is defined here"});
         }
     }
 }

@@ -17,8 +17,8 @@
 namespace kiln::hlsl {
 
 struct PrecheckLimits {
-    size_t max_nesting = 256;          // ( [ { open at once, and #if/#ifdef/#ifndef open at once
-    size_t max_operators = 10000;      // binary operators in one expression statement
+    size_t max_nesting = 256;             // ( [ { open at once, and #if/#ifdef/#ifndef open at once
+    size_t max_operators = 10000;         // binary operators in one expression statement
     uint64_t max_macro_tokens = 1 << 20;  // estimated tokens of one macro use, fully expanded
 };
 

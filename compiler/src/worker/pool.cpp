@@ -87,7 +87,8 @@ struct Worker {
 class WorkerPool : public Executor {
   public:
     explicit WorkerPool(PoolOptions options)
-        : options_(std::move(options)), workers_(std::max(1u, options_.workers)),
+        : options_(std::move(options)),
+          workers_(std::max(1u, options_.workers)),
           busy_(workers_.size(), false) {}
 
     ~WorkerPool() override {
@@ -159,8 +160,13 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
     const std::string fd = std::to_string(kWorkerFd);
     const std::string memory = std::to_string(options_.memory_limit_bytes);
     const std::string stack = std::to_string(options_.stack_bytes);
-    std::vector<const char*> argv = {options_.worker_path.c_str(), "--fd", fd.c_str(),
-                                     "--memory-limit", memory.c_str(), "--stack", stack.c_str(),
+    std::vector<const char*> argv = {options_.worker_path.c_str(),
+                                     "--fd",
+                                     fd.c_str(),
+                                     "--memory-limit",
+                                     memory.c_str(),
+                                     "--stack",
+                                     stack.c_str(),
                                      nullptr};
     pid_t pid = -1;
     const int rc = posix_spawn(&pid, options_.worker_path.c_str(), &actions, &attr,

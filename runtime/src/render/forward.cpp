@@ -139,8 +139,8 @@ struct Planner {
         if (auto e =
                 s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created)) {
             return Error{"shader '" + std::string(pack.String(pack.Shader(m.shader).name)) +
-                         "' pass '" + PassLabel(pack, pass) + "' variant '" + JoinKeywords(chosen) +
-                         "': " + e->message,
+                             "' pass '" + PassLabel(pack, pass) + "' variant '" +
+                             JoinKeywords(chosen) + "': " + e->message,
                          e->kind};
         }
         d.vertices = &vb;

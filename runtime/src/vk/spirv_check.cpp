@@ -1,7 +1,7 @@
 #include "vk/spirv_check.h"
 
-#include <spirv-tools/libspirv.hpp>
 #include <xxhash.h>
+#include <spirv-tools/libspirv.hpp>
 
 #include <map>
 #include <string>

@@ -11,8 +11,8 @@ namespace {
 
 // Runs the pre-checks over the program of a one-pass shader whose CGPROGRAM body is `body`.
 std::string Check(const std::string& body, hlsl::PrecheckLimits limits = {}) {
-    const std::string text = "Shader \"P\" { SubShader { Pass {\nCGPROGRAM\n" + body +
-                             "\nENDCG\n} } }\n";
+    const std::string text =
+        "Shader \"P\" { SubShader { Pass {\nCGPROGRAM\n" + body + "\nENDCG\n} } }\n";
     ParseOutcome parsed = ParseText(text, "p.shader");
     EXPECT_TRUE(parsed.shader) << Summarize(parsed.diags);
     if (!parsed.shader)
@@ -41,8 +41,7 @@ TEST(Precheck, NestingUpToTheLimitPassesAndOneMoreIsAnErrorAtThatBracket) {
               "");
     const std::string s =
         Check("float f() { return " + Repeat("(", 8) + "1" + Repeat(")", 8) + "; }", limits);
-    EXPECT_NE(s.find("K5012 3:27 error: brackets nested more than 8 deep"), std::string::npos)
-        << s;
+    EXPECT_NE(s.find("K5012 3:27 error: brackets nested more than 8 deep"), std::string::npos) << s;
     EXPECT_EQ(s.find("K5012", s.find("K5012") + 1), std::string::npos) << "reported once: " << s;
 }
 
@@ -63,8 +62,7 @@ TEST(Precheck, ConditionalsNestedPastTheLimitAreAnError) {
     limits.max_nesting = 3;
     EXPECT_EQ(Check(Repeat("#ifdef A\n", 3) + Repeat("#endif\n", 3), limits), "");
     const std::string s = Check(Repeat("#ifdef A\n", 4) + Repeat("#endif\n", 4), limits);
-    EXPECT_NE(s.find("K5012 6:1 error: #if directives nested more than 3 deep"),
-              std::string::npos)
+    EXPECT_NE(s.find("K5012 6:1 error: #if directives nested more than 3 deep"), std::string::npos)
         << s;
 }
 

@@ -1,6 +1,6 @@
-// Reading inputs and writing outputs the way every part of Kiln must (docs/architecture.md, "Files"):
-// inputs are regular files of bounded size, opened so that a FIFO or device never blocks or
-// streams without end; outputs replace a regular file atomically (a unique temporary file in the
+// Reading inputs and writing outputs the way every part of Kiln must (docs/architecture.md,
+// "Files"): inputs are regular files of bounded size, opened so that a FIFO or device never blocks
+// or streams without end; outputs replace a regular file atomically (a unique temporary file in the
 // same directory, fsync, rename, fsync of the directory), never a device, FIFO or directory, and
 // never one of the inputs.
 #ifndef KILN_BASE_FILES_H_
@@ -39,7 +39,8 @@ Result<bool> WriteFileAtomically(const std::string& path,
 // The checks WriteFileAtomically makes before it writes, for a command that wants to refuse a bad
 // output before doing the work: `path` (or the file its symbolic link names) is absent or a
 // regular file, and none of `inputs`. Gives the file that will be replaced.
-Result<std::string> CheckOutputPath(const std::string& path, const std::vector<std::string>& inputs);
+Result<std::string> CheckOutputPath(const std::string& path,
+                                    const std::vector<std::string>& inputs);
 
 // "a directory", "a FIFO", "a character device", ... for a path that exists but is no regular
 // file; "" for a regular file or a path that does not exist.
