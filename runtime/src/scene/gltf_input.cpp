@@ -53,6 +53,17 @@ bool ReadWholeFile(std::vector<unsigned char>* out,
 
 }  // namespace
 
+std::vector<std::string> MessageLines(const std::string& text) {
+    std::vector<std::string> out;
+    for (size_t at = 0; at < text.size();) {
+        const size_t end = std::min(text.find('\n', at), text.size());
+        if (end > at)
+            out.push_back(text.substr(at, end - at));
+        at = end + 1;
+    }
+    return out;
+}
+
 size_t JsonDepth(std::string_view json, size_t limit) {
     size_t depth = 0, deepest = 0;
     for (size_t i = 0; i < json.size() && deepest <= limit; ++i) {
@@ -97,7 +108,10 @@ std::optional<Error> LoadGltfModel(const std::string& path,
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, p, n, dir)
                            : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), n, dir);
     if (!ok) {
-        return Error{path + ": " + (err.empty() ? std::string("not a glTF file") : err),
+        std::string why;
+        for (const std::string& line : MessageLines(err))
+            why += (why.empty() ? "" : "; ") + line;
+        return Error{path + ": " + (why.empty() ? std::string("not a glTF file") : why),
                      ErrorKind::kScene};
     }
     return std::nullopt;

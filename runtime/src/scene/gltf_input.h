@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "kiln/runtime/status.h"
 
@@ -26,6 +27,9 @@ inline constexpr size_t kMaxJsonDepth = 128;
 // Deepest nesting of arrays and objects in JSON text (strings skipped); stops counting once past
 // `limit`, so the scan is linear whatever the input.
 size_t JsonDepth(std::string_view json, size_t limit);
+
+// tinygltf's messages, which end with newlines, one per line.
+std::vector<std::string> MessageLines(const std::string& text);
 
 // Loads `path` (.gltf, or .glb by extension) into `model`; tinygltf's warnings go to `warn`.
 std::optional<Error> LoadGltfModel(const std::string& path,

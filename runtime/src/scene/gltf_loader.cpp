@@ -261,8 +261,8 @@ std::optional<Error> LoadGltf(const std::string& path,
     tinygltf::Model model;
     std::string warn;
     const std::optional<Error> failed = LoadGltfModel(path, model, warn);
-    if (!warn.empty()) {
-        warnings.push_back(path + ": " + warn);
+    for (const std::string& line : MessageLines(warn)) {
+        warnings.push_back(path + ": " + line);
     }
     if (failed) {
         return failed;
@@ -295,6 +295,7 @@ std::optional<Error> LoadGltf(const std::string& path,
                 path + ": mesh " + std::to_string(mi) + " primitive " + std::to_string(pi);
             if (auto e =
                     ReadPrimitive(model, model.meshes[mi].primitives[pi], where, prim, warnings)) {
+                e->kind = ErrorKind::kScene;  // the file's content, not the renderer, is at fault
                 return e;
             }
             if (!prim.indices.empty()) {
