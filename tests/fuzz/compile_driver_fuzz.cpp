@@ -6,6 +6,7 @@
 // ctest in every build through fuzz_replay_main.cpp.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -23,10 +24,15 @@ void DecodeAsProtocol(const std::string& bytes) {
     (void)DecodeResponse(bytes);
     (void)DecodePhase(bytes);
     (void)DecodeFailure(bytes);
-    std::string buffer = bytes;
-    bool bad = false;
-    while (auto frame = TakeFrame(buffer, bad))
-        (void)SplitFrame(*frame);
+    FrameReader reader;
+    for (size_t at = 0; at < bytes.size() && !reader.bad();) {
+        const std::span<char> room = reader.Room();
+        const size_t n = std::min(room.size(), bytes.size() - at);
+        std::copy_n(bytes.data() + at, n, room.data());
+        at += n;
+        if (reader.Advance(n))
+            (void)SplitFrame(reader.Take());
+    }
 }
 
 }  // namespace

@@ -81,7 +81,7 @@ bool SendAll(int fd, const std::string& bytes) {
 struct Worker {
     pid_t pid = -1;
     int fd = -1;
-    std::string buffer;  // bytes received, not yet framed
+    FrameReader reader;
 };
 
 class WorkerPool : public Executor {
@@ -181,7 +181,11 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
     }
     w.pid = pid;
     w.fd = sv[0];
-    w.buffer.clear();
+    w.reader = FrameReader();
+    // Preprocessed Unity shaders are a few hundred KiB: let a response pass in few system calls.
+    const int buffer_bytes = 4 << 20;
+    setsockopt(w.fd, SOL_SOCKET, SO_RCVBUF, &buffer_bytes, sizeof buffer_bytes);
+    setsockopt(w.fd, SOL_SOCKET, SO_SNDBUF, &buffer_bytes, sizeof buffer_bytes);
     return true;
 }
 
@@ -210,7 +214,7 @@ void WorkerPool::Stop(Worker& w, bool kill_now, Outcome* o) const {
             o->exit_code = WEXITSTATUS(status);
     }
     w.pid = -1;
-    w.buffer.clear();
+    w.reader = FrameReader();
 }
 
 Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
@@ -224,16 +228,36 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
         Stop(w, kill_now, &o);
         return o;
     };
-    if (!SendAll(w.fd, WithLength(EncodeRequest(request))))
+    if (!SendAll(w.fd, EncodeRequest(request)))
         return fail(Outcome::Status::kCrashed, false);
-    const auto deadline =
-        Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                           std::chrono::duration<double>(options_.timeout_seconds));
-    char chunk[1 << 16];
+    const auto start = Clock::now();
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(options_.timeout_seconds));
+    auto next_memory_check = start;
     for (;;) {
-        bool bad = false;
-        while (std::optional<std::string> payload = TakeFrame(w.buffer, bad)) {
-            const std::optional<Frame> frame = SplitFrame(*payload);
+        pollfd p{w.fd, POLLIN, 0};
+        const int ready = poll(&p, 1, kTickMs);
+        if (ready < 0 && errno != EINTR)
+            return fail(Outcome::Status::kCrashed, true);
+        // Everything that has arrived, without blocking.
+        while (ready > 0) {
+            const std::span<char> room = w.reader.Room();
+            const ssize_t n = recv(w.fd, room.data(), room.size(), MSG_DONTWAIT);
+            if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
+                break;
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0)
+                return fail(Outcome::Status::kCrashed, false);
+            if (!w.reader.Advance(static_cast<size_t>(n))) {
+                if (w.reader.bad()) {
+                    o.detail = "a frame over the size limit";
+                    return fail(Outcome::Status::kBroken, true);
+                }
+                continue;
+            }
+            const std::string payload = w.reader.Take();
+            const std::optional<Frame> frame = SplitFrame(payload);
             if (!frame) {
                 o.detail = "an unknown frame";
                 return fail(Outcome::Status::kBroken, true);
@@ -260,26 +284,14 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
             o.response = std::move(*resp);
             return o;
         }
-        if (bad) {
-            o.detail = "a frame over the size limit";
-            return fail(Outcome::Status::kBroken, true);
-        }
-        if (Clock::now() >= deadline)
+        const auto now = Clock::now();
+        if (now >= deadline)
             return fail(Outcome::Status::kTimedOut, true);
-        if (ResidentBytes(w.pid) > options_.memory_limit_bytes)
-            return fail(Outcome::Status::kOutOfMemory, true);
-        pollfd p{w.fd, POLLIN, 0};
-        const int ready = poll(&p, 1, kTickMs);
-        if (ready < 0 && errno != EINTR)
-            return fail(Outcome::Status::kCrashed, true);
-        if (ready <= 0)
-            continue;
-        const ssize_t n = recv(w.fd, chunk, sizeof chunk, 0);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return fail(Outcome::Status::kCrashed, false);
-        w.buffer.append(chunk, static_cast<size_t>(n));
+        if (now >= next_memory_check) {
+            if (ResidentBytes(w.pid) > options_.memory_limit_bytes)
+                return fail(Outcome::Status::kOutOfMemory, true);
+            next_memory_check = now + std::chrono::milliseconds(kTickMs);
+        }
     }
 }
 

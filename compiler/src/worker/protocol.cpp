@@ -39,9 +39,13 @@ uint32_t GetU32(std::string_view s, size_t at) {
     return x;
 }
 
+// Builds a whole frame: the length is patched in when it is taken.
 class Writer {
   public:
-    explicit Writer(FrameType type) { PutU32(out_, uint32_t(type)); }
+    explicit Writer(FrameType type) {
+        PutU32(out_, 0);
+        PutU32(out_, uint32_t(type));
+    }
     void Bytes(Tag tag, std::string_view bytes) {
         out_ += static_cast<char>(tag);
         PutU32(out_, static_cast<uint32_t>(bytes.size()));
@@ -55,7 +59,12 @@ class Writer {
             PutU32(b, w);
         Bytes(tag, b);
     }
-    std::string Take() { return std::move(out_); }
+    std::string Take() {
+        const auto n = static_cast<uint32_t>(out_.size() - 4);
+        for (int i = 0; i < 4; ++i)
+            out_[size_t(i)] = static_cast<char>(n >> (8 * i));
+        return std::move(out_);
+    }
 
   private:
     std::string out_;
@@ -291,28 +300,34 @@ std::optional<Failure> DecodeFailure(std::string_view fields) {
     return ok ? std::optional<Failure>(std::move(f)) : std::nullopt;
 }
 
-std::optional<std::string> TakeFrame(std::string& buffer, bool& bad) {
-    bad = false;
-    if (buffer.size() < 4)
-        return std::nullopt;
-    const uint32_t size = GetU32(buffer, 0);
-    if (size > kMaxFrameBytes) {
-        bad = true;
-        return std::nullopt;
-    }
-    if (buffer.size() - 4 < size)
-        return std::nullopt;
-    std::string payload = buffer.substr(4, size);
-    buffer.erase(0, size_t{size} + 4);
-    return payload;
+std::span<char> FrameReader::Room() {
+    if (header_have_ < 4)
+        return {header_ + header_have_, 4 - header_have_};
+    return {body_.data() + body_have_, body_.size() - body_have_};
 }
 
-std::string WithLength(const std::string& payload) {
-    std::string out;
-    out.reserve(payload.size() + 4);
-    PutU32(out, static_cast<uint32_t>(payload.size()));
-    out += payload;
-    return out;
+bool FrameReader::Advance(size_t n) {
+    if (header_have_ < 4) {
+        header_have_ += n;
+        if (header_have_ < 4)
+            return false;
+        const uint32_t size = GetU32(std::string_view(header_, 4), 0);
+        if (size > kMaxFrameBytes) {
+            bad_ = true;
+            return false;
+        }
+        body_.assign(size, '\0');
+        body_have_ = 0;
+        return size == 0;
+    }
+    body_have_ += n;
+    return body_have_ == body_.size();
+}
+
+std::string FrameReader::Take() {
+    header_have_ = 0;
+    body_have_ = 0;
+    return std::move(body_);
 }
 
 }  // namespace kiln::worker

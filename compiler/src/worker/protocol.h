@@ -2,14 +2,15 @@
 // (SPIR-V, glslang's log, SPIRV-Tools' messages) out. The same messages serve the in-process
 // executor, the worker processes (worker/pool.h) and, later, distributed compilation.
 //
-// A frame on the wire is u32 length (little-endian) + payload. A payload is a u32 frame type then
-// fields: u8 tag, u32 size, bytes. Unknown tags are skipped; every read is bounds-checked, since a
+// A frame on the wire is u32 length (little-endian) + payload; Encode* return whole frames. A
+// payload is a u32 frame type then fields: u8 tag, u32 size, bytes. Unknown tags are skipped; every read is bounds-checked, since a
 // worker that went wrong may send anything.
 #ifndef KILN_WORKER_PROTOCOL_H_
 #define KILN_WORKER_PROTOCOL_H_
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,7 +72,8 @@ std::string EncodeResponse(const Response& r);
 std::string EncodePhase(Component c);
 std::string EncodeFailure(std::string_view reason, std::string_view detail);
 
-// A frame's payload split into its type and fields; nullopt when malformed.
+// A frame's payload (what follows the length) split into its type and fields; nullopt when
+// malformed.
 struct Frame {
     FrameType type{};
     std::string_view payload;  // fields, after the type
@@ -85,10 +87,23 @@ struct Failure {
 };
 std::optional<Failure> DecodeFailure(std::string_view fields);
 
-// Length-prefixed framing over a byte buffer: the next complete payload at the front of `buffer`
-// (removed from it), nullopt when incomplete; `bad` is set when the length is over the limit.
-std::optional<std::string> TakeFrame(std::string& buffer, bool& bad);
-std::string WithLength(const std::string& payload);
+// Frames arriving on a socket, each read straight into its own string: Room() is where the next
+// bytes go, Advance(n) says n arrived there; once it returns true, Take() gives the payload.
+class FrameReader {
+  public:
+    std::span<char> Room();
+    bool Advance(size_t n);
+    // The length announced is over kMaxFrameBytes: the peer is not speaking the protocol.
+    bool bad() const { return bad_; }
+    std::string Take();
+
+  private:
+    char header_[4] = {};
+    size_t header_have_ = 0;
+    std::string body_;
+    size_t body_have_ = 0;
+    bool bad_ = false;
+};
 
 }  // namespace kiln::worker
 

@@ -66,11 +66,10 @@ bool ParseArgs(int argc, char** argv, Args& a) {
     return a.fd >= 0;
 }
 
-bool Send(int fd, const std::string& payload) {
-    const std::string bytes = worker::WithLength(payload);
+bool Send(int fd, const std::string& frame) {
     size_t at = 0;
-    while (at < bytes.size()) {
-        const ssize_t n = send(fd, bytes.data() + at, bytes.size() - at, MSG_NOSIGNAL);
+    while (at < frame.size()) {
+        const ssize_t n = send(fd, frame.data() + at, frame.size() - at, MSG_NOSIGNAL);
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0)
@@ -80,21 +79,19 @@ bool Send(int fd, const std::string& payload) {
     return true;
 }
 
-// The next request's payload; nullopt at end-of-file or on a read error.
-std::optional<std::string> Receive(int fd, std::string& buffer) {
-    char chunk[1 << 16];
+// The next request's payload; nullopt at end-of-file, on a read error or an oversized frame.
+std::optional<std::string> Receive(int fd, worker::FrameReader& reader) {
     for (;;) {
-        bool bad = false;
-        if (auto payload = worker::TakeFrame(buffer, bad))
-            return payload;
-        if (bad)
-            return std::nullopt;
-        const ssize_t n = recv(fd, chunk, sizeof chunk, 0);
+        const std::span<char> room = reader.Room();
+        const ssize_t n = recv(fd, room.data(), room.size(), 0);
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0)
             return std::nullopt;
-        buffer.append(chunk, static_cast<size_t>(n));
+        if (reader.Advance(static_cast<size_t>(n)))
+            return reader.Take();
+        if (reader.bad())
+            return std::nullopt;
     }
 }
 
@@ -117,9 +114,9 @@ std::optional<std::string> Receive(int fd, std::string& buffer) {
 
 int Serve(int fd) {
     hlsl::FileCache files;
-    std::string buffer;
+    worker::FrameReader reader;
     for (;;) {
-        const std::optional<std::string> payload = Receive(fd, buffer);
+        const std::optional<std::string> payload = Receive(fd, reader);
         if (!payload)
             return 0;  // the parent closed its end
         const auto frame = worker::SplitFrame(*payload);

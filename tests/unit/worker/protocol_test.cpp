@@ -2,10 +2,22 @@
 // send (a truncated frame, a field running past the end, an oversized length) is read past its end.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "worker/protocol.h"
 
 namespace kiln::worker {
 namespace {
+
+// A whole frame's payload: what follows its length.
+std::string_view Payload(const std::string& frame) {
+    EXPECT_GE(frame.size(), 4u);
+    uint32_t n = 0;
+    for (int i = 0; i < 4; ++i)
+        n |= uint32_t(uint8_t(frame[size_t(i)])) << (8 * i);
+    EXPECT_EQ(n, frame.size() - 4);
+    return std::string_view(frame).substr(4);
+}
 
 Request SampleRequest() {
     Request r;
@@ -26,7 +38,7 @@ Request SampleRequest() {
 TEST(WorkerProtocol, RequestsRoundTrip) {
     const Request r = SampleRequest();
     const std::string bytes = EncodeRequest(r);
-    const auto frame = SplitFrame(bytes);
+    const auto frame = SplitFrame(Payload(bytes));
     ASSERT_TRUE(frame);
     EXPECT_EQ(frame->type, FrameType::kRequest);
     const auto back = DecodeRequest(frame->payload);
@@ -55,7 +67,7 @@ TEST(WorkerProtocol, ResponsesRoundTrip) {
     r.words = {1, 2, 3};
     r.files_read = {"a.cginc", "b.cginc"};
     const std::string bytes = EncodeResponse(r);
-    const auto frame = SplitFrame(bytes);
+    const auto frame = SplitFrame(Payload(bytes));
     ASSERT_TRUE(frame);
     EXPECT_EQ(frame->type, FrameType::kResponse);
     const auto back = DecodeResponse(frame->payload);
@@ -70,11 +82,11 @@ TEST(WorkerProtocol, ResponsesRoundTrip) {
     EXPECT_EQ(back->files_read, r.files_read);
 
     const std::string phase_bytes = EncodePhase(Component::kSpirvOpt);
-    const auto phase = SplitFrame(phase_bytes);
+    const auto phase = SplitFrame(Payload(phase_bytes));
     ASSERT_TRUE(phase && phase->type == FrameType::kPhase);
     EXPECT_EQ(DecodePhase(phase->payload), Component::kSpirvOpt);
     const std::string failure_bytes = EncodeFailure("memory", "an allocation failed");
-    const auto failure = SplitFrame(failure_bytes);
+    const auto failure = SplitFrame(Payload(failure_bytes));
     ASSERT_TRUE(failure && failure->type == FrameType::kFailure);
     ASSERT_TRUE(DecodeFailure(failure->payload));
     EXPECT_EQ(DecodeFailure(failure->payload)->reason, "memory");
@@ -85,7 +97,7 @@ TEST(WorkerProtocol, ResponsesRoundTrip) {
 // past.
 TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
     const std::string bytes = EncodeRequest(SampleRequest());
-    const auto full = SplitFrame(bytes);
+    const auto full = SplitFrame(Payload(bytes));
     ASSERT_TRUE(full);
     size_t accepted = 0;
     for (size_t n = 0; n < full->payload.size(); ++n)
@@ -94,7 +106,7 @@ TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
     // optimize, words: 12 boundaries before the end, the empty prefix included.
     EXPECT_EQ(accepted, 12u);
     for (size_t n = 0; n < 4; ++n)
-        EXPECT_FALSE(SplitFrame(std::string_view(bytes).substr(0, n)));
+        EXPECT_FALSE(SplitFrame(Payload(bytes).substr(0, n)));
 }
 
 TEST(WorkerProtocol, BadValuesAndUnknownTagsAreHandled) {
@@ -121,19 +133,34 @@ TEST(WorkerProtocol, BadValuesAndUnknownTagsAreHandled) {
     EXPECT_FALSE(DecodeRequest(past));
 }
 
-TEST(WorkerProtocol, FramingWaitsForWholeFramesAndRefusesOversizedOnes) {
-    const std::string a = WithLength("first"), b = WithLength("second");
-    std::string buffer = a + b.substr(0, 3);
-    bool bad = false;
-    EXPECT_EQ(TakeFrame(buffer, bad), "first");
-    EXPECT_FALSE(TakeFrame(buffer, bad));
-    EXPECT_FALSE(bad);
-    buffer += b.substr(3);
-    EXPECT_EQ(TakeFrame(buffer, bad), "second");
-    EXPECT_TRUE(buffer.empty());
-    std::string huge = "\xff\xff\xff\x7f";
-    EXPECT_FALSE(TakeFrame(huge, bad));
-    EXPECT_TRUE(bad);
+// Feeds `bytes` to a reader in pieces of at most `step`; the payloads of the frames completed.
+std::vector<std::string> Feed(FrameReader& reader, const std::string& bytes, size_t step) {
+    std::vector<std::string> out;
+    for (size_t at = 0; at < bytes.size() && !reader.bad();) {
+        const std::span<char> room = reader.Room();
+        const size_t n = std::min({room.size(), step, bytes.size() - at});
+        std::copy_n(bytes.data() + at, n, room.data());
+        at += n;
+        if (reader.Advance(n))
+            out.push_back(reader.Take());
+    }
+    return out;
+}
+
+TEST(WorkerProtocol, FramesArriveWholeWhateverThePiecesAndOversizedOnesAreRefused) {
+    const std::string a = EncodePhase(Component::kGlslang);
+    const std::string b = EncodeResponse(Response{});
+    for (size_t step : {size_t(1), size_t(3), size_t(7), size_t(1000)}) {
+        FrameReader reader;
+        const auto frames = Feed(reader, a + b + a.substr(0, 5), step);
+        ASSERT_EQ(frames.size(), 2u) << step;
+        EXPECT_EQ(frames[0], Payload(a));
+        EXPECT_EQ(frames[1], Payload(b));
+        EXPECT_FALSE(reader.bad());
+    }
+    FrameReader reader;
+    EXPECT_TRUE(Feed(reader, std::string("\xff\xff\xff\x7f", 4) + "x", 1).empty());
+    EXPECT_TRUE(reader.bad());
 }
 
 }  // namespace
