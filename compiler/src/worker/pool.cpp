@@ -228,6 +228,7 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
         Stop(w, kill_now, &o);
         return o;
     };
+    o.component = FirstComponent(request.kind);
     if (!SendAll(w.fd, EncodeRequest(request)))
         return fail(Outcome::Status::kCrashed, false);
     const auto start = Clock::now();

@@ -139,6 +139,22 @@ const char* ComponentName(Component c) {
     return "the compile worker";
 }
 
+Component FirstComponent(RequestKind kind) {
+    switch (kind) {
+        case RequestKind::kPreprocess:
+            return Component::kGlslangPreprocessor;
+        case RequestKind::kCompile:
+            return Component::kGlslang;
+        case RequestKind::kFinish:
+            return Component::kSpirvOpt;
+        case RequestKind::kValidate:
+            return Component::kSpirvVal;
+        case RequestKind::kSelfTest:
+            return Component::kNone;
+    }
+    return Component::kNone;
+}
+
 std::string EncodeRequest(const Request& r) {
     Writer w(FrameType::kRequest);
     w.U8(kKind, uint8_t(r.kind));

@@ -33,6 +33,8 @@ enum class RequestKind : uint8_t {
 // The third-party component a request was in when it ended (for diagnostics).
 enum class Component : uint8_t { kNone, kGlslangPreprocessor, kGlslang, kSpirvOpt, kSpirvVal };
 const char* ComponentName(Component c);
+// The component a request starts in (the worker tells only the later ones, with kPhase frames).
+Component FirstComponent(RequestKind kind);
 
 struct Request {
     RequestKind kind = RequestKind::kCompile;
@@ -63,7 +65,7 @@ struct Response {
 enum class FrameType : uint32_t {
     kRequest = 0x4b525131,   // "1QRK"
     kResponse = 0x4b525331,  // a Response
-    kPhase = 0x4b525031,     // the worker entered a component (field 1: Component), ahead of time
+    kPhase = 0x4b525031,     // the worker moved on to another component (after the first)
     kFailure = 0x4b524631,   // the worker cannot go on (field 1: reason: "memory", "exception")
 };
 

@@ -129,9 +129,12 @@ int Serve(int fd) {
         }
         if (request->kind == worker::RequestKind::kSelfTest)
             SelfTest(request->source);
-        worker::ExecuteContext context{files, [fd](Component c) {
-                                           if (c != Component::kNone)
+        // The parent knows the first component from the request (FirstComponent).
+        Component current = worker::FirstComponent(request->kind);
+        worker::ExecuteContext context{files, [fd, &current](Component c) {
+                                           if (c != Component::kNone && c != current)
                                                Send(fd, worker::EncodePhase(c));
+                                           current = c;
                                        }};
         try {
             if (!Send(fd, worker::EncodeResponse(worker::Execute(*request, context))))
