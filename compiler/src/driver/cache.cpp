@@ -9,6 +9,7 @@
 
 #include <xxhash.h>
 
+#include "kiln/base/bytes.h"
 #include "kiln/base/files.h"
 
 namespace kiln::driver {
@@ -22,17 +23,6 @@ constexpr uint32_t kEntryMagic = 0x4341434B;  // "KCAC"
 constexpr uint32_t kEntryVersion = 3;
 constexpr uint32_t kSpirvMagic = 0x07230203;
 constexpr int64_t kStaleTemporarySeconds = 24 * 60 * 60;
-
-void PutU32(std::string& s, uint32_t x) {
-    for (int i = 0; i < 4; ++i)
-        s += static_cast<char>(x >> (8 * i));
-}
-uint32_t GetU32(const std::string& s, size_t at) {
-    uint32_t x = 0;
-    for (int i = 0; i < 4; ++i)
-        x |= uint32_t(uint8_t(s[at + size_t(i)])) << (8 * i);
-    return x;
-}
 
 }  // namespace
 
@@ -69,30 +59,32 @@ std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
     if (!read)
         return std::nullopt;
     const std::string& data = read.value();
-    if (data.size() < 12 || GetU32(data, 0) != kEntryMagic || GetU32(data, 4) != kEntryVersion)
+    if (data.size() < 12 || base::LoadLe32(data, 0) != kEntryMagic ||
+        base::LoadLe32(data, 4) != kEntryVersion)
         return std::nullopt;
-    const uint32_t key_size = GetU32(data, 8);
+    const uint32_t key_size = base::LoadLe32(data, 8);
     if (key_size != key.size() || data.size() < 24 + uint64_t{key_size} ||
         data.compare(12, key_size, key) != 0) {
         return std::nullopt;  // another entry's bytes under this name
     }
     const size_t at = 12 + key_size;
-    const uint32_t words = GetU32(data, at);
+    const uint32_t words = base::LoadLe32(data, at);
     const size_t payload = at + 12;
     if (words < 5 || data.size() != payload + uint64_t{words} * 4)
         return std::nullopt;
-    const uint64_t hash = uint64_t{GetU32(data, at + 4)} | uint64_t{GetU32(data, at + 8)} << 32;
+    const uint64_t hash =
+        uint64_t{base::LoadLe32(data, at + 4)} | uint64_t{base::LoadLe32(data, at + 8)} << 32;
     XXH64_state_t* h = XXH64_createState();
     XXH64_reset(h, 0);
     XXH64_update(h, key.data(), key.size());
     XXH64_update(h, data.data() + payload, data.size() - payload);
     const uint64_t actual = XXH64_digest(h);
     XXH64_freeState(h);
-    if (actual != hash || GetU32(data, payload) != kSpirvMagic)
+    if (actual != hash || base::LoadLe32(data, payload) != kSpirvMagic)
         return std::nullopt;
     std::vector<uint32_t> out(words);
     for (uint32_t i = 0; i < words; ++i)
-        out[i] = GetU32(data, payload + size_t{i} * 4);
+        out[i] = base::LoadLe32(data, payload + size_t{i} * 4);
     return out;
 }
 
@@ -103,7 +95,7 @@ bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) co
     std::call_once(cleaned, [this] { RemoveStaleTemporaries(kStaleTemporarySeconds); });
     std::string payload;
     for (uint32_t w : words)
-        PutU32(payload, w);
+        base::AppendLe32(payload, w);
     XXH64_state_t* h = XXH64_createState();
     XXH64_reset(h, 0);
     XXH64_update(h, key.data(), key.size());
@@ -111,13 +103,13 @@ bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) co
     const uint64_t hash = XXH64_digest(h);
     XXH64_freeState(h);
     std::string data;
-    PutU32(data, kEntryMagic);
-    PutU32(data, kEntryVersion);
-    PutU32(data, static_cast<uint32_t>(key.size()));
+    base::AppendLe32(data, kEntryMagic);
+    base::AppendLe32(data, kEntryVersion);
+    base::AppendLe32(data, static_cast<uint32_t>(key.size()));
     data += key;
-    PutU32(data, static_cast<uint32_t>(words.size()));
-    PutU32(data, static_cast<uint32_t>(hash));
-    PutU32(data, static_cast<uint32_t>(hash >> 32));
+    base::AppendLe32(data, static_cast<uint32_t>(words.size()));
+    base::AppendLe32(data, static_cast<uint32_t>(hash));
+    base::AppendLe32(data, static_cast<uint32_t>(hash >> 32));
     data += payload;
 
     const fs::path path = PathFor(key);

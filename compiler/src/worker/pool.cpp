@@ -65,19 +65,6 @@ uint64_t ResidentBytes(pid_t pid) {
     return resident * static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
 }
 
-bool SendAll(int fd, const std::string& bytes) {
-    size_t at = 0;
-    while (at < bytes.size()) {
-        const ssize_t n = send(fd, bytes.data() + at, bytes.size() - at, MSG_NOSIGNAL);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return false;
-        at += static_cast<size_t>(n);
-    }
-    return true;
-}
-
 struct Worker {
     pid_t pid = -1;
     int fd = -1;
@@ -229,7 +216,7 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
         return o;
     };
     o.component = FirstComponent(request.kind);
-    if (!SendAll(w.fd, EncodeRequest(request)))
+    if (!SendFrame(w.fd, EncodeRequest(request)))
         return fail(Outcome::Status::kCrashed, false);
     const auto start = Clock::now();
     const auto deadline = start + std::chrono::duration_cast<Clock::duration>(

@@ -1,5 +1,11 @@
 #include "worker/protocol.h"
 
+#include <sys/socket.h>
+
+#include <cerrno>
+
+#include "kiln/base/bytes.h"
+
 namespace kiln::worker {
 namespace {
 
@@ -27,28 +33,16 @@ enum Tag : uint8_t {
     kDetail,
 };
 
-void PutU32(std::string& s, uint32_t x) {
-    for (int i = 0; i < 4; ++i)
-        s += static_cast<char>(x >> (8 * i));
-}
-
-uint32_t GetU32(std::string_view s, size_t at) {
-    uint32_t x = 0;
-    for (int i = 0; i < 4; ++i)
-        x |= uint32_t(uint8_t(s[at + size_t(i)])) << (8 * i);
-    return x;
-}
-
 // Builds a whole frame: the length is patched in when it is taken.
 class Writer {
   public:
     explicit Writer(FrameType type) {
-        PutU32(out_, 0);
-        PutU32(out_, uint32_t(type));
+        base::AppendLe32(out_, 0);
+        base::AppendLe32(out_, uint32_t(type));
     }
     void Bytes(Tag tag, std::string_view bytes) {
         out_ += static_cast<char>(tag);
-        PutU32(out_, static_cast<uint32_t>(bytes.size()));
+        base::AppendLe32(out_, static_cast<uint32_t>(bytes.size()));
         out_.append(bytes);
     }
     void U8(Tag tag, uint8_t v) { Bytes(tag, std::string_view(reinterpret_cast<char*>(&v), 1)); }
@@ -56,7 +50,7 @@ class Writer {
         std::string b;
         b.reserve(words.size() * 4);
         for (uint32_t w : words)
-            PutU32(b, w);
+            base::AppendLe32(b, w);
         Bytes(tag, b);
     }
     std::string Take() {
@@ -78,7 +72,7 @@ bool ForEachField(std::string_view fields, Fn&& fn) {
         if (fields.size() - at < 5)
             return false;
         const auto tag = static_cast<uint8_t>(fields[at]);
-        const uint32_t size = GetU32(fields, at + 1);
+        const uint32_t size = base::LoadLe32(fields, at + 1);
         at += 5;
         if (size > fields.size() - at)
             return false;
@@ -109,7 +103,7 @@ bool ToWords(std::string_view b, std::vector<uint32_t>& words) {
         return false;
     words.resize(b.size() / 4);
     for (size_t i = 0; i < words.size(); ++i)
-        words[i] = GetU32(b, i * 4);
+        words[i] = base::LoadLe32(b, i * 4);
     return true;
 }
 
@@ -202,7 +196,7 @@ std::string EncodeFailure(std::string_view reason, std::string_view detail) {
 std::optional<Frame> SplitFrame(std::string_view payload) {
     if (payload.size() < 4)
         return std::nullopt;
-    const uint32_t type = GetU32(payload, 0);
+    const uint32_t type = base::LoadLe32(payload, 0);
     switch (static_cast<FrameType>(type)) {
         case FrameType::kRequest:
         case FrameType::kResponse:
@@ -316,6 +310,19 @@ std::optional<Failure> DecodeFailure(std::string_view fields) {
     return ok ? std::optional<Failure>(std::move(f)) : std::nullopt;
 }
 
+bool SendFrame(int fd, const std::string& frame) {
+    size_t at = 0;
+    while (at < frame.size()) {
+        const ssize_t n = send(fd, frame.data() + at, frame.size() - at, MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        at += static_cast<size_t>(n);
+    }
+    return true;
+}
+
 std::span<char> FrameReader::Room() {
     if (header_have_ < 4)
         return {header_ + header_have_, 4 - header_have_};
@@ -327,7 +334,7 @@ bool FrameReader::Advance(size_t n) {
         header_have_ += n;
         if (header_have_ < 4)
             return false;
-        const uint32_t size = GetU32(std::string_view(header_, 4), 0);
+        const uint32_t size = base::LoadLe32(std::string_view(header_, 4), 0);
         if (size > kMaxFrameBytes) {
             bad_ = true;
             return false;

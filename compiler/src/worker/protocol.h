@@ -89,6 +89,9 @@ struct Failure {
 };
 std::optional<Failure> DecodeFailure(std::string_view fields);
 
+// Sends a whole frame on a socket (no SIGPIPE when the peer is gone); false when it is gone.
+bool SendFrame(int fd, const std::string& frame);
+
 // Frames arriving on a socket, each read straight into its own string: Room() is where the next
 // bytes go, Advance(n) says n arrived there; once it returns true, Take() gives the payload.
 class FrameReader {

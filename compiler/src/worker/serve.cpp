@@ -66,19 +66,6 @@ bool ParseArgs(int argc, char** argv, Args& a) {
     return a.fd >= 0;
 }
 
-bool Send(int fd, const std::string& frame) {
-    size_t at = 0;
-    while (at < frame.size()) {
-        const ssize_t n = send(fd, frame.data() + at, frame.size() - at, MSG_NOSIGNAL);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return false;
-        at += static_cast<size_t>(n);
-    }
-    return true;
-}
-
 // The next request's payload; nullopt at end-of-file, on a read error or an oversized frame.
 std::optional<std::string> Receive(int fd, worker::FrameReader& reader) {
     for (;;) {
@@ -124,7 +111,7 @@ int Serve(int fd) {
         if (frame && frame->type == worker::FrameType::kRequest)
             request = worker::DecodeRequest(frame->payload);
         if (!request) {
-            Send(fd, worker::EncodeFailure("protocol", "a malformed request"));
+            worker::SendFrame(fd, worker::EncodeFailure("protocol", "a malformed request"));
             return 2;
         }
         if (request->kind == worker::RequestKind::kSelfTest)
@@ -133,17 +120,17 @@ int Serve(int fd) {
         Component current = worker::FirstComponent(request->kind);
         worker::ExecuteContext context{files, [fd, &current](Component c) {
                                            if (c != Component::kNone && c != current)
-                                               Send(fd, worker::EncodePhase(c));
+                                               worker::SendFrame(fd, worker::EncodePhase(c));
                                            current = c;
                                        }};
         try {
-            if (!Send(fd, worker::EncodeResponse(worker::Execute(*request, context))))
+            if (!worker::SendFrame(fd, worker::EncodeResponse(worker::Execute(*request, context))))
                 return 0;
         } catch (const std::bad_alloc&) {
-            Send(fd, worker::EncodeFailure("memory", "an allocation failed"));
+            worker::SendFrame(fd, worker::EncodeFailure("memory", "an allocation failed"));
             return 3;
         } catch (const std::exception& e) {
-            Send(fd, worker::EncodeFailure("exception", e.what()));
+            worker::SendFrame(fd, worker::EncodeFailure("exception", e.what()));
             return 4;
         }
     }

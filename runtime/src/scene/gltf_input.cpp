@@ -4,17 +4,11 @@
 
 #include <filesystem>
 
+#include "kiln/base/bytes.h"
 #include "kiln/base/files.h"
 
 namespace kiln::runtime {
 namespace {
-
-uint32_t GetU32(std::string_view s, size_t at) {
-    uint32_t x = 0;
-    for (size_t i = 0; i < 4; ++i)
-        x |= uint32_t(uint8_t(s[at + i])) << (8 * i);
-    return x;
-}
 
 // The JSON chunk of a .glb, or the whole text of a .gltf; empty when the container is malformed
 // (tinygltf then reports it).
@@ -22,9 +16,10 @@ std::string_view JsonOf(std::string_view bytes, bool binary) {
     if (!binary)
         return bytes;
     constexpr uint32_t kJsonChunk = 0x4E4F534A;  // "JSON"
-    if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF" || GetU32(bytes, 16) != kJsonChunk)
+    if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF" ||
+        base::LoadLe32(bytes, 16) != kJsonChunk)
         return {};
-    const uint32_t length = GetU32(bytes, 12);
+    const uint32_t length = base::LoadLe32(bytes, 12);
     return length <= bytes.size() - 20 ? bytes.substr(20, length) : std::string_view{};
 }
 
