@@ -168,6 +168,15 @@ const Hostile kRows[] = {
      "render {T}/dir_uri.gltf -o {T}/out.png", 1, "K0007", "is a directory, not a regular file"},
     {"sidecar maps a material to /dev/zero", SceneWithMaterial("/dev/zero"),
      "render {T}/tri.gltf -o {T}/out.png", 1, "", "is a character device"},
+    {"OpenColorIO config is a FIFO",
+     [](const std::string& dir) {
+         fs::copy_file(DataPath("cli/mistakes/triangle.gltf"), dir + "/tri.gltf");
+         mkfifo((dir + "/config.ocio").c_str(), 0600);
+     },
+     "render {T}/tri.gltf --ocio-config {T}/config.ocio -o {T}/out.png", 1, "K0009",
+     "is a FIFO, not a regular file"},
+    {"pack is a FIFO", [](const std::string& dir) { mkfifo((dir + "/p.kpack").c_str(), 0600); },
+     "info {T}/p.kpack", 1, "K0004", "is not a regular file"},
     // Outputs.
     {"output is the input", WriteShader("s.shader", [] { return Shader(Frag("return 1;")); }),
      "compile {T}/s.shader --no-cache -o {T}/s.shader", 1, "K0002", "is the input"},

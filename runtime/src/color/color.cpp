@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "kiln/base/files.h"
 #include "kiln/pack/names.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -79,6 +80,13 @@ std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPip
         if (path.empty()) {
             const char* env = std::getenv("OCIO");
             path = env ? env : "";
+        }
+        // OpenColorIO reads the file itself: a FIFO or device must not get that far.
+        if (const std::string kind = path.empty() ? "" : base::NotRegularFileKind(path);
+            !kind.empty()) {
+            return Error{
+                "the OpenColorIO config '" + path + "' is " + kind + ", not a regular file",
+                ErrorKind::kColor};
         }
         OCIO::ConstConfigRcPtr config =
             path.empty() ? builtin : OCIO::Config::CreateFromFile(path.c_str());
