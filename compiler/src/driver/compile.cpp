@@ -2,23 +2,18 @@
 // compile (or cache) -> bindings/reflection/validation -> pack.
 #include "kiln/compile.h"
 
-#include <unistd.h>
-
-#include <atomic>
-#include <set>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <map>
+#include <set>
 
 #include "driver/cache.h"
 #include "driver/compile_state.h"
 #include "driver/isolation.h"
 #include "driver/parallel.h"
-#include "frontend/glslang_messages.h"
 #include "frontend/glslang_stage.h"
 #include "hlsl/assemble.h"
 #include "hlsl/identifier.h"
-#include "hlsl/includer.h"
 #include "hlsl/precheck.h"
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
@@ -42,49 +37,6 @@ namespace {
 
 std::string LineName(const std::string& path) {
     return hlsl::IsLineSafeName(path) ? path : std::string("<unprintable path>");
-}
-
-// The distinct identifiers of a program text, for "did you mean" on an unknown name.
-std::vector<std::string> Identifiers(const std::string& text) {
-    std::set<std::string> names;
-    for (size_t i = 0; i < text.size();) {
-        if (hlsl::IdentStart(text[i]) && (i == 0 || !hlsl::IdentChar(text[i - 1]))) {
-            size_t j = i;
-            while (j < text.size() && hlsl::IdentChar(text[j]))
-                ++j;
-            names.insert(text.substr(i, j - i));
-            i = j;
-        } else {
-            ++i;
-        }
-    }
-    return {names.begin(), names.end()};
-}
-
-// glslang's info log as Kiln diagnostics (positions resolved against the files read). `program`,
-// when given, is the text compiled (its identifiers feed suggestions).
-void AppendLog(CompileState& st,
-               const std::string& log,
-               std::vector<Diagnostic>& out,
-               const std::string* program = nullptr) {
-    if (log.empty())
-        return;  // the common case: a clean compile
-    auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
-    frontend::MessageContext context;
-    const hlsl::IncludePaths paths = driver::IncludePathsFor(st.options);
-    context.include_search.push_back("the including file's folder");
-    for (const std::string& dir : paths.dirs)
-        context.include_search.push_back(dir + " (-I)");
-    context.include_search.push_back(paths.templates_dir + " (Kiln's templates)");
-    if (program != nullptr)
-        context.identifiers = [program] { return Identifiers(*program); };
-    for (const auto& m : frontend::ParseInfoLog(log))
-        out.push_back(frontend::ToDiagnostic(m, lookup, context));
-}
-
-void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
-    if (o.progress)
-        o.progress(phase, done, total);
 }
 
 // Phase 1: read, parse and check every shader; flatten passes.
@@ -227,11 +179,6 @@ void ExpandPasses(CompileState& st) {
     }
 }
 
-const std::string& EntryOf(const CompileState& st, const driver::StageTask& t) {
-    const auto& pr = st.passes[t.pass].pragmas;
-    return t.stage == pack::Stage::kVertex ? pr.vertex->name : pr.fragment->name;
-}
-
 // Phase 3: preprocess every task (in the workers) and dedup the reduced texts into jobs.
 void PreprocessAndDedup(CompileState& st) {
     driver::ParallelFor(
@@ -250,13 +197,14 @@ void PreprocessAndDedup(CompileState& st) {
             if (!t.preprocess_ok)
                 return;
             hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(o.response.text);
-            hlsl::Reduced reduced = hlsl::ReduceToEntryPoint(rewritten.text, EntryOf(st, t));
+            hlsl::Reduced reduced =
+                hlsl::ReduceToEntryPoint(rewritten.text, driver::EntryOf(st, t));
             t.reduced = std::move(reduced.text);
             t.functions_if_entry_missing = std::move(reduced.functions_if_entry_missing);
             if (rewritten.changed())
                 t.rewritten = std::move(rewritten.text);
         },
-        [&](size_t done) { Progress(st.options, "preprocessing", done, st.tasks.size()); });
+        [&](size_t done) { driver::Progress(st.options, "preprocessing", done, st.tasks.size()); });
 
     const std::string versions = ProducerVersion();
     const std::string options =
@@ -268,141 +216,30 @@ void PreprocessAndDedup(CompileState& st) {
             // Each failing preprocess is its own job so its messages are reported per variant.
             driver::Job job;
             job.stage = t.stage;
-            job.entry = EntryOf(st, t);
+            job.entry = driver::EntryOf(st, t);
             job.first_task = i;
             if (t.failure)
                 job.diags.push_back(*t.failure);
             else
-                AppendLog(st, t.preprocess_log, job.diags, &t.source);
+                driver::AppendGlslangLog(st, t.preprocess_log, job.diags, &t.source);
             t.job = st.jobs.size();
             st.jobs.push_back(std::move(job));
             continue;
         }
         const std::string key =
             driver::HashKey({versions, options, t.stage == pack::Stage::kVertex ? "vert" : "frag",
-                             EntryOf(st, t), t.reduced});
+                             driver::EntryOf(st, t), t.reduced});
         auto [it, fresh] = by_key.emplace(key, st.jobs.size());
         if (fresh) {
             driver::Job job;
             job.stage = t.stage;
-            job.entry = EntryOf(st, t);
+            job.entry = driver::EntryOf(st, t);
             job.first_task = i;
             job.cache_key = key;
             st.jobs.push_back(std::move(job));
         }
         t.job = it->second;
     }
-}
-
-// The `#pragma vertex|fragment` of a stage whose function does not exist, with the closest name.
-Diagnostic MissingEntryPoint(const CompileState& st, const driver::StageTask& t) {
-    const auto& pr = st.passes[t.pass].pragmas;
-    const variants::EntryPoint& e = t.stage == pack::Stage::kVertex ? *pr.vertex : *pr.fragment;
-    Diagnostic d{Severity::kError,
-                 DiagCode::kEntryPointNotFound,
-                 st.shaders[st.passes[t.pass].shader].file->path(),
-                 e.range,
-                 std::string(t.stage == pack::Stage::kVertex ? "vertex" : "fragment") +
-                     " entry point '" + e.name + "' is not a function of this program",
-                 {}};
-    d.message += pack::DidYouMean(e.name, t.functions_if_entry_missing);
-    return d;
-}
-
-// A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
-// the compile that follows replaces it.
-std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
-                                                const driver::Cache& cache,
-                                                const std::string& key) {
-    std::optional<std::vector<uint32_t>> cached = cache.Load(key);
-    if (!cached)
-        return std::nullopt;
-    worker::Request check;
-    check.kind = worker::RequestKind::kValidate;
-    check.words = *cached;
-    const worker::Outcome o = st.exec->Run(check);
-    if (o.status != worker::Outcome::Status::kOk || !o.response.ok)
-        return std::nullopt;
-    return cached;
-}
-
-// One job through glslang and SPIRV-Tools in a worker; its diagnostics go to job.diags.
-void CompileJob(CompileState& st, driver::Job& job) {
-    const driver::StageTask& task = st.tasks[job.first_task];
-    const std::string& main = st.shaders[st.passes[task.pass].shader].file->path();
-    worker::Request request = driver::StageRequest(st, task, worker::RequestKind::kCompile);
-    request.source = task.reduced;
-    worker::Outcome o = st.exec->Run(request);
-    if (auto failure = driver::OutcomeDiagnostic(st, task, o)) {
-        job.diags.push_back(std::move(*failure));
-        return;
-    }
-    const worker::Response& out = o.response;
-    if (out.entry_missing) {
-        job.diags.push_back(MissingEntryPoint(st, task));
-        return;
-    }
-    if (out.failed_in == worker::Component::kGlslang) {
-        // Positions in the reduced text are lines of the original files but not their columns:
-        // compile the assembled source once more for exact diagnostics (or, when a rewrite was
-        // needed, the rewritten text, whose lines are right).
-        request.source = task.rewritten.empty() ? task.source : task.rewritten;
-        request.optimize = false;
-        o = st.exec->Run(request);
-        if (auto failure = driver::OutcomeDiagnostic(st, task, o)) {
-            job.diags.push_back(std::move(*failure));
-            return;
-        }
-        AppendLog(st, o.response.info_log, job.diags, &task.reduced);
-        if (o.response.ok || job.diags.empty()) {
-            job.diags.push_back({Severity::kInternal,
-                                 DiagCode::kInternalError,
-                                 main,
-                                 {},
-                                 "stage compiles from its source but not after reduction to its "
-                                 "entry point",
-                                 {}});
-        }
-        return;
-    }
-    AppendLog(st, out.info_log, job.diags);  // warnings
-    if (!out.ok) {
-        job.diags.push_back({Severity::kError,
-                             DiagCode::kSpirvInvalid,
-                             main,
-                             {},
-                             "SPIR-V legalization failed: " + out.messages,
-                             {}});
-        return;
-    }
-    job.words = std::move(o.response.words);
-    job.ok = true;
-}
-
-// Phase 4: compile each job (or take it from the cache).
-void CompileJobs(CompileState& st, CompileStats& stats) {
-    const driver::Cache cache(st.options.cache_dir);
-    std::atomic<size_t> compiles{0}, hits{0};
-    driver::ParallelFor(
-        st.jobs.size(), st.options.jobs,
-        [&](size_t j) {
-            driver::Job& job = st.jobs[j];
-            if (!st.tasks[job.first_task].preprocess_ok)
-                return;  // reported by PreprocessAndDedup
-            if (auto cached = LoadCached(st, cache, job.cache_key)) {
-                job.words = std::move(*cached);
-                job.ok = job.from_cache = true;
-                ++hits;
-                return;
-            }
-            ++compiles;
-            CompileJob(st, job);
-            if (job.ok)
-                cache.Store(job.cache_key, job.words);
-        },
-        [&](size_t done) { Progress(st.options, "compiling", done, st.jobs.size()); });
-    stats.glslang_compiles = compiles;
-    stats.cache_hits = hits;
 }
 
 void FillReports(const CompileState& st, CompileOutput& out) {
@@ -463,7 +300,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
         if (preprocessed)
             driver::ReportJobDiagnostics(st);
     } else if (!diags.has_errors()) {
-        CompileJobs(st, out.stats);
+        driver::CompileJobs(st, out.stats);
         driver::ReportJobDiagnostics(st);
         if (!diags.has_errors())
             driver::FinishModules(st);

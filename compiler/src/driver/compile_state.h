@@ -83,6 +83,22 @@ struct CompileState {
     std::vector<std::map<size_t, FinalModule>> finals;
 };
 
+// The entry point of a task's stage.
+const std::string& EntryOf(const CompileState& st, const StageTask& t);
+// glslang's info log as Kiln diagnostics (positions resolved against the files read). `program`,
+// when given, is the text compiled (its identifiers feed suggestions).
+void AppendGlslangLog(CompileState& st,
+                      const std::string& log,
+                      std::vector<Diagnostic>& out,
+                      const std::string* program = nullptr);
+inline void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
+    if (o.progress)
+        o.progress(phase, done, total);
+}
+
+// Phase 4, in compile_jobs.cpp: compile each job (or take it from the cache).
+void CompileJobs(CompileState& st, CompileStats& stats);
+
 // Phases implemented in pack_emit.cpp.
 void FinishModules(CompileState& st);    // bindings, reflection, strip, validate
 void CheckInterfaces(CompileState& st);  // stage interface, block layouts, properties

@@ -1,0 +1,171 @@
+// Phase 4 of the compile driver: each unique program compiled by glslang and SPIRV-Tools in a
+// worker (or taken from the cache once spirv-val accepts the entry), and glslang's messages
+// turned into diagnostics.
+#include <atomic>
+#include <set>
+
+#include "driver/cache.h"
+#include "driver/compile_state.h"
+#include "driver/isolation.h"
+#include "driver/parallel.h"
+#include "frontend/glslang_messages.h"
+#include "hlsl/identifier.h"
+#include "kiln/pack/names.h"
+
+namespace kiln::driver {
+namespace {
+
+// The distinct identifiers of a program text, for "did you mean" on an unknown name.
+std::vector<std::string> Identifiers(const std::string& text) {
+    std::set<std::string> names;
+    for (size_t i = 0; i < text.size();) {
+        if (hlsl::IdentStart(text[i]) && (i == 0 || !hlsl::IdentChar(text[i - 1]))) {
+            size_t j = i;
+            while (j < text.size() && hlsl::IdentChar(text[j]))
+                ++j;
+            names.insert(text.substr(i, j - i));
+            i = j;
+        } else {
+            ++i;
+        }
+    }
+    return {names.begin(), names.end()};
+}
+
+// The `#pragma vertex|fragment` of a stage whose function does not exist, with the closest name.
+Diagnostic MissingEntryPoint(const CompileState& st, const StageTask& t) {
+    const auto& pr = st.passes[t.pass].pragmas;
+    const variants::EntryPoint& e = t.stage == pack::Stage::kVertex ? *pr.vertex : *pr.fragment;
+    Diagnostic d{Severity::kError,
+                 DiagCode::kEntryPointNotFound,
+                 st.shaders[st.passes[t.pass].shader].file->path(),
+                 e.range,
+                 std::string(t.stage == pack::Stage::kVertex ? "vertex" : "fragment") +
+                     " entry point '" + e.name + "' is not a function of this program",
+                 {}};
+    d.message += pack::DidYouMean(e.name, t.functions_if_entry_missing);
+    return d;
+}
+
+// A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
+// the compile that follows replaces it.
+std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
+                                                const Cache& cache,
+                                                const std::string& key) {
+    std::optional<std::vector<uint32_t>> cached = cache.Load(key);
+    if (!cached)
+        return std::nullopt;
+    worker::Request check;
+    check.kind = worker::RequestKind::kValidate;
+    check.words = *cached;
+    const worker::Outcome o = st.exec->Run(check);
+    if (o.status != worker::Outcome::Status::kOk || !o.response.ok)
+        return std::nullopt;
+    return cached;
+}
+
+// One job through glslang and SPIRV-Tools in a worker; its diagnostics go to job.diags.
+void CompileJob(CompileState& st, Job& job) {
+    const StageTask& task = st.tasks[job.first_task];
+    const std::string& main = st.shaders[st.passes[task.pass].shader].file->path();
+    worker::Request request = StageRequest(st, task, worker::RequestKind::kCompile);
+    request.source = task.reduced;
+    worker::Outcome o = st.exec->Run(request);
+    if (auto failure = OutcomeDiagnostic(st, task, o)) {
+        job.diags.push_back(std::move(*failure));
+        return;
+    }
+    const worker::Response& out = o.response;
+    if (out.entry_missing) {
+        job.diags.push_back(MissingEntryPoint(st, task));
+        return;
+    }
+    if (out.failed_in == worker::Component::kGlslang) {
+        // Positions in the reduced text are lines of the original files but not their columns:
+        // compile the assembled source once more for exact diagnostics (or, when a rewrite was
+        // needed, the rewritten text, whose lines are right).
+        request.source = task.rewritten.empty() ? task.source : task.rewritten;
+        request.optimize = false;
+        o = st.exec->Run(request);
+        if (auto failure = OutcomeDiagnostic(st, task, o)) {
+            job.diags.push_back(std::move(*failure));
+            return;
+        }
+        AppendGlslangLog(st, o.response.info_log, job.diags, &task.reduced);
+        if (o.response.ok || job.diags.empty()) {
+            job.diags.push_back({Severity::kInternal,
+                                 DiagCode::kInternalError,
+                                 main,
+                                 {},
+                                 "stage compiles from its source but not after reduction to its "
+                                 "entry point",
+                                 {}});
+        }
+        return;
+    }
+    AppendGlslangLog(st, out.info_log, job.diags);  // warnings
+    if (!out.ok) {
+        job.diags.push_back({Severity::kError,
+                             DiagCode::kSpirvInvalid,
+                             main,
+                             {},
+                             "SPIR-V legalization failed: " + out.messages,
+                             {}});
+        return;
+    }
+    job.words = std::move(o.response.words);
+    job.ok = true;
+}
+
+}  // namespace
+
+const std::string& EntryOf(const CompileState& st, const StageTask& t) {
+    const auto& pr = st.passes[t.pass].pragmas;
+    return t.stage == pack::Stage::kVertex ? pr.vertex->name : pr.fragment->name;
+}
+
+void AppendGlslangLog(CompileState& st,
+                      const std::string& log,
+                      std::vector<Diagnostic>& out,
+                      const std::string* program) {
+    if (log.empty())
+        return;  // the common case: a clean compile
+    auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
+    frontend::MessageContext context;
+    const hlsl::IncludePaths paths = IncludePathsFor(st.options);
+    context.include_search.push_back("the including file's folder");
+    for (const std::string& dir : paths.dirs)
+        context.include_search.push_back(dir + " (-I)");
+    context.include_search.push_back(paths.templates_dir + " (Kiln's templates)");
+    if (program != nullptr)
+        context.identifiers = [program] { return Identifiers(*program); };
+    for (const auto& m : frontend::ParseInfoLog(log))
+        out.push_back(frontend::ToDiagnostic(m, lookup, context));
+}
+
+void CompileJobs(CompileState& st, CompileStats& stats) {
+    const Cache cache(st.options.cache_dir);
+    std::atomic<size_t> compiles{0}, hits{0};
+    ParallelFor(
+        st.jobs.size(), st.options.jobs,
+        [&](size_t j) {
+            Job& job = st.jobs[j];
+            if (!st.tasks[job.first_task].preprocess_ok)
+                return;  // reported by PreprocessAndDedup
+            if (auto cached = LoadCached(st, cache, job.cache_key)) {
+                job.words = std::move(*cached);
+                job.ok = job.from_cache = true;
+                ++hits;
+                return;
+            }
+            ++compiles;
+            CompileJob(st, job);
+            if (job.ok)
+                cache.Store(job.cache_key, job.words);
+        },
+        [&](size_t done) { Progress(st.options, "compiling", done, st.jobs.size()); });
+    stats.glslang_compiles = compiles;
+    stats.cache_hits = hits;
+}
+
+}  // namespace kiln::driver
