@@ -401,7 +401,6 @@ std::optional<Error> LoadGltf(const std::string& path,
 }
 
 glm::vec3 ShaderLightColor(const Light& light) {
-    constexpr float kPi = 3.14159265358979f;
     return light.color * (light.intensity / kPi);
 }
 
