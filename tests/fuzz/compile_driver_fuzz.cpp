@@ -22,7 +22,6 @@ void DecodeAsProtocol(const std::string& bytes) {
     using namespace kiln::worker;
     (void)DecodeRequest(bytes);
     (void)DecodeResponse(bytes);
-    (void)DecodePhase(bytes);
     (void)DecodeFailure(bytes);
     FrameReader reader;
     for (size_t at = 0; at < bytes.size() && !reader.bad();) {

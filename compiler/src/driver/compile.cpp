@@ -15,8 +15,6 @@
 #include "hlsl/assemble.h"
 #include "hlsl/identifier.h"
 #include "hlsl/precheck.h"
-#include "hlsl/reduce.h"
-#include "hlsl/rewrite.h"
 #include "kiln/pack/names.h"
 #include "kiln/pack/property_keywords.h"
 #include "kiln/shaderlab/parse.h"
@@ -194,15 +192,9 @@ void PreprocessAndDedup(CompileState& st) {
                 st.files.Get(f);  // for diagnostics and the depfile (a no-op in-process)
             t.preprocess_ok = o.response.ok;
             t.preprocess_log = std::move(o.response.info_log);
-            if (!t.preprocess_ok)
-                return;
-            hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(o.response.text);
-            hlsl::Reduced reduced =
-                hlsl::ReduceToEntryPoint(rewritten.text, driver::EntryOf(st, t));
-            t.reduced = std::move(reduced.text);
-            t.functions_if_entry_missing = std::move(reduced.functions_if_entry_missing);
-            if (rewritten.changed())
-                t.rewritten = std::move(rewritten.text);
+            t.reduced = std::move(o.response.text);
+            t.rewritten = std::move(o.response.rewritten);
+            t.functions_if_entry_missing = std::move(o.response.functions);
         },
         [&](size_t done) { driver::Progress(st.options, "preprocessing", done, st.tasks.size()); });
 

@@ -115,15 +115,24 @@ std::optional<Diagnostic> OutcomeDiagnostic(const CompileState& st,
     switch (outcome.status) {
         case Outcome::Status::kOk:
             return std::nullopt;
-        case Outcome::Status::kCrashed:
-            d.message = who + " crashed (" +
-                        (outcome.signal != 0
-                             ? SignalName(outcome.signal)
-                             : "it exited with status " + std::to_string(outcome.exit_code)) +
-                        ") on " + what +
-                        "; this is a fault in the third-party compiler, not a Kiln diagnostic of "
-                        "your code: simplify the code it fails on, or report it upstream";
+        case Outcome::Status::kCrashed: {
+            const std::string how =
+                outcome.signal != 0 ? SignalName(outcome.signal)
+                                    : "it exited with status " + std::to_string(outcome.exit_code);
+            const bool ours = outcome.component == worker::Component::kKilnReduction ||
+                              outcome.component == worker::Component::kNone;
+            d.message = who + " crashed (" + how + ") on " + what;
+            if (ours) {
+                d.severity = Severity::kInternal;  // Kiln's own code in the worker
+                d.code = DiagCode::kInternalError;
+                d.message += "; this is a Kiln bug: please report it with the input";
+            } else {
+                d.message +=
+                    "; this is a fault in the third-party compiler, not a Kiln diagnostic of your "
+                    "code: simplify the code it fails on, or report it upstream";
+            }
             break;
+        }
         case Outcome::Status::kTimedOut:
             d.code = DiagCode::kCompilerTimeLimit;
             d.message = who + " did not finish " + what + " within the limit of " +

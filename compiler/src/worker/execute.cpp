@@ -2,6 +2,8 @@
 
 #include "frontend/glslang_stage.h"
 #include "hlsl/includer.h"
+#include "hlsl/reduce.h"
+#include "hlsl/rewrite.h"
 #include "spirv/optimize.h"
 
 namespace kiln::worker {
@@ -18,8 +20,17 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     Response resp;
     resp.ok = out.ok;
     resp.failed_in = out.ok ? Component::kNone : Component::kGlslangPreprocessor;
-    resp.text = std::move(out.text);
     resp.info_log = std::move(out.info_log);
+    if (!out.ok)
+        return resp;
+    // Kiln's own steps run here too: the worker then answers with the (smaller) reduced text.
+    Enter(context, Component::kKilnReduction);
+    hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(out.text);
+    hlsl::Reduced reduced = hlsl::ReduceToEntryPoint(rewritten.text, r.entry);
+    resp.text = std::move(reduced.text);
+    resp.functions = std::move(reduced.functions_if_entry_missing);
+    if (rewritten.changed())
+        resp.rewritten = std::move(rewritten.text);
     return resp;
 }
 

@@ -22,6 +22,7 @@
 
 #include "worker/execute.h"
 #include "worker/executor.h"
+#include "worker/phase_board.h"
 
 extern char** environ;
 
@@ -34,7 +35,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr int kTickMs = 20;  // how often a running request's memory is looked at
-constexpr int kWorkerFd = 3;
+constexpr int kWorkerFd = 3, kBoardFd = 4;
 
 class InProcessExecutor : public Executor {
   public:
@@ -69,6 +70,7 @@ struct Worker {
     pid_t pid = -1;
     int fd = -1;
     FrameReader reader;
+    PhaseBoard board;  // made once per slot, shared with each process that fills it
 };
 
 class WorkerPool : public Executor {
@@ -124,17 +126,27 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
         why = std::string("socketpair: ") + std::strerror(errno);
         return false;
     }
-    // The child's end moves to fd 3 there; keep it away from 3 here so dup2 clears CLOEXEC.
-    const int child_end = fcntl(sv[1], F_DUPFD_CLOEXEC, 10);
-    close(sv[1]);
-    if (child_end < 0) {
+    if (!w.board.ok() && !w.board.Create(why)) {
         close(sv[0]);
+        close(sv[1]);
+        return false;
+    }
+    // The child's ends move to fds 3 and 4 there; keep them away from those here so that dup2
+    // clears CLOEXEC.
+    const int child_end = fcntl(sv[1], F_DUPFD_CLOEXEC, 10);
+    const int board_end = fcntl(w.board.fd(), F_DUPFD_CLOEXEC, 10);
+    close(sv[1]);
+    if (child_end < 0 || board_end < 0) {
         why = std::string("fcntl: ") + std::strerror(errno);
+        close(sv[0]);
+        close(child_end);
+        close(board_end);
         return false;
     }
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, child_end, kWorkerFd);
+    posix_spawn_file_actions_adddup2(&actions, board_end, kBoardFd);
     posix_spawnattr_t attr;
     posix_spawnattr_init(&attr);
     sigset_t none, defaults;
@@ -145,11 +157,14 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
     posix_spawnattr_setsigdefault(&attr, &defaults);
     posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
     const std::string fd = std::to_string(kWorkerFd);
+    const std::string board = std::to_string(kBoardFd);
     const std::string memory = std::to_string(options_.memory_limit_bytes);
     const std::string stack = std::to_string(options_.stack_bytes);
     std::vector<const char*> argv = {options_.worker_path.c_str(),
                                      "--fd",
                                      fd.c_str(),
+                                     "--phase-fd",
+                                     board.c_str(),
                                      "--memory-limit",
                                      memory.c_str(),
                                      "--stack",
@@ -161,6 +176,7 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attr);
     close(child_end);
+    close(board_end);
     if (rc != 0) {
         close(sv[0]);
         why = "cannot start '" + options_.worker_path + "': " + std::strerror(rc);
@@ -212,10 +228,11 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
     }
     const auto fail = [&](Outcome::Status status, bool kill_now) {
         o.status = status;
+        o.component = w.board.Get();
         Stop(w, kill_now, &o);
         return o;
     };
-    o.component = FirstComponent(request.kind);
+    w.board.Set(FirstComponent(request.kind));
     if (!SendFrame(w.fd, EncodeRequest(request)))
         return fail(Outcome::Status::kCrashed, false);
     const auto start = Clock::now();
@@ -249,11 +266,6 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
             if (!frame) {
                 o.detail = "an unknown frame";
                 return fail(Outcome::Status::kBroken, true);
-            }
-            if (frame->type == FrameType::kPhase) {
-                if (const auto c = DecodePhase(frame->payload))
-                    o.component = *c;
-                continue;
             }
             if (frame->type == FrameType::kFailure) {
                 const auto f = DecodeFailure(frame->payload);

@@ -31,6 +31,8 @@ enum Tag : uint8_t {
     kFileRead,
     kReason,
     kDetail,
+    kRewritten,
+    kFunction,
 };
 
 // Builds a whole frame: the length is patched in when it is taken.
@@ -109,7 +111,7 @@ bool ToWords(std::string_view b, std::vector<uint32_t>& words) {
 
 bool ToComponent(std::string_view b, Component& c) {
     uint8_t x = 0;
-    if (!ToU8(b, x) || x > uint8_t(Component::kSpirvVal))
+    if (!ToU8(b, x) || x > uint8_t(Component::kKilnReduction))
         return false;
     c = static_cast<Component>(x);
     return true;
@@ -129,6 +131,8 @@ const char* ComponentName(Component c) {
             return "SPIRV-Tools' optimizer";
         case Component::kSpirvVal:
             return "SPIRV-Tools' validator";
+        case Component::kKilnReduction:
+            return "Kiln's rewrite and reduction of the preprocessed text";
     }
     return "the compile worker";
 }
@@ -177,12 +181,9 @@ std::string EncodeResponse(const Response& r) {
     w.Words(kWords, r.words);
     for (const std::string& f : r.files_read)
         w.Bytes(kFileRead, f);
-    return w.Take();
-}
-
-std::string EncodePhase(Component c) {
-    Writer w(FrameType::kPhase);
-    w.U8(kFailedIn, uint8_t(c));
+    w.Bytes(kRewritten, r.rewritten);
+    for (const std::string& f : r.functions)
+        w.Bytes(kFunction, f);
     return w.Take();
 }
 
@@ -200,7 +201,6 @@ std::optional<Frame> SplitFrame(std::string_view payload) {
     switch (static_cast<FrameType>(type)) {
         case FrameType::kRequest:
         case FrameType::kResponse:
-        case FrameType::kPhase:
         case FrameType::kFailure:
             return Frame{static_cast<FrameType>(type), payload.substr(4)};
     }
@@ -277,25 +277,17 @@ std::optional<Response> DecodeResponse(std::string_view fields) {
             case kFileRead:
                 r.files_read.emplace_back(b);
                 return true;
+            case kRewritten:
+                r.rewritten = b;
+                return true;
+            case kFunction:
+                r.functions.emplace_back(b);
+                return true;
             default:
                 return true;
         }
     });
     return ok ? std::optional<Response>(std::move(r)) : std::nullopt;
-}
-
-std::optional<Component> DecodePhase(std::string_view fields) {
-    std::optional<Component> out;
-    const bool ok = ForEachField(fields, [&out](uint8_t tag, std::string_view b) {
-        Component c{};
-        if (tag != kFailedIn)
-            return true;
-        if (!ToComponent(b, c))
-            return false;
-        out = c;
-        return true;
-    });
-    return ok ? out : std::nullopt;
 }
 
 std::optional<Failure> DecodeFailure(std::string_view fields) {

@@ -23,17 +23,27 @@ namespace kiln::worker {
 inline constexpr uint32_t kMaxFrameBytes = 256u << 20;
 
 enum class RequestKind : uint8_t {
-    kPreprocess = 1,  // glslang's preprocessor over `source` (includes resolved by the worker)
-    kCompile = 2,     // glslang HLSL -> SPIR-V, then SPIRV-Tools legalization and -O/-Os
-    kFinish = 3,      // SPIRV-Tools: strip reflection info from `words`, then spirv-val
-    kValidate = 4,    // spirv-val over `words` (a compile-cache entry)
-    kSelfTest = 5,    // tests of the isolation itself: `source` is crash|hang|allocate|exit
+    // glslang's preprocessor over `source` (includes resolved by the worker), then Kiln's
+    // rewrites for glslang and the reduction to what `entry` reaches (hlsl/rewrite.h, reduce.h).
+    kPreprocess = 1,
+    kCompile = 2,   // glslang HLSL -> SPIR-V, then SPIRV-Tools legalization and -O/-Os
+    kFinish = 3,    // SPIRV-Tools: strip reflection info from `words`, then spirv-val
+    kValidate = 4,  // spirv-val over `words` (a compile-cache entry)
+    kSelfTest = 5,  // tests of the isolation itself: `source` is crash|hang|allocate|exit
 };
 
-// The third-party component a request was in when it ended (for diagnostics).
-enum class Component : uint8_t { kNone, kGlslangPreprocessor, kGlslang, kSpirvOpt, kSpirvVal };
+// The component a request was in when it ended (for diagnostics): a third-party one, or Kiln's
+// own rewrite and reduction, which run in the worker right after glslang's preprocessor.
+enum class Component : uint8_t {
+    kNone,
+    kGlslangPreprocessor,
+    kGlslang,
+    kSpirvOpt,
+    kSpirvVal,
+    kKilnReduction,
+};
 const char* ComponentName(Component c);
-// The component a request starts in (the worker tells only the later ones, with kPhase frames).
+// The component a request starts in.
 Component FirstComponent(RequestKind kind);
 
 struct Request {
@@ -54,7 +64,9 @@ struct Response {
     bool ok = false;
     bool entry_missing = false;  // kCompile: no function named like the entry point
     Component failed_in = Component::kNone;
-    std::string text;      // kPreprocess: the preprocessed text
+    std::string text;       // kPreprocess: the text reduced to the entry point
+    std::string rewritten;  // kPreprocess: the preprocessed text, when a rewrite changed it
+    std::vector<std::string> functions;  // kPreprocess: every function, when `entry` is none
     std::string info_log;  // glslang's messages (frontend/glslang_messages.h reads them)
     std::string messages;  // SPIRV-Tools' messages when it failed
     std::vector<uint32_t> words;
@@ -65,13 +77,11 @@ struct Response {
 enum class FrameType : uint32_t {
     kRequest = 0x4b525131,   // "1QRK"
     kResponse = 0x4b525331,  // a Response
-    kPhase = 0x4b525031,     // the worker moved on to another component (after the first)
     kFailure = 0x4b524631,   // the worker cannot go on (field 1: reason: "memory", "exception")
 };
 
 std::string EncodeRequest(const Request& r);
 std::string EncodeResponse(const Response& r);
-std::string EncodePhase(Component c);
 std::string EncodeFailure(std::string_view reason, std::string_view detail);
 
 // A frame's payload (what follows the length) split into its type and fields; nullopt when
@@ -83,7 +93,6 @@ struct Frame {
 std::optional<Frame> SplitFrame(std::string_view payload);
 std::optional<Request> DecodeRequest(std::string_view fields);
 std::optional<Response> DecodeResponse(std::string_view fields);
-std::optional<Component> DecodePhase(std::string_view fields);
 struct Failure {
     std::string reason, detail;
 };

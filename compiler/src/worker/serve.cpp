@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "worker/execute.h"
+#include "worker/phase_board.h"
 #include "worker/protocol.h"
 
 namespace kiln {
@@ -42,6 +43,7 @@ constexpr bool kAddressSanitizer = false;
 
 struct Args {
     int fd = -1;
+    int phase_fd = -1;
     uint64_t memory_limit = 0;
     uint64_t stack = uint64_t{256} << 20;
 };
@@ -56,6 +58,8 @@ bool ParseArgs(int argc, char** argv, Args& a) {
             return false;
         if (flag == "--fd" && v < 1024)
             a.fd = static_cast<int>(v);
+        else if (flag == "--phase-fd" && v < 1024)
+            a.phase_fd = static_cast<int>(v);
         else if (flag == "--memory-limit")
             a.memory_limit = v;
         else if (flag == "--stack" && v >= (1u << 20))
@@ -82,8 +86,10 @@ std::optional<std::string> Receive(int fd, worker::FrameReader& reader) {
     }
 }
 
-// Requests that test the isolation itself (worker_test.cpp): they do what a broken compiler does.
-[[noreturn]] void SelfTest(const std::string& what) {
+// Requests that test the isolation itself (tests/unit/worker/pool_test.cpp): they do what a broken
+// compiler does, after saying on the phase board that they are in SPIRV-Tools' optimizer.
+[[noreturn]] void SelfTest(const std::string& what, worker::PhaseBoard& board) {
+    board.Set(Component::kSpirvOpt);
     if (what == "hang") {
         for (;;)
             pause();
@@ -99,7 +105,7 @@ std::optional<std::string> Receive(int fd, worker::FrameReader& reader) {
     std::abort();
 }
 
-int Serve(int fd) {
+int Serve(int fd, worker::PhaseBoard& board) {
     hlsl::FileCache files;
     worker::FrameReader reader;
     for (;;) {
@@ -115,14 +121,8 @@ int Serve(int fd) {
             return 2;
         }
         if (request->kind == worker::RequestKind::kSelfTest)
-            SelfTest(request->source);
-        // The parent knows the first component from the request (FirstComponent).
-        Component current = worker::FirstComponent(request->kind);
-        worker::ExecuteContext context{files, [fd, &current](Component c) {
-                                           if (c != Component::kNone && c != current)
-                                               worker::SendFrame(fd, worker::EncodePhase(c));
-                                           current = c;
-                                       }};
+            SelfTest(request->source, board);
+        worker::ExecuteContext context{files, [&board](Component c) { board.Set(c); }};
         try {
             if (!worker::SendFrame(fd, worker::EncodeResponse(worker::Execute(*request, context))))
                 return 0;
@@ -138,12 +138,13 @@ int Serve(int fd) {
 
 struct ThreadArgs {
     int fd;
+    worker::PhaseBoard* board;
     int rc;
 };
 
 void* ServeThread(void* p) {
     auto* a = static_cast<ThreadArgs*>(p);
-    a->rc = Serve(a->fd);
+    a->rc = Serve(a->fd, *a->board);
     return nullptr;
 }
 
@@ -168,7 +169,7 @@ int RunCompileWorker(int argc, char** argv) {
     if (!ParseArgs(argc, argv, args)) {
         std::fprintf(stderr,
                      "kiln-worker: a compile worker started by kiln; usage: kiln-worker --fd N "
-                     "[--memory-limit BYTES] [--stack BYTES]\n");
+                     "[--phase-fd N] [--memory-limit BYTES] [--stack BYTES]\n");
         return 2;
     }
     // Never outlive the compile, even when a request hangs. (PR_SET_PDEATHSIG would fire when
@@ -183,7 +184,10 @@ int RunCompileWorker(int argc, char** argv) {
     pthread_attr_t attr;
     pthread_attr_init(&attr);
     pthread_attr_setstacksize(&attr, static_cast<size_t>(args.stack));
-    ThreadArgs targs{args.fd, 0};
+    worker::PhaseBoard board;  // stays empty (and silent) when no --phase-fd is given
+    if (args.phase_fd >= 0)
+        board.Attach(args.phase_fd);
+    ThreadArgs targs{args.fd, &board, 0};
     pthread_t thread;
     if (pthread_create(&thread, &attr, ServeThread, &targs) != 0) {
         std::fprintf(stderr, "kiln-worker: cannot start a thread with a %llu-byte stack\n",

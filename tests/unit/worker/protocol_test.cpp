@@ -81,10 +81,6 @@ TEST(WorkerProtocol, ResponsesRoundTrip) {
     EXPECT_EQ(back->words, r.words);
     EXPECT_EQ(back->files_read, r.files_read);
 
-    const std::string phase_bytes = EncodePhase(Component::kSpirvOpt);
-    const auto phase = SplitFrame(Payload(phase_bytes));
-    ASSERT_TRUE(phase && phase->type == FrameType::kPhase);
-    EXPECT_EQ(DecodePhase(phase->payload), Component::kSpirvOpt);
     const std::string failure_bytes = EncodeFailure("memory", "an allocation failed");
     const auto failure = SplitFrame(Payload(failure_bytes));
     ASSERT_TRUE(failure && failure->type == FrameType::kFailure);
@@ -148,7 +144,7 @@ std::vector<std::string> Feed(FrameReader& reader, const std::string& bytes, siz
 }
 
 TEST(WorkerProtocol, FramesArriveWholeWhateverThePiecesAndOversizedOnesAreRefused) {
-    const std::string a = EncodePhase(Component::kGlslang);
+    const std::string a = EncodeFailure("memory", "an allocation failed");
     const std::string b = EncodeResponse(Response{});
     for (size_t step : {size_t(1), size_t(3), size_t(7), size_t(1000)}) {
         FrameReader reader;
