@@ -94,6 +94,17 @@ TEST(GltfHardening, AccessorCountsWhoseSizesWrapAreRejected) {
     }
 }
 
+// Found by the glTF fuzz target: float indices (7e31) converted to uint32_t, undefined behaviour.
+TEST(GltfHardening, IndicesMustBeUnsignedIntegers) {
+    json g = Triangle();
+    g["meshes"][0]["primitives"][0]["indices"] = 0;  // the float POSITION accessor
+    const Loaded l = Load(g);
+    ASSERT_TRUE(l.error);
+    EXPECT_NE(l.error->message.find("the indices accessor 0 has component type 5126"),
+              std::string::npos)
+        << l.error->message;
+}
+
 TEST(GltfHardening, AttributeIndicesOutOfRangeAreReportedNotFollowed) {
     json g = Triangle();
     g["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 100000000;

@@ -103,6 +103,16 @@ bool ReadIndices(const tinygltf::Model& m,
         return false;
     }
     const auto& a = m.accessors[size_t(index)];
+    // glTF 2.0, 3.7.2.1: indices are unsigned bytes, shorts or ints (a float index out of range
+    // would convert to an integer with undefined behaviour).
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+        why = "the indices accessor " + std::to_string(index) + " has component type " +
+              std::to_string(a.componentType) +
+              "; glTF indices are unsigned bytes (5121), shorts (5123) or ints (5125)";
+        return false;
+    }
     if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {  // exact above 2^24
         const auto& view = m.bufferViews[size_t(a.bufferView)];
         const auto& data = m.buffers[size_t(view.buffer)].data;
