@@ -1,7 +1,5 @@
 #include "hlsl/file_cache.h"
 
-#include <filesystem>
-
 namespace kiln::hlsl {
 
 std::shared_ptr<const SourceFile> FileCache::Get(const std::string& path) {
@@ -12,12 +10,8 @@ std::shared_ptr<const SourceFile> FileCache::Get(const std::string& path) {
             return it->second;
     }
     std::shared_ptr<const SourceFile> file;
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(path, ec)) {
-        auto read = ReadSourceFile(path);
-        if (read.ok())
-            file = std::make_shared<const SourceFile>(std::move(read).value());
-    }
+    if (auto read = ReadSourceFile(path); read.ok())  // regular files only, within the limit
+        file = std::make_shared<const SourceFile>(std::move(read).value());
     std::lock_guard<std::mutex> lock(mu_);
     return files_.emplace(path, std::move(file)).first->second;
 }
