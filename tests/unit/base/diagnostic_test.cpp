@@ -72,7 +72,10 @@ TEST(Diagnostics, JsonFormat) {
 TEST(Diagnostics, JsonSurvivesInvalidUtf8InMessages) {
     DiagnosticList diags;
     diags.Error(DiagCode::kUnknownCommand, "x", {}, "unknown command '\xff\xfe'");
-    EXPECT_NO_THROW(nlohmann::json::parse(FormatDiagnosticsJson(diags)));
+    nlohmann::json j;
+    ASSERT_NO_THROW(j = nlohmann::json::parse(FormatDiagnosticsJson(diags)));
+    // Invalid bytes become U+FFFD in JSON (it must be UTF-8).
+    EXPECT_EQ(j[0]["message"], "unknown command '\xef\xbf\xbd\xef\xbf\xbd'");
 }
 
 TEST(Diagnostics, ErrorLimitAddsOneTooManyErrorsAndStops) {
