@@ -37,8 +37,9 @@ const Mistake kMistakes[] = {
     {"vertex entry typo", "compile {D}/vertex_entry.shader -o {T}/out.kpack", 1, "K4014",
      "vertex_entry.shader:16:28", "did you mean 'vert'?"},
     // Keywords that nothing declares.
-    {"compile --keywords typo", "compile {D}/base.shader --keywords SHADOWS_SCREEM -o {T}/out.kpack",
-     1, "K4015", "", "did you mean 'SHADOWS_SCREEN'?"},
+    {"compile --keywords typo",
+     "compile {D}/base.shader --keywords SHADOWS_SCREEM -o {T}/out.kpack", 1, "K4015", "",
+     "did you mean 'SHADOWS_SCREEN'?"},
     {"extract --keywords typo",
      "extract {T}/spot.kpack --shader Lecture/SpotLight --pass ForwardAdd --keywords SPOTT "
      "--stage frag -o {T}/out.spv",
@@ -107,6 +108,9 @@ class MistakesTest : public ::testing::TestWithParam<Mistake> {
     static void SetUpTestSuite() {
         scratch_ = testing::TempDir() + "/kiln_mistakes";
         fs::create_directories(scratch_);
+    }
+    // ctest runs every case in its own process: only the cases that read spot.kpack build it.
+    static void BuildSpotPack() {
         const RunResult r = RunKiln(Expand(
             "compile {L}/11_SpotLight.shader -I {L} --no-cache -o {T}/spot.kpack", scratch_));
         ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -117,6 +121,9 @@ std::string MistakesTest::scratch_;
 
 TEST_P(MistakesTest, GivesItsCodePositionAndSuggestionAndNoOutput) {
     const Mistake& m = GetParam();
+    if (std::string(m.args).find("{T}/spot.kpack") != std::string::npos) {
+        ASSERT_NO_FATAL_FAILURE(BuildSpotPack());
+    }
     for (const char* out : {"out.kpack", "out.spv", "out.png"})
         fs::remove(scratch_ + "/" + out);
     const std::string args = Expand(m.args, scratch_) + " --no-cache";
