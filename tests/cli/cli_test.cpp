@@ -44,8 +44,8 @@ TEST(Cli, ErrorsAreCompilerStyleWithCaretAndExitOne) {
         WriteTemp("bad.shader", "Shader \"x\" {\n  SubShader {\n    Cull Sideways\n  }\n}\n");
     const RunResult r = RunKiln("parse -q " + path);
     EXPECT_EQ(r.exit_code, 1);
-    EXPECT_NE(r.err.find(path + ":3:10: error: invalid value 'Sideways' for 'Cull'; expected Back, "
-                                "Front, Off or a [property] reference [K2005]\n"
+    EXPECT_NE(r.err.find(path + ":3:10: error: invalid value 'Sideways' for 'Cull'; expected Off, "
+                                "Front, Back or a [property] reference [K2005]\n"
                                 " 3 |     Cull Sideways\n"
                                 "   |          ^~~~~~~~\n"),
               std::string::npos)

@@ -65,7 +65,7 @@ const Mistake kMistakes[] = {
      "command_typo.shader:14:13", "did you mean 'ZWrite'?"},
     {"blend factor typo", "compile {D}/blend_typo.shader -o {T}/out.kpack", 1, "K2005",
      "blend_typo.shader:13:28",
-     "OneMinusDstAlpha, SrcAlphaSaturate or a [property] reference; did you mean "
+     "SrcAlphaSaturate, OneMinusSrcAlpha or a [property] reference; did you mean "
      "'OneMinusSrcAlpha'?"},
     // Pack names.
     {"extract shader typo",

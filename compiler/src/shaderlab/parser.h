@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "kiln/diagnostic.h"
+#include "kiln/pack/render_state.h"
 #include "kiln/shaderlab/ast.h"
 #include "kiln/shaderlab/parse.h"
 #include "lexer.h"
@@ -115,7 +116,7 @@ class Parser {
     bool TryStateCommand(RenderState& state, bool& ok);
     bool ParseSimpleState(std::optional<SimpleState>& slot,
                           std::string_view command,
-                          const std::vector<std::string_view>& allowed);
+                          pack::StateValues set);
     bool ParseOffset(RenderState& state);
     bool ParseBlend(RenderState& state);
     bool ParseBlendOp(RenderState& state);
@@ -123,7 +124,7 @@ class Parser {
     bool ParseStencil(RenderState& state);
     std::optional<int> ParseRenderTarget(std::string_view command);
     std::optional<StateValue> ParseEnumValue(std::string_view command,
-                                             const std::vector<std::string_view>& allowed);
+                                             pack::StateValues set);
     std::optional<StateValue> ParseNumberValue(std::string_view command,
                                                double min,
                                                double max,

@@ -5,80 +5,16 @@
 #include <algorithm>
 
 #include "kiln/pack/names.h"
+#include "kiln/pack/render_state.h"
 
 namespace kiln::shaderlab {
 namespace {
 
 using Words = std::vector<std::string_view>;
 
-const Words kCull = {"Back", "Front", "Off"};
-const Words kCompare = {"Never",   "Less",     "Equal",  "LEqual",
-                        "Greater", "NotEqual", "GEqual", "Always"};
-const Words kOnOff = {"On", "Off"};
-const Words kTrueFalse = {"True", "False"};
-const Words kBlendFactors = {"One",
-                             "Zero",
-                             "SrcColor",
-                             "SrcAlpha",
-                             "DstColor",
-                             "DstAlpha",
-                             "OneMinusSrcColor",
-                             "OneMinusSrcAlpha",
-                             "OneMinusDstColor",
-                             "OneMinusDstAlpha",
-                             "SrcAlphaSaturate"};
-const Words kBlendOps = {"Add",
-                         "Sub",
-                         "RevSub",
-                         "Min",
-                         "Max",
-                         "LogicalClear",
-                         "LogicalSet",
-                         "LogicalCopy",
-                         "LogicalCopyInverted",
-                         "LogicalNoop",
-                         "LogicalInvert",
-                         "LogicalAnd",
-                         "LogicalNand",
-                         "LogicalOr",
-                         "LogicalNor",
-                         "LogicalXor",
-                         "LogicalEquiv",
-                         "LogicalAndReverse",
-                         "LogicalAndInverted",
-                         "LogicalOrReverse",
-                         "LogicalOrInverted",
-                         "Multiply",
-                         "Screen",
-                         "Overlay",
-                         "Darken",
-                         "Lighten",
-                         "ColorDodge",
-                         "ColorBurn",
-                         "HardLight",
-                         "SoftLight",
-                         "Difference",
-                         "Exclusion",
-                         "HSLHue",
-                         "HSLSaturation",
-                         "HSLColor",
-                         "HSLLuminosity"};
-// Spellings Unity also accepts, with the canonical word they mean.
-struct Alias {
-    std::string_view alias, canonical;
-};
-const std::vector<Alias> kAliases = {
-    {"True", "On"},     // AlphaToMask True
-    {"False", "Off"},   // AlphaToMask False
-    {"Off", "Always"},  // ZTest Off: no depth comparison
-};
+constexpr int kMaxRenderTargets = int(pack::kMaxRenderTargets);
 
-const Words kStencilOps = {"Keep",    "Zero",   "Replace",  "IncrSat",
-                           "DecrSat", "Invert", "IncrWrap", "DecrWrap"};
-
-constexpr int kMaxRenderTargets = 8;
-
-std::string JoinWords(const Words& words) {
+std::string JoinWords(std::span<const std::string_view> words) {
     std::string out;
     for (size_t i = 0; i < words.size(); ++i) {
         out += (i == 0 ? "" : ", ") + std::string(words[i]);
@@ -93,17 +29,17 @@ bool Parser::TryStateCommand(RenderState& state, bool& ok) {
         return false;
     }
     if (AtWord("Cull")) {
-        ok = ParseSimpleState(state.cull, "Cull", kCull);
+        ok = ParseSimpleState(state.cull, "Cull", pack::StateValues::kCull);
     } else if (AtWord("ZTest")) {
-        ok = ParseSimpleState(state.ztest, "ZTest", kCompare);
+        ok = ParseSimpleState(state.ztest, "ZTest", pack::StateValues::kCompare);
     } else if (AtWord("ZWrite")) {
-        ok = ParseSimpleState(state.zwrite, "ZWrite", kOnOff);
+        ok = ParseSimpleState(state.zwrite, "ZWrite", pack::StateValues::kOnOff);
     } else if (AtWord("ZClip")) {
-        ok = ParseSimpleState(state.zclip, "ZClip", kTrueFalse);
+        ok = ParseSimpleState(state.zclip, "ZClip", pack::StateValues::kOnOff);
     } else if (AtWord("AlphaToMask")) {
-        ok = ParseSimpleState(state.alpha_to_mask, "AlphaToMask", kOnOff);
+        ok = ParseSimpleState(state.alpha_to_mask, "AlphaToMask", pack::StateValues::kOnOff);
     } else if (AtWord("Conservative")) {
-        ok = ParseSimpleState(state.conservative, "Conservative", kTrueFalse);
+        ok = ParseSimpleState(state.conservative, "Conservative", pack::StateValues::kOnOff);
     } else if (AtWord("Offset")) {
         ok = ParseOffset(state);
     } else if (AtWord("Blend")) {
@@ -129,30 +65,22 @@ std::optional<StateValue> Parser::ParsePropertyRef() {
     return StateValue{StateValue::Kind::kPropertyRef, std::string(name->text), 0, RangeFrom(open)};
 }
 
-std::optional<StateValue> Parser::ParseEnumValue(std::string_view command, const Words& allowed) {
+std::optional<StateValue> Parser::ParseEnumValue(std::string_view command, pack::StateValues set) {
     if (At(TokenKind::kLBracket)) {
         return ParsePropertyRef();
     }
     const Token& t = Peek();
+    const std::span<const std::string_view> names = pack::StateValueNames(set);
     if (t.kind == TokenKind::kIdentifier) {
-        for (std::string_view word : allowed) {
-            if (EqualsIgnoreCase(t.text, word)) {
-                Next();
-                return StateValue{StateValue::Kind::kLiteral, std::string(word), 0, t.range};
-            }
-        }
-        for (const Alias& a : kAliases) {
-            if (EqualsIgnoreCase(t.text, a.alias) &&
-                std::find(allowed.begin(), allowed.end(), a.canonical) != allowed.end()) {
-                Next();
-                return StateValue{StateValue::Kind::kLiteral, std::string(a.canonical), 0, t.range};
-            }
+        if (const std::optional<uint32_t> value = pack::ParseStateValue(set, t.text)) {
+            Next();
+            return StateValue{StateValue::Kind::kLiteral, std::string(names[*value]), 0, t.range};
         }
     }
     Error(DiagCode::kInvalidValue, t.range,
           "invalid value " + Describe(t) + " for '" + std::string(command) + "'; expected " +
-              JoinWords(allowed) + " or a [property] reference" +
-              pack::DidYouMean(t.text, std::vector<std::string>(allowed.begin(), allowed.end())));
+              JoinWords(names) + " or a [property] reference" +
+              pack::DidYouMean(t.text, std::vector<std::string>(names.begin(), names.end())));
     return std::nullopt;
 }
 
@@ -188,9 +116,9 @@ std::optional<StateValue> Parser::ParseNumberValue(std::string_view command,
 
 bool Parser::ParseSimpleState(std::optional<SimpleState>& slot,
                               std::string_view command,
-                              const Words& allowed) {
+                              pack::StateValues set) {
     const Token& kw = Next();
-    const std::optional<StateValue> v = ParseEnumValue(command, allowed);
+    const std::optional<StateValue> v = ParseEnumValue(command, set);
     if (!v) {
         return false;
     }
@@ -245,16 +173,18 @@ bool Parser::ParseBlend(RenderState& state) {
         Next();
         b.off = true;
     } else {
-        std::optional<StateValue> src = ParseEnumValue("Blend", kBlendFactors);
-        std::optional<StateValue> dst = src ? ParseEnumValue("Blend", kBlendFactors) : std::nullopt;
+        std::optional<StateValue> src = ParseEnumValue("Blend", pack::StateValues::kBlendFactor);
+        std::optional<StateValue> dst =
+            src ? ParseEnumValue("Blend", pack::StateValues::kBlendFactor) : std::nullopt;
         if (!dst) {
             return false;
         }
         b.src = *src;
         b.dst = *dst;
         if (Accept(TokenKind::kComma)) {
-            b.src_alpha = ParseEnumValue("Blend", kBlendFactors);
-            b.dst_alpha = b.src_alpha ? ParseEnumValue("Blend", kBlendFactors) : std::nullopt;
+            b.src_alpha = ParseEnumValue("Blend", pack::StateValues::kBlendFactor);
+            b.dst_alpha = b.src_alpha ? ParseEnumValue("Blend", pack::StateValues::kBlendFactor)
+                                      : std::nullopt;
             if (!b.dst_alpha) {
                 return false;
             }
@@ -279,13 +209,13 @@ bool Parser::ParseBlendOp(RenderState& state) {
         return false;
     }
     b.target = *target;
-    const std::optional<StateValue> op = ParseEnumValue("BlendOp", kBlendOps);
+    const std::optional<StateValue> op = ParseEnumValue("BlendOp", pack::StateValues::kBlendOp);
     if (!op) {
         return false;
     }
     b.op = *op;
     if (Accept(TokenKind::kComma)) {
-        b.op_alpha = ParseEnumValue("BlendOp", kBlendOps);
+        b.op_alpha = ParseEnumValue("BlendOp", pack::StateValues::kBlendOp);
         if (!b.op_alpha) {
             return false;
         }
@@ -313,22 +243,12 @@ bool Parser::ParseColorMask(RenderState& state) {
         cm.mask = *ref;
     } else {
         // 0, or a set of the letters R, G, B, A in any order, each at most once.
-        bool valid = (t.kind == TokenKind::kNumber && t.text == "0") ||
-                     (t.kind == TokenKind::kIdentifier && t.text.size() <= 4);
-        std::string canonical;
-        if (valid && t.kind == TokenKind::kIdentifier) {
-            for (const char channel : std::string_view("RGBA")) {
-                size_t count = 0;
-                for (const char c : t.text) {
-                    count += (c == channel || c == channel - 'A' + 'a') ? 1 : 0;
-                }
-                valid = valid && count <= 1;
-                canonical += count == 1 ? std::string(1, channel) : "";
-            }
-            valid = valid && canonical.size() == t.text.size();
-        } else if (valid) {
-            canonical = "0";
+        std::optional<uint32_t> mask;
+        if ((t.kind == TokenKind::kNumber && t.text == "0") || t.kind == TokenKind::kIdentifier) {
+            mask = pack::ParseColorMask(t.text);
         }
+        const bool valid = mask.has_value();
+        const std::string canonical = valid ? pack::ColorMaskName(*mask) : "";
         if (!valid) {
             Error(DiagCode::kInvalidValue, t.range,
                   "invalid value " + Describe(t) +
@@ -383,10 +303,10 @@ bool Parser::ParseStencil(RenderState& state) {
             value = ParseNumberValue(key, 0, 255, true);
         } else if (!(key = match(kComps)).empty()) {
             Next();
-            value = ParseEnumValue(key, kCompare);
+            value = ParseEnumValue(key, pack::StateValues::kCompare);
         } else if (!(key = match(kOps)).empty()) {
             Next();
-            value = ParseEnumValue(key, kStencilOps);
+            value = ParseEnumValue(key, pack::StateValues::kStencilOp);
         } else {
             Error(DiagCode::kUnknownCommand, k.range,
                   "unknown stencil command '" + std::string(k.text) +

@@ -6,6 +6,8 @@
 #include <map>
 #include <set>
 
+#include "kiln/pack/names.h"
+#include "kiln/pack/render_state.h"
 #include "material/json.h"
 
 namespace kiln::material {
@@ -35,15 +37,6 @@ std::string Join(const std::vector<std::string>& names) {
     for (const std::string& n : names)
         s += (s.empty() ? "" : ", ") + n;
     return s;
-}
-
-// The canonical spelling of `value` among `allowed` (case-insensitive), or "".
-std::string Canonical(std::string_view value, const std::vector<std::string>& allowed) {
-    for (const std::string& a : allowed) {
-        if (Lower(a) == Lower(value))
-            return a;
-    }
-    return "";
 }
 
 bool NumberArray(const JsonValue& v, size_t min, size_t max, std::vector<double>& out) {
@@ -122,33 +115,21 @@ void ParseKeywords(State& s, const JsonValue& v, Material& m) {
     }
 }
 
-const std::map<std::string, std::vector<std::string>>& StateValues() {
-    static const std::map<std::string, std::vector<std::string>> kValues = {
-        {"Cull", {"Back", "Front", "Off"}},
-        {"ZWrite", {"On", "Off"}},
-        {"ZTest",
-         {"Less", "Greater", "LEqual", "GEqual", "Equal", "NotEqual", "Always", "Never",
-          "Disabled"}},
-        {"Blend",
-         {"One", "Zero", "SrcColor", "SrcAlpha", "DstColor", "DstAlpha", "OneMinusSrcColor",
-          "OneMinusSrcAlpha", "OneMinusDstColor", "OneMinusDstAlpha"}},
-    };
-    return kValues;
+// The value set a .material override of `field` takes (kiln/pack/render_state.h).
+std::optional<pack::StateValues> OverrideValues(std::string_view field) {
+    if (field == "Cull")
+        return pack::StateValues::kCull;
+    if (field == "ZWrite")
+        return pack::StateValues::kOnOff;
+    if (field == "ZTest")
+        return pack::StateValues::kCompare;
+    if (field == "Blend")
+        return pack::StateValues::kBlendFactor;
+    return std::nullopt;
 }
 
-bool ValidColorMask(std::string_view v) {
-    if (v == "0")
-        return true;
-    const std::string order = "RGBA";
-    size_t last = 0;
-    for (char c : v) {
-        const size_t at =
-            order.find(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
-        if (at == std::string::npos || at + 1 <= last)
-            return false;
-        last = at + 1;
-    }
-    return !v.empty();
+std::vector<std::string> Names(std::span<const std::string_view> names) {
+    return {names.begin(), names.end()};
 }
 
 void ParseRenderState(State& s, const JsonValue& v, Material& m) {
@@ -159,25 +140,24 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
         o.pos = pos;
         o.field = key;
         if (key == "ColorMask") {
-            if (item.kind != Kind::kString || !ValidColorMask(item.string)) {
+            const std::optional<uint32_t> mask =
+                item.kind == Kind::kString ? pack::ParseColorMask(item.string) : std::nullopt;
+            if (!mask) {
                 s.Error(IssueCode::kRenderState, item.pos,
-                        "ColorMask must be \"0\" or channels in RGBA order such as \"RGB\"");
+                        "ColorMask must be \"0\" or a combination of R, G, B and A such as "
+                        "\"RGB\"");
                 continue;
             }
-            std::string mask;
-            for (char c : item.string)
-                mask += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-            o.values = {mask};
+            o.values = {pack::ColorMaskName(*mask)};
             m.render_state.push_back(std::move(o));
             continue;
         }
-        const auto allowed = StateValues().find(key);
-        if (allowed == StateValues().end()) {
-            const std::string near =
-                ClosestName(key, {"Blend", "ColorMask", "Cull", "ZTest", "ZWrite"});
+        const std::optional<pack::StateValues> set = OverrideValues(key);
+        if (!set) {
+            const std::vector<std::string> fields = Names(pack::OverridableStateFields());
+            const std::string near = ClosestName(key, fields);
             s.Error(IssueCode::kRenderState, pos, "unknown render-state field '" + key + "'",
-                    near.empty() ? "overridable: Blend, ColorMask, Cull, ZTest, ZWrite"
-                                 : "did you mean '" + near + "'");
+                    near.empty() ? "overridable: " + Join(fields) : "did you mean '" + near + "'");
             continue;
         }
         std::vector<const JsonValue*> values;
@@ -198,17 +178,21 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
             m.render_state.push_back(std::move(o));
             continue;
         }
+        const std::span<const std::string_view> names = pack::StateValueNames(*set);
         for (const JsonValue* f : values) {
-            const std::string c =
-                f->kind == Kind::kString ? Canonical(f->string, allowed->second) : std::string();
-            if (c.empty()) {
-                s.Error(
-                    IssueCode::kRenderState, f->pos,
-                    "invalid " + key + " value" +
-                        (f->kind == Kind::kString ? " '" + f->string + "'" : ""),
-                    "allowed: " + Join(allowed->second) + (key == "Blend" ? ", or \"Off\"" : ""));
+            const std::optional<uint32_t> value =
+                f->kind == Kind::kString ? pack::ParseStateValue(*set, f->string) : std::nullopt;
+            if (!value) {
+                const std::string near =
+                    f->kind == Kind::kString ? ClosestName(f->string, Names(names)) : "";
+                s.Error(IssueCode::kRenderState, f->pos,
+                        "invalid " + key + " value" +
+                            (f->kind == Kind::kString ? " '" + f->string + "'" : ""),
+                        near.empty() ? "allowed: " + Join(Names(names)) +
+                                           (key == "Blend" ? ", or \"Off\"" : "")
+                                     : "did you mean '" + near + "'");
             }
-            o.values.push_back(c);
+            o.values.push_back(value ? std::string(names[*value]) : std::string());
         }
         if (key == "Blend" && values.size() == 1) {
             s.Error(IssueCode::kRenderState, item.pos,

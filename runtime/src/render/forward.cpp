@@ -109,8 +109,8 @@ struct Planner {
             ++stats.vertex_lit;
         }
 
-        std::vector<vk::StateOverride> overrides;
-        for (const vk::StateOverride& o : m.overrides) {
+        std::vector<pack::StateOverride> overrides;
+        for (const pack::StateOverride& o : m.overrides) {
             if (!(additive && o.field == "Blend")) {
                 overrides.push_back(o);
             }

@@ -36,8 +36,8 @@ struct MaterialInstance {
     std::map<std::string, std::vector<float>> values;  // Color/Vector/Float/Range + _ST vectors
     std::map<std::string, TextureBinding> textures;
     std::vector<std::string> keywords;
-    std::vector<vk::StateOverride> overrides;      // every pass (Blend: not additive passes)
-    std::vector<vk::StateOverride> add_overrides;  // additive passes only
+    std::vector<pack::StateOverride> overrides;      // every pass (Blend: not additive passes)
+    std::vector<pack::StateOverride> add_overrides;  // additive passes only
     bool transparent = false;                      // drawn after opaque, back to front
 };
 

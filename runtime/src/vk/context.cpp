@@ -204,6 +204,8 @@ std::optional<runtime::Error> CreateContext(const ContextOptions& options, Conte
     features.independentBlend = supported.independentBlend;
     features.imageCubeArray = supported.imageCubeArray;  // samplerCUBE_Array defaults
     c.image_cube_array = supported.imageCubeArray == VK_TRUE;
+    features.logicOp = supported.logicOp;  // BlendOp LogicalXor and the other logical ops
+    c.logic_op = supported.logicOp == VK_TRUE;
     // VK_KHR_maintenance4 relaxes vertex-output/fragment-input matching: a variant whose
     // fragment stage does not read every interpolator the shared vertex stage writes is valid
     // without it, but the validation layer reports it as a performance warning.

@@ -38,6 +38,7 @@ struct Context {
     VkCommandPool command_pool = VK_NULL_HANDLE;
     bool validation = false;
     bool image_cube_array = false;  // the imageCubeArray feature is enabled
+    bool logic_op = false;          // the logicOp feature is enabled
     ValidationLog* log = nullptr;   // owned; the messenger's user data
 };
 

@@ -293,8 +293,21 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
         const BlendTarget& t = state.targets[i];
         blends[i] = {t.enable, t.src, t.dst, t.op, t.src_alpha, t.dst_alpha, t.op_alpha, t.mask};
     }
+    for (uint32_t i = 0; i < targets.color_count; ++i) {
+        if (state.targets[i].enable && state.targets[i].advanced) {
+            return fail(runtime::Error{
+                "an advanced BlendOp (Multiply, Screen, ... HSLLuminosity) needs "
+                "VK_EXT_blend_operation_advanced, which Kiln's renderer does not enable"});
+        }
+    }
+    if (state.logic_op_enable && !c.logic_op) {
+        return fail(runtime::Error{"a Logical* BlendOp needs the logicOp feature, which this "
+                                   "Vulkan device does not support"});
+    }
     VkPipelineColorBlendStateCreateInfo blend{
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.logicOpEnable = state.logic_op_enable;
+    blend.logicOp = state.logic_op;
     blend.attachmentCount = targets.color_count;
     blend.pAttachments = blends.data();
     const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};

@@ -7,10 +7,12 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "kiln/pack/reader.h"
+#include "kiln/pack/render_state.h"
 #include "vk/context.h"
 #include "vk/spirv_check.h"
 
@@ -24,6 +26,7 @@ struct BlendTarget {
     VkBlendFactor src_alpha = VK_BLEND_FACTOR_ONE, dst_alpha = VK_BLEND_FACTOR_ZERO;
     VkBlendOp op = VK_BLEND_OP_ADD, op_alpha = VK_BLEND_OP_ADD;
     VkColorComponentFlags mask = 0xF;
+    bool advanced = false;  // op is an advanced blend equation (VK_EXT_blend_operation_advanced)
 
     bool operator==(const BlendTarget&) const = default;
 };
@@ -44,6 +47,8 @@ struct RenderState {
     bool zclip = true;
     float offset_factor = 0, offset_units = 0;
     std::array<BlendTarget, kMaxTargets> targets{};
+    bool logic_op_enable = false;  // a Logical* BlendOp on target 0
+    VkLogicOp logic_op = VK_LOGIC_OP_COPY;
     bool stencil = false;
     uint32_t stencil_ref = 0, stencil_read = 0xFF, stencil_write = 0xFF;
     StencilFace front, back;
@@ -51,21 +56,14 @@ struct RenderState {
     bool operator==(const RenderState&) const = default;
 };
 
-// Looks up a numeric material property for `Blend [_SrcBlend] [_DstBlend]` and the like.
-using PropertyLookup = std::function<std::optional<float>(std::string_view name)>;
+// Unity's enums (kiln/pack/render_state.h) as Vulkan's.
+RenderState ToVulkan(const pack::PassState& state);
 
-// One override in the material's words: field ("Cull", "ZWrite", "ZTest", "Blend", "ColorMask")
-// and its values ("Off"; ["SrcAlpha", "OneMinusSrcAlpha"]).
-struct StateOverride {
-    std::string field;
-    std::vector<std::string> values;
-};
-
-// Resolves a pass's states, then applies the overrides in order.
+// pack::ResolvePassState, then ToVulkan.
 std::optional<runtime::Error> ResolveRenderState(const pack::Pack& pack,
                                                  uint32_t pass,
-                                                 const PropertyLookup& properties,
-                                                 const std::vector<StateOverride>& overrides,
+                                                 const pack::PropertyLookup& properties,
+                                                 std::span<const pack::StateOverride> overrides,
                                                  RenderState& out);
 
 // Kiln's mesh vertex: every stream a shipped shader can read, interleaved (72 bytes).

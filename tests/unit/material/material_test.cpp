@@ -96,8 +96,9 @@ TEST(MaterialParse, StructuralErrors) {
     EXPECT_EQ(Brief(Parse(R"({"shader": "y", "keywords": ["A", "A", 1]})")),
               "1:35 K6015 keyword 'A' is listed twice\n1:40 K6003 a keyword must be a string\n");
     EXPECT_EQ(
-        Brief(Parse(R"({"shader": "y", "render_state": {"ColorMask": "GR", "ZTest": "lequal"}})")),
-        "1:47 K6013 ColorMask must be \"0\" or channels in RGBA order such as \"RGB\"\n");
+        Brief(Parse(R"({"shader": "y", "render_state": {"ColorMask": "GRR", "ZTest": "lequal"}})")),
+        "1:47 K6013 ColorMask must be \"0\" or a combination of R, G, B and A such as "
+        "\"RGB\"\n");
 }
 
 // A pack with one shader whose Properties and keywords cover every check.

@@ -36,9 +36,9 @@ TEST(RenderStateParse, SimpleCommands) {
     EXPECT_EQ(s.cull->value.text, "Off");
     EXPECT_EQ(s.ztest->value.text, "Greater");
     EXPECT_EQ(s.zwrite->value.text, "On");
-    EXPECT_EQ(s.zclip->value.text, "False");
+    EXPECT_EQ(s.zclip->value.text, "Off");  // canonical: True/False are aliases
     EXPECT_EQ(s.alpha_to_mask->value.text, "On");
-    EXPECT_EQ(s.conservative->value.text, "True");
+    EXPECT_EQ(s.conservative->value.text, "On");
     EXPECT_EQ(s.cull->range.begin.line, 13u);
 }
 
