@@ -126,7 +126,7 @@ const Hostile kRows[] = {
          [] { return Shader("sampler2D _MainTex; float4 _MainTex}}}_ST;\n" + Frag("return 1;")); }),
      "compile {T}/s.shader --no-cache -o {T}/out.kpack", 1, "K5009",
      "glslang crashed (SIGSEGV, a segmentation fault) on the fragment stage of shader "
-     "\"Hostile\" pass #1 of SubShader 1; this is a fault in the third-party compiler"},
+     "\"Hostile\" pass \"#1\"; this is a fault in the third-party compiler"},
     // SPIRV-Tools is cubic on nested control flow (1,000 nested ifs took 25-48 s).
     {"nested ifs past the time limit",
      WriteShader("s.shader", [] { return Shader(Frag(NestedIfsWithoutBraces(1000))); }),

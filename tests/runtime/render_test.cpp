@@ -303,42 +303,6 @@ TEST_F(RuntimeTest, DisplayTransformEncodesSrgb) {
     EXPECT_NEAR(rgba[5], LinearToSrgb(0.5), 1e-4);
 }
 
-TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
-    pack::MappedFile file;
-    pack::Pack pack;
-    ASSERT_FALSE(pack::MappedFile::Map(KILN_STRIPPED_PACK, file));
-    ASSERT_FALSE(pack::Pack::Open(file.bytes(), pack));
-    const uint32_t shader = *pack.FindShader("Kiln/StandardMetallic");
-    const uint32_t pass = *pack.FindPass(shader, "ForwardBase");
-    runtime::VariantSelector strict(pack, runtime::MissingVariantPolicy::kError);
-    runtime::VariantChoice choice;
-    auto e = strict.Select(pass, {"_NORMALMAP", "_EMISSION"}, choice);
-    ASSERT_TRUE(e);
-    EXPECT_EQ(e->message,
-              "shader 'Kiln/StandardMetallic' pass 'FORWARD' has no variant for keywords "
-              "'_NORMALMAP _EMISSION' (stripped or never compiled); closest present: "
-              "'_NORMALMAP', '(no keywords)'");
-    ASSERT_FALSE(strict.Select(pass, {"_NORMALMAP"}, choice));
-    EXPECT_TRUE(choice.exact);
-
-    runtime::VariantSelector lenient(pack, runtime::MissingVariantPolicy::kClosest);
-    ASSERT_FALSE(lenient.Select(pass, {"_NORMALMAP", "_EMISSION"}, choice));
-    EXPECT_FALSE(choice.exact);
-    EXPECT_EQ(pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(choice.variant).key)),
-              std::vector<std::string>{"_NORMALMAP"});
-    EXPECT_NE(choice.warning.find("using the closest, '_NORMALMAP'"), std::string::npos);
-
-    const std::string usage =
-        (fs::temp_directory_path() / ("kiln_usage_test_" + std::to_string(getpid()) + ".json"))
-            .string();
-    ASSERT_FALSE(runtime::WriteUsageFile(usage, {&strict, &lenient}));
-    std::ifstream in(usage);
-    const nlohmann::json doc = nlohmann::json::parse(in);
-    EXPECT_EQ(doc["kiln_usage"], 1);
-    ASSERT_EQ(doc["lookups"].size(), 3u);  // strict: missing + found; lenient: missing
-    EXPECT_EQ(doc["lookups"][0]["shader"], "Kiln/StandardMetallic");
-}
-
 TEST_F(RuntimeTest, RenderingAStrippedVariantFailsWithTheVariantNamed) {
     runtime::Renderer stripped;
     runtime::RendererOptions options;

@@ -123,7 +123,7 @@ void ExpandPasses(CompileState& st) {
             pu.pragmas = variants::ReadPassPragmas(fp.blocks, path, fp.pass->range, st.diags);
             if (st.diags.error_count() != errors_before)
                 continue;
-            auto ex = variants::ExpandVariants(pu.pragmas, request, fp.label, path,
+            auto ex = variants::ExpandVariants(pu.pragmas, request, "\"" + fp.label + "\"", path,
                                                fp.program->range, st.diags);
             if (!ex)
                 continue;
@@ -240,7 +240,7 @@ void FillReports(const CompileState& st, CompileOutput& out) {
         const driver::FlatPass& fp = unit.passes[pu.flat];
         PassReport r;
         r.shader = unit.ast->name;
-        r.pass = fp.pass->name.empty() ? fp.label : fp.pass->name;
+        r.pass = fp.label;
         r.light_mode = driver::TagValue(fp, "LightMode");
         for (const auto& s : pu.pragmas.sets) {
             KeywordSetReport k;

@@ -77,7 +77,7 @@ void ReportJobDiagnostics(CompileState& st) {
                     smallest_key = k;
                 }
             }
-            const std::string where = "shader \"" + unit.ast->name + "\" pass " + fp.label;
+            const std::string where = "shader \"" + unit.ast->name + "\" pass \"" + fp.label + "\"";
             if (d.severity == Severity::kInternal) {
                 d.message +=
                     " (" + where + ", variant " + variants::DescribeKeywords(smallest) + ")";

@@ -40,7 +40,7 @@ std::string StageOfPass(const CompileState& st, const StageTask& task) {
     const PassUnit& pu = st.passes[task.pass];
     const ShaderUnit& unit = st.shaders[pu.shader];
     return std::string(task.stage == pack::Stage::kVertex ? "the vertex" : "the fragment") +
-           " stage of shader \"" + unit.ast->name + "\" pass " + unit.passes[pu.flat].label;
+           " stage of shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label + "\"";
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ using pack::Stage;
 std::string VariantName(const CompileState& st, size_t p, pack::VariantKey key) {
     const PassUnit& pu = st.passes[p];
     const ShaderUnit& unit = st.shaders[pu.shader];
-    return "shader \"" + unit.ast->name + "\" pass " + unit.passes[pu.flat].label + ", variant " +
+    return "shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label + "\", variant " +
            variants::DescribeKeywords(
                variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, key));
 }

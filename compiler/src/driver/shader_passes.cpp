@@ -3,6 +3,7 @@
 #include <map>
 
 #include "hlsl/fixed_function.h"
+#include "kiln/pack/pass_id.h"
 #include "program_scan.h"
 
 namespace kiln::driver {
@@ -137,9 +138,7 @@ struct Walker {
         Merge(state, ss.state);
         hlsl::MergeFixedFunction(fixed, ss.fixed);
         const int ss_lod = ss.lod.value_or(lod);
-        uint32_t index = 0;
         for (const PassEntry& entry : ss.passes) {
-            ++index;
             if (const auto* use = std::get_if<UsePass>(&entry)) {
                 diags.Warning(DiagCode::kMisplacedCommand, file, use->range,
                               "UsePass is not supported yet; the pass is skipped");
@@ -155,9 +154,6 @@ struct Walker {
             fp.pass = &p;
             fp.subshader = subshader_index;
             fp.lod = p.lod.value_or(ss_lod);
-            fp.label = p.name.empty() ? "#" + std::to_string(index) + " of SubShader " +
-                                            std::to_string(subshader_index + 1)
-                                      : "\"" + p.name + "\"";
             fp.blocks = includes;
             AddIncludes(fp.blocks, p.programs);
             for (const ProgramBlock& b : p.programs) {
@@ -229,6 +225,18 @@ std::vector<FlatPass> FlattenPasses(const Shader& shader,
     Walker w{file, diags, shader.properties, {}, {}, {}, {}, {}, 0, 0};
     Walker::AddIncludes(w.includes, shader.programs);
     w.Entries(shader.subshaders);
+    // Each pass's one name (kiln/pack/pass_id.h), as the runtime computes it from the pack.
+    bool several = false;
+    for (const FlatPass& fp : w.out)
+        several = several || fp.subshader != w.out.front().subshader;
+    for (size_t i = 0; i < w.out.size(); ++i) {
+        FlatPass& fp = w.out[i];
+        uint32_t index = 0;
+        for (size_t j = 0; j < i; ++j)
+            index += w.out[j].subshader == fp.subshader;
+        const std::string light_mode = TagValue(fp, "LightMode");
+        fp.label = pack::PassId({fp.pass->name, light_mode, fp.subshader, index, several});
+    }
     return std::move(w.out);
 }
 

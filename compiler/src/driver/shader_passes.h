@@ -30,7 +30,7 @@ struct FlatPass {
     const shaderlab::Pass* pass = nullptr;
     uint32_t subshader = 0;
     int lod = 0;
-    std::string label;                                   // `"FORWARD"` or `#2 of SubShader 1`
+    std::string label;  // the pass's one name (kiln/pack/pass_id.h): `FORWARD`, `ForwardBase`, `#2`
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program
     const shaderlab::ProgramBlock* program = nullptr;
     // The program generated from fixed-function commands (hlsl/fixed_function.h) when the pass

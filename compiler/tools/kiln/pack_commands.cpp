@@ -1,4 +1,5 @@
 // kiln info PACK [--json] and kiln extract PACK --shader S --pass P --stage vert|frag -o x.spv.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -7,42 +8,13 @@
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/pack/names.h"
+#include "kiln/pack/pass_id.h"
 #include "kiln/pack/reader.h"
+#include "kiln/pack/render_state.h"
 
 namespace kiln::cli {
-namespace {
 
 using namespace kiln::pack;
-
-const char* kFieldNames[] = {"Cull",
-                             "ZTest",
-                             "ZWrite",
-                             "ZClip",
-                             "AlphaToMask",
-                             "Conservative",
-                             "OffsetFactor",
-                             "OffsetUnits",
-                             "BlendOff",
-                             "BlendSrc",
-                             "BlendDst",
-                             "BlendSrcAlpha",
-                             "BlendDstAlpha",
-                             "BlendOp",
-                             "BlendOpAlpha",
-                             "ColorMask",
-                             "StencilRef",
-                             "StencilReadMask",
-                             "StencilWriteMask",
-                             "StencilCompFront",
-                             "StencilPassFront",
-                             "StencilFailFront",
-                             "StencilZFailFront",
-                             "StencilCompBack",
-                             "StencilPassBack",
-                             "StencilFailBack",
-                             "StencilZFailBack"};
-
-}  // namespace
 
 bool OpenPack(const std::string& path, MappedFile& file, Pack& pack, const GlobalOptions& global) {
     std::optional<PackError> err = MappedFile::Map(path, file);
@@ -81,7 +53,8 @@ nlohmann::json InfoJson(const Pack& p) {
             nlohmann::json state = nlohmann::json::array();
             for (uint32_t t = pr.first_state; t < pr.first_state + pr.state_count; ++t) {
                 const auto st = p.Get<StateRec>(SectionTag::kStates, t);
-                nlohmann::json e = {{"field", kFieldNames[st.field]}, {"target", st.target}};
+                nlohmann::json e = {{"field", pack::StateFieldName(pack::StateField(st.field))},
+                                    {"target", st.target}};
                 if (st.kind == uint32_t(StateKind::kPropertyRef)) {
                     e["property"] = p.String(st.text);
                 } else if (st.kind == uint32_t(StateKind::kNumber)) {
@@ -112,7 +85,9 @@ nlohmann::json InfoJson(const Pack& p) {
                                     {"vertex_module", vr.vertex_module},
                                     {"fragment_module", vr.fragment_module}});
             }
-            passes.push_back({{"name", p.String(pr.name)},
+            passes.push_back({{"pass", PassLabel(p, i)},
+                              {"name", p.String(pr.name)},
+                              {"subshader", pr.subshader},
                               {"tags", tags},
                               {"state", state},
                               {"keyword_sets", sets},
@@ -213,7 +188,7 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) 
                     sets += " [" + words + "]";
                 }
                 std::printf(
-                    "  pass \"%s\"%s: %zu variants%s\n", p["name"].get<std::string>().c_str(),
+                    "  pass \"%s\"%s: %zu variants%s\n", p["pass"].get<std::string>().c_str(),
                     p["tags"].contains("LightMode")
                         ? (" (LightMode " + p["tags"]["LightMode"].get<std::string>() + ")").c_str()
                         : "",
@@ -232,14 +207,17 @@ std::vector<std::string> ShaderNames(const Pack& pack) {
     return names;
 }
 
-// A shader's pass names and LightMode tags, for suggestions.
+// A shader's pass labels, Names and LightMode tags, for suggestions.
 std::vector<std::string> PassNames(const Pack& pack, uint32_t shader) {
-    const nlohmann::json j = InfoJson(pack)["shaders"][shader]["passes"];
     std::vector<std::string> names;
-    for (const auto& p : j) {
-        names.push_back(p["name"].get<std::string>());
-        if (p["tags"].contains("LightMode"))
-            names.push_back(p["tags"]["LightMode"].get<std::string>());
+    const ShaderRec s = pack.Shader(shader);
+    for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
+        const std::string label = PassLabel(pack, i);
+        for (std::string_view n :
+             {std::string_view(label), pack.String(pack.Pass(i).name), LightModeOf(pack, i)}) {
+            if (!n.empty() && std::find(names.begin(), names.end(), n) == names.end())
+                names.emplace_back(n);
+        }
     }
     return names;
 }
@@ -253,7 +231,8 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
     CLI::App* cmd = app.add_subcommand("extract", "Write one variant's SPIR-V module to a file");
     cmd->add_option("pack", o->file, "A .kpack file")->required();
     cmd->add_option("--shader", o->shader, "Shader name")->required();
-    cmd->add_option("--pass", o->pass, "Pass name or LightMode")->required();
+    cmd->add_option("--pass", o->pass, "Pass as kiln info names it, its Name or LightMode")
+        ->required();
     cmd->add_option("--keywords", o->keywords, "Enabled keywords")->delimiter(',');
     cmd->add_option("--stage", o->stage, "vert or frag")
         ->required()
@@ -289,8 +268,7 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
             return ReportError(global, DiagCode::kMissingVariant, o->file,
                                "shader \"" + o->shader + "\" pass \"" + o->pass +
                                    "\" has no variant with keywords" +
-                                   (kws.empty() ? " (none)" : kws) +
-                                   " (stripped or never built)");
+                                   (kws.empty() ? " (none)" : kws) + " (stripped or never built)");
         }
         const VariantRec v = pack.Variant(*variant);
         const bool vert = o->stage[0] == 'v';

@@ -168,8 +168,8 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         options.device_filter = a->device;
         options.pipeline_cache = a->pipeline_cache;
         options.trust_packs = a->trust;
-        options.missing_variant = a->closest ? runtime::MissingVariantPolicy::kClosest
-                                             : runtime::MissingVariantPolicy::kError;
+        options.missing_variant =
+            a->closest ? pack::MissingVariantPolicy::kClosest : pack::MissingVariantPolicy::kError;
         runtime::Renderer renderer;
         if (auto e = runtime::Renderer::Create(options, renderer)) {
             return fail(*e);

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "base/atomic_file.h"
+#include "kiln/base/files.h"
 #include "kiln/pack/records.h"
 #include "kiln/runtime/color.h"
 
@@ -48,7 +48,10 @@ std::optional<Error> WritePng(const std::string& path,
                                 int(width * 4))) {
         return Error{"cannot encode '" + path + "' as PNG"};
     }
-    return WriteFileAtomically(path, png);
+    if (const Result<bool> written = base::WriteFileAtomically(path, png); !written) {
+        return Error{written.error().message};
+    }
+    return std::nullopt;
 }
 
 std::optional<Error> WriteDisplayPng(const std::string& path,
@@ -114,7 +117,10 @@ std::optional<Error> WriteExr(const std::string& path, const LinearImage& image)
             }
         }
     }
-    return WriteFileAtomically(path, out.bytes());
+    if (const Result<bool> written = base::WriteFileAtomically(path, out.bytes()); !written) {
+        return Error{written.error().message};
+    }
+    return std::nullopt;
 }
 
 }  // namespace kiln::runtime

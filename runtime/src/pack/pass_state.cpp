@@ -110,7 +110,7 @@ struct Resolver {
 
     void ApplyStencil(PassState& s, StateField field, const Value& v) {
         s.stencil = true;
-        const char* what = StateFieldCommand(field);
+        const char* what = StateFieldName(field);
         switch (field) {
             case StateField::kStencilRef:
                 s.stencil_ref = uint32_t(Number(v, what));

@@ -61,7 +61,8 @@ std::string KeywordEnabledBy(const PropertyKeywords& driven, double value) {
             return value == 0 ? driven.keywords[0] : "";
         case PropertyKeywords::Kind::kKeywordEnum: {
             const double last = double(driven.keywords.size() - 1);
-            const double index = std::isfinite(value) ? std::clamp(std::floor(value), 0.0, last) : 0;
+            const double index =
+                std::isfinite(value) ? std::clamp(std::floor(value), 0.0, last) : 0;
             return driven.keywords[size_t(index)];
         }
         case PropertyKeywords::Kind::kNone:

@@ -15,6 +15,8 @@
 
 #include "kiln/pack/names.h"
 
+#include "kiln/pack/pass_id.h"
+
 namespace kiln::pack {
 namespace {
 
@@ -394,6 +396,10 @@ std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) c
                           std::tolower(static_cast<unsigned char>(y));
                });
     };
+    for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
+        if (equal_ci(PassLabel(*this, i), name))
+            return i;  // the pass's one name (kiln/pack/pass_id.h)
+    }
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
         if (equal_ci(String(Pass(i).name), name))
             return i;

@@ -202,34 +202,34 @@ std::optional<StateValues> ValueSetOf(StateField field) {
     }
 }
 
-const char* StateFieldCommand(StateField field) {
+const char* StateFieldName(StateField field) {
     constexpr const char* kNames[kStateFieldCount] = {"Cull",
                                                       "ZTest",
                                                       "ZWrite",
                                                       "ZClip",
                                                       "AlphaToMask",
                                                       "Conservative",
-                                                      "Offset",
-                                                      "Offset",
-                                                      "Blend",
-                                                      "Blend",
-                                                      "Blend",
-                                                      "Blend",
-                                                      "Blend",
+                                                      "OffsetFactor",
+                                                      "OffsetUnits",
+                                                      "BlendOff",
+                                                      "BlendSrc",
+                                                      "BlendDst",
+                                                      "BlendSrcAlpha",
+                                                      "BlendDstAlpha",
                                                       "BlendOp",
-                                                      "BlendOp",
+                                                      "BlendOpAlpha",
                                                       "ColorMask",
-                                                      "Stencil Ref",
-                                                      "Stencil ReadMask",
-                                                      "Stencil WriteMask",
-                                                      "Stencil CompFront",
-                                                      "Stencil PassFront",
-                                                      "Stencil FailFront",
-                                                      "Stencil ZFailFront",
-                                                      "Stencil CompBack",
-                                                      "Stencil PassBack",
-                                                      "Stencil FailBack",
-                                                      "Stencil ZFailBack"};
+                                                      "StencilRef",
+                                                      "StencilReadMask",
+                                                      "StencilWriteMask",
+                                                      "StencilCompFront",
+                                                      "StencilPassFront",
+                                                      "StencilFailFront",
+                                                      "StencilZFailFront",
+                                                      "StencilCompBack",
+                                                      "StencilPassBack",
+                                                      "StencilFailBack",
+                                                      "StencilZFailBack"};
     return uint32_t(field) < kStateFieldCount ? kNames[uint32_t(field)] : "unknown";
 }
 

@@ -11,6 +11,7 @@
 #include <deque>
 #include <map>
 
+#include "kiln/pack/pass_id.h"
 #include "render/draw.h"
 #include "render/frame_values.h"
 #include "render/renderer_state.h"
@@ -35,14 +36,7 @@ ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
         if (rec.subshader != 0) {
             continue;  // the first SubShader is the one that runs
         }
-        std::string_view mode;
-        for (uint32_t t = 0; t < rec.tag_count; ++t) {
-            const auto tag = pack.Get<pack::TagRec>(pack::SectionTag::kTags, rec.first_tag + t);
-            if (pack.String(tag.key) == "LightMode") {
-                mode = pack.String(tag.value);
-                break;
-            }
-        }
+        const std::string_view mode = pack::LightModeOf(pack, p);
         if (mode.empty() || mode == "ForwardBase" || mode == "Always") {
             out.base.push_back(p);
         } else if (mode == "ForwardAdd" && !out.add) {
@@ -96,10 +90,11 @@ struct Planner {
                 keywords.emplace_back("VERTEXLIGHT_ON");
             }
         }
-        VariantChoice choice;
-        if (auto e = lp.selector->Select(pass, keywords, choice)) {
-            return Error{m.name + ": " + e->message};
+        const Result<pack::VariantChoice> selected = lp.selector->Select(pass, keywords);
+        if (!selected) {
+            return Error{m.name + ": " + selected.error().message, ErrorKind::kMissingVariant};
         }
+        const pack::VariantChoice& choice = selected.value();
         if (!choice.exact) {
             Warn(m.name + ": " + choice.warning);
         }
@@ -127,7 +122,7 @@ struct Planner {
         };
         vk::RenderState state;
         if (auto e = vk::ResolveRenderState(pack, pass, number, overrides, state)) {
-            return Error{m.name + ": pass '" + PassLabel(pack, pass) + "': " + e->message};
+            return Error{m.name + ": pass '" + pack::PassLabel(pack, pass) + "': " + e->message};
         }
         if (additive) {
             // The frame's alpha is coverage (docs/runtime.md): an additive pass adds light, and
@@ -139,8 +134,8 @@ struct Planner {
         if (auto e =
                 s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created)) {
             return Error{"shader '" + std::string(pack.String(pack.Shader(m.shader).name)) +
-                             "' pass '" + PassLabel(pack, pass) + "' variant '" +
-                             JoinKeywords(chosen) + "': " + e->message,
+                             "' pass '" + pack::PassLabel(pack, pass) + "' variant '" +
+                             pack::JoinKeywords(chosen) + "': " + e->message,
                          e->kind};
         }
         d.vertices = &vb;

@@ -208,12 +208,12 @@ std::optional<Error> Renderer::AddPack(const std::string& path) {
         return Error{path + ": " + e->message, ErrorKind::kPack};
     }
     if (auto e = pack::Pack::Open(loaded->file.bytes(), loaded->pack)) {
-        return Error{path + ": " + std::string(pack::PackErrorCodeName(e->code)) + ": " +
-                         e->message,
-                     ErrorKind::kPack};
+        return Error{
+            path + ": " + std::string(pack::PackErrorCodeName(e->code)) + ": " + e->message,
+            ErrorKind::kPack};
     }
     loaded->selector =
-        std::make_unique<VariantSelector>(loaded->pack, state_->options.missing_variant);
+        std::make_unique<pack::VariantSelector>(loaded->pack, state_->options.missing_variant);
     state_->packs.push_back(std::move(loaded));
     return std::nullopt;
 }
@@ -238,11 +238,15 @@ std::vector<std::string> Renderer::ValidationMessages() const {
 }
 
 std::optional<Error> Renderer::WriteUsage(const std::string& path) const {
-    std::vector<const VariantSelector*> selectors;
+    std::vector<const pack::VariantSelector*> selectors;
     for (const auto& p : state_->packs) {
         selectors.push_back(p->selector.get());
     }
-    return WriteUsageFile(path, selectors);
+    if (const Result<bool> written = pack::WriteUsageFile(path, pack::UsageOf(selectors));
+        !written) {
+        return Error{written.error().message};
+    }
+    return std::nullopt;
 }
 
 size_t Renderer::pack_count() const {

@@ -21,7 +21,7 @@ struct LoadedPack {
     std::string path;
     pack::MappedFile file;
     pack::Pack pack;
-    std::unique_ptr<VariantSelector> selector;
+    std::unique_ptr<pack::VariantSelector> selector;
 };
 
 struct PipelineEntry {

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "base/atomic_file.h"
 #include "kiln/base/files.h"
 #include "kiln/pack/records.h"
 
@@ -113,8 +112,8 @@ std::optional<runtime::Error> SavePipelineCache(const Context& c,
     }
     data.resize(size);
     const std::vector<uint8_t> file = EncodePipelineCacheFile(c, data);
-    if (auto e = runtime::WriteFileAtomically(path, file)) {
-        return e;
+    if (const Result<bool> written = base::WriteFileAtomically(path, file); !written) {
+        return runtime::Error{written.error().message};
     }
     return std::nullopt;
 }

@@ -320,7 +320,7 @@ TEST(Compile, StageInterfaceMismatchIsAnError) {
     EXPECT_EQ(Brief(run.diags),
               "io.shader:5:26 K5004 fragment input COLOR0 and vertex output TEXCOORD0 share "
               "location 0; declare the vertex outputs and fragment inputs in the same order\n"
-              "  note: in shader \"Test/IO\" pass #1 of SubShader 1, variant (no keywords)\n");
+              "  note: in shader \"Test/IO\" pass \"#1\", variant (no keywords)\n");
 }
 
 TEST(Compile, PropertiesAreCheckedAgainstShaderGlobals) {

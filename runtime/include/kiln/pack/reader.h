@@ -81,7 +81,8 @@ class Pack {
     std::span<const uint8_t> Spirv(const ModuleRec& module) const;
 
     std::optional<uint32_t> FindShader(std::string_view name) const;
-    // A pass by its Name, or else by its LightMode tag (first match in SubShader order).
+    // A pass by its one name (PassLabel, kiln/pack/pass_id.h), else by its Name, else by its
+    // LightMode tag (first match in SubShader order); case-insensitive.
     std::optional<uint32_t> FindPass(uint32_t shader, std::string_view name) const;
     // Binary search of the sorted variant table: O(log n).
     std::optional<uint32_t> FindVariant(uint32_t pass, VariantKey key) const;

@@ -125,8 +125,9 @@ std::string ColorMaskName(uint32_t mask);
 // The value set a state field takes; nullopt for numeric fields (Offset, Stencil Ref/masks) and
 // ColorMask.
 std::optional<StateValues> ValueSetOf(StateField field);
-// The ShaderLab command of a field: "Cull", "Blend", "Stencil Comp", ...
-const char* StateFieldCommand(StateField field);
+// The name of a field in `kiln info` and messages: "Cull", "BlendSrc", "StencilCompFront", ...;
+// "unknown" for a value past kStateFieldCount (a field of a newer format minor version).
+const char* StateFieldName(StateField field);
 
 // The render-state fields a .material may override (kiln/material/material.h).
 std::span<const std::string_view> OverridableStateFields();

@@ -16,14 +16,14 @@
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/scene.h"
 #include "kiln/runtime/status.h"
-#include "kiln/runtime/variant_selector.h"
+#include "kiln/pack/variant_selector.h"
 
 namespace kiln::runtime {
 
 struct RendererOptions {
     bool validation = false;    // VK_LAYER_KHRONOS_validation; messages are collected
     std::string device_filter;  // only devices whose name contains this
-    MissingVariantPolicy missing_variant = MissingVariantPolicy::kError;
+    pack::MissingVariantPolicy missing_variant = pack::MissingVariantPolicy::kError;
     std::string pipeline_cache;   // a file to seed and save the VkPipelineCache; empty: none
     bool float32_target = false;  // R32G32B32A32_SFLOAT instead of R16G16B16A16_SFLOAT
     // Every distinct module of a pack goes through spirv-val and checks against the device's

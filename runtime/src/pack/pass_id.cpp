@@ -1,0 +1,59 @@
+#include "kiln/pack/pass_id.h"
+
+#include "kiln/pack/reader.h"
+
+namespace kiln::pack {
+
+std::string PassId(const PassIdParts& parts) {
+    std::string id = parts.several_subshaders
+                         ? "SubShader " + std::to_string(parts.subshader + 1) + "/"
+                         : std::string();
+    if (!parts.name.empty()) {
+        return id + std::string(parts.name);
+    }
+    if (!parts.light_mode.empty()) {
+        return id + std::string(parts.light_mode);
+    }
+    return id + "#" + std::to_string(parts.index + 1);
+}
+
+std::string_view LightModeOf(const Pack& pack, uint32_t pass) {
+    if (pass >= pack.Count(SectionTag::kPasses)) {
+        return {};
+    }
+    const PassRec p = pack.Pass(pass);
+    for (uint32_t i = 0; i < p.tag_count; ++i) {
+        const auto tag = pack.Get<TagRec>(SectionTag::kTags, p.first_tag + i);
+        if (pack.String(tag.key) == "LightMode") {
+            return pack.String(tag.value);
+        }
+    }
+    return {};
+}
+
+PassIdParts PassIdPartsOf(const Pack& pack, uint32_t pass) {
+    PassIdParts parts;
+    if (pass >= pack.Count(SectionTag::kPasses)) {
+        return parts;
+    }
+    const PassRec p = pack.Pass(pass);
+    const ShaderRec s = pack.Shader(p.shader);
+    parts.name = pack.String(p.name);
+    parts.light_mode = LightModeOf(pack, pass);
+    parts.subshader = p.subshader;
+    for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
+        const uint32_t sub = pack.Pass(i).subshader;
+        parts.index += i < pass && sub == p.subshader;
+        parts.several_subshaders = parts.several_subshaders || sub != p.subshader;
+    }
+    return parts;
+}
+
+std::string PassLabel(const Pack& pack, uint32_t pass) {
+    if (pass >= pack.Count(SectionTag::kPasses)) {
+        return "";
+    }
+    return PassId(PassIdPartsOf(pack, pass));
+}
+
+}  // namespace kiln::pack

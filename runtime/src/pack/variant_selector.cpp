@@ -1,0 +1,157 @@
+#include "kiln/pack/variant_selector.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+#include "kiln/base/files.h"
+#include "kiln/pack/pass_id.h"
+
+namespace kiln::pack {
+namespace {
+
+// Keyword sets whose chosen keyword differs between two keys of a pass.
+uint32_t Distance(const Pack& pack, uint32_t pass, VariantKey a, VariantKey b) {
+    const PassRec p = pack.Pass(pass);
+    uint32_t d = 0;
+    for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
+        const KeywordSetRec set = pack.KeywordSet(s);
+        d += a.Get(set.key_shift, set.key_bits) != b.Get(set.key_shift, set.key_bits);
+    }
+    return d;
+}
+
+}  // namespace
+
+std::string JoinKeywords(const std::vector<std::string>& keywords) {
+    if (keywords.empty()) {
+        return "(no keywords)";
+    }
+    std::string out;
+    for (const std::string& k : keywords) {
+        out += (out.empty() ? "" : " ") + k;
+    }
+    return out;
+}
+
+Result<VariantChoice> VariantSelector::Select(uint32_t pass,
+                                              const std::vector<std::string>& keywords) {
+    const Pack& pack = *pack_;
+    if (pass >= pack.Count(SectionTag::kPasses)) {
+        return Error{"pass index " + std::to_string(pass) + " is out of range (the pack has " +
+                     std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
+    }
+    const VariantKey key = pack.KeyFor(pass, keywords);
+    const PassRec p = pack.Pass(pass);
+    const std::string shader(pack.String(pack.Shader(p.shader).name));
+    const std::string label = PassLabel(pack, pass);
+    const std::vector<std::string> requested = pack.KeywordsOf(pass, key);
+    Usage& usage = usage_[{shader, label, requested}];
+    ++usage.count;
+
+    if (std::optional<uint32_t> v = pack.FindVariant(pass, key)) {
+        return VariantChoice{*v, true, {}};
+    }
+    usage.found = false;
+    // Closest present variants: fewest differing keyword sets, then lowest key.
+    std::vector<std::pair<uint32_t, uint32_t>> ranked;  // (distance, variant)
+    for (uint32_t v = p.first_variant; v < p.first_variant + p.variant_count; ++v) {
+        ranked.emplace_back(Distance(pack, pass, key, VariantKey(pack.Variant(v).key)), v);
+    }
+    std::sort(ranked.begin(), ranked.end());
+    std::string closest;
+    for (size_t i = 0; i < ranked.size() && i < 3; ++i) {
+        closest +=
+            std::string(i ? ", " : "") + "'" +
+            JoinKeywords(pack.KeywordsOf(pass, VariantKey(pack.Variant(ranked[i].second).key))) +
+            "'";
+    }
+    const std::string what = "shader '" + shader + "' pass '" + label +
+                             "' has no variant for keywords '" + JoinKeywords(requested) + "'";
+    if (ranked.empty()) {
+        return Error{what + " and no variants at all"};
+    }
+    if (policy_ == MissingVariantPolicy::kClosest) {
+        return VariantChoice{ranked[0].second, false,
+                             what + "; using the closest, " + closest.substr(0, closest.find(','))};
+    }
+    return Error{what + " (stripped or never compiled); closest present: " + closest};
+}
+
+std::vector<UsageEntry> UsageOf(const std::vector<const VariantSelector*>& selectors) {
+    std::vector<UsageEntry> out;
+    for (const VariantSelector* s : selectors) {
+        for (const auto& [key, usage] : s->usage()) {
+            out.push_back(
+                {std::get<0>(key), std::get<1>(key), std::get<2>(key), usage.count, usage.found});
+        }
+    }
+    return out;
+}
+
+std::string UsageFileText(const std::vector<UsageEntry>& entries) {
+    nlohmann::ordered_json lookups = nlohmann::ordered_json::array();
+    for (const UsageEntry& e : entries) {
+        nlohmann::ordered_json entry;
+        entry["shader"] = e.shader;
+        entry["pass"] = e.pass;
+        entry["keywords"] = e.keywords;
+        entry["count"] = e.count;
+        entry["found"] = e.found;
+        lookups.push_back(std::move(entry));
+    }
+    nlohmann::ordered_json doc;
+    doc["kiln_usage"] = 1;
+    doc["lookups"] = std::move(lookups);
+    return doc.dump(2) + "\n";
+}
+
+Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text) {
+    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (doc.is_discarded() || !doc.is_object()) {
+        return Error{"a usage file must be a JSON object"};
+    }
+    if (!doc.contains("kiln_usage") || doc["kiln_usage"] != 1) {
+        return Error{"not a usage file of version 1 (no \"kiln_usage\": 1)"};
+    }
+    if (!doc.contains("lookups") || !doc["lookups"].is_array()) {
+        return Error{"a usage file needs a \"lookups\" array"};
+    }
+    std::vector<UsageEntry> out;
+    for (const nlohmann::json& j : doc["lookups"]) {
+        const std::string at = "lookup " + std::to_string(out.size() + 1);
+        if (!j.is_object() || !j.contains("shader") || !j["shader"].is_string() ||
+            !j.contains("pass") || !j["pass"].is_string() || !j.contains("keywords") ||
+            !j["keywords"].is_array()) {
+            return Error{at + " needs \"shader\" and \"pass\" strings and a \"keywords\" array"};
+        }
+        UsageEntry e{j["shader"].get<std::string>(), j["pass"].get<std::string>(), {}, 0, true};
+        for (const nlohmann::json& k : j["keywords"]) {
+            if (!k.is_string()) {
+                return Error{at + ": a keyword must be a string"};
+            }
+            e.keywords.push_back(k.get<std::string>());
+        }
+        if (j.contains("count")) {
+            if (!j["count"].is_number_unsigned()) {
+                return Error{at + ": \"count\" must be a non-negative integer"};
+            }
+            e.count = j["count"].get<uint64_t>();
+        }
+        if (j.contains("found")) {
+            if (!j["found"].is_boolean()) {
+                return Error{at + ": \"found\" must be true or false"};
+            }
+            e.found = j["found"].get<bool>();
+        }
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+Result<bool> WriteUsageFile(const std::string& path, const std::vector<UsageEntry>& entries) {
+    const std::string text = UsageFileText(entries);
+    return base::WriteFileAtomically(path, std::string_view(text));
+}
+
+}  // namespace kiln::pack
