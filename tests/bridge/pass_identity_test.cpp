@@ -147,8 +147,9 @@ TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
     const auto closest = lenient.Select(pass, {"_NORMALMAP", "_EMISSION"});
     ASSERT_TRUE(closest.ok());
     EXPECT_FALSE(closest.value().exact);
-    EXPECT_EQ(pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(closest.value().variant).key)),
-              std::vector<std::string>{"_NORMALMAP"});
+    EXPECT_EQ(
+        pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(closest.value().variant).value().key)),
+        std::vector<std::string>{"_NORMALMAP"});
     EXPECT_NE(closest.value().warning.find("using the closest, '_NORMALMAP'"), std::string::npos);
     EXPECT_FALSE(strict.Select(100000, {}).ok());  // out of range: an error, not a crash
 

@@ -23,18 +23,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (Pack::Open(bytes, pack))
         return 0;
     for (uint32_t s = 0; s < pack.Count(SectionTag::kShaders); ++s) {
-        const ShaderRec sr = pack.Shader(s);
+        const ShaderRec sr = pack.Shader(s).value();
         (void)pack.String(sr.name);
         (void)pack.FindShader(pack.String(sr.name));
         for (uint32_t p = sr.first_pass; p < sr.first_pass + sr.pass_count; ++p) {
-            const PassRec pr = pack.Pass(p);
+            const PassRec pr = pack.Pass(p).value();
             (void)pack.FindPass(s, pack.String(pr.name));
             for (uint32_t v = pr.first_variant; v < pr.first_variant + pr.variant_count; ++v) {
-                const VariantRec vr = pack.Variant(v);
+                const VariantRec vr = pack.Variant(v).value();
                 (void)pack.KeywordsOf(p, VariantKey(vr.key));
                 (void)pack.FindVariant(p, VariantKey(vr.key));
-                (void)pack.Spirv(pack.Module(vr.vertex_module));
-                (void)pack.Spirv(pack.Module(vr.fragment_module));
+                (void)pack.Spirv(pack.Module(vr.vertex_module).value());
+                (void)pack.Spirv(pack.Module(vr.fragment_module).value());
             }
             (void)pack.FindVariant(p, pack.KeyFor(p, {"SPOT", "POINT"}));
             (void)pack.CheckKeywords(p, {"SPOT", "POINTT"});

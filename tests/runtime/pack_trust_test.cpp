@@ -42,7 +42,7 @@ std::string PatchedPack(const std::string& name,
         EXPECT_FALSE(pack::Pack::Open(bytes, p));
         std::vector<std::pair<size_t, size_t>> modules;
         for (uint32_t m = 0; m < p.Count(pack::SectionTag::kModules); ++m) {
-            const auto spirv = p.Spirv(p.Module(m));
+            const auto spirv = p.Spirv(p.Module(m).value());
             modules.push_back({size_t(spirv.data() - bytes.data()), spirv.size() / 4});
         }
         for (const auto& [at, words] : modules)
@@ -135,7 +135,7 @@ TEST(ModuleChecker, EachDistinctModuleIsValidatedOnce) {
     VkPhysicalDeviceLimits limits{};
     limits.maxBoundDescriptorSets = 8;
     vk::ModuleChecker checker(limits);
-    const pack::ModuleRec m = p.Module(0);
+    const pack::ModuleRec m = p.Module(0).value();
     const auto spirv = p.Spirv(m);
     std::vector<uint32_t> words(spirv.size() / 4);
     std::memcpy(words.data(), spirv.data(), spirv.size());

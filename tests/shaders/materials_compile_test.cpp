@@ -122,9 +122,10 @@ TEST(Materials, MultiLightHasVertexLightsInTheBaseAndThreeLightTypesInTheAddPass
     const auto pass = p.FindPass(0, "ForwardAdd");
     ASSERT_TRUE(pass.has_value());
     std::map<uint32_t, std::string> state;
-    const pack::PassRec add = p.Pass(*pass);
+    const pack::PassRec add = p.Pass(*pass).value();
     for (uint32_t s = 0; s < add.state_count; ++s) {
-        const auto rec = p.Get<pack::StateRec>(pack::SectionTag::kStates, add.first_state + s);
+        const auto rec =
+            p.Get<pack::StateRec>(pack::SectionTag::kStates, add.first_state + s).value();
         state[rec.field] = std::string(p.String(rec.text));
     }
     EXPECT_EQ(state[uint32_t(pack::StateField::kBlendSrc)], "One");
@@ -139,12 +140,13 @@ TEST(Materials, DeferredGBufferPassWritesFourFloat4Targets) {
     ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
     const auto pass = p.FindPass(0, "Deferred");
     ASSERT_TRUE(pass.has_value());
-    const pack::VariantRec v = p.Variant(p.Pass(*pass).first_variant);
-    const pack::ModuleRec fragment = p.Module(v.fragment_module);
+    const pack::VariantRec v = p.Variant(p.Pass(*pass).value().first_variant).value();
+    const pack::ModuleRec fragment = p.Module(v.fragment_module).value();
     std::set<uint32_t> locations;
     for (uint32_t k = 0; k < fragment.interface_count; ++k) {
-        const auto io = p.Get<pack::InterfaceVarRec>(pack::SectionTag::kInterface,
-                                                     fragment.first_interface + k);
+        const auto io =
+            p.Get<pack::InterfaceVarRec>(pack::SectionTag::kInterface, fragment.first_interface + k)
+                .value();
         if (io.direction == 1) {
             EXPECT_EQ(io.vecsize, 4u);
             locations.insert(io.location);
@@ -173,7 +175,7 @@ TEST(Materials, EveryShippedShaderHasAnInstanceAndEveryInstanceValidates) {
     }
     EXPECT_EQ(shaders_with_instances.size(), p.Count(pack::SectionTag::kShaders));
     for (uint32_t i = 0; i < p.Count(pack::SectionTag::kShaders); ++i)
-        EXPECT_TRUE(shaders_with_instances.count(std::string(p.String(p.Shader(i).name))));
+        EXPECT_TRUE(shaders_with_instances.count(std::string(p.String(p.Shader(i).value().name))));
 }
 
 }  // namespace

@@ -33,10 +33,10 @@ namespace {
 nlohmann::json InfoJson(const Pack& p) {
     nlohmann::json shaders = nlohmann::json::array();
     for (uint32_t s = 0; s < p.Count(SectionTag::kShaders); ++s) {
-        const ShaderRec sr = p.Shader(s);
+        const ShaderRec sr = p.Shader(s).value();
         nlohmann::json props = nlohmann::json::array();
         for (uint32_t i = sr.first_property; i < sr.first_property + sr.property_count; ++i) {
-            const auto pr = p.Get<PropertyRec>(SectionTag::kProperties, i);
+            const auto pr = p.Get<PropertyRec>(SectionTag::kProperties, i).value();
             props.push_back({{"name", p.String(pr.name)},
                              {"type", pr.type},
                              {"default", pr.default_value},
@@ -44,15 +44,15 @@ nlohmann::json InfoJson(const Pack& p) {
         }
         nlohmann::json passes = nlohmann::json::array();
         for (uint32_t i = sr.first_pass; i < sr.first_pass + sr.pass_count; ++i) {
-            const PassRec pr = p.Pass(i);
+            const PassRec pr = p.Pass(i).value();
             nlohmann::json tags = nlohmann::json::object();
             for (uint32_t t = pr.first_tag; t < pr.first_tag + pr.tag_count; ++t) {
-                const auto tag = p.Get<TagRec>(SectionTag::kTags, t);
+                const auto tag = p.Get<TagRec>(SectionTag::kTags, t).value();
                 tags[std::string(p.String(tag.key))] = p.String(tag.value);
             }
             nlohmann::json state = nlohmann::json::array();
             for (uint32_t t = pr.first_state; t < pr.first_state + pr.state_count; ++t) {
-                const auto st = p.Get<StateRec>(SectionTag::kStates, t);
+                const auto st = p.Get<StateRec>(SectionTag::kStates, t).value();
                 nlohmann::json e = {{"field", pack::StateFieldName(pack::StateField(st.field))},
                                     {"target", st.target}};
                 if (st.kind == uint32_t(StateKind::kPropertyRef)) {
@@ -67,10 +67,10 @@ nlohmann::json InfoJson(const Pack& p) {
             nlohmann::json sets = nlohmann::json::array();
             for (uint32_t k = pr.first_keyword_set; k < pr.first_keyword_set + pr.keyword_set_count;
                  ++k) {
-                const KeywordSetRec kr = p.KeywordSet(k);
+                const KeywordSetRec kr = p.KeywordSet(k).value();
                 nlohmann::json words = nlohmann::json::array();
                 for (uint32_t w = 0; w < kr.keyword_count; ++w) {
-                    words.push_back(p.Keyword(kr.first_keyword + w));
+                    words.push_back(p.Keyword(kr.first_keyword + w).value());
                 }
                 sets.push_back({{"kind", kr.kind == 0 ? "multi_compile" : "shader_feature"},
                                 {"keywords", words},
@@ -79,7 +79,7 @@ nlohmann::json InfoJson(const Pack& p) {
             }
             nlohmann::json variants = nlohmann::json::array();
             for (uint32_t v = pr.first_variant; v < pr.first_variant + pr.variant_count; ++v) {
-                const VariantRec vr = p.Variant(v);
+                const VariantRec vr = p.Variant(v).value();
                 variants.push_back({{"key", vr.key},
                                     {"keywords", p.KeywordsOf(i, VariantKey(vr.key))},
                                     {"vertex_module", vr.vertex_module},
@@ -97,13 +97,13 @@ nlohmann::json InfoJson(const Pack& p) {
     }
     nlohmann::json modules = nlohmann::json::array();
     for (uint32_t m = 0; m < p.Count(SectionTag::kModules); ++m) {
-        const ModuleRec mr = p.Module(m);
+        const ModuleRec mr = p.Module(m).value();
         nlohmann::json blocks = nlohmann::json::array();
         for (uint32_t b = mr.first_block; b < mr.first_block + mr.block_count; ++b) {
-            const auto br = p.Get<BlockRec>(SectionTag::kBlocks, b);
+            const auto br = p.Get<BlockRec>(SectionTag::kBlocks, b).value();
             nlohmann::json members = nlohmann::json::array();
             for (uint32_t i = br.first_member; i < br.first_member + br.member_count; ++i) {
-                const auto mem = p.Get<MemberRec>(SectionTag::kMembers, i);
+                const auto mem = p.Get<MemberRec>(SectionTag::kMembers, i).value();
                 members.push_back(
                     {{"name", p.String(mem.name)}, {"offset", mem.offset}, {"size", mem.size}});
             }
@@ -116,7 +116,7 @@ nlohmann::json InfoJson(const Pack& p) {
         }
         nlohmann::json resources = nlohmann::json::array();
         for (uint32_t r = mr.first_resource; r < mr.first_resource + mr.resource_count; ++r) {
-            const auto rr = p.Get<ResourceRec>(SectionTag::kResources, r);
+            const auto rr = p.Get<ResourceRec>(SectionTag::kResources, r).value();
             resources.push_back({{"name", p.String(rr.name)},
                                  {"kind", rr.kind},
                                  {"set", rr.set},
@@ -124,7 +124,7 @@ nlohmann::json InfoJson(const Pack& p) {
         }
         nlohmann::json io = nlohmann::json::array();
         for (uint32_t i = mr.first_interface; i < mr.first_interface + mr.interface_count; ++i) {
-            const auto v = p.Get<InterfaceVarRec>(SectionTag::kInterface, i);
+            const auto v = p.Get<InterfaceVarRec>(SectionTag::kInterface, i).value();
             io.push_back({{"name", p.String(v.name)},
                           {"semantic", p.String(v.semantic)},
                           {"location", v.location},
@@ -203,18 +203,18 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) 
 std::vector<std::string> ShaderNames(const Pack& pack) {
     std::vector<std::string> names;
     for (uint32_t s = 0; s < pack.Count(SectionTag::kShaders); ++s)
-        names.emplace_back(pack.String(pack.Shader(s).name));
+        names.emplace_back(pack.String(pack.Shader(s).value().name));
     return names;
 }
 
 // A shader's pass labels, Names and LightMode tags, for suggestions.
 std::vector<std::string> PassNames(const Pack& pack, uint32_t shader) {
     std::vector<std::string> names;
-    const ShaderRec s = pack.Shader(shader);
+    const ShaderRec s = pack.Shader(shader).value();
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
         const std::string label = PassLabel(pack, i);
-        for (std::string_view n :
-             {std::string_view(label), pack.String(pack.Pass(i).name), LightModeOf(pack, i)}) {
+        for (std::string_view n : {std::string_view(label), pack.String(pack.Pass(i).value().name),
+                                   LightModeOf(pack, i)}) {
             if (!n.empty() && std::find(names.begin(), names.end(), n) == names.end())
                 names.emplace_back(n);
         }
@@ -270,9 +270,10 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
                                    "\" has no variant with keywords" +
                                    (kws.empty() ? " (none)" : kws) + " (stripped or never built)");
         }
-        const VariantRec v = pack.Variant(*variant);
+        const VariantRec v = pack.Variant(*variant).value();
         const bool vert = o->stage[0] == 'v';
-        const auto bytes = pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module));
+        const auto bytes =
+            pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module).value());
         Result<bool> written = base::WriteFileAtomically(
             o->output, std::span<const uint8_t>(bytes.data(), bytes.size()), {{o->file}});
         if (!written)

@@ -12,15 +12,16 @@ std::vector<PropertySwitch> PropertySwitches(const Material& m,
                                              const pack::Pack& pack,
                                              uint32_t shader) {
     std::vector<PropertySwitch> out;
-    const pack::ShaderRec s = pack.Shader(shader);
+    const pack::ShaderRec s = pack.Shader(shader).value();
     for (uint32_t i = s.first_property; i < s.first_property + s.property_count; ++i) {
-        const auto p = pack.Get<pack::PropertyRec>(pack::SectionTag::kProperties, i);
+        const auto p = pack.Get<pack::PropertyRec>(pack::SectionTag::kProperties, i).value();
         for (uint32_t a = p.first_attribute; a < p.first_attribute + p.attribute_count; ++a) {
-            const auto attr = pack.Get<pack::AttributeRec>(pack::SectionTag::kAttributes, a);
+            const auto attr =
+                pack.Get<pack::AttributeRec>(pack::SectionTag::kAttributes, a).value();
             PropertySwitch sw;
             sw.property = std::string(pack.String(p.name));
-            sw.driven = pack::KeywordsDrivenBy(sw.property, pack.String(attr.name),
-                                               pack.String(attr.args));
+            sw.driven =
+                pack::KeywordsDrivenBy(sw.property, pack.String(attr.name), pack.String(attr.args));
             if (sw.driven.kind == pack::PropertyKeywords::Kind::kNone)
                 continue;
             sw.value = p.default_value[0];

@@ -105,12 +105,12 @@ struct KeywordUse {
 void CheckKeywords(State& s, const Material& m, const pack::ShaderRec& shader) {
     std::map<std::string, std::vector<KeywordUse>> declared;
     for (uint32_t p = 0; p < shader.pass_count; ++p) {
-        const pack::PassRec pass = s.pack.Pass(shader.first_pass + p);
+        const pack::PassRec pass = s.pack.Pass(shader.first_pass + p).value();
         for (uint32_t k = 0; k < pass.keyword_set_count; ++k) {
             const uint32_t set_index = pass.first_keyword_set + k;
-            const pack::KeywordSetRec set = s.pack.KeywordSet(set_index);
+            const pack::KeywordSetRec set = s.pack.KeywordSet(set_index).value();
             for (uint32_t w = 0; w < set.keyword_count; ++w) {
-                const std::string name(s.pack.Keyword(set.first_keyword + w));
+                const std::string name(s.pack.Keyword(set.first_keyword + w).value());
                 if (!name.empty()) {
                     declared[name].push_back(
                         {set_index, set.kind == uint32_t(pack::KeywordSetKind::kMultiCompile)});
@@ -157,11 +157,12 @@ void CheckSwitches(State& s, const Material& m, uint32_t shader) {
     for (const PropertySwitch& sw : PropertySwitches(m, s.pack, shader)) {
         for (const Keyword& k : m.keywords) {
             const auto& driven = sw.driven.keywords;
-            if (k.name == sw.enabled || std::find(driven.begin(), driven.end(), k.name) == driven.end())
+            if (k.name == sw.enabled ||
+                std::find(driven.begin(), driven.end(), k.name) == driven.end())
                 continue;
             s.Add(IssueSeverity::kWarning, IssueCode::kKeywordContradictsProperty, k.pos,
-                  "keyword '" + k.name + "' is listed, but property '" + sw.property + "' = " +
-                      Number(sw.value) +
+                  "keyword '" + k.name + "' is listed, but property '" + sw.property +
+                      "' = " + Number(sw.value) +
                       (sw.enabled.empty() ? " turns it off" : " selects '" + sw.enabled + "'") +
                       (sw.set_by_material ? "" : " (its default)"),
                   "the property drives the keyword as in Unity: set the property, not the keyword");
@@ -180,19 +181,20 @@ bool ValidateMaterial(const Material& m,
     if (!shader_index) {
         std::vector<std::string> names;
         for (uint32_t i = 0; i < pack.Count(pack::SectionTag::kShaders); ++i)
-            names.emplace_back(pack.String(pack.Shader(i).name));
+            names.emplace_back(pack.String(pack.Shader(i).value().name));
         const std::string near = ClosestName(m.shader, names);
         s.Add(IssueSeverity::kError, IssueCode::kUnknownShader, m.shader_pos,
               "no shader '" + m.shader + "' in the pack",
               near.empty() ? "" : "did you mean '" + near + "'");
         return false;
     }
-    const pack::ShaderRec shader = pack.Shader(*shader_index);
+    const pack::ShaderRec shader = pack.Shader(*shader_index).value();
     std::map<std::string, pack::PropertyRec> props;
     std::vector<std::string> names;
     for (uint32_t i = 0; i < shader.property_count; ++i) {
         const auto rec =
-            pack.Get<pack::PropertyRec>(pack::SectionTag::kProperties, shader.first_property + i);
+            pack.Get<pack::PropertyRec>(pack::SectionTag::kProperties, shader.first_property + i)
+                .value();
         names.emplace_back(pack.String(rec.name));
         props.emplace(names.back(), rec);
     }

@@ -21,9 +21,9 @@ std::string_view LightModeOf(const Pack& pack, uint32_t pass) {
     if (pass >= pack.Count(SectionTag::kPasses)) {
         return {};
     }
-    const PassRec p = pack.Pass(pass);
+    const PassRec p = pack.Pass(pass).value();
     for (uint32_t i = 0; i < p.tag_count; ++i) {
-        const auto tag = pack.Get<TagRec>(SectionTag::kTags, p.first_tag + i);
+        const auto tag = pack.Get<TagRec>(SectionTag::kTags, p.first_tag + i).value();
         if (pack.String(tag.key) == "LightMode") {
             return pack.String(tag.value);
         }
@@ -36,13 +36,13 @@ PassIdParts PassIdPartsOf(const Pack& pack, uint32_t pass) {
     if (pass >= pack.Count(SectionTag::kPasses)) {
         return parts;
     }
-    const PassRec p = pack.Pass(pass);
-    const ShaderRec s = pack.Shader(p.shader);
+    const PassRec p = pack.Pass(pass).value();
+    const ShaderRec s = pack.Shader(p.shader).value();
     parts.name = pack.String(p.name);
     parts.light_mode = LightModeOf(pack, pass);
     parts.subshader = p.subshader;
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        const uint32_t sub = pack.Pass(i).subshader;
+        const uint32_t sub = pack.Pass(i).value().subshader;
         parts.index += i < pass && sub == p.subshader;
         parts.several_subshaders = parts.several_subshaders || sub != p.subshader;
     }

@@ -224,9 +224,9 @@ Result<PassState> ResolvePassState(const Pack& pack,
     }
     Resolver r;
     PassState s;
-    const PassRec p = pack.Pass(pass);
+    const PassRec p = pack.Pass(pass).value();
     for (uint32_t i = 0; i < p.state_count; ++i) {
-        const auto rec = pack.Get<StateRec>(SectionTag::kStates, p.first_state + i);
+        const auto rec = pack.Get<StateRec>(SectionTag::kStates, p.first_state + i).value();
         if (rec.field >= kStateFieldCount) {
             continue;  // a field from a newer minor version
         }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -165,6 +166,29 @@ std::string_view Pack::String(StrRef ref) const {
     return {reinterpret_cast<const char*>(bytes_.data() + s.offset + ref.offset), ref.length};
 }
 
+Result<std::string_view> Pack::Keyword(uint32_t i) const {
+    if (i >= Count(SectionTag::kKeywords)) {
+        return OutOfRange(SectionTag::kKeywords, i);
+    }
+    return KeywordAt(i);
+}
+
+Error Pack::OutOfRange(SectionTag tag, uint32_t index) const {
+    const uint32_t t = uint32_t(tag);
+    const std::string name{char(t), char(t >> 8), char(t >> 16), char(t >> 24)};
+    return Error{"record " + std::to_string(index) + " of section " + name +
+                 " is out of range (the pack has " + std::to_string(Count(tag)) + ")"};
+}
+
+std::span<const uint32_t> Pack::SpirvWords(const ModuleRec& module) const {
+    static_assert(std::endian::native == std::endian::little, "SPIR-V words are little-endian");
+    const std::span<const uint8_t> bytes = Spirv(module);
+    if (reinterpret_cast<uintptr_t>(bytes.data()) % alignof(uint32_t) != 0) {
+        return {};
+    }
+    return {reinterpret_cast<const uint32_t*>(bytes.data()), bytes.size() / 4};
+}
+
 std::span<const uint8_t> Pack::Spirv(const ModuleRec& module) const {
     const SectionEntry& s = sections_[Index(SectionTag::kSpirv)];
     if (module.spirv_offset > s.size || module.spirv_size > s.size - module.spirv_offset)
@@ -273,7 +297,7 @@ std::optional<PackError> Pack::Validate() {
     if (!str_ok(meta().producer))
         return fail("META", 0);
     for (uint32_t i = 0; i < n_shaders; ++i) {
-        const ShaderRec s = Shader(i);
+        const ShaderRec s = Record<ShaderRec>(SectionTag::kShaders, i);
         if (!str_ok(s.name) || !str_ok(s.fallback) ||
             !RangeOk(s.first_property, s.property_count, n_props) ||
             !RangeOk(s.first_pass, s.pass_count, n_passes)) {
@@ -281,7 +305,7 @@ std::optional<PackError> Pack::Validate() {
         }
     }
     for (uint32_t i = 0; i < n_props; ++i) {
-        const auto p = Get<PropertyRec>(SectionTag::kProperties, i);
+        const auto p = Record<PropertyRec>(SectionTag::kProperties, i);
         if (!str_ok(p.name) || !str_ok(p.display_name) || !str_ok(p.texture_default) ||
             p.type > uint32_t(PropertyType::kTextureAny) ||
             !RangeOk(p.first_attribute, p.attribute_count, n_attrs)) {
@@ -289,28 +313,28 @@ std::optional<PackError> Pack::Validate() {
         }
     }
     for (uint32_t i = 0; i < n_attrs; ++i) {
-        const auto a = Get<AttributeRec>(SectionTag::kAttributes, i);
+        const auto a = Record<AttributeRec>(SectionTag::kAttributes, i);
         if (!str_ok(a.name) || !str_ok(a.args))
             return fail("ATTR", i);
     }
     for (uint32_t i = 0; i < n_tags; ++i) {
-        const auto t = Get<TagRec>(SectionTag::kTags, i);
+        const auto t = Record<TagRec>(SectionTag::kTags, i);
         if (!str_ok(t.key) || !str_ok(t.value))
             return fail("TAGS", i);
     }
     for (uint32_t i = 0; i < n_states; ++i) {
-        const auto s = Get<StateRec>(SectionTag::kStates, i);
+        const auto s = Record<StateRec>(SectionTag::kStates, i);
         if (!str_ok(s.text) || s.field >= kStateFieldCount ||
             s.kind > uint32_t(StateKind::kPropertyRef)) {
             return fail("RSTA", i);
         }
     }
     for (uint32_t i = 0; i < n_kw; ++i) {
-        if (!str_ok(Get<StrRef>(SectionTag::kKeywords, i)))
+        if (!str_ok(Record<StrRef>(SectionTag::kKeywords, i)))
             return fail("KWRD", i);
     }
     for (uint32_t i = 0; i < n_sets; ++i) {
-        const KeywordSetRec k = KeywordSet(i);
+        const KeywordSetRec k = Record<KeywordSetRec>(SectionTag::kKeywordSets, i);
         if (!RangeOk(k.first_keyword, k.keyword_count, n_kw) || k.keyword_count == 0 ||
             k.key_bits > 32 || k.key_shift > 64 - k.key_bits ||
             k.key_bits != BitsForCount(k.keyword_count)) {
@@ -318,7 +342,7 @@ std::optional<PackError> Pack::Validate() {
         }
     }
     for (uint32_t i = 0; i < n_passes; ++i) {
-        const PassRec p = Pass(i);
+        const PassRec p = Record<PassRec>(SectionTag::kPasses, i);
         if (!str_ok(p.name) || p.shader >= n_shaders ||
             !RangeOk(p.first_tag, p.tag_count, n_tags) ||
             !RangeOk(p.first_state, p.state_count, n_states) ||
@@ -327,17 +351,17 @@ std::optional<PackError> Pack::Validate() {
             return fail("PASS", i);
         }
         for (uint32_t v = p.first_variant; v < p.first_variant + p.variant_count; ++v) {
-            if (Variant(v).pass != i)
+            if (Record<VariantRec>(SectionTag::kVariants, v).pass != i)
                 return fail("PASS", i);
         }
     }
     for (uint32_t i = 0; i < n_vars; ++i) {
-        const VariantRec v = Variant(i);
+        const VariantRec v = Record<VariantRec>(SectionTag::kVariants, i);
         if (v.pass >= n_passes || v.vertex_module >= n_mods || v.fragment_module >= n_mods) {
             return fail("VARI", i);
         }
         if (i > 0) {
-            const VariantRec prev = Variant(i - 1);
+            const VariantRec prev = Record<VariantRec>(SectionTag::kVariants, i - 1);
             if (prev.pass > v.pass || (prev.pass == v.pass && prev.key >= v.key)) {
                 return Corrupt("variant table is not sorted at record " + std::to_string(i));
             }
@@ -345,7 +369,7 @@ std::optional<PackError> Pack::Validate() {
     }
     const uint64_t spirv_size = sections_[Index(SectionTag::kSpirv)].size;
     for (uint32_t i = 0; i < n_mods; ++i) {
-        const ModuleRec m = Module(i);
+        const ModuleRec m = Record<ModuleRec>(SectionTag::kModules, i);
         if (m.spirv_offset % 4 != 0 || m.spirv_size % 4 != 0 || m.spirv_size == 0 ||
             m.spirv_offset > spirv_size || m.spirv_size > spirv_size - m.spirv_offset ||
             m.stage > uint32_t(Stage::kFragment) ||
@@ -356,22 +380,22 @@ std::optional<PackError> Pack::Validate() {
         }
     }
     for (uint32_t i = 0; i < n_io; ++i) {
-        const auto v = Get<InterfaceVarRec>(SectionTag::kInterface, i);
+        const auto v = Record<InterfaceVarRec>(SectionTag::kInterface, i);
         if (!str_ok(v.name) || !str_ok(v.semantic))
             return fail("IOVR", i);
     }
     for (uint32_t i = 0; i < n_blocks; ++i) {
-        const auto b = Get<BlockRec>(SectionTag::kBlocks, i);
+        const auto b = Record<BlockRec>(SectionTag::kBlocks, i);
         if (!str_ok(b.name) || !RangeOk(b.first_member, b.member_count, n_members)) {
             return fail("BLCK", i);
         }
     }
     for (uint32_t i = 0; i < n_members; ++i) {
-        if (!str_ok(Get<MemberRec>(SectionTag::kMembers, i).name))
+        if (!str_ok(Record<MemberRec>(SectionTag::kMembers, i).name))
             return fail("MEMB", i);
     }
     for (uint32_t i = 0; i < n_res; ++i) {
-        if (!str_ok(Get<ResourceRec>(SectionTag::kResources, i).name))
+        if (!str_ok(Record<ResourceRec>(SectionTag::kResources, i).name))
             return fail("RSRC", i);
     }
     return std::nullopt;
@@ -379,7 +403,7 @@ std::optional<PackError> Pack::Validate() {
 
 std::optional<uint32_t> Pack::FindShader(std::string_view name) const {
     for (uint32_t i = 0; i < Count(SectionTag::kShaders); ++i) {
-        if (String(Shader(i).name) == name)
+        if (String(Record<ShaderRec>(SectionTag::kShaders, i).name) == name)
             return i;
     }
     return std::nullopt;
@@ -388,7 +412,7 @@ std::optional<uint32_t> Pack::FindShader(std::string_view name) const {
 std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) const {
     if (shader >= Count(SectionTag::kShaders))
         return std::nullopt;
-    const ShaderRec s = Shader(shader);
+    const ShaderRec s = Record<ShaderRec>(SectionTag::kShaders, shader);
     auto equal_ci = [](std::string_view a, std::string_view b) {
         return a.size() == b.size() &&
                std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -401,13 +425,13 @@ std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) c
             return i;  // the pass's one name (kiln/pack/pass_id.h)
     }
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        if (equal_ci(String(Pass(i).name), name))
+        if (equal_ci(String(Record<PassRec>(SectionTag::kPasses, i).name), name))
             return i;
     }
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        const PassRec p = Pass(i);
+        const PassRec p = Record<PassRec>(SectionTag::kPasses, i);
         for (uint32_t t = p.first_tag; t < p.first_tag + p.tag_count; ++t) {
-            const auto tag = Get<TagRec>(SectionTag::kTags, t);
+            const auto tag = Record<TagRec>(SectionTag::kTags, t);
             if (String(tag.key) == "LightMode" && equal_ci(String(tag.value), name))
                 return i;
         }
@@ -418,11 +442,11 @@ std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) c
 std::optional<uint32_t> Pack::FindVariant(uint32_t pass, VariantKey key) const {
     if (pass >= Count(SectionTag::kPasses))
         return std::nullopt;
-    const PassRec p = Pass(pass);
+    const PassRec p = Record<PassRec>(SectionTag::kPasses, pass);
     uint32_t lo = p.first_variant, hi = p.first_variant + p.variant_count;
     while (lo < hi) {
         const uint32_t mid = lo + (hi - lo) / 2;
-        const uint64_t k = Variant(mid).key;
+        const uint64_t k = Record<VariantRec>(SectionTag::kVariants, mid).key;
         if (k == key.bits())
             return mid;
         if (k < key.bits()) {
@@ -438,11 +462,11 @@ VariantKey Pack::KeyFor(uint32_t pass, const std::vector<std::string>& enabled) 
     VariantKey key;
     if (pass >= Count(SectionTag::kPasses))
         return key;
-    const PassRec p = Pass(pass);
+    const PassRec p = Record<PassRec>(SectionTag::kPasses, pass);
     for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
-        const KeywordSetRec set = KeywordSet(s);
+        const KeywordSetRec set = Record<KeywordSetRec>(SectionTag::kKeywordSets, s);
         for (uint32_t k = 0; k < set.keyword_count; ++k) {
-            const std::string_view kw = Keyword(set.first_keyword + k);
+            const std::string_view kw = KeywordAt(set.first_keyword + k);
             if (!kw.empty() && std::find(enabled.begin(), enabled.end(), kw) != enabled.end()) {
                 key.Set(set.key_shift, set.key_bits, k);
                 break;
@@ -457,11 +481,11 @@ std::optional<std::string> Pack::CheckKeywords(uint32_t pass,
     if (pass >= Count(SectionTag::kPasses))
         return "no pass " + std::to_string(pass) + " in the pack";
     std::vector<std::string> declared;
-    const PassRec p = Pass(pass);
+    const PassRec p = Record<PassRec>(SectionTag::kPasses, pass);
     for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
-        const KeywordSetRec set = KeywordSet(s);
+        const KeywordSetRec set = Record<KeywordSetRec>(SectionTag::kKeywordSets, s);
         for (uint32_t k = 0; k < set.keyword_count; ++k) {
-            const std::string_view kw = Keyword(set.first_keyword + k);
+            const std::string_view kw = KeywordAt(set.first_keyword + k);
             if (!kw.empty())
                 declared.emplace_back(kw);
         }
@@ -479,12 +503,12 @@ std::vector<std::string> Pack::KeywordsOf(uint32_t pass, VariantKey key) const {
     std::vector<std::string> out;
     if (pass >= Count(SectionTag::kPasses))
         return out;
-    const PassRec p = Pass(pass);
+    const PassRec p = Record<PassRec>(SectionTag::kPasses, pass);
     for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
-        const KeywordSetRec set = KeywordSet(s);
+        const KeywordSetRec set = Record<KeywordSetRec>(SectionTag::kKeywordSets, s);
         const uint32_t index = key.Get(set.key_shift, set.key_bits);
         if (index < set.keyword_count) {
-            const std::string_view kw = Keyword(set.first_keyword + index);
+            const std::string_view kw = KeywordAt(set.first_keyword + index);
             if (!kw.empty())
                 out.emplace_back(kw);
         }

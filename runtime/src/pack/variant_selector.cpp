@@ -12,10 +12,10 @@ namespace {
 
 // Keyword sets whose chosen keyword differs between two keys of a pass.
 uint32_t Distance(const Pack& pack, uint32_t pass, VariantKey a, VariantKey b) {
-    const PassRec p = pack.Pass(pass);
+    const PassRec p = pack.Pass(pass).value();
     uint32_t d = 0;
     for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
-        const KeywordSetRec set = pack.KeywordSet(s);
+        const KeywordSetRec set = pack.KeywordSet(s).value();
         d += a.Get(set.key_shift, set.key_bits) != b.Get(set.key_shift, set.key_bits);
     }
     return d;
@@ -42,8 +42,8 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
                      std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
     }
     const VariantKey key = pack.KeyFor(pass, keywords);
-    const PassRec p = pack.Pass(pass);
-    const std::string shader(pack.String(pack.Shader(p.shader).name));
+    const PassRec p = pack.Pass(pass).value();
+    const std::string shader(pack.String(pack.Shader(p.shader).value().name));
     const std::string label = PassLabel(pack, pass);
     const std::vector<std::string> requested = pack.KeywordsOf(pass, key);
     Usage& usage = usage_[{shader, label, requested}];
@@ -56,15 +56,15 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
     // Closest present variants: fewest differing keyword sets, then lowest key.
     std::vector<std::pair<uint32_t, uint32_t>> ranked;  // (distance, variant)
     for (uint32_t v = p.first_variant; v < p.first_variant + p.variant_count; ++v) {
-        ranked.emplace_back(Distance(pack, pass, key, VariantKey(pack.Variant(v).key)), v);
+        ranked.emplace_back(Distance(pack, pass, key, VariantKey(pack.Variant(v).value().key)), v);
     }
     std::sort(ranked.begin(), ranked.end());
     std::string closest;
     for (size_t i = 0; i < ranked.size() && i < 3; ++i) {
-        closest +=
-            std::string(i ? ", " : "") + "'" +
-            JoinKeywords(pack.KeywordsOf(pass, VariantKey(pack.Variant(ranked[i].second).key))) +
-            "'";
+        closest += std::string(i ? ", " : "") + "'" +
+                   JoinKeywords(pack.KeywordsOf(
+                       pass, VariantKey(pack.Variant(ranked[i].second).value().key))) +
+                   "'";
     }
     const std::string what = "shader '" + shader + "' pass '" + label +
                              "' has no variant for keywords '" + JoinKeywords(requested) + "'";

@@ -30,9 +30,9 @@ struct ShaderPasses {
 
 ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
     ShaderPasses out;
-    const pack::ShaderRec s = pack.Shader(shader);
+    const pack::ShaderRec s = pack.Shader(shader).value();
     for (uint32_t p = s.first_pass; p < s.first_pass + s.pass_count; ++p) {
-        const pack::PassRec rec = pack.Pass(p);
+        const pack::PassRec rec = pack.Pass(p).value();
         if (rec.subshader != 0) {
             continue;  // the first SubShader is the one that runs
         }
@@ -99,7 +99,7 @@ struct Planner {
             Warn(m.name + ": " + choice.warning);
         }
         const std::vector<std::string> chosen =
-            pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(choice.variant).key));
+            pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(choice.variant).value().key));
         if (!additive && std::count(chosen.begin(), chosen.end(), "VERTEXLIGHT_ON")) {
             ++stats.vertex_lit;
         }
@@ -133,7 +133,7 @@ struct Planner {
         Draw d;
         if (auto e =
                 s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created)) {
-            return Error{"shader '" + std::string(pack.String(pack.Shader(m.shader).name)) +
+            return Error{"shader '" + std::string(pack.String(pack.Shader(m.shader).value().name)) +
                              "' pass '" + pack::PassLabel(pack, pass) + "' variant '" +
                              pack::JoinKeywords(chosen) + "': " + e->message,
                          e->kind};
@@ -146,7 +146,7 @@ struct Planner {
             render::LightValues(light, additive ? std::vector<const Light*>{} : vertex);
         const Values object = render::ObjectValues(world);
         Values material_extra;  // <tex>_TexelSize
-        const pack::VariantRec v = pack.Variant(choice.variant);
+        const pack::VariantRec v = pack.Variant(choice.variant).value();
         const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
             for (const Values* table : std::initializer_list<const Values*>{
                      &object, &light_values, &frame, &material_extra}) {
@@ -159,10 +159,11 @@ struct Planner {
         };
         std::vector<std::pair<uint32_t, uint32_t>> seen;  // (set, binding) already written
         for (uint32_t module : {v.vertex_module, v.fragment_module}) {
-            const pack::ModuleRec mod = pack.Module(module);
+            const pack::ModuleRec mod = pack.Module(module).value();
             for (uint32_t r = 0; r < mod.resource_count; ++r) {
                 const auto res = pack.Get<pack::ResourceRec>(pack::SectionTag::kResources,
-                                                             mod.first_resource + r);
+                                                             mod.first_resource + r)
+                                     .value();
                 if (std::count(seen.begin(), seen.end(), std::pair{res.set, res.binding})) {
                     continue;
                 }
@@ -211,10 +212,11 @@ struct Planner {
             }
         }
         for (uint32_t module : {v.vertex_module, v.fragment_module}) {
-            const pack::ModuleRec mod = pack.Module(module);
+            const pack::ModuleRec mod = pack.Module(module).value();
             for (uint32_t b = 0; b < mod.block_count; ++b) {
                 const auto block =
-                    pack.Get<pack::BlockRec>(pack::SectionTag::kBlocks, mod.first_block + b);
+                    pack.Get<pack::BlockRec>(pack::SectionTag::kBlocks, mod.first_block + b)
+                        .value();
                 if (pack::BlockKind(block.kind) == pack::BlockKind::kPushConstant) {
                     d.push.assign(d.pipeline->layout.push_constant_size, 0);
                     render::WriteBlock(pack, block, lookup, d.push.data(), d.push.size());

@@ -15,7 +15,8 @@ using pack::SectionTag;
 
 bool HasAttribute(const pack::Pack& pack, const pack::PropertyRec& p, std::string_view name) {
     for (uint32_t i = 0; i < p.attribute_count; ++i) {
-        const auto a = pack.Get<pack::AttributeRec>(SectionTag::kAttributes, p.first_attribute + i);
+        const auto a =
+            pack.Get<pack::AttributeRec>(SectionTag::kAttributes, p.first_attribute + i).value();
         if (pack.String(a.name) == name) {
             return true;
         }
@@ -26,9 +27,10 @@ bool HasAttribute(const pack::Pack& pack, const pack::PropertyRec& p, std::strin
 std::optional<pack::PropertyRec> FindProperty(const pack::Pack& pack,
                                               uint32_t shader,
                                               std::string_view name) {
-    const pack::ShaderRec s = pack.Shader(shader);
+    const pack::ShaderRec s = pack.Shader(shader).value();
     for (uint32_t i = 0; i < s.property_count; ++i) {
-        const auto p = pack.Get<pack::PropertyRec>(SectionTag::kProperties, s.first_property + i);
+        const auto p =
+            pack.Get<pack::PropertyRec>(SectionTag::kProperties, s.first_property + i).value();
         if (pack.String(p.name) == name) {
             return p;
         }
@@ -63,10 +65,11 @@ void InstanceFromDefaults(const pack::Pack& pack,
     MaterialInstance m;
     m.pack = pack_index;
     m.shader = shader;
-    m.name = "shader '" + std::string(pack.String(pack.Shader(shader).name)) + "' defaults";
-    const pack::ShaderRec s = pack.Shader(shader);
+    m.name = "shader '" + std::string(pack.String(pack.Shader(shader).value().name)) + "' defaults";
+    const pack::ShaderRec s = pack.Shader(shader).value();
     for (uint32_t i = 0; i < s.property_count; ++i) {
-        const auto p = pack.Get<pack::PropertyRec>(SectionTag::kProperties, s.first_property + i);
+        const auto p =
+            pack.Get<pack::PropertyRec>(SectionTag::kProperties, s.first_property + i).value();
         const std::string name(pack.String(p.name));
         const auto type = PropertyType(p.type);
         if (pack::IsTextureProperty(type)) {
@@ -222,7 +225,8 @@ void WriteBlock(const pack::Pack& pack,
                 uint8_t* dst,
                 size_t dst_size) {
     for (uint32_t i = 0; i < block.member_count; ++i) {
-        const auto member = pack.Get<pack::MemberRec>(SectionTag::kMembers, block.first_member + i);
+        const auto member =
+            pack.Get<pack::MemberRec>(SectionTag::kMembers, block.first_member + i).value();
         const std::vector<float>* value = lookup(pack.String(member.name));
         if (!value || member.offset >= dst_size) {
             continue;

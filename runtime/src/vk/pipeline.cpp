@@ -80,7 +80,7 @@ std::optional<runtime::Error> CreateLayout(const Context& c,
     for (const pack::ModuleRec& m : modules) {
         const VkShaderStageFlags stage = StageBit(m.stage);
         for (uint32_t i = 0; i < m.block_count; ++i) {
-            const auto b = pack.Get<pack::BlockRec>(SectionTag::kBlocks, m.first_block + i);
+            const auto b = pack.Get<pack::BlockRec>(SectionTag::kBlocks, m.first_block + i).value();
             if (pack::BlockKind(b.kind) == pack::BlockKind::kPushConstant) {
                 out.push_constant_size = std::max(out.push_constant_size, b.size);
                 out.push_constant_stages |= stage;
@@ -90,7 +90,7 @@ std::optional<runtime::Error> CreateLayout(const Context& c,
         }
         for (uint32_t i = 0; i < m.resource_count; ++i) {
             const auto r =
-                pack.Get<pack::ResourceRec>(SectionTag::kResources, m.first_resource + i);
+                pack.Get<pack::ResourceRec>(SectionTag::kResources, m.first_resource + i).value();
             add(r.set, r.binding, DescriptorType(pack::ResourceKind(r.kind)), r.array_size, stage);
         }
     }
@@ -182,9 +182,9 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
                                              VkPipelineCache cache,
                                              ModuleChecker* checker,
                                              Pipeline& out) {
-    const pack::VariantRec v = pack.Variant(variant);
-    const std::array<pack::ModuleRec, 2> modules = {pack.Module(v.vertex_module),
-                                                    pack.Module(v.fragment_module)};
+    const pack::VariantRec v = pack.Variant(variant).value();
+    const std::array<pack::ModuleRec, 2> modules = {pack.Module(v.vertex_module).value(),
+                                                    pack.Module(v.fragment_module).value()};
     Pipeline p;
     auto fail = [&](runtime::Error e) {
         DestroyPipeline(c, p);
@@ -225,7 +225,7 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
     const pack::ModuleRec& vs = modules[0];
     for (uint32_t i = 0; i < vs.interface_count; ++i) {
         const auto var =
-            pack.Get<pack::InterfaceVarRec>(SectionTag::kInterface, vs.first_interface + i);
+            pack.Get<pack::InterfaceVarRec>(SectionTag::kInterface, vs.first_interface + i).value();
         if (var.direction != 0 || var.location == ~0u) {
             continue;
         }
@@ -301,8 +301,9 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
         }
     }
     if (state.logic_op_enable && !c.logic_op) {
-        return fail(runtime::Error{"a Logical* BlendOp needs the logicOp feature, which this "
-                                   "Vulkan device does not support"});
+        return fail(
+            runtime::Error{"a Logical* BlendOp needs the logicOp feature, which this "
+                           "Vulkan device does not support"});
     }
     VkPipelineColorBlendStateCreateInfo blend{
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

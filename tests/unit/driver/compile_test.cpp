@@ -33,7 +33,7 @@ TEST(Compile, ThreeLightTypesGiveThreeValidVariantsAndOneVertexProgram) {
     ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
     ASSERT_EQ(p.Count(pack::SectionTag::kVariants), 3u);
     for (uint32_t m = 0; m < p.Count(pack::SectionTag::kModules); ++m) {
-        const auto bytes = p.Spirv(p.Module(m));
+        const auto bytes = p.Spirv(p.Module(m).value());
         std::vector<uint32_t> words(bytes.size() / 4);
         std::memcpy(words.data(), bytes.data(), bytes.size());
         std::string msg;
@@ -116,14 +116,15 @@ TEST(Compile, AnEntryPointThatIsNotAFunctionIsAnErrorAtItsPragma) {
 // shader_feature combination built, as in Unity.
 TEST(Compile, KeywordSwitchPropertiesDriveTheCombinationsAMaterialNeeds) {
     ScratchDir dir;
-    std::string text = Replace(PassShader("            #pragma shader_feature _RIMLIGHT\n"
-                                          "            #pragma shader_feature _Q_LOW _Q_HIGH\n"),
-                               "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1) }",
-                               "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1)\n"
-                               "        [Toggle(_RIMLIGHT)] _Rim (\"Rim\", Float) = 0\n"
-                               "        [KeywordEnum(Low, High)] _Q (\"Q\", Float) = 0\n"
-                               "        [Enum(UnityEngine.Rendering.CullMode)] _Cull (\"C\", Float) "
-                               "= 2 }");
+    std::string text =
+        Replace(PassShader("            #pragma shader_feature _RIMLIGHT\n"
+                           "            #pragma shader_feature _Q_LOW _Q_HIGH\n"),
+                "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1) }",
+                "Properties { _Tint (\"Tint\", Color) = (1, 1, 1, 1)\n"
+                "        [Toggle(_RIMLIGHT)] _Rim (\"Rim\", Float) = 0\n"
+                "        [KeywordEnum(Low, High)] _Q (\"Q\", Float) = 0\n"
+                "        [Enum(UnityEngine.Rendering.CullMode)] _Cull (\"C\", Float) "
+                "= 2 }");
     text = Replace(text, "Name \"FORWARD\"", "Name \"FORWARD\"\n            Cull [_Cull]");
     const std::string path = dir.Write("switch.shader", text);
     CompileOptions every;
@@ -137,7 +138,7 @@ TEST(Compile, KeywordSwitchPropertiesDriveTheCombinationsAMaterialNeeds) {
     material.materials["Test/Pass"] = {{{}, {{"_Rim", 1.0}, {"_Q", 1.0}}}};
     CompileRun one = Compile({path}, material);
     ASSERT_TRUE(one.out.ok) << Brief(one.diags);
-    EXPECT_EQ(one.out.stats.variants, 2u);  // all-off + (_RIMLIGHT, _Q_HIGH)
+    EXPECT_EQ(one.out.stats.variants, 2u);                      // all-off + (_RIMLIGHT, _Q_HIGH)
     material.materials["Test/Pass"] = {{{}, {{"_Rim", 0.0}}}};  // _Q's default: _Q_LOW
     CompileRun off = Compile({path}, material);
     ASSERT_TRUE(off.out.ok) << Brief(off.diags);
@@ -295,8 +296,9 @@ TEST(Compile, IncludeResolutionOrderIsIncluderThenDashIThenTemplates) {
     fs::remove(templ);
     CompileRun d = Compile({shader}, o);
     EXPECT_FALSE(d.out.ok);
-    EXPECT_NE(Brief(d.diags).find("order.shader:10:23 K5001 cannot find include file 'which.cginc'"),
-              std::string::npos)
+    EXPECT_NE(
+        Brief(d.diags).find("order.shader:10:23 K5001 cannot find include file 'which.cginc'"),
+        std::string::npos)
         << Brief(d.diags);
 }
 
@@ -349,12 +351,13 @@ TEST(Compile, BindingsFollowTheBindingModel) {
     ASSERT_TRUE(run.out.ok) << Brief(run.diags);
     pack::Pack p;
     ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
-    const pack::VariantRec v = p.Variant(0);
-    const pack::ModuleRec vs = p.Module(v.vertex_module), fs = p.Module(v.fragment_module);
+    const pack::VariantRec v = p.Variant(0).value();
+    const pack::ModuleRec vs = p.Module(v.vertex_module).value(),
+                          fs = p.Module(v.fragment_module).value();
     bool saw_per_frame = false, saw_push = false, saw_global = false, saw_tex = false;
     for (const auto& m : {vs, fs}) {
         for (uint32_t b = m.first_block; b < m.first_block + m.block_count; ++b) {
-            const auto br = p.Get<pack::BlockRec>(pack::SectionTag::kBlocks, b);
+            const auto br = p.Get<pack::BlockRec>(pack::SectionTag::kBlocks, b).value();
             const std::string name(p.String(br.name));
             if (name == "UnityPerFrame")
                 saw_per_frame = br.set == 0 && br.binding == 1;
@@ -365,7 +368,7 @@ TEST(Compile, BindingsFollowTheBindingModel) {
                 saw_global = br.set == 1 && br.binding == 0;
         }
         for (uint32_t r = m.first_resource; r < m.first_resource + m.resource_count; ++r) {
-            const auto rr = p.Get<pack::ResourceRec>(pack::SectionTag::kResources, r);
+            const auto rr = p.Get<pack::ResourceRec>(pack::SectionTag::kResources, r).value();
             if (p.String(rr.name) == "_MainTex")
                 saw_tex = rr.set == 1 && rr.binding == 1;
         }

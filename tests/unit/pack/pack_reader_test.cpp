@@ -39,20 +39,20 @@ TEST(PackReader, RoundTripOfACompiledPack) {
     EXPECT_NE(std::string(p.String(p.meta().producer)).find("glslang"), std::string::npos);
     const auto shader = p.FindShader("Test/MultiLight");
     ASSERT_TRUE(shader);
-    const ShaderRec sr = p.Shader(*shader);
+    const ShaderRec sr = p.Shader(*shader).value();
     EXPECT_EQ(sr.property_count, 2u);
-    EXPECT_EQ(p.String(p.Get<PropertyRec>(SectionTag::kProperties, sr.first_property).name),
+    EXPECT_EQ(p.String(p.Get<PropertyRec>(SectionTag::kProperties, sr.first_property).value().name),
               "_Tint");
     const auto by_name = p.FindPass(*shader, "forward_delta");
     const auto by_light_mode = p.FindPass(*shader, "ForwardAdd");
     ASSERT_TRUE(by_name && by_light_mode);
     EXPECT_EQ(*by_name, *by_light_mode);
-    const PassRec pass = p.Pass(*by_name);
+    const PassRec pass = p.Pass(*by_name).value();
     EXPECT_EQ(pass.variant_count, 3u);
     EXPECT_EQ(pass.keyword_set_count, 1u);
     bool saw_blend = false;
     for (uint32_t s = pass.first_state; s < pass.first_state + pass.state_count; ++s) {
-        const auto st = p.Get<StateRec>(SectionTag::kStates, s);
+        const auto st = p.Get<StateRec>(SectionTag::kStates, s).value();
         if (st.field == uint32_t(StateField::kBlendSrc))
             saw_blend = p.String(st.text) == "One";
     }
@@ -62,7 +62,7 @@ TEST(PackReader, RoundTripOfACompiledPack) {
         const auto v = p.FindVariant(*by_name, key);
         ASSERT_TRUE(v) << kw;
         EXPECT_EQ(p.KeywordsOf(*by_name, key), std::vector<std::string>{kw});
-        const auto spirv = p.Spirv(p.Module(p.Variant(*v).fragment_module));
+        const auto spirv = p.Spirv(p.Module(p.Variant(*v).value().fragment_module).value());
         ASSERT_GE(spirv.size(), 20u);
         EXPECT_EQ(spirv.size() % 4, 0u);
         EXPECT_EQ(reinterpret_cast<uintptr_t>(spirv.data()) % 4, 0u);
@@ -77,6 +77,41 @@ TEST(PackReader, RoundTripOfACompiledPack) {
     EXPECT_EQ(p.CheckKeywords(*by_name, {"POINT", "SPOTT"}),
               "keyword 'SPOTT' is not declared by the pass; did you mean 'SPOT'?");
     EXPECT_EQ(p.CheckKeywords(999, {}), "no pass 999 in the pack");
+    // The SPIR-V as words, for vkCreateShaderModule.
+    const ModuleRec m = p.Module(0).value();
+    const std::span<const uint32_t> words = p.SpirvWords(m);
+    ASSERT_EQ(words.size(), m.spirv_size / 4);
+    EXPECT_EQ(words[0], 0x07230203u);
+}
+
+TEST(PackReader, OutOfRangeIndicesAreRejected) {
+    Pack p;
+    ASSERT_FALSE(Pack::Open(CompiledPack(), p));
+    const Result<ModuleRec> module = p.Module(100000);
+    ASSERT_FALSE(module.ok());
+    EXPECT_EQ(module.error().message,
+              "record 100000 of section MODL is out of range (the pack has " +
+                  std::to_string(p.Count(SectionTag::kModules)) + ")");
+    EXPECT_FALSE(p.Shader(p.Count(SectionTag::kShaders)).ok());  // one past the end
+    EXPECT_TRUE(p.Shader(p.Count(SectionTag::kShaders) - 1).ok());
+    EXPECT_FALSE(p.Pass(~0u).ok());
+    EXPECT_FALSE(p.Variant(100000).ok());
+    EXPECT_FALSE(p.KeywordSet(100000).ok());
+    EXPECT_FALSE(p.Keyword(100000).ok());
+    EXPECT_FALSE(p.Get<TagRec>(SectionTag::kTags, 100000).ok());
+    EXPECT_FALSE(p.FindVariant(100000, VariantKey(0)));
+    EXPECT_TRUE(p.KeywordsOf(100000, VariantKey(0)).empty());
+    EXPECT_FALSE(p.FindPass(100000, "ForwardBase"));
+    // A module record the pack does not hold gives no bytes, not someone else's.
+    ModuleRec forged;
+    forged.spirv_offset = 0xFFFFFFF0u;
+    forged.spirv_size = 64;
+    EXPECT_TRUE(p.Spirv(forged).empty());
+    EXPECT_TRUE(p.SpirvWords(forged).empty());
+    // An unopened pack holds nothing.
+    const Pack empty;
+    EXPECT_FALSE(empty.Shader(0).ok());
+    EXPECT_EQ(empty.meta().variant_count, 0u);
 }
 
 TEST(PackReader, EveryTruncatedPrefixIsRejected) {
@@ -136,7 +171,7 @@ TEST(PackReader, ValidChecksumDoesNotMakeBadIndicesSafe) {
         }
         // Accepted (e.g. a float or a SPIR-V word changed): lookups stay in bounds.
         for (uint32_t s = 0; s < p.Count(SectionTag::kShaders); ++s) {
-            const ShaderRec sr = p.Shader(s);
+            const ShaderRec sr = p.Shader(s).value();
             (void)p.String(sr.name);
             for (uint32_t ps = sr.first_pass; ps < sr.first_pass + sr.pass_count; ++ps) {
                 (void)p.FindVariant(ps, p.KeyFor(ps, {"SPOT"}));

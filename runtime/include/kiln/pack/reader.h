@@ -15,6 +15,7 @@
 #include "kiln/pack/format.h"
 #include "kiln/pack/records.h"
 #include "kiln/pack/variant_key.h"
+#include "kiln/result.h"
 
 namespace kiln::pack {
 
@@ -57,28 +58,36 @@ class Pack {
     static std::optional<PackError> Open(std::span<const uint8_t> bytes, Pack& out);
 
     uint16_t format_minor() const { return header_.format_minor; }
-    MetaRec meta() const { return Get<MetaRec>(SectionTag::kMeta, 0); }
+    MetaRec meta() const {
+        return Count(SectionTag::kMeta) ? Record<MetaRec>(SectionTag::kMeta, 0) : MetaRec{};
+    }
     std::string_view String(StrRef ref) const;
 
     uint32_t Count(SectionTag tag) const { return sections_[Index(tag)].record_count; }
+    // Record `index` of a section; an error when index >= Count(tag). Indices read from a pack's
+    // records are always in range (Open checked them); an index an engine computes is checked.
     template <class Rec>
-    Rec Get(SectionTag tag, uint32_t index) const {
-        const SectionEntry& s = sections_[Index(tag)];
-        const size_t size = RecordSize<Rec>();
-        ByteReader r(bytes_.subspan(s.offset + size_t{index} * size, size));
-        return r.Record<Rec>();
+    Result<Rec> Get(SectionTag tag, uint32_t index) const {
+        if (index >= Count(tag)) {
+            return OutOfRange(tag, index);
+        }
+        return Record<Rec>(tag, index);
     }
-    ShaderRec Shader(uint32_t i) const { return Get<ShaderRec>(SectionTag::kShaders, i); }
-    PassRec Pass(uint32_t i) const { return Get<PassRec>(SectionTag::kPasses, i); }
-    ModuleRec Module(uint32_t i) const { return Get<ModuleRec>(SectionTag::kModules, i); }
-    VariantRec Variant(uint32_t i) const { return Get<VariantRec>(SectionTag::kVariants, i); }
-    KeywordSetRec KeywordSet(uint32_t i) const {
+    Result<ShaderRec> Shader(uint32_t i) const { return Get<ShaderRec>(SectionTag::kShaders, i); }
+    Result<PassRec> Pass(uint32_t i) const { return Get<PassRec>(SectionTag::kPasses, i); }
+    Result<ModuleRec> Module(uint32_t i) const { return Get<ModuleRec>(SectionTag::kModules, i); }
+    Result<VariantRec> Variant(uint32_t i) const {
+        return Get<VariantRec>(SectionTag::kVariants, i);
+    }
+    Result<KeywordSetRec> KeywordSet(uint32_t i) const {
         return Get<KeywordSetRec>(SectionTag::kKeywordSets, i);
     }
-    std::string_view Keyword(uint32_t i) const {
-        return String(Get<StrRef>(SectionTag::kKeywords, i));
-    }
+    Result<std::string_view> Keyword(uint32_t i) const;
+    // A module's SPIR-V; empty for a record that is not this pack's.
     std::span<const uint8_t> Spirv(const ModuleRec& module) const;
+    // The same as 32-bit words (the bytes are little-endian and 4-aligned within the pack);
+    // empty when the caller's buffer is not 4-aligned (a mapped file always is).
+    std::span<const uint32_t> SpirvWords(const ModuleRec& module) const;
 
     std::optional<uint32_t> FindShader(std::string_view name) const;
     // A pass by its one name (PassLabel, kiln/pack/pass_id.h), else by its Name, else by its
@@ -101,6 +110,17 @@ class Pack {
 
   private:
     static constexpr size_t kSectionSlots = 17;
+    template <class Rec>
+    Rec Record(SectionTag tag, uint32_t index) const {  // index < Count(tag)
+        const SectionEntry& s = sections_[Index(tag)];
+        const size_t size = RecordSize<Rec>();
+        ByteReader r(bytes_.subspan(s.offset + size_t{index} * size, size));
+        return r.Record<Rec>();
+    }
+    std::string_view KeywordAt(uint32_t i) const {
+        return String(Record<StrRef>(SectionTag::kKeywords, i));
+    }
+    Error OutOfRange(SectionTag tag, uint32_t index) const;
     static size_t Index(SectionTag tag);
     std::optional<PackError> Validate();
 
