@@ -9,6 +9,10 @@
 # them: the all-off combination and the combinations the MATERIALS enable (OPTIONS --all-features
 # builds every one). Adds a custom target <name> that builds the pack
 # (ALL unless EXCLUDE_FROM_ALL is given).
+#
+# KILN: the kiln target in Kiln's own build, else kiln::kiln from find_package(Kiln), else the
+# kiln program on PATH (an error when there is none). The pack depends on the kiln binary, so
+# upgrading Kiln rebuilds it. The output's folder is created; Ninja and Unix Makefiles both work.
 function(kiln_compile_materials)
     cmake_parse_arguments(ARG "EXCLUDE_FROM_ALL" "TARGET;OUTPUT;KILN"
         "SOURCES;INCLUDE_DIRS;KEYWORDS;OPTIONS;MATERIALS" ${ARGN})
@@ -16,14 +20,37 @@ function(kiln_compile_materials)
         message(FATAL_ERROR "kiln_compile_materials: TARGET, OUTPUT and SOURCES are required")
     endif()
     if(NOT ARG_KILN)
-        set(ARG_KILN kiln)
+        if(TARGET kiln)
+            set(ARG_KILN kiln)
+        elseif(TARGET kiln::kiln)
+            set(ARG_KILN kiln::kiln)
+        else()
+            find_program(KILN_EXECUTABLE kiln)
+            if(NOT KILN_EXECUTABLE)
+                message(FATAL_ERROR "kiln_compile_materials: no kiln: find_package(Kiln) first, "
+                    "pass KILN <path>, or put kiln on PATH")
+            endif()
+            set(ARG_KILN ${KILN_EXECUTABLE})
+        endif()
     endif()
     if(TARGET ${ARG_KILN})
         set(_kiln $<TARGET_FILE:${ARG_KILN}>)
-        set(_kiln_dep ${ARG_KILN})
+        get_target_property(_imported ${ARG_KILN} IMPORTED)
+        if(_imported)
+            set(_kiln_dep $<TARGET_FILE:${ARG_KILN}>)  # file-level: a new kiln rebuilds packs
+        else()
+            set(_kiln_dep ${ARG_KILN})  # target- and file-level
+        endif()
     else()
-        set(_kiln ${ARG_KILN})
-        set(_kiln_dep "")
+        cmake_path(ABSOLUTE_PATH ARG_KILN NORMALIZE OUTPUT_VARIABLE _kiln)
+        if(NOT EXISTS ${_kiln})
+            find_program(_kiln_found NAMES ${ARG_KILN} NO_CACHE)
+            if(NOT _kiln_found)
+                message(FATAL_ERROR "kiln_compile_materials: KILN '${ARG_KILN}' not found")
+            endif()
+            set(_kiln ${_kiln_found})
+        endif()
+        set(_kiln_dep ${_kiln})
     endif()
     cmake_path(ABSOLUTE_PATH ARG_OUTPUT BASE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}
         NORMALIZE OUTPUT_VARIABLE _out)
@@ -51,8 +78,10 @@ function(kiln_compile_materials)
         list(APPEND _args --materials ${_abs})
     endforeach()
     list(APPEND _args ${ARG_OPTIONS})
+    cmake_path(GET _out PARENT_PATH _out_dir)
     add_custom_command(
         OUTPUT ${_out}
+        COMMAND ${CMAKE_COMMAND} -E make_directory ${_out_dir}
         COMMAND ${_kiln} compile ${_sources} -o ${_out} -MD -MF ${_out}.d ${_args}
         DEPENDS ${_sources} ${_materials} ${_kiln_dep}
         DEPFILE ${_out}.d

@@ -1,5 +1,9 @@
 # Warning and sanitizer flags shared by every Kiln target: call kiln_target_options(<target>).
 
+# Debug info and __FILE__ name the build folder as ".": an installed Kiln does not point back at
+# the tree it was built in (tests/install checks).
+add_compile_options(-ffile-prefix-map=${CMAKE_BINARY_DIR}=.)
+
 if(KILN_SANITIZE)
     string(REPLACE "," ";" _kiln_sanitizers "${KILN_SANITIZE}")
     foreach(_s IN LISTS _kiln_sanitizers)

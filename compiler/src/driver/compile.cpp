@@ -23,9 +23,6 @@
 #ifndef KILN_VERSION
 #define KILN_VERSION "0.0.0"
 #endif
-#ifndef KILN_SOURCE_TEMPLATES_DIR
-#define KILN_SOURCE_TEMPLATES_DIR ""
-#endif
 
 namespace kiln {
 namespace fs = std::filesystem;
@@ -64,7 +61,8 @@ std::set<std::string> MaterialKeywords(const shaderlab::Shader& shader, const Ma
     std::set<std::string> out = m.keywords;
     for (const shaderlab::Property& p : shader.properties) {
         for (const shaderlab::Attribute& a : p.attributes) {
-            const pack::PropertyKeywords driven = pack::KeywordsDrivenBy(p.name, a.name, a.raw_args);
+            const pack::PropertyKeywords driven =
+                pack::KeywordsDrivenBy(p.name, a.name, a.raw_args);
             if (driven.kind == pack::PropertyKeywords::Kind::kNone)
                 continue;
             auto v = m.values.find(p.name);
@@ -94,8 +92,10 @@ void CheckRequestedKeywords(CompileState& st) {
         if (declared.count(k) || variants::IsNoKeyword(k))
             continue;
         st.diags.Error(DiagCode::kUnknownKeyword, "", kNoPosition,
-                       "--keywords names '" + k + "', which no pass of the compiled shaders "
-                       "declares" + pack::DidYouMean(k, names));
+                       "--keywords names '" + k +
+                           "', which no pass of the compiled shaders "
+                           "declares" +
+                           pack::DidYouMean(k, names));
     }
 }
 
@@ -326,7 +326,18 @@ CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
 std::string DefaultTemplatesDir() {
     if (const char* env = std::getenv("KILN_TEMPLATES_DIR"); env && *env)
         return env;
-    return KILN_SOURCE_TEMPLATES_DIR;
+    // <prefix>/bin/<program> -> <prefix>/share/kiln/templates: an installed Kiln, and the build
+    // tree, where CMake links build/share/kiln/templates to the source tree's templates/.
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec)
+        return "";
+    const std::filesystem::path dir = exe.parent_path().parent_path() / "share/kiln/templates";
+    if (!std::filesystem::is_directory(dir, ec))
+        return "";
+    // The real folder (the build tree's is a link): what depfiles and messages name.
+    const std::filesystem::path real = std::filesystem::canonical(dir, ec);
+    return ec ? dir.string() : real.string();
 }
 
 std::string DefaultCacheDir() {

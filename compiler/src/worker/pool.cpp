@@ -26,10 +26,6 @@
 
 extern char** environ;
 
-#ifndef KILN_WORKER_BUILD_PATH
-#define KILN_WORKER_BUILD_PATH ""
-#endif
-
 namespace kiln::worker {
 namespace {
 
@@ -323,7 +319,7 @@ std::string FindWorker(const std::string& explicit_path) {
         if (IsExecutable(beside))
             return beside;
     }
-    return IsExecutable(KILN_WORKER_BUILD_PATH) ? KILN_WORKER_BUILD_PATH : "";
+    return "";
 }
 
 }  // namespace kiln::worker

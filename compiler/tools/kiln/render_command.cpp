@@ -15,17 +15,22 @@ namespace kiln::cli {
 namespace {
 namespace fs = std::filesystem;
 
-// The shipped materials pack: beside the executable's build tree, else where CMake built it.
+// The shipped materials pack, found from the executable: <prefix>/share/kiln/materials.kpack
+// when installed, build/materials/materials.kpack in the build tree.
 std::string DefaultPack() {
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const fs::path beside = exe.parent_path().parent_path() / "materials" / "materials.kpack";
-        if (fs::exists(beside)) {
-            return beside.string();
+    if (ec) {
+        return "materials.kpack";
+    }
+    const fs::path prefix = exe.parent_path().parent_path();
+    for (const fs::path& p :
+         {prefix / "share/kiln/materials.kpack", prefix / "materials/materials.kpack"}) {
+        if (fs::exists(p, ec)) {
+            return p.string();
         }
     }
-    return KILN_DEFAULT_PACK;
+    return (prefix / "share/kiln/materials.kpack").string();  // named in the error
 }
 
 DiagCode CodeFor(runtime::ErrorKind kind) {
