@@ -67,6 +67,7 @@ struct FinalModule {
     std::vector<uint32_t> words;
     spirv::Reflection reflection;
     std::string error;
+    bool internal = false;              // `error` is Kiln's fault (K9001), not the program's
     std::optional<Diagnostic> failure;  // the worker crashed or ran out of time or memory
 };
 

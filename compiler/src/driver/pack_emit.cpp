@@ -21,7 +21,8 @@ using pack::Stage;
 std::string VariantName(const CompileState& st, size_t p, pack::VariantKey key) {
     const PassUnit& pu = st.passes[p];
     const ShaderUnit& unit = st.shaders[pu.shader];
-    return "shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label + "\", variant " +
+    return "shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label +
+           "\", variant " +
            variants::DescribeKeywords(
                variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, key));
 }
@@ -63,7 +64,8 @@ void FinishModules(CompileState& st) {
         std::string error;
         if (!spirv::ApplyBindings(fm.words, tables[p], error) ||
             !spirv::Reflect(fm.words, fm.reflection, error)) {
-            fm.error = "internal: " + error;
+            fm.error = error;
+            fm.internal = true;
             return;
         }
         // Stripping and spirv-val run in a worker, as every third-party step does.
@@ -74,9 +76,9 @@ void FinishModules(CompileState& st) {
         if ((fm.failure = OutcomeDiagnostic(st, task, o)))
             return;
         if (!o.response.ok) {
-            fm.error = o.response.failed_in == worker::Component::kSpirvVal
-                           ? "generated SPIR-V fails validation: " + o.response.messages
-                           : "internal: " + o.response.messages;
+            fm.internal = o.response.failed_in != worker::Component::kSpirvVal;
+            fm.error = fm.internal ? o.response.messages
+                                   : "generated SPIR-V fails validation: " + o.response.messages;
             return;
         }
         fm.words = std::move(o.response.words);
@@ -96,9 +98,8 @@ void FinishModules(CompileState& st) {
                 continue;
             }
             const StageTask& t = st.tasks[st.jobs[j].first_task];
-            const bool internal = fm.error.rfind("internal: ", 0) == 0;
-            st.diags.Add(internal ? Severity::kInternal : Severity::kError,
-                         internal ? DiagCode::kInternalError : DiagCode::kSpirvInvalid,
+            st.diags.Add(fm.internal ? Severity::kInternal : Severity::kError,
+                         fm.internal ? DiagCode::kInternalError : DiagCode::kSpirvInvalid,
                          unit.file->path(), unit.passes[pu.flat].program->range,
                          fm.error + " (" + VariantName(st, p, t.key) + ", " +
                              (t.stage == Stage::kVertex ? "vertex" : "fragment") + " stage)");

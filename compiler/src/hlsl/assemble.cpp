@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "kiln/pack/engine_names.h"
+
 namespace kiln::hlsl {
 namespace {
 
@@ -31,14 +33,14 @@ std::string PassMacro(const std::string& light_mode) {
     // files rely on them: UnityStandardMeta.cginc on UNITY_PASS_META, UnityCG.cginc on
     // UNITY_PASS_SHADOWCASTER and UNITY_PASS_FORWARDADD).
     static const char* const kModes[][2] = {
-        {"ForwardBase", "UNITY_PASS_FORWARDBASE"},
-        {"ForwardAdd", "UNITY_PASS_FORWARDADD"},
-        {"Deferred", "UNITY_PASS_DEFERRED"},
-        {"ShadowCaster", "UNITY_PASS_SHADOWCASTER"},
-        {"Meta", "UNITY_PASS_META"},
-        {"PrepassBase", "UNITY_PASS_PREPASSBASE"},
-        {"PrepassFinal", "UNITY_PASS_PREPASSFINAL"},
-        {"MotionVectors", "UNITY_PASS_MOTIONVECTORS"},
+        {pack::kLightModeForwardBase, "UNITY_PASS_FORWARDBASE"},
+        {pack::kLightModeForwardAdd, "UNITY_PASS_FORWARDADD"},
+        {pack::kLightModeDeferred, "UNITY_PASS_DEFERRED"},
+        {pack::kLightModeShadowCaster, "UNITY_PASS_SHADOWCASTER"},
+        {pack::kLightModeMeta, "UNITY_PASS_META"},
+        {pack::kLightModePrepassBase, "UNITY_PASS_PREPASSBASE"},
+        {pack::kLightModePrepassFinal, "UNITY_PASS_PREPASSFINAL"},
+        {pack::kLightModeMotionVectors, "UNITY_PASS_MOTIONVECTORS"},
     };
     for (const auto& [mode, macro] : kModes) {
         if (light_mode.size() == std::char_traits<char>::length(mode) &&

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/names.h"
 
 namespace kiln::variants {
@@ -247,8 +248,8 @@ struct State {
     // Every pragma name Kiln reads, for the typo check.
     static const std::vector<std::string>& KnownPragmas() {
         static const std::vector<std::string> names = [] {
-            std::vector<std::string> n = {"vertex",         "fragment",         "target",
-                                          "require",        "skip_variants",    "only_renderers",
+            std::vector<std::string> n = {"vertex",           "fragment",      "target",
+                                          "require",          "skip_variants", "only_renderers",
                                           "exclude_renderers"};
             n.insert(n.end(), kIgnoredPragmas.begin(), kIgnoredPragmas.end());
             n.insert(n.end(), kOtherStages.begin(), kOtherStages.end());
@@ -300,35 +301,36 @@ std::optional<Shortcut> BuiltinShortcut(const std::string& name) {
     const KeywordRule dirlightmap = {
         "DIRLIGHTMAP_COMBINED", {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}, {}, {}};
     const KeywordRule vertexlights = {
-        "VERTEXLIGHT_ON", {}, {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}, {}};
+        pack::kKeywordVertexLight, {}, {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}, {}};
 
     if (name == "multi_compile_fwdbase") {
-        return Shortcut{{{"DIRECTIONAL"},
+        return Shortcut{{{pack::kKeywordDirectional},
                          {"", "LIGHTMAP_ON"},
                          {"", "DIRLIGHTMAP_COMBINED"},
                          {"", "DYNAMICLIGHTMAP_ON"},
                          {"", "SHADOWS_SCREEN"},
                          {"", "SHADOWS_SHADOWMASK"},
                          {"", "LIGHTMAP_SHADOW_MIXING"},
-                         {"", "LIGHTPROBE_SH"},
-                         {"", "VERTEXLIGHT_ON"}},
+                         {"", pack::kKeywordLightProbeSH},
+                         {"", pack::kKeywordVertexLight}},
                         {dirlightmap,
                          vertexlights,
                          {"LIGHTMAP_SHADOW_MIXING", {"LIGHTMAP_ON", "SHADOWS_SCREEN"}, {}, {}}}};
     }
     if (name == "multi_compile_fwdbasealpha") {
         return Shortcut{
-            {{"DIRECTIONAL"},
+            {{pack::kKeywordDirectional},
              {"", "LIGHTMAP_ON"},
              {"", "DIRLIGHTMAP_COMBINED"},
              {"", "DYNAMICLIGHTMAP_ON"},
              {"", "LIGHTMAP_SHADOW_MIXING"},
-             {"", "LIGHTPROBE_SH"},
-             {"", "VERTEXLIGHT_ON"}},
+             {"", pack::kKeywordLightProbeSH},
+             {"", pack::kKeywordVertexLight}},
             {dirlightmap, vertexlights, {"LIGHTMAP_SHADOW_MIXING", {"LIGHTMAP_ON"}, {}, {}}}};
     }
     if (name == "multi_compile_fwdadd") {
-        return Shortcut{{{"POINT", "DIRECTIONAL", "SPOT", "POINT_COOKIE", "DIRECTIONAL_COOKIE"}},
+        return Shortcut{{{pack::kKeywordPoint, pack::kKeywordDirectional, pack::kKeywordSpot,
+                          pack::kKeywordPointCookie, pack::kKeywordDirectionalCookie}},
                         {}};
     }
     if (name == "multi_compile_fwdadd_fullshadows" || name == "multi_compile_lightpass") {

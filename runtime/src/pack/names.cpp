@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "kiln/pack/engine_names.h"
+
 namespace kiln::pack {
 namespace {
 
@@ -55,8 +57,9 @@ std::string ClosestName(std::string_view name, const std::vector<std::string>& c
 const std::vector<std::string>& KnownLightModes() {
     static const std::vector<std::string> modes = {
         // Built-in render pipeline (Kiln's runtime draws ForwardBase, ForwardAdd and Always).
-        "Always", "ForwardBase", "ForwardAdd", "Deferred", "ShadowCaster", "MotionVectors",
-        "PrepassBase", "PrepassFinal", "Vertex", "VertexLMRGBM", "VertexLM", "Meta",
+        kLightModeAlways, kLightModeForwardBase, kLightModeForwardAdd, kLightModeDeferred,
+        kLightModeShadowCaster, kLightModeMotionVectors, kLightModePrepassBase,
+        kLightModePrepassFinal, "Vertex", "VertexLMRGBM", "VertexLM", kLightModeMeta,
         "GrabPass",  // Unity's own built-in shaders tag passes so (Internal-*)
         // Scriptable pipelines.
         "SRPDefaultUnlit", "UniversalForward", "UniversalForwardOnly", "UniversalGBuffer",

@@ -11,6 +11,7 @@
 #include <deque>
 #include <map>
 
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
 #include "render/draw.h"
 #include "render/frame_values.h"
@@ -37,9 +38,9 @@ ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
             continue;  // the first SubShader is the one that runs
         }
         const std::string_view mode = pack::LightModeOf(pack, p);
-        if (mode.empty() || mode == "ForwardBase" || mode == "Always") {
+        if (mode.empty() || mode == pack::kLightModeForwardBase || mode == pack::kLightModeAlways) {
             out.base.push_back(p);
-        } else if (mode == "ForwardAdd" && !out.add) {
+        } else if (mode == pack::kLightModeForwardAdd && !out.add) {
             out.add = p;
         }
     }
@@ -78,16 +79,16 @@ struct Planner {
         std::vector<std::string> keywords = m.keywords;
         if (additive) {
             const LightType type = light ? light->type : LightType::kDirectional;
-            keywords.emplace_back(type == LightType::kPoint  ? "POINT"
-                                  : type == LightType::kSpot ? "SPOT"
-                                                             : "DIRECTIONAL");
+            keywords.emplace_back(type == LightType::kPoint  ? pack::kKeywordPoint
+                                  : type == LightType::kSpot ? pack::kKeywordSpot
+                                                             : pack::kKeywordDirectional);
         } else {
-            keywords.emplace_back("DIRECTIONAL");
+            keywords.emplace_back(pack::kKeywordDirectional);
             // Objects without lightmaps take ambient light from the light probes (unity_SH*), as in
             // Unity; passes that do not declare the keyword ignore it.
-            keywords.emplace_back("LIGHTPROBE_SH");
+            keywords.emplace_back(pack::kKeywordLightProbeSH);
             if (!vertex.empty()) {
-                keywords.emplace_back("VERTEXLIGHT_ON");
+                keywords.emplace_back(pack::kKeywordVertexLight);
             }
         }
         const Result<pack::VariantChoice> selected = lp.selector->Select(pass, keywords);
@@ -100,7 +101,7 @@ struct Planner {
         }
         const std::vector<std::string> chosen =
             pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(choice.variant).value().key));
-        if (!additive && std::count(chosen.begin(), chosen.end(), "VERTEXLIGHT_ON")) {
+        if (!additive && std::count(chosen.begin(), chosen.end(), pack::kKeywordVertexLight)) {
             ++stats.vertex_lit;
         }
 

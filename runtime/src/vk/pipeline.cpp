@@ -8,6 +8,8 @@
 #include <map>
 #include <set>
 
+#include "kiln/pack/vertex.h"
+
 namespace kiln::vk {
 namespace {
 
@@ -18,27 +20,16 @@ struct Stream {
     VkFormat format;
 };
 
-// The mesh stream a vertex input reads, by HLSL semantic.
+// The mesh stream a vertex input reads, by HLSL semantic (kiln/pack/vertex.h).
 std::optional<Stream> StreamFor(std::string_view semantic) {
-    if (semantic == "POSITION" || semantic == "POSITION0") {
-        return Stream{offsetof(Vertex, position), VK_FORMAT_R32G32B32_SFLOAT};
+    constexpr VkFormat kFormats[] = {VK_FORMAT_UNDEFINED, VK_FORMAT_R32_SFLOAT,
+                                     VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32G32B32_SFLOAT,
+                                     VK_FORMAT_R32G32B32A32_SFLOAT};
+    const std::optional<pack::VertexStream> s = pack::VertexStreamFor(semantic);
+    if (!s) {
+        return std::nullopt;
     }
-    if (semantic == "NORMAL" || semantic == "NORMAL0") {
-        return Stream{offsetof(Vertex, normal), VK_FORMAT_R32G32B32_SFLOAT};
-    }
-    if (semantic == "TEXCOORD" || semantic == "TEXCOORD0") {
-        return Stream{offsetof(Vertex, uv0), VK_FORMAT_R32G32_SFLOAT};
-    }
-    if (semantic == "TEXCOORD1") {
-        return Stream{offsetof(Vertex, uv1), VK_FORMAT_R32G32_SFLOAT};
-    }
-    if (semantic == "TANGENT" || semantic == "TANGENT0") {
-        return Stream{offsetof(Vertex, tangent), VK_FORMAT_R32G32B32A32_SFLOAT};
-    }
-    if (semantic == "COLOR" || semantic == "COLOR0") {
-        return Stream{offsetof(Vertex, color), VK_FORMAT_R32G32B32A32_SFLOAT};
-    }
-    return std::nullopt;
+    return Stream{s->offset, kFormats[s->components]};
 }
 
 VkShaderStageFlags StageBit(uint32_t stage) {
@@ -239,7 +230,8 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
         }
         attributes.push_back({var.location, 0, stream->format, stream->offset});
     }
-    VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputBindingDescription binding{0, sizeof(pack::MeshVertex),
+                                            VK_VERTEX_INPUT_RATE_VERTEX};
     VkPipelineVertexInputStateCreateInfo input{
         VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     input.vertexBindingDescriptionCount = attributes.empty() ? 0 : 1;

@@ -66,16 +66,6 @@ std::optional<runtime::Error> ResolveRenderState(const pack::Pack& pack,
                                                  std::span<const pack::StateOverride> overrides,
                                                  RenderState& out);
 
-// Kiln's mesh vertex: every stream a shipped shader can read, interleaved (72 bytes).
-struct Vertex {
-    float position[3];
-    float normal[3];
-    float uv0[2];
-    float uv1[2];
-    float tangent[4];  // xyz + handedness w
-    float color[4];
-};
-
 // The layouts a variant's reflection implies (sets 0..n, push constants).
 struct VariantLayout {
     std::vector<VkDescriptorSetLayout> sets;

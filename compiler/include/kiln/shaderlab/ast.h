@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "kiln/pack/format.h"
 #include "kiln/source.h"
 
 namespace kiln::shaderlab {
@@ -171,23 +172,12 @@ struct ProgramBlock {
 bool IsIncludeBlock(ProgramKind kind);
 const char* ProgramKindName(ProgramKind kind);  // "CGPROGRAM", ...
 
-enum class PropertyType {
-    kColor,
-    kVector,
-    kFloat,
-    kInt,
-    kInteger,
-    kRange,
-    kTexture2D,
-    kTexture3D,
-    kCube,
-    kTexture2DArray,
-    kCubeArray,
-    kTextureAny,  // `Any`: a texture of whatever dimension the shader declares
-};
-
-const char* PropertyTypeName(PropertyType type);  // "Color", "2D", ...
-bool IsTextureType(PropertyType type);
+// The property types are the pack format's (kiln/pack/format.h): one enum, one set of names.
+using PropertyType = pack::PropertyType;
+using pack::PropertyTypeName;  // "Color", "2D", ...
+inline bool IsTextureType(PropertyType type) {
+    return pack::IsTextureProperty(type);
+}
 
 struct Attribute {
     std::string name;

@@ -14,20 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "kiln/pack/vertex.h"
 #include "kiln/runtime/status.h"
 
 namespace kiln::runtime {
 
-// Interleaved vertex, 72 bytes; the layout the pipelines' vertex input reads.
-struct MeshVertex {
-    float position[3];
-    float normal[3];
-    float uv0[2];
-    float uv1[2];
-    float tangent[4];  // xyz + handedness w (bitangent = w * cross(normal, tangent))
-    float color[4];    // linear RGBA; white when the mesh has none
-};
-static_assert(sizeof(MeshVertex) == 72);
+// The interleaved vertex the pipelines read (kiln/pack/vertex.h).
+using MeshVertex = pack::MeshVertex;
 
 struct Primitive {
     std::vector<MeshVertex> vertices;
