@@ -46,6 +46,22 @@ std::string StateShader(size_t passes) {
     return text + "  }\n}\n";
 }
 
+// The pack of StateShader(passes), compiled for real.
+struct CompiledStates {
+    explicit CompiledStates(size_t passes) {
+        const test::CompileRun run =
+            test::Compile({dir.Write("states.shader", StateShader(passes))});
+        diagnostics = test::Brief(run.diags);
+        bytes = run.out.pack;
+        ok = run.out.ok && !pack::Pack::Open(bytes, pack).has_value();
+    }
+    test::ScratchDir dir;
+    std::vector<uint8_t> bytes;
+    pack::Pack pack;
+    std::string diagnostics;
+    bool ok = false;
+};
+
 template <class E>
 uint32_t U(E e) {
     return static_cast<uint32_t>(e);
@@ -53,11 +69,9 @@ uint32_t U(E e) {
 
 TEST(RenderStateAgreement, EveryShaderLabValueCompilesAndResolves) {
     const size_t passes = pack::StateValueNames(StateValues::kBlendOp).size();  // the largest set
-    test::ScratchDir dir;
-    const test::CompileRun run = test::Compile({dir.Write("states.shader", StateShader(passes))});
-    ASSERT_TRUE(run.out.ok) << test::Brief(run.diags);
-    pack::Pack pk;
-    ASSERT_FALSE(pack::Pack::Open(run.out.pack, pk).has_value());
+    const CompiledStates states(passes);
+    ASSERT_TRUE(states.ok) << states.diagnostics;
+    const pack::Pack& pk = states.pack;
     ASSERT_EQ(pk.Count(pack::SectionTag::kPasses), passes);
     for (uint32_t i = 0; i < passes; ++i) {
         SCOPED_TRACE("pass " + std::to_string(i));
@@ -93,11 +107,9 @@ bool ParseOverride(const std::string& field, const std::string& value, material:
 }
 
 TEST(RenderStateAgreement, EveryMaterialValueIsTheTable) {
-    test::ScratchDir dir;
-    const test::CompileRun run = test::Compile({dir.Write("states.shader", StateShader(1))});
-    ASSERT_TRUE(run.out.ok) << test::Brief(run.diags);
-    pack::Pack pk;
-    ASSERT_FALSE(pack::Pack::Open(run.out.pack, pk).has_value());
+    const CompiledStates states(1);
+    ASSERT_TRUE(states.ok) << states.diagnostics;
+    const pack::Pack& pk = states.pack;
     const struct {
         const char* field;
         StateValues set;
@@ -159,11 +171,9 @@ TEST(RenderStateAgreement, EveryMaterialValueIsTheTable) {
 }
 
 TEST(RenderStateAgreement, OutOfRangePassIsRejected) {
-    test::ScratchDir dir;
-    const test::CompileRun run = test::Compile({dir.Write("states.shader", StateShader(1))});
-    ASSERT_TRUE(run.out.ok) << test::Brief(run.diags);
-    pack::Pack pk;
-    ASSERT_FALSE(pack::Pack::Open(run.out.pack, pk).has_value());
+    const CompiledStates states(1);
+    ASSERT_TRUE(states.ok) << states.diagnostics;
+    const pack::Pack& pk = states.pack;
     const Result<pack::PassState> s = pack::ResolvePassState(pk, 100000, nullptr, {});
     ASSERT_FALSE(s.ok());
     EXPECT_NE(s.error().message.find("out of range"), std::string::npos);

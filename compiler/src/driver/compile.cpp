@@ -147,7 +147,7 @@ void ExpandPasses(CompileState& st) {
                 in.defines = st.options.defines;
                 in.undefines = st.options.undefines;
                 in.forced_includes = st.options.forced_includes;
-                in.light_mode = driver::TagValue(fp, "LightMode");
+                in.light_mode = fp.light_mode;
                 const uint32_t skip_flag = stage == pack::Stage::kVertex
                                                ? pack::kKeywordSetFragmentOnly
                                                : pack::kKeywordSetVertexOnly;
@@ -241,7 +241,7 @@ void FillReports(const CompileState& st, CompileOutput& out) {
         PassReport r;
         r.shader = unit.ast->name;
         r.pass = fp.label;
-        r.light_mode = driver::TagValue(fp, "LightMode");
+        r.light_mode = fp.light_mode;
         for (const auto& s : pu.pragmas.sets) {
             KeywordSetReport k;
             k.pragma = s.pragma;

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "hlsl/fixed_function.h"
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
 #include "program_scan.h"
 
@@ -234,8 +235,8 @@ std::vector<FlatPass> FlattenPasses(const Shader& shader,
         uint32_t index = 0;
         for (size_t j = 0; j < i; ++j)
             index += w.out[j].subshader == fp.subshader;
-        const std::string light_mode = TagValue(fp, "LightMode");
-        fp.label = pack::PassId({fp.pass->name, light_mode, fp.subshader, index, several});
+        fp.light_mode = TagValue(fp, pack::kTagLightMode);
+        fp.label = pack::PassId({fp.pass->name, fp.light_mode, fp.subshader, index, several});
     }
     return std::move(w.out);
 }

@@ -30,6 +30,7 @@ struct FlatPass {
     const shaderlab::Pass* pass = nullptr;
     uint32_t subshader = 0;
     int lod = 0;
+    std::string light_mode;  // the LightMode tag, "" when untagged
     std::string label;  // the pass's one name (kiln/pack/pass_id.h): `FORWARD`, `ForwardBase`, `#2`
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program
     const shaderlab::ProgramBlock* program = nullptr;

@@ -1,5 +1,6 @@
 #include "kiln/pack/pass_id.h"
 
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/reader.h"
 
 namespace kiln::pack {
@@ -24,7 +25,7 @@ std::string_view LightModeOf(const Pack& pack, uint32_t pass) {
     const PassRec p = pack.Pass(pass).value();
     for (uint32_t i = 0; i < p.tag_count; ++i) {
         const auto tag = pack.Get<TagRec>(SectionTag::kTags, p.first_tag + i).value();
-        if (pack.String(tag.key) == "LightMode") {
+        if (pack.String(tag.key) == kTagLightMode) {
             return pack.String(tag.value);
         }
     }

@@ -429,12 +429,8 @@ std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) c
             return i;
     }
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        const PassRec p = Record<PassRec>(SectionTag::kPasses, i);
-        for (uint32_t t = p.first_tag; t < p.first_tag + p.tag_count; ++t) {
-            const auto tag = Record<TagRec>(SectionTag::kTags, t);
-            if (String(tag.key) == "LightMode" && equal_ci(String(tag.value), name))
-                return i;
-        }
+        if (equal_ci(LightModeOf(*this, i), name))
+            return i;
     }
     return std::nullopt;
 }

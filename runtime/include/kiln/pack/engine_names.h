@@ -7,6 +7,9 @@
 
 namespace kiln::pack {
 
+// The pass tag that says which pipeline step draws a pass.
+inline constexpr const char* kTagLightMode = "LightMode";
+
 // LightMode tag values (the full list of known ones: KnownLightModes(), kiln/pack/names.h).
 inline constexpr const char* kLightModeAlways = "Always";
 inline constexpr const char* kLightModeForwardBase = "ForwardBase";
