@@ -309,5 +309,24 @@ TEST(Cli, UnityVersionMustBeAVersion) {
     EXPECT_NE(r.err.find("2022.3"), std::string::npos) << r.err;
 }
 
+// A kiln copied away from its share/kiln folder says what it is missing, once, instead of one
+// "cannot find include file" per program.
+TEST(Cli, KilnWithoutItsTemplatesSaysWhereItLooked) {
+    ScratchDir dir;
+    std::filesystem::create_directories(dir.path() + "/bin");
+    std::filesystem::copy_file(KILN_BINARY, dir.path() + "/bin/kiln");
+    const std::string err = dir.path() + "/err.txt";
+    const std::string cmd = "env -u KILN_TEMPLATES_DIR " + dir.path() + "/bin/kiln compile " +
+                            DataPath("data/compile/multi_light.shader") + " -o " + dir.path() +
+                            "/out.kpack 2>" + err;
+    const int status = std::system(cmd.c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+    EXPECT_EQ(ReadFile(err),
+              "kiln: error: cannot find Kiln's templates (UnityCG.cginc and the other built-in "
+              "includes): not in ../share/kiln/templates beside the program; set "
+              "KILN_TEMPLATES_DIR or --templates-dir [K0001]\n");
+    EXPECT_FALSE(std::filesystem::exists(dir.path() + "/out.kpack"));
+}
+
 }  // namespace
 }  // namespace kiln::test

@@ -275,6 +275,15 @@ CompileOutput Run(const std::vector<std::string>& paths,
     frontend::InitializeGlslang();  // before any thread starts
     CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
+    if (options.templates_dir.empty() && DefaultTemplatesDir().empty()) {
+        // An installed kiln without its share/kiln folder, or a program linking the library
+        // that names none: every Unity include would fail, one confusing error per program.
+        diags.Error(DiagCode::kCannotReadFile, "", kNoPosition,
+                    "cannot find Kiln's templates (UnityCG.cginc and the other built-in "
+                    "includes): not in ../share/kiln/templates beside the program; set "
+                    "KILN_TEMPLATES_DIR or --templates-dir");
+        return out;
+    }
     LoadShaders(st, paths);
     std::unique_ptr<worker::Executor> exec;
     if (!diags.has_errors()) {
