@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 #include "kiln/pack/reader.h"
 
@@ -86,14 +87,16 @@ struct Resolver {
             return;
         }
         if (field == StateField::kBlendOp || field == StateField::kBlendOpAlpha) {
-            const auto op = BlendOp(Pick(StateValues::kBlendOp, v, "BlendOp", 0));
+            const auto op =
+                BlendOp(Pick(StateValues::kBlendOp, v, "BlendOp", uint32_t(BlendOp::kAdd)));
             ForTargets(s, target, [&](BlendTargetState& t) {
                 t.op_alpha = op;
                 t.op = field == StateField::kBlendOp ? op : t.op;
             });
             return;
         }
-        const auto f = BlendFactor(Pick(StateValues::kBlendFactor, v, "Blend", 1));
+        const auto f =
+            BlendFactor(Pick(StateValues::kBlendFactor, v, "Blend", uint32_t(BlendFactor::kOne)));
         ForTargets(s, target, [&](BlendTargetState& t) {
             t.enable = true;
             if (field == StateField::kBlendSrc) {
@@ -124,14 +127,16 @@ struct Resolver {
             case StateField::kStencilCompFront:
             case StateField::kStencilCompBack:
                 (field == StateField::kStencilCompFront ? s.front : s.back).compare =
-                    CompareFunction(Pick(StateValues::kCompare, v, what, 8));
+                    CompareFunction(
+                        Pick(StateValues::kCompare, v, what, uint32_t(CompareFunction::kAlways)));
                 return;
             default:
                 break;
         }
         const bool front = field <= StateField::kStencilZFailFront;
         StencilFaceState& face = front ? s.front : s.back;
-        const auto op = StencilOp(Pick(StateValues::kStencilOp, v, "stencil operation", 0));
+        const auto op = StencilOp(
+            Pick(StateValues::kStencilOp, v, "stencil operation", uint32_t(StencilOp::kKeep)));
         const auto base = front ? StateField::kStencilPassFront : StateField::kStencilPassBack;
         const int which = int(field) - int(base);  // 0 pass, 1 fail, 2 zfail
         (which == 0 ? face.pass : which == 1 ? face.fail : face.zfail) = op;
@@ -145,10 +150,11 @@ struct Resolver {
         };
         switch (field) {
             case StateField::kCull:
-                s.cull = CullMode(Pick(StateValues::kCull, v, "Cull", 2));
+                s.cull = CullMode(Pick(StateValues::kCull, v, "Cull", uint32_t(CullMode::kBack)));
                 return;
             case StateField::kZTest:
-                s.ztest = CompareFunction(Pick(StateValues::kCompare, v, "ZTest", 4));
+                s.ztest = CompareFunction(
+                    Pick(StateValues::kCompare, v, "ZTest", uint32_t(CompareFunction::kLessEqual)));
                 return;
             case StateField::kZWrite:
                 s.zwrite = on("ZWrite");
@@ -187,15 +193,19 @@ struct Resolver {
         const auto text = [&](size_t i) {
             return Value{false, 0, i < o.values.size() ? o.values[i] : std::string()};
         };
-        if (o.field == "Cull") {
-            Apply(s, StateField::kCull, -1, text(0));
-        } else if (o.field == "ZWrite") {
-            Apply(s, StateField::kZWrite, -1, text(0));
-        } else if (o.field == "ZTest") {
-            Apply(s, StateField::kZTest, -1, text(0));
-        } else if (o.field == "ColorMask") {
-            Apply(s, StateField::kColorMask, -1, text(0));
-        } else if (o.field == "Blend") {
+        // The one-value fields of OverridableStateFields().
+        constexpr std::pair<std::string_view, StateField> kSingle[] = {
+            {"Cull", StateField::kCull},
+            {"ZWrite", StateField::kZWrite},
+            {"ZTest", StateField::kZTest},
+            {"ColorMask", StateField::kColorMask}};
+        for (const auto& [name, field] : kSingle) {
+            if (o.field == name) {
+                Apply(s, field, -1, text(0));
+                return;
+            }
+        }
+        if (o.field == "Blend") {
             if (o.values.size() == 1 && o.values[0] == "Off") {
                 Apply(s, StateField::kBlendOff, -1, text(0));
                 return;

@@ -5,7 +5,6 @@
 #define KILN_RUNTIME_VK_PIPELINE_H_
 
 #include <array>
-#include <functional>
 #include <optional>
 #include <span>
 #include <string>
