@@ -75,10 +75,11 @@ Result<std::string> OutputTarget(const std::string& path) {
         std::error_code ec;
         const fs::path link = fs::read_symlink(target, ec);
         if (ec)
-            return Error{"cannot read the symbolic link '" + target + "': " + ec.message()};
+            return Error{DiagCode::kCannotWriteFile,
+                         "cannot read the symbolic link '" + target + "': " + ec.message()};
         target = (link.is_absolute() ? link : fs::path(target).parent_path() / link).string();
     }
-    return Error{"'" + path + "' is a loop of symbolic links"};
+    return Error{DiagCode::kCannotWriteFile, "'" + path + "' is a loop of symbolic links"};
 }
 
 std::string TempName(const std::string& target) {
@@ -101,15 +102,16 @@ Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes)
     // O_NONBLOCK: opening a FIFO for reading must not wait for a writer.
     Fd fd(open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
     if (fd.get() < 0)
-        return Error{Errno("cannot open '" + path + "'")};
+        return Error{DiagCode::kCannotReadFile, Errno("cannot open '" + path + "'")};
     struct stat st {};
     if (fstat(fd.get(), &st) != 0)
-        return Error{Errno("cannot read '" + path + "'")};
+        return Error{DiagCode::kCannotReadFile, Errno("cannot read '" + path + "'")};
     if (!S_ISREG(st.st_mode))
-        return Error{"'" + path + "' is " + KindOf(st.st_mode) + ", not a regular file"};
+        return Error{DiagCode::kCannotReadFile,
+                     "'" + path + "' is " + KindOf(st.st_mode) + ", not a regular file"};
     if (static_cast<uint64_t>(st.st_size) > max_bytes) {
-        return Error{"'" + path + "' is larger than the limit of " + std::to_string(max_bytes) +
-                     " bytes"};
+        return Error{DiagCode::kCannotReadFile, "'" + path + "' is larger than the limit of " +
+                                                    std::to_string(max_bytes) + " bytes"};
     }
     std::string out;
     out.resize(static_cast<size_t>(st.st_size));
@@ -125,14 +127,14 @@ Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes)
         if (n < 0 && errno == EINTR)
             continue;
         if (n < 0)
-            return Error{Errno("cannot read '" + path + "'")};
+            return Error{DiagCode::kCannotReadFile, Errno("cannot read '" + path + "'")};
         if (n == 0)
             break;
         at += static_cast<size_t>(n);
     }
     if (at > max_bytes) {
-        return Error{"'" + path + "' is larger than the limit of " + std::to_string(max_bytes) +
-                     " bytes"};
+        return Error{DiagCode::kCannotReadFile, "'" + path + "' is larger than the limit of " +
+                                                    std::to_string(max_bytes) + " bytes"};
     }
     out.resize(at);
     return out;
@@ -147,23 +149,24 @@ Result<std::string> CheckOutputPath(const std::string& path,
     if (stat(resolved.value().c_str(), &existing) != 0)
         return resolved;  // to be created
     if (!S_ISREG(existing.st_mode)) {
-        return Error{"the output '" + path + "' is " + KindOf(existing.st_mode) +
-                     "; kiln writes only regular files"};
+        return Error{DiagCode::kCannotWriteFile, "the output '" + path + "' is " +
+                                                     KindOf(existing.st_mode) +
+                                                     "; kiln writes only regular files"};
     }
     for (const std::string& input : inputs) {
         struct stat in {};
         if (stat(input.c_str(), &in) == 0 && in.st_dev == existing.st_dev &&
             in.st_ino == existing.st_ino) {
-            return Error{"the output '" + path + "' is the input '" + input +
-                         "'; refusing to overwrite it"};
+            return Error{DiagCode::kCannotWriteFile, "the output '" + path + "' is the input '" +
+                                                         input + "'; refusing to overwrite it"};
         }
     }
     return resolved;
 }
 
-Result<bool> WriteFileAtomically(const std::string& path,
-                                 std::span<const uint8_t> bytes,
-                                 const WriteOptions& options) {
+Status WriteFileAtomically(const std::string& path,
+                           std::span<const uint8_t> bytes,
+                           const WriteOptions& options) {
     Result<std::string> checked = CheckOutputPath(path, options.inputs);
     if (!checked)
         return checked.error();
@@ -176,10 +179,12 @@ Result<bool> WriteFileAtomically(const std::string& path,
         temp = TempName(target);
         raw = open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (raw < 0 && errno != EEXIST)
-            return Error{Errno("cannot create a file beside '" + path + "'")};
+            return Error{DiagCode::kCannotWriteFile,
+                         Errno("cannot create a file beside '" + path + "'")};
     }
     if (raw < 0)
-        return Error{"cannot create a temporary file beside '" + path + "'"};
+        return Error{DiagCode::kCannotWriteFile,
+                     "cannot create a temporary file beside '" + path + "'"};
     Fd fd(raw);
     if (exists)
         fchmod(fd.get(), existing.st_mode & 07777);
@@ -187,31 +192,31 @@ Result<bool> WriteFileAtomically(const std::string& path,
         (options.durable && fsync(fd.get()) != 0)) {
         const std::string why = Errno("cannot write '" + path + "'");
         unlink(temp.c_str());
-        return Error{why};
+        return Error{DiagCode::kCannotWriteFile, why};
     }
     if (close(fd.release()) != 0) {
         const std::string why = Errno("cannot write '" + path + "'");
         unlink(temp.c_str());
-        return Error{why};
+        return Error{DiagCode::kCannotWriteFile, why};
     }
     if (rename(temp.c_str(), target.c_str()) != 0) {
         const std::string why = Errno("cannot move the output into place at '" + path + "'");
         unlink(temp.c_str());
-        return Error{why};
+        return Error{DiagCode::kCannotWriteFile, why};
     }
     if (!options.durable)
-        return true;
+        return {};
     // The rename itself is durable once the directory is.
     std::string dir = fs::path(target).parent_path().string();
     Fd dfd(open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
     if (dfd.get() >= 0)
         fsync(dfd.get());
-    return true;
+    return {};
 }
 
-Result<bool> WriteFileAtomically(const std::string& path,
-                                 std::string_view text,
-                                 const WriteOptions& options) {
+Status WriteFileAtomically(const std::string& path,
+                           std::string_view text,
+                           const WriteOptions& options) {
     return WriteFileAtomically(
         path, std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(text.data()), text.size()),
         options);

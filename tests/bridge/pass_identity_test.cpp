@@ -75,8 +75,8 @@ TEST(PassIdentity, OneNameEverywhere) {
     // The pack's own PassLabel, and FindPass by it.
     pack::MappedFile file;
     pack::Pack pk;
-    ASSERT_FALSE(pack::MappedFile::Map(pack_path, file));
-    ASSERT_FALSE(pack::Pack::Open(file.bytes(), pk));
+    ASSERT_TRUE(kiln::test::MapInto(pack_path, file));
+    ASSERT_TRUE(kiln::test::OpenInto(file.bytes(), pk));
     for (uint32_t i = 0; i < kExpected.size(); ++i) {
         EXPECT_EQ(pack::PassLabel(pk, i), kExpected[i]);
         EXPECT_EQ(pk.FindPass(0, kExpected[i]), std::optional<uint32_t>(i));
@@ -128,8 +128,8 @@ TEST(UsageFile, RejectsWhatIsNotOne) {
 TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
     pack::MappedFile file;
     pack::Pack pack;
-    ASSERT_FALSE(pack::MappedFile::Map(KILN_STRIPPED_PACK, file));
-    ASSERT_FALSE(pack::Pack::Open(file.bytes(), pack));
+    ASSERT_TRUE(kiln::test::MapInto(KILN_STRIPPED_PACK, file));
+    ASSERT_TRUE(kiln::test::OpenInto(file.bytes(), pack));
     const uint32_t shader = *pack.FindShader("Kiln/StandardMetallic");
     const uint32_t pass = *pack.FindPass(shader, "ForwardBase");
     pack::VariantSelector strict(pack, pack::MissingVariantPolicy::kError);

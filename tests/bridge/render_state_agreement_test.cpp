@@ -11,6 +11,7 @@
 #include "kiln/pack/render_state.h"
 #include "kiln/shaderlab/parse.h"
 #include "support/compile_support.h"
+#include "support/test_support.h"
 #include "vk/pipeline.h"
 
 namespace kiln {
@@ -53,7 +54,7 @@ struct CompiledStates {
             test::Compile({dir.Write("states.shader", StateShader(passes))});
         diagnostics = test::Brief(run.diags);
         bytes = run.out.pack;
-        ok = run.out.ok && !pack::Pack::Open(bytes, pack).has_value();
+        ok = run.out.ok && test::OpenInto(bytes, pack);
     }
     test::ScratchDir dir;
     std::vector<uint8_t> bytes;
@@ -100,10 +101,10 @@ TEST(RenderStateAgreement, EveryShaderLabValueCompilesAndResolves) {
 
 // A .material overriding `field` with `value`, parsed.
 bool ParseOverride(const std::string& field, const std::string& value, material::Material& m) {
-    std::vector<material::MaterialIssue> issues;
+    DiagnosticList issues;
     const std::string json =
         "{\"shader\": \"x\", \"render_state\": {\"" + field + "\": " + value + "}}";
-    return material::ParseMaterial(json, m, issues) && issues.empty();
+    return material::ParseMaterial(json, "override.material", m, issues) && issues.all().empty();
 }
 
 TEST(RenderStateAgreement, EveryMaterialValueIsTheTable) {

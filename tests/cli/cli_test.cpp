@@ -178,13 +178,32 @@ TEST(Cli, InfoRejectsDamagedPacks) {
     RunResult r = RunKiln("info " + truncated);
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("pack is truncated"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("[K0018]"), std::string::npos) << r.err;
     bytes[bytes.size() / 2] ^= 0x10;
     const std::string flipped = WriteTemp("flip.kpack", bytes);
     r = RunKiln("info " + flipped);
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("checksum does not match"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("[K0021]"), std::string::npos) << r.err;
     r = RunKiln("info " + DataPath("data/compile/light.cginc"));
     EXPECT_NE(r.err.find("not a kiln pack"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("[K0019]"), std::string::npos) << r.err;
+}
+
+// The runtime's warnings reach the user as diagnostics with their own codes, about the file they
+// concern, and do not fail the render.
+TEST(Cli, RenderWarningsHaveCodesAndNameTheScene) {
+    const std::string scene = DataPath("cli/mistakes/triangle.gltf");
+    const std::string out = testing::TempDir() + "/kiln_cli_warning.png";
+    RunResult r = RunKiln("render " + scene + " --width 32 --height 24 -o " + out);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find(scene + ": warning: the scene has no KHR_lights_punctual lights"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("[K0014]"), std::string::npos) << r.err;
+    r = RunKiln("render " + scene + " --width 32 --height 24 --no-default-light -o " + out);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("K0014"), std::string::npos) << r.err;
 }
 
 TEST(Cli, VariantsReportsDedup) {

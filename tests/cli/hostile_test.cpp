@@ -176,7 +176,7 @@ const Hostile kRows[] = {
      "render {T}/tri.gltf --ocio-config {T}/config.ocio -o {T}/out.png", 1, "K0009",
      "is a FIFO, not a regular file"},
     {"pack is a FIFO", [](const std::string& dir) { mkfifo((dir + "/p.kpack").c_str(), 0600); },
-     "info {T}/p.kpack", 1, "K0004", "is not a regular file"},
+     "info {T}/p.kpack", 1, "K0001", "is not a regular file"},
     // Outputs.
     {"output is the input", WriteShader("s.shader", [] { return Shader(Frag("return 1;")); }),
      "compile {T}/s.shader --no-cache -o {T}/s.shader", 1, "K0002", "is the input"},

@@ -76,7 +76,7 @@ const Mistake kMistakes[] = {
      "extract {T}/spot.kpack --shader Lecture/SpotLight --pass ForwardAd --stage frag "
      "-o {T}/out.spv",
      1, "K0005", "spot.kpack", "did you mean 'ForwardAdd'?"},
-    {"missing pack", "render {D}/triangle.gltf --pack {T}/none.kpack -o {T}/out.png", 1, "K0004",
+    {"missing pack", "render {D}/triangle.gltf --pack {T}/none.kpack -o {T}/out.png", 1, "K0001",
      "", "none.kpack"},
     // Scenes and render options.
     {"nothing to draw", "render {D}/nothing_to_draw.gltf -o {T}/out.png", 1, "K0007",

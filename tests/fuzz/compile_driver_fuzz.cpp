@@ -39,7 +39,8 @@ void DecodeAsProtocol(const std::string& bytes) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     DecodeAsProtocol(text);
-    static const std::string path = "/tmp/kiln_fuzz_compile_" + std::to_string(getpid()) + ".shader";
+    static const std::string path =
+        "/tmp/kiln_fuzz_compile_" + std::to_string(getpid()) + ".shader";
     FILE* f = std::fopen(path.c_str(), "wb");
     if (f == nullptr)
         return 0;
@@ -47,14 +48,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::fclose(f);
     kiln::CompileOptions options;
     options.jobs = 1;
-    options.max_variants = 16;          // a fuzzed shader's variants are all alike
+    options.max_variants = 16;             // a fuzzed shader's variants are all alike
     options.program_timeout_seconds = 10;  // under the fuzzer's own -timeout
     options.program_memory_mib = 1024;
     kiln::DiagnosticList diags;
     const kiln::CompileOutput out = kiln::CompileShaders({path}, options, diags);
     if (out.ok) {
-        kiln::pack::Pack pack;
-        if (kiln::pack::Pack::Open(out.pack, pack))
+        if (!kiln::pack::Pack::Open(out.pack))
             __builtin_trap();  // the compiler wrote a pack its own reader rejects
     }
     std::vector<const kiln::SourceFile*> sources;

@@ -21,12 +21,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return 0;
     std::fwrite(data, 1, size, f);
     std::fclose(f);
-    kiln::runtime::Scene scene;
-    std::vector<std::string> warnings;
-    if (!kiln::runtime::LoadGltf(path, scene, warnings)) {
-        (void)kiln::runtime::SceneBounds(scene);
-        for (const auto& light : scene.lights)
+    kiln::DiagnosticList diags;
+    const kiln::Result<kiln::runtime::Scene> scene = kiln::runtime::LoadGltf(path, diags);
+    if (scene) {
+        (void)kiln::runtime::SceneBounds(scene.value());
+        for (const auto& light : scene.value().lights)
             (void)kiln::runtime::ShaderLightColor(light);
+    }
+    for (const kiln::Diagnostic& d : diags.all()) {
+        if (d.severity != kiln::Severity::kWarning || d.message.empty())
+            __builtin_trap();  // the loader's warnings are warnings, each with a message
     }
     std::remove(path.c_str());
     return 0;

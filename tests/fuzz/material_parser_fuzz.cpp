@@ -11,13 +11,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace kiln::material;
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     Material m;
-    std::vector<MaterialIssue> issues;
-    const bool ok = ParseMaterial(text, m, issues);
-    for (const MaterialIssue& i : issues) {
-        if (i.pos.offset > size || i.pos.line == 0 || i.pos.column == 0 || i.message.empty())
+    kiln::DiagnosticList issues;
+    const bool ok = ParseMaterial(text, "fuzz.material", m, issues);
+    for (const kiln::Diagnostic& d : issues.all()) {
+        const kiln::SourceLoc& at = d.range.begin;
+        if (at.offset > size || at.line == 0 || at.column == 0 || d.message.empty() ||
+            d.file != "fuzz.material")
             std::abort();
     }
-    if (!ok && issues.empty())
+    if (!ok && !issues.has_errors())
         std::abort();
     (void)ClosestName(m.shader, {"Kiln/Standard", "Kiln/StandardMetallic"});
     return 0;

@@ -19,9 +19,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         for (uint32_t i = 0; i < 8; ++i)
             bytes[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
     }
-    Pack pack;
-    if (Pack::Open(bytes, pack))
+    kiln::Result<Pack> opened = Pack::Open(bytes);
+    if (!opened)
         return 0;
+    const Pack pack = std::move(opened).value();
     for (uint32_t s = 0; s < pack.Count(SectionTag::kShaders); ++s) {
         const ShaderRec sr = pack.Shader(s).value();
         (void)pack.String(sr.name);

@@ -39,7 +39,7 @@ std::string PatchedPack(const std::string& name,
     std::vector<uint8_t> bytes = ReadBytes(KILN_MATERIALS_PACK);
     {
         pack::Pack p;
-        EXPECT_FALSE(pack::Pack::Open(bytes, p));
+        EXPECT_TRUE(Into(pack::Pack::Open(bytes), p));
         std::vector<std::pair<size_t, size_t>> modules;
         for (uint32_t m = 0; m < p.Count(pack::SectionTag::kModules); ++m) {
             const auto spirv = p.Spirv(p.Module(m).value());
@@ -62,16 +62,17 @@ class PackTrustTest : public ::testing::Test {
     void SetUp() override { PinVulkanLibraries(); }
 
     // Renders the Lambert material on a sphere from `pack` alone; the error, if any.
-    std::optional<runtime::Error> RenderWith(const std::string& pack) {
+    Status RenderWith(const std::string& pack) {
         runtime::RendererOptions options;
         options.validation = true;
-        runtime::Renderer renderer;
-        if (auto e = runtime::Renderer::Create(options, renderer))
-            return e;
-        if (auto e = renderer.AddPack(pack))
+        Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+        if (!made)
+            return made.error();
+        runtime::Renderer renderer = std::move(made).value();
+        if (Status e = renderer.AddPack(pack); !e.ok())
             return e;
         runtime::ColorPipeline color;
-        EXPECT_FALSE(runtime::ColorPipeline::Create({}, color));
+        EXPECT_TRUE(CreateColorInto({}, color));
         runtime::Scene scene =
             SphereOnFloor(std::string(KILN_SOURCE_DIR) + "/materials/Lambert.material");
         runtime::FrameSettings settings;
@@ -79,7 +80,7 @@ class PackTrustTest : public ::testing::Test {
         settings.height = 48;
         runtime::LinearImage image;
         runtime::FrameStats stats;
-        auto e = renderer.Render(scene, settings, color, image, stats);
+        Status e = renderer.Render(scene, settings, color, image, stats);
         for (const std::string& m : renderer.ValidationMessages())
             ADD_FAILURE() << "the driver saw the module: " << m;
         return e;
@@ -88,17 +89,18 @@ class PackTrustTest : public ::testing::Test {
 
 TEST_F(PackTrustTest, TheShippedPackRenders) {
     const auto e = RenderWith(KILN_MATERIALS_PACK);
-    EXPECT_FALSE(e) << e->message;
+    EXPECT_TRUE(Ok(e));
 }
 
 TEST_F(PackTrustTest, AnIdBoundPastSpirvsLimitIsRejected) {
     const std::string pack = PatchedPack(
         "kiln_bound.kpack", [](auto& b, size_t at, size_t) { SetWord(b, at + 12, 0x7fffffff); });
-    const auto e = RenderWith(pack);
-    ASSERT_TRUE(e);
-    EXPECT_EQ(e->kind, runtime::ErrorKind::kPack);
-    EXPECT_NE(e->message.find("id bound 2147483647 is over SPIR-V's limit"), std::string::npos)
-        << e->message;
+    const Status e = RenderWith(pack);
+    ASSERT_FALSE(e.ok());
+    EXPECT_EQ(e.error().code, DiagCode::kBadPack);
+    EXPECT_NE(e.error().message.find("id bound 2147483647 is over SPIR-V's limit"),
+              std::string::npos)
+        << e.error().message;
 }
 
 TEST_F(PackTrustTest, ABindingOutsideTheLayoutIsRejected) {
@@ -110,11 +112,12 @@ TEST_F(PackTrustTest, ABindingOutsideTheLayoutIsRejected) {
             i += count == 0 ? n : count;
         }
     });
-    const auto e = RenderWith(pack);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("binding 1073741824, which the variant's layout does not have"),
-              std::string::npos)
-        << e->message;
+    const Status e = RenderWith(pack);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(
+        e.error().message.find("binding 1073741824, which the variant's layout does not have"),
+        std::string::npos)
+        << e.error().message;
 }
 
 TEST_F(PackTrustTest, AModuleSpirvValRejectsIsRejected) {
@@ -123,15 +126,15 @@ TEST_F(PackTrustTest, AModuleSpirvValRejectsIsRejected) {
         const uint32_t w = GetWord(b, at + 20);
         SetWord(b, at + 20, (w & 0xFFFF0000u) | 0xFFFEu);
     });
-    const auto e = RenderWith(pack);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("spirv-val:"), std::string::npos) << e->message;
+    const Status e = RenderWith(pack);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().message.find("spirv-val:"), std::string::npos) << e.error().message;
 }
 
 TEST(ModuleChecker, EachDistinctModuleIsValidatedOnce) {
     std::vector<uint8_t> bytes = ReadBytes(KILN_MATERIALS_PACK);
     pack::Pack p;
-    ASSERT_FALSE(pack::Pack::Open(bytes, p));
+    ASSERT_TRUE(Into(pack::Pack::Open(bytes), p));
     VkPhysicalDeviceLimits limits{};
     limits.maxBoundDescriptorSets = 8;
     vk::ModuleChecker checker(limits);
@@ -145,14 +148,15 @@ TEST(ModuleChecker, EachDistinctModuleIsValidatedOnce) {
             everything.insert({s, b});
     }
     const auto stage = pack::Stage(m.stage);
-    EXPECT_FALSE(checker.Check(words, stage, everything));
-    EXPECT_FALSE(checker.Check(words, stage, everything));
+    EXPECT_TRUE(Ok(checker.Check(words, stage, everything)));
+    EXPECT_TRUE(Ok(checker.Check(words, stage, everything)));
     EXPECT_EQ(checker.validated_count(), 1u);
     // The wrong stage for the module is refused even once it is known to be valid.
     const auto other =
         stage == pack::Stage::kVertex ? pack::Stage::kFragment : pack::Stage::kVertex;
-    EXPECT_TRUE(checker.Check(words, other, everything));
-    EXPECT_TRUE(checker.Check(words, stage, {}) || words.empty()) << "no layout, but bindings";
+    EXPECT_FALSE(checker.Check(words, other, everything).ok());
+    EXPECT_TRUE(!checker.Check(words, stage, {}).ok() || words.empty())
+        << "no layout, but bindings";
 }
 
 }  // namespace

@@ -33,9 +33,8 @@ TEST_P(GltfSampleTest, RendersHeadlessWithoutValidationMessages) {
         GTEST_SKIP() << path << " is absent (../shared not checked out): sample skipped";
     }
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    auto e = runtime::LoadGltf(path, scene, warnings);
-    ASSERT_FALSE(e) << e->message;
+    DiagnosticList warnings;
+    ASSERT_TRUE(LoadInto(path, scene, warnings));
     runtime::FrameSettings settings;
     settings.width = 256;
     settings.height = 192;
@@ -63,10 +62,8 @@ INSTANTIATE_TEST_SUITE_P(Samples,
 
 TEST_F(RuntimeTest, DemoSceneShowsEveryShippedMaterial) {
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    auto e =
-        runtime::LoadGltf(std::string(KILN_SOURCE_DIR) + "/scenes/demo/demo.gltf", scene, warnings);
-    ASSERT_FALSE(e) << e->message;
+    DiagnosticList warnings;
+    ASSERT_TRUE(LoadInto(std::string(KILN_SOURCE_DIR) + "/scenes/demo/demo.gltf", scene, warnings));
     EXPECT_EQ(scene.material_files.size(), 10u);
     EXPECT_EQ(scene.lights.size(), 3u);
     runtime::FrameStats stats;
@@ -113,7 +110,8 @@ TEST_F(RuntimeTest, AlphaIsCoverageWhateverTheNumberOfAdditivePasses) {
     settings.height = 48;
     settings.pixel_lights = 8;
     runtime::FrameStats stats;
-    const runtime::LinearImage image = Render(LoneSphere("multi_light.material", 3), settings, &stats);
+    const runtime::LinearImage image =
+        Render(LoneSphere("multi_light.material", 3), settings, &stats);
     ASSERT_EQ(stats.add_passes, 3u);
     size_t covered = 0, background = 0;
     for (size_t i = 3; i < image.rgba.size(); i += 4) {
@@ -143,9 +141,10 @@ TEST_F(RuntimeTest, ImagesLargerThanTheDeviceLimitAreDownscaledWithAWarning) {
     runtime::FrameStats stats;
     Render(scene, settings, &stats);
     std::string all;
-    for (const std::string& w : stats.warnings)
-        all += w + "\n";
-    EXPECT_NE(all.find("image 0 'wide' is 17000x2, larger than the device's limit of 16384; "
+    for (const Diagnostic& w : stats.warnings.all())
+        all += FormatDiagCode(w.code) + " " + w.message + "\n";
+    EXPECT_NE(all.find("K0013 glTF material 'm': image 0 'wide' is 17000x2, larger than the "
+                       "device's limit of 16384; "
                        "downscaled to 8500x1"),
               std::string::npos)
         << all;
@@ -156,10 +155,10 @@ TEST_F(RuntimeTest, ASceneWithNothingToDrawIsAnError) {
     scene.instances.clear();
     runtime::LinearImage image;
     runtime::FrameStats stats;
-    const auto e = renderer_.Render(scene, {}, color_, image, stats);
-    ASSERT_TRUE(e);
-    EXPECT_EQ(e->kind, runtime::ErrorKind::kScene);
-    EXPECT_EQ(e->message, "the scene: nothing to draw (no node of the scene has a mesh)");
+    const Status e = renderer_.Render(scene, {}, color_, image, stats);
+    ASSERT_FALSE(e.ok());
+    EXPECT_EQ(e.error().code, DiagCode::kBadScene);
+    EXPECT_EQ(e.error().message, "the scene: nothing to draw (no node of the scene has a mesh)");
 }
 
 TEST_F(RuntimeTest, NegativeCameraIndicesOtherThanTheNamedModesAreErrors) {
@@ -170,12 +169,12 @@ TEST_F(RuntimeTest, NegativeCameraIndicesOtherThanTheNamedModesAreErrors) {
     settings.camera = -3;
     runtime::LinearImage image;
     runtime::FrameStats stats;
-    auto e = renderer_.Render(scene, settings, color_, image, stats);
-    ASSERT_TRUE(e);
-    EXPECT_EQ(e->kind, runtime::ErrorKind::kScene);
+    Status e = renderer_.Render(scene, settings, color_, image, stats);
+    ASSERT_FALSE(e.ok());
+    EXPECT_EQ(e.error().code, DiagCode::kBadScene);
     settings.camera = runtime::FrameSettings::kCameraAuto;
     e = renderer_.Render(scene, settings, color_, image, stats);
-    ASSERT_FALSE(e) << e->message;
+    ASSERT_TRUE(Ok(e));
     EXPECT_EQ(stats.camera, "automatic");
 }
 
@@ -198,9 +197,9 @@ TEST_F(RuntimeTest, SizeOptimizedPackRendersLikeTheDefault) {
     options.validation = true;
     options.float32_target = true;
     runtime::Renderer small;
-    ASSERT_FALSE(runtime::Renderer::Create(options, small));
-    auto e = small.AddPack(KILN_SIZE_PACK);
-    ASSERT_FALSE(e) << e->message;
+    ASSERT_TRUE(CreateInto(options, small));
+    Status e = small.AddPack(KILN_SIZE_PACK);
+    ASSERT_TRUE(Ok(e));
     runtime::FrameSettings settings;
     settings.width = 64;
     settings.height = 48;
@@ -208,7 +207,7 @@ TEST_F(RuntimeTest, SizeOptimizedPackRendersLikeTheDefault) {
     runtime::LinearImage expected = Render(scene, settings), got;
     runtime::FrameStats stats;
     e = small.Render(scene, settings, color_, got, stats);
-    ASSERT_FALSE(e) << e->message;
+    ASSERT_TRUE(Ok(e));
     EXPECT_EQ(stats.add_passes, 2u);
     ASSERT_EQ(got.rgba.size(), expected.rgba.size());
     float worst = 0;
@@ -307,17 +306,18 @@ TEST_F(RuntimeTest, RenderingAStrippedVariantFailsWithTheVariantNamed) {
     runtime::Renderer stripped;
     runtime::RendererOptions options;
     options.validation = true;
-    ASSERT_FALSE(runtime::Renderer::Create(options, stripped));
-    ASSERT_FALSE(stripped.AddPack(KILN_STRIPPED_PACK));
+    ASSERT_TRUE(CreateInto(options, stripped));
+    ASSERT_TRUE(Ok(stripped.AddPack(KILN_STRIPPED_PACK)));
     runtime::Scene scene = LoneSphere("unlit_color.material", 0);
     scene.material_files.clear();                      // the glTF material: StandardMetallic ...
     scene.materials[0].emissive = glm::vec3(1, 0, 0);  // ... with _EMISSION
     runtime::LinearImage image;
     runtime::FrameStats stats;
-    auto e = stripped.Render(scene, {}, color_, image, stats);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("has no variant for keywords '_EMISSION'"), std::string::npos)
-        << e->message;
+    Status e = stripped.Render(scene, {}, color_, image, stats);
+    ASSERT_FALSE(e.ok());
+    EXPECT_EQ(e.error().code, DiagCode::kMissingVariant);
+    EXPECT_NE(e.error().message.find("has no variant for keywords '_EMISSION'"), std::string::npos)
+        << e.error().message;
     EXPECT_TRUE(stripped.ValidationMessages().empty());
 }
 
@@ -334,27 +334,27 @@ TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
         const std::string file = stem + std::to_string(attempt++) + ".kpack";
         std::ofstream(file, std::ios::binary | std::ios::trunc)
             .write(bytes.data(), std::streamsize(bytes.size()));
-        auto error = renderer_.AddPack(file);
+        Status error = renderer_.AddPack(file);
         fs::remove(file);  // unlinking keeps any mapping valid
         return error;
     };
     size_t rejected = 0, tried = 0;
     for (size_t len = 0; len < good.size(); len += len < 128 ? 1 : 4099) {  // truncations
         ++tried;
-        rejected += bool(try_bytes(std::vector<char>(good.begin(), good.begin() + long(len))));
+        rejected += !try_bytes(std::vector<char>(good.begin(), good.begin() + long(len))).ok();
     }
     for (size_t bit = 0; bit < good.size() * 8; bit += 7919) {  // single bit flips
         std::vector<char> bytes = good;
         bytes[bit / 8] = char(bytes[bit / 8] ^ (1 << (bit % 8)));
         ++tried;
-        rejected += bool(try_bytes(bytes));
+        rejected += !try_bytes(bytes).ok();
     }
     EXPECT_EQ(rejected, tried);
     std::vector<char> foreign = good;
     foreign[0] = 'X';
-    auto e = try_bytes(foreign);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("not-a-pack"), std::string::npos) << e->message;
+    const Status e = try_bytes(foreign);
+    ASSERT_FALSE(e.ok());
+    EXPECT_EQ(e.error().code, DiagCode::kNotAPack) << e.error().message;
 }
 
 TEST_F(RuntimeTest, PipelineCacheIsPersistedBehindAValidatedHeader) {
@@ -366,11 +366,11 @@ TEST_F(RuntimeTest, PipelineCacheIsPersistedBehindAValidatedHeader) {
         runtime::Renderer r;
         runtime::RendererOptions options;
         options.pipeline_cache = path.string();
-        ASSERT_FALSE(runtime::Renderer::Create(options, r));
-        ASSERT_FALSE(r.AddPack(KILN_MATERIALS_PACK));
+        ASSERT_TRUE(CreateInto(options, r));
+        ASSERT_TRUE(Ok(r.AddPack(KILN_MATERIALS_PACK)));
         runtime::LinearImage image;
         runtime::FrameStats stats;
-        ASSERT_FALSE(r.Render(scene, {}, color_, image, stats));
+        ASSERT_TRUE(Ok(r.Render(scene, {}, color_, image, stats)));
     }  // saved on destruction
     std::ifstream in(path, std::ios::binary);
     std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
@@ -384,13 +384,16 @@ TEST_F(RuntimeTest, PipelineCacheIsPersistedBehindAValidatedHeader) {
     runtime::Renderer r;
     runtime::RendererOptions options;
     options.pipeline_cache = path.string();
-    ASSERT_FALSE(runtime::Renderer::Create(options, r));
-    ASSERT_FALSE(r.AddPack(KILN_MATERIALS_PACK));
+    ASSERT_TRUE(CreateInto(options, r));
+    ASSERT_TRUE(Ok(r.AddPack(KILN_MATERIALS_PACK)));
     runtime::LinearImage image;
     runtime::FrameStats stats;
-    ASSERT_FALSE(r.Render(scene, {}, color_, image, stats));
-    ASSERT_FALSE(stats.warnings.empty());
-    EXPECT_NE(stats.warnings[0].find("ignored"), std::string::npos) << stats.warnings[0];
+    ASSERT_TRUE(Ok(r.Render(scene, {}, color_, image, stats)));
+    ASSERT_FALSE(stats.warnings.all().empty());
+    const Diagnostic& w = stats.warnings.all()[0];
+    EXPECT_EQ(w.code, DiagCode::kPipelineCacheIgnored);
+    EXPECT_EQ(w.severity, Severity::kWarning);
+    EXPECT_NE(w.message.find("ignored"), std::string::npos) << w.message;
     fs::remove(path);
 }
 

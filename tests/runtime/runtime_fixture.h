@@ -16,12 +16,9 @@
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
+#include "runtime/runtime_asserts.h"
 
 namespace kiln::testing {
-
-inline std::string RuntimeData(const std::string& name) {
-    return std::string(KILN_RUNTIME_DATA_DIR) + "/" + name;
-}
 
 // IEC 61966-2-1 decoding, written out independently of OpenColorIO.
 inline double SrgbToLinear(double c) {
@@ -127,12 +124,12 @@ class RuntimeTest : public ::testing::Test {
         runtime::RendererOptions options;
         options.validation = true;
         options.float32_target = true;
-        ASSERT_FALSE(runtime::Renderer::Create(options, renderer_)) << "no Vulkan device";
+        ASSERT_TRUE(CreateInto(options, renderer_)) << "no Vulkan device";
         for (const char* pack : {KILN_MATERIALS_PACK, KILN_PROBE_PACK}) {
-            auto e = renderer_.AddPack(pack);
-            ASSERT_FALSE(e) << e->message;
+            Status e = renderer_.AddPack(pack);
+            ASSERT_TRUE(Ok(e));
         }
-        ASSERT_FALSE(runtime::ColorPipeline::Create({}, color_));
+        ASSERT_TRUE(CreateColorInto({}, color_));
     }
     void TearDown() override {
         // Every test fails on any message from VK_LAYER_KHRONOS_validation.
@@ -146,8 +143,8 @@ class RuntimeTest : public ::testing::Test {
                                 runtime::FrameStats* stats_out = nullptr) {
         runtime::LinearImage image;
         runtime::FrameStats stats;
-        auto e = renderer_.Render(scene, settings, color_, image, stats);
-        EXPECT_FALSE(e) << e->message;
+        Status e = renderer_.Render(scene, settings, color_, image, stats);
+        EXPECT_TRUE(Ok(e));
         if (stats_out) {
             *stats_out = stats;
         }

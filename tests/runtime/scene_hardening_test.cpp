@@ -38,9 +38,9 @@ json Triangle() {
 }
 
 struct Loaded {
-    std::optional<runtime::Error> error;
+    std::optional<kiln::Error> error;
     runtime::Scene scene;
-    std::vector<std::string> warnings;
+    DiagnosticList warnings;
 };
 
 fs::path ScratchDir() {
@@ -51,7 +51,12 @@ fs::path ScratchDir() {
 
 Loaded LoadFile(const fs::path& file) {
     Loaded out;
-    out.error = runtime::LoadGltf(file.string(), out.scene, out.warnings);
+    Result<runtime::Scene> loaded = runtime::LoadGltf(file.string(), out.warnings);
+    if (loaded) {
+        out.scene = std::move(loaded).value();
+    } else {
+        out.error = loaded.error();
+    }
     return out;
 }
 
@@ -70,8 +75,10 @@ Loaded Load(const json& gltf) {
 
 std::string AllWarnings(const Loaded& l) {
     std::string all;
-    for (const std::string& w : l.warnings)
-        all += w + "\n";
+    for (const Diagnostic& w : l.warnings.all()) {
+        EXPECT_EQ(w.severity, Severity::kWarning);
+        all += w.message + "\n";
+    }
     return all;
 }
 
@@ -146,15 +153,14 @@ TEST(GltfHardening, SharedChildrenAndCyclesAreErrors) {
     g["nodes"] = nodes;
     Loaded l = Load(g);
     ASSERT_TRUE(l.error);
-    EXPECT_EQ(l.error->kind, runtime::ErrorKind::kScene);
+    EXPECT_EQ(l.error->code, DiagCode::kBadScene);
     EXPECT_NE(l.error->message.find("node 1 is a child of node 0 twice"), std::string::npos)
         << l.error->message;
 
     g["nodes"] = {{{"children", {1}}}, {{"children", {2}}}, {{"mesh", 0}, {"children", {1}}}};
     l = Load(g);
     ASSERT_TRUE(l.error);
-    EXPECT_NE(l.error->message.find("node 1 is a child of node 0 and of node 2"),
-              std::string::npos)
+    EXPECT_NE(l.error->message.find("node 1 is a child of node 0 and of node 2"), std::string::npos)
         << l.error->message;
 
     g["nodes"] = {{{"mesh", 0}, {"children", {0}}}};
@@ -166,8 +172,7 @@ TEST(GltfHardening, SharedChildrenAndCyclesAreErrors) {
     g["nodes"] = {{{"mesh", 0}, {"children", {7}}}};
     l = Load(g);
     ASSERT_TRUE(l.error);
-    EXPECT_NE(l.error->message.find("node 0 has child 7, which does not exist"),
-              std::string::npos)
+    EXPECT_NE(l.error->message.find("node 0 has child 7, which does not exist"), std::string::npos)
         << l.error->message;
 
     g["nodes"] = {{{"children", {1}}}, {{"mesh", 0}}};
@@ -186,7 +191,7 @@ TEST(GltfHardening, JsonNestedTooDeepIsRejectedBeforeParsing) {
     text.insert(1, "\"extras\": " + deep + ", ");
     Loaded l = LoadText(text);
     ASSERT_TRUE(l.error);
-    EXPECT_EQ(l.error->kind, runtime::ErrorKind::kScene);
+    EXPECT_EQ(l.error->code, DiagCode::kBadScene);
     EXPECT_NE(l.error->message.find("JSON nested more than 128 deep"), std::string::npos)
         << l.error->message;
     // Brackets inside strings do not count, and 100 levels are fine.
@@ -241,7 +246,7 @@ TEST(GltfHardening, BufferUrisMustNameRegularFiles) {
 TEST(GltfHardening, AScenePathThatIsNotARegularFileIsAnError) {
     Loaded l = LoadFile(ScratchDir());
     ASSERT_TRUE(l.error);
-    EXPECT_EQ(l.error->kind, runtime::ErrorKind::kScene);
+    EXPECT_EQ(l.error->code, DiagCode::kBadScene);
     EXPECT_NE(l.error->message.find("is a directory"), std::string::npos) << l.error->message;
     l = LoadFile("/dev/zero");
     ASSERT_TRUE(l.error);
@@ -274,15 +279,17 @@ TEST(GltfHardening, ImagesDeclaringTooManyPixelsAreNotDecoded) {
 // A sidecar that named /dev/zero as a material file read without end.
 TEST(GltfHardening, SidecarsAreBoundedRegularFiles) {
     runtime::Scene scene;
-    auto e = runtime::LoadMaterialSidecar("/dev/zero", scene);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("is a character device"), std::string::npos) << e->message;
+    Status e = runtime::LoadMaterialSidecar("/dev/zero", scene);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().message.find("is a character device"), std::string::npos)
+        << e.error().message;
     const fs::path deep = ScratchDir() / "deep.kiln.json";
     std::ofstream(deep) << "{\"description\": " << std::string(5000, '[') << std::string(5000, ']')
                         << "}";
     e = runtime::LoadMaterialSidecar(deep.string(), scene);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("JSON nested more than 128 deep"), std::string::npos) << e->message;
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().message.find("JSON nested more than 128 deep"), std::string::npos)
+        << e.error().message;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "kiln/runtime/scene.h"
+#include "runtime/runtime_asserts.h"
 
 namespace kiln::testing {
 namespace {
@@ -23,29 +24,28 @@ std::string Shared(const std::string& rel) {
         GTEST_SKIP() << "../shared/gltf-samples is absent: glTF sample tests skipped"; \
     }
 
-bool AnyContains(const std::vector<std::string>& v, const std::string& s) {
-    for (const auto& x : v) {
-        if (x.find(s) != std::string::npos) {
-            return true;
-        }
-    }
-    return false;
-}
-
 TEST(GltfLights, ValidatorFilesInvalidLightsAreRejectedWithAMessage) {
     REQUIRE_SHARED();
     const std::string dir = Shared("_validator-KHR_lights_punctual/data/light/");
     for (const char* bad : {"unknown_type.gltf", "spot_invalid_angles.gltf"}) {
         runtime::Scene scene;
-        std::vector<std::string> warnings;
-        auto e = runtime::LoadGltf(dir + bad, scene, warnings);
-        ASSERT_FALSE(e) << e->message;
-        EXPECT_TRUE(AnyContains(warnings, "rejected")) << bad;
+        DiagnosticList warnings;
+        ASSERT_TRUE(LoadInto(dir + bad, scene, warnings));
+        EXPECT_TRUE(AnyWarning(warnings, "rejected")) << bad;
+        // A warning with its code, about the scene file, not an error.
+        bool coded = false;
+        for (const Diagnostic& w : warnings.all()) {
+            coded |= w.code == DiagCode::kSceneContentIgnored && w.file == dir + bad &&
+                     w.severity == Severity::kWarning &&
+                     w.message.find("rejected") != std::string::npos;
+        }
+        EXPECT_TRUE(coded) << bad;
+        EXPECT_FALSE(warnings.has_errors());
     }
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    ASSERT_FALSE(runtime::LoadGltf(dir + "valid.gltf", scene, warnings));
-    EXPECT_FALSE(AnyContains(warnings, "rejected"));
+    DiagnosticList warnings;
+    ASSERT_TRUE(LoadInto(dir + "valid.gltf", scene, warnings));
+    EXPECT_FALSE(AnyWarning(warnings, "rejected"));
 }
 
 TEST(GltfLights, EveryValidatorFileLoadsOrFailsCleanly) {
@@ -57,25 +57,25 @@ TEST(GltfLights, EveryValidatorFileLoadsOrFailsCleanly) {
                 continue;
             }
             runtime::Scene scene;
-            std::vector<std::string> warnings;
-            runtime::LoadGltf(entry.path().string(), scene, warnings);  // must not crash
+            DiagnosticList warnings;
+            (void)runtime::LoadGltf(entry.path().string(), warnings);  // must not crash
         }
     }
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    ASSERT_FALSE(runtime::LoadGltf(
+    DiagnosticList warnings;
+    ASSERT_TRUE(LoadInto(
         Shared("_validator-KHR_lights_punctual/data/node/unresolved_light_empty_root_array.gltf"),
         scene, warnings));
     EXPECT_TRUE(scene.lights.empty());
-    EXPECT_TRUE(AnyContains(warnings, "does not exist"));
+    EXPECT_TRUE(AnyWarning(warnings, "does not exist"));
 }
 
 TEST(GltfLights, LampHasFivePointLightsWithDefaultedColours) {
     REQUIRE_SHARED();
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    ASSERT_FALSE(runtime::LoadGltf(Shared("LightsPunctualLamp/glTF/LightsPunctualLamp.gltf"), scene,
-                                   warnings));
+    DiagnosticList warnings;
+    ASSERT_TRUE(
+        LoadInto(Shared("LightsPunctualLamp/glTF/LightsPunctualLamp.gltf"), scene, warnings));
     ASSERT_EQ(scene.lights.size(), 5u);
     for (const runtime::Light& l : scene.lights) {
         EXPECT_GE(l.intensity, 0.0f);
@@ -86,8 +86,8 @@ TEST(GltfLights, LampHasFivePointLightsWithDefaultedColours) {
 TEST(GltfScene, CamerasSampleHasAPerspectiveAndAnOrthographicCamera) {
     REQUIRE_SHARED();
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    ASSERT_FALSE(runtime::LoadGltf(Shared("Cameras/glTF/Cameras.gltf"), scene, warnings));
+    DiagnosticList warnings;
+    ASSERT_TRUE(LoadInto(Shared("Cameras/glTF/Cameras.gltf"), scene, warnings));
     ASSERT_EQ(scene.cameras.size(), 2u);
     EXPECT_NE(scene.cameras[0].perspective, scene.cameras[1].perspective);
 }
@@ -95,9 +95,8 @@ TEST(GltfScene, CamerasSampleHasAPerspectiveAndAnOrthographicCamera) {
 TEST(GltfScene, MissingTangentsAreGeneratedOrthonormalToTheNormal) {
     REQUIRE_SHARED();
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    ASSERT_FALSE(runtime::LoadGltf(Shared("NormalTangentTest/glTF/NormalTangentTest.gltf"), scene,
-                                   warnings));
+    DiagnosticList warnings;
+    ASSERT_TRUE(LoadInto(Shared("NormalTangentTest/glTF/NormalTangentTest.gltf"), scene, warnings));
     ASSERT_FALSE(scene.meshes.empty());
     size_t checked = 0;
     for (const runtime::Mesh& m : scene.meshes) {
@@ -148,14 +147,15 @@ TEST(GltfScene, NotAGltfFileIsAnErrorNotACrash) {
                                                 ":7}}]}]}")}) {
         std::ofstream(dir / "bad.gltf") << text;
         runtime::Scene scene;
-        std::vector<std::string> warnings;
-        EXPECT_TRUE(runtime::LoadGltf((dir / "bad.gltf").string(), scene, warnings)) << text;
+        DiagnosticList warnings;
+        EXPECT_FALSE(runtime::LoadGltf((dir / "bad.gltf").string(), warnings)) << text;
     }
     runtime::Scene scene;
-    std::vector<std::string> warnings;
-    auto e = runtime::LoadGltf((dir / "missing.gltf").string(), scene, warnings);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("no such file"), std::string::npos);
+    DiagnosticList warnings;
+    auto e = runtime::LoadGltf((dir / "missing.gltf").string(), warnings);
+    ASSERT_FALSE(e);
+    EXPECT_EQ(e.error().code, DiagCode::kBadScene);
+    EXPECT_NE(e.error().message.find("no such file"), std::string::npos);
 }
 
 TEST(MaterialSidecar, PathsAreRelativeToTheSidecarAndUnknownFieldsAreErrors) {
@@ -164,13 +164,14 @@ TEST(MaterialSidecar, PathsAreRelativeToTheSidecarAndUnknownFieldsAreErrors) {
     std::ofstream(dir / "s.kiln.json")
         << R"({"kiln_materials": 1, "materials": {"Red": "red.material"}, "ambient": [0.1, 0.2, 0.3]})";
     runtime::Scene scene;
-    ASSERT_FALSE(runtime::LoadMaterialSidecar((dir / "s.kiln.json").string(), scene));
+    ASSERT_TRUE(Ok(runtime::LoadMaterialSidecar((dir / "s.kiln.json").string(), scene)));
     EXPECT_EQ(scene.material_files.at("Red"), (dir / "red.material").string());
     EXPECT_FLOAT_EQ(scene.ambient.y, 0.2f);
     std::ofstream(dir / "t.kiln.json") << R"({"materiels": {}})";
-    auto e = runtime::LoadMaterialSidecar((dir / "t.kiln.json").string(), scene);
-    ASSERT_TRUE(e);
-    EXPECT_NE(e->message.find("unknown field 'materiels'"), std::string::npos);
+    Status e = runtime::LoadMaterialSidecar((dir / "t.kiln.json").string(), scene);
+    ASSERT_FALSE(e.ok());
+    EXPECT_EQ(e.error().code, DiagCode::kBadScene);
+    EXPECT_NE(e.error().message.find("unknown field 'materiels'"), std::string::npos);
 }
 
 }  // namespace

@@ -118,7 +118,7 @@ TEST(Materials, MultiLightHasVertexLightsInTheBaseAndThreeLightTypesInTheAddPass
     EXPECT_EQ(VariantsOf(run, "ForwardBase"), 2u);
     EXPECT_EQ(VariantsOf(run, "ForwardAdd"), 3u);
     pack::Pack p;
-    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    ASSERT_TRUE(kiln::test::OpenInto(run.out.pack, p));
     const auto pass = p.FindPass(0, "ForwardAdd");
     ASSERT_TRUE(pass.has_value());
     std::map<uint32_t, std::string> state;
@@ -137,7 +137,7 @@ TEST(Materials, DeferredGBufferPassWritesFourFloat4Targets) {
     CompileRun run = Compile({DataPath("../materials/Deferred.shader")});
     ASSERT_TRUE(run.out.ok) << Brief(run.diags);
     pack::Pack p;
-    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    ASSERT_TRUE(kiln::test::OpenInto(run.out.pack, p));
     const auto pass = p.FindPass(0, "Deferred");
     ASSERT_TRUE(pass.has_value());
     const pack::VariantRec v = p.Variant(p.Pass(*pass).value().first_variant).value();
@@ -159,18 +159,18 @@ TEST(Materials, EveryShippedShaderHasAnInstanceAndEveryInstanceValidates) {
     CompileRun run = Compile(ShippedShaders());
     ASSERT_TRUE(run.out.ok) << Brief(run.diags);
     pack::Pack p;
-    ASSERT_FALSE(pack::Pack::Open(run.out.pack, p));
+    ASSERT_TRUE(kiln::test::OpenInto(run.out.pack, p));
     std::set<std::string> shaders_with_instances;
     for (const auto& e : fs::directory_iterator(DataPath("../materials"))) {
         if (e.path().extension() != ".material")
             continue;
         SCOPED_TRACE(e.path().string());
         material::Material m;
-        std::vector<material::MaterialIssue> issues;
-        EXPECT_TRUE(material::ParseMaterial(ReadFile(e.path().string()), m, issues));
+        DiagnosticList issues;
+        EXPECT_TRUE(
+            material::ParseMaterial(ReadFile(e.path().string()), e.path().string(), m, issues));
         EXPECT_TRUE(material::ValidateMaterial(m, p, e.path().parent_path().string(), issues));
-        for (const auto& i : issues)
-            ADD_FAILURE() << i.pos.line << ":" << i.pos.column << " " << i.message;
+        EXPECT_EQ(Summarize(issues), "");
         shaders_with_instances.insert(m.shader);
     }
     EXPECT_EQ(shaders_with_instances.size(), p.Count(pack::SectionTag::kShaders));

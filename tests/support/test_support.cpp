@@ -12,6 +12,51 @@
 
 namespace kiln::test {
 
+::testing::AssertionResult OpenInto(std::span<const uint8_t> bytes, pack::Pack& out) {
+    Result<pack::Pack> opened = pack::Pack::Open(bytes);
+    if (!opened) {
+        return ::testing::AssertionFailure()
+               << FormatDiagCode(opened.error().code) << ": " << opened.error().message;
+    }
+    out = std::move(opened).value();
+    return ::testing::AssertionSuccess();
+}
+
+::testing::AssertionResult MapInto(const std::string& path, pack::MappedFile& out) {
+    Result<pack::MappedFile> mapped = pack::MappedFile::Map(path);
+    if (!mapped) {
+        return ::testing::AssertionFailure()
+               << FormatDiagCode(mapped.error().code) << ": " << mapped.error().message;
+    }
+    out = std::move(mapped).value();
+    return ::testing::AssertionSuccess();
+}
+
+::testing::AssertionResult Succeeded(const Status& status) {
+    if (!status.ok()) {
+        return ::testing::AssertionFailure()
+               << FormatDiagCode(status.error().code) << ": " << status.error().message;
+    }
+    return ::testing::AssertionSuccess();
+}
+
+bool AnyMessageContains(const DiagnosticList& diags, std::string_view text) {
+    for (const Diagnostic& d : diags.all()) {
+        if (d.message.find(text) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::string Messages(const DiagnosticList& diags) {
+    std::string out;
+    for (const Diagnostic& d : diags.all()) {
+        out += FormatDiagCode(d.code) + " " + d.file + ": " + d.message + "\n";
+    }
+    return out;
+}
+
 std::string ReadFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -41,7 +86,8 @@ RunResult RunKilnWithin(const std::string& args, int seconds) {
     const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
     std::string name = test != nullptr ? test->name() : "suite_setup";
     std::replace(name.begin(), name.end(), '/', '_');  // parameterized tests: "Test/param"
-    const std::string stem = testing::TempDir() + "/kiln_cli_" + name + "_" + std::to_string(call++);
+    const std::string stem =
+        testing::TempDir() + "/kiln_cli_" + name + "_" + std::to_string(call++);
     const std::string out_path = stem + ".out";
     const std::string err_path = stem + ".err";
     const std::string limit =

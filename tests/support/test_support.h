@@ -2,11 +2,17 @@
 #ifndef KILN_TESTS_SUPPORT_TEST_SUPPORT_H_
 #define KILN_TESTS_SUPPORT_TEST_SUPPORT_H_
 
+#include <gtest/gtest.h>
+
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kiln/diagnostic.h"
+#include "kiln/pack/reader.h"
 #include "kiln/shaderlab/parse.h"
 #include "kiln/source.h"
 
@@ -32,6 +38,17 @@ struct ParseOutcome {
     DiagnosticList diags;
 };
 ParseOutcome ParseText(const std::string& text, const std::string& name = "test.shader");
+
+// Pack::Open and MappedFile::Map into an existing object, as assertions:
+// ASSERT_TRUE(OpenInto(bytes, pack)) prints the reader's error when it fails.
+::testing::AssertionResult OpenInto(std::span<const uint8_t> bytes, pack::Pack& out);
+::testing::AssertionResult MapInto(const std::string& path, pack::MappedFile& out);
+// A Status as an assertion: EXPECT_TRUE(Succeeded(s)) prints the error's code and message.
+::testing::AssertionResult Succeeded(const Status& status);
+
+// Whether any diagnostic's message holds `text`; and the messages, one a line, for a failure.
+bool AnyMessageContains(const DiagnosticList& diags, std::string_view text);
+std::string Messages(const DiagnosticList& diags);
 
 // One line per diagnostic: "K2003 3:5 error: message" (notes indented below).
 std::string Summarize(const DiagnosticList& diags);

@@ -61,13 +61,18 @@ void FinishModules(CompileState& st) {
         const auto [p, j] = work[i];
         FinalModule& fm = st.finals[p][j];
         fm.words = st.jobs[j].words;
-        std::string error;
-        if (!spirv::ApplyBindings(fm.words, tables[p], error) ||
-            !spirv::Reflect(fm.words, fm.reflection, error)) {
-            fm.error = error;
+        if (Status bound = spirv::ApplyBindings(fm.words, tables[p]); !bound.ok()) {
+            fm.error = bound.error().message;
             fm.internal = true;
             return;
         }
+        Result<spirv::Reflection> reflected = spirv::Reflect(fm.words);
+        if (!reflected) {
+            fm.error = reflected.error().message;
+            fm.internal = true;
+            return;
+        }
+        fm.reflection = std::move(reflected).value();
         // Stripping and spirv-val run in a worker, as every third-party step does.
         const StageTask& task = st.tasks[st.jobs[j].first_task];
         worker::Request request = StageRequest(st, task, worker::RequestKind::kFinish);

@@ -184,9 +184,7 @@ std::map<std::string, Binding> AssignBindings(const std::set<DescriptorVar>& use
     return table;
 }
 
-bool ApplyBindings(std::vector<uint32_t>& words,
-                   const std::map<std::string, Binding>& table,
-                   std::string& error) {
+Status ApplyBindings(std::vector<uint32_t>& words, const std::map<std::string, Binding>& table) {
     const ModuleInfo m = Scan(words);
     for (const auto& [var, ptr] : m.variables) {
         const auto d = Describe(m, var, ptr);
@@ -194,15 +192,14 @@ bool ApplyBindings(std::vector<uint32_t>& words,
             continue;
         auto it = table.find(d->name);
         if (it == table.end() || !m.set_words.count(var) || !m.binding_words.count(var)) {
-            error = "no binding for descriptor '" + d->name + "'";
-            return false;
+            return Error{DiagCode::kInternalError, "no binding for descriptor '" + d->name + "'"};
         }
         for (size_t pos : m.set_words.at(var))
             words[pos] = it->second.set;
         for (size_t pos : m.binding_words.at(var))
             words[pos] = it->second.binding;
     }
-    return true;
+    return {};
 }
 
 }  // namespace kiln::spirv

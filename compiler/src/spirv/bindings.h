@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "kiln/result.h"
+
 namespace kiln::spirv {
 
 inline constexpr uint32_t kFrameSet = 0;
@@ -46,11 +48,9 @@ std::vector<DescriptorVar> ListDescriptorVars(const std::vector<uint32_t>& words
 std::map<std::string, Binding> AssignBindings(const std::set<DescriptorVar>& used,
                                               const std::vector<std::string>& texture_properties);
 
-// Rewrites the decorations; false (with a reason) when a variable has no binding in `table` or
+// Rewrites the decorations; an internal error when a variable has no binding in `table` or
 // lacks the decorations.
-bool ApplyBindings(std::vector<uint32_t>& words,
-                   const std::map<std::string, Binding>& table,
-                   std::string& error);
+Status ApplyBindings(std::vector<uint32_t>& words, const std::map<std::string, Binding>& table);
 
 }  // namespace kiln::spirv
 

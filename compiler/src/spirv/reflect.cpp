@@ -135,8 +135,8 @@ struct State {
 
 }  // namespace
 
-bool Reflect(const std::vector<uint32_t>& words, Reflection& out, std::string& error) {
-    out = Reflection{};
+Result<Reflection> Reflect(const std::vector<uint32_t>& words) {
+    Reflection out;
     try {
         spirv_cross::Compiler compiler(words);
         const spirv_cross::ShaderResources res = compiler.get_shader_resources();
@@ -151,8 +151,7 @@ bool Reflect(const std::vector<uint32_t>& words, Reflection& out, std::string& e
         st.Resources(res.storage_images, pack::ResourceKind::kStorageImage);
         st.Resources(res.storage_buffers, pack::ResourceKind::kStorageBuffer);
     } catch (const std::exception& e) {
-        error = e.what();
-        return false;
+        return Error{DiagCode::kInternalError, e.what()};
     }
     std::stable_sort(out.interface.begin(), out.interface.end(), [](const auto& a, const auto& b) {
         return std::tie(a.direction, a.location, a.name) <
@@ -165,7 +164,7 @@ bool Reflect(const std::vector<uint32_t>& words, Reflection& out, std::string& e
     std::stable_sort(out.resources.begin(), out.resources.end(), [](const auto& a, const auto& b) {
         return std::tie(a.set, a.binding, a.name) < std::tie(b.set, b.binding, b.name);
     });
-    return true;
+    return out;
 }
 
 }  // namespace kiln::spirv

@@ -6,12 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "kiln/result.h"
 #include "spirv/reflection.h"
 
 namespace kiln::spirv {
 
-// False with a message when SPIRV-Cross cannot parse the module (an internal error).
-bool Reflect(const std::vector<uint32_t>& words, Reflection& out, std::string& error);
+// An internal error when SPIRV-Cross cannot parse the module.
+Result<Reflection> Reflect(const std::vector<uint32_t>& words);
 
 }  // namespace kiln::spirv
 

@@ -44,15 +44,16 @@ void PhaseBoard::Release() {
     fd_ = -1;
 }
 
-bool PhaseBoard::Create(std::string& why) {
+Status PhaseBoard::Create() {
     Release();
     fd_ = memfd_create("kiln-worker-phase", MFD_CLOEXEC);
     if (fd_ < 0 || ftruncate(fd_, kBoardBytes) != 0 || (slot_ = Map(fd_)) == nullptr) {
-        why = std::string("cannot make the worker's phase board: ") + std::strerror(errno);
+        Error error{DiagCode::kWorkerUnavailable,
+                    std::string("cannot make the worker's phase board: ") + std::strerror(errno)};
         Release();
-        return false;
+        return error;
     }
-    return true;
+    return {};
 }
 
 bool PhaseBoard::Attach(int fd) {

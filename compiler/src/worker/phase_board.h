@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 
+#include "kiln/result.h"
 #include "worker/protocol.h"
 
 namespace kiln::worker {
@@ -21,8 +22,8 @@ class PhaseBoard {
     PhaseBoard(PhaseBoard&& other) noexcept;
     PhaseBoard& operator=(PhaseBoard&& other) noexcept;
 
-    // The parent's side: a new board; false with the reason when it cannot be made.
-    bool Create(std::string& why);
+    // The parent's side: a new board; an error (K0011) with the reason when it cannot be made.
+    Status Create();
     // The worker's side: the board behind an inherited descriptor.
     bool Attach(int fd);
 

@@ -104,7 +104,7 @@ class WorkerPool : public Executor {
     }
 
   private:
-    bool Spawn(Worker& w, std::string& why) const;
+    Status Spawn(Worker& w) const;
     Outcome RunOn(Worker& w, const Request& request) const;
     // Ends a worker; fills `o` with how it ended when given.
     void Stop(Worker& w, bool kill_now, Outcome* o = nullptr) const;
@@ -116,16 +116,16 @@ class WorkerPool : public Executor {
     std::vector<bool> busy_;
 };
 
-bool WorkerPool::Spawn(Worker& w, std::string& why) const {
+Status WorkerPool::Spawn(Worker& w) const {
     int sv[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
-        why = std::string("socketpair: ") + std::strerror(errno);
-        return false;
+        return Error{DiagCode::kWorkerUnavailable,
+                     std::string("socketpair: ") + std::strerror(errno)};
     }
-    if (!w.board.ok() && !w.board.Create(why)) {
+    if (Status board = w.board.ok() ? Status() : w.board.Create(); !board.ok()) {
         close(sv[0]);
         close(sv[1]);
-        return false;
+        return board;
     }
     // The child's ends move to fds 3 and 4 there; keep them away from those here so that dup2
     // clears CLOEXEC.
@@ -133,11 +133,11 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
     const int board_end = fcntl(w.board.fd(), F_DUPFD_CLOEXEC, 10);
     close(sv[1]);
     if (child_end < 0 || board_end < 0) {
-        why = std::string("fcntl: ") + std::strerror(errno);
+        Error error{DiagCode::kWorkerUnavailable, std::string("fcntl: ") + std::strerror(errno)};
         close(sv[0]);
         close(child_end);
         close(board_end);
-        return false;
+        return error;
     }
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -175,8 +175,8 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
     close(board_end);
     if (rc != 0) {
         close(sv[0]);
-        why = "cannot start '" + options_.worker_path + "': " + std::strerror(rc);
-        return false;
+        return Error{DiagCode::kWorkerUnavailable,
+                     "cannot start '" + options_.worker_path + "': " + std::strerror(rc)};
     }
     w.pid = pid;
     w.fd = sv[0];
@@ -185,7 +185,7 @@ bool WorkerPool::Spawn(Worker& w, std::string& why) const {
     const int buffer_bytes = 4 << 20;
     setsockopt(w.fd, SOL_SOCKET, SO_RCVBUF, &buffer_bytes, sizeof buffer_bytes);
     setsockopt(w.fd, SOL_SOCKET, SO_SNDBUF, &buffer_bytes, sizeof buffer_bytes);
-    return true;
+    return {};
 }
 
 void WorkerPool::Stop(Worker& w, bool kill_now, Outcome* o) const {
@@ -218,9 +218,12 @@ void WorkerPool::Stop(Worker& w, bool kill_now, Outcome* o) const {
 
 Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
     Outcome o;
-    if (w.pid < 0 && !Spawn(w, o.detail)) {
-        o.status = Outcome::Status::kUnavailable;
-        return o;
+    if (w.pid < 0) {
+        if (Status spawned = Spawn(w); !spawned.ok()) {
+            o.status = Outcome::Status::kUnavailable;
+            o.detail = spawned.error().message;
+            return o;
+        }
     }
     const auto fail = [&](Outcome::Status status, bool kill_now) {
         o.status = status;

@@ -50,11 +50,6 @@ bool OpenPack(const std::string& path,
               pack::Pack& pack,
               const GlobalOptions& global);
 
-// The one conversion of material issues into the CLI's diagnostics.
-void AddMaterialIssues(std::vector<kiln::material::MaterialIssue> issues,
-                       const SourceFile& file,
-                       DiagnosticList& diags);
-
 // Flags shared by `compile` and `variants`.
 struct CompilerFlags {
     std::vector<std::string> include_dirs;

@@ -115,9 +115,7 @@ void ReadMaterialKeywords(const std::string& path,
     }
     files.push_back(std::make_unique<SourceFile>(std::move(read).value()));
     material::Material m;
-    std::vector<material::MaterialIssue> issues;
-    if (!material::ParseMaterial(files.back()->text(), m, issues)) {
-        AddMaterialIssues(issues, *files.back(), diags);
+    if (!material::ParseMaterial(files.back()->text(), path, m, diags)) {
         return;
     }
     MaterialRequest request;
@@ -161,8 +159,8 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
     for (const std::string& path : f.materials) {
         if (path.size() >= 10 && path.compare(path.size() - 10, 10, ".kiln.json") == 0) {
             runtime::Scene scene;
-            if (auto e = runtime::LoadMaterialSidecar(path, scene)) {
-                diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, e->message);
+            if (Status read = runtime::LoadMaterialSidecar(path, scene); !read.ok()) {
+                diags.Error(read.error().code, path, kNoPosition, read.error().message);
                 continue;
             }
             for (const auto& [gltf_name, file] : scene.material_files)
@@ -272,10 +270,11 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         for (const auto& f : out.files)
             inputs.push_back(f->path());
         if (out.ok) {
-            Result<bool> written = base::WriteFileAtomically(
+            Status written = base::WriteFileAtomically(
                 o->output, std::span<const uint8_t>(out.pack.data(), out.pack.size()), {inputs});
-            if (!written) {
-                diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition, written.error().message);
+            if (!written.ok()) {
+                diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition,
+                            written.error().message);
             }
         }
         if (out.ok && !diags.has_errors() && (o->md || !o->mf.empty())) {
@@ -286,9 +285,10 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                     DepfileEscape(std::filesystem::absolute(f->path()).lexically_normal().string());
             }
             text += "\n";
-            Result<bool> written = base::WriteFileAtomically(dep_path, text, {inputs});
-            if (!written) {
-                diags.Error(DiagCode::kCannotWriteFile, dep_path, kNoPosition, written.error().message);
+            Status written = base::WriteFileAtomically(dep_path, text, {inputs});
+            if (!written.ok()) {
+                diags.Error(DiagCode::kCannotWriteFile, dep_path, kNoPosition,
+                            written.error().message);
             }
         }
         if (o->stats) {

@@ -12,23 +12,6 @@
 namespace kiln::cli {
 namespace fs = std::filesystem;
 
-void AddMaterialIssues(std::vector<material::MaterialIssue> issues,
-                       const SourceFile& file,
-                       DiagnosticList& diags) {
-    std::stable_sort(issues.begin(), issues.end(),
-                     [](const auto& a, const auto& b) { return a.pos.offset < b.pos.offset; });
-    for (const material::MaterialIssue& i : issues) {
-        SourceRange range;
-        range.begin = file.LocAt(i.pos.offset);
-        range.end = file.LocAt(i.pos.offset + 1);
-        Diagnostic& d = diags.Add(
-            i.severity == material::IssueSeverity::kError ? Severity::kError : Severity::kWarning,
-            static_cast<DiagCode>(i.code), file.path(), range, i.message);
-        if (!i.note.empty())
-            d.notes.push_back({file.path(), range, i.note});
-    }
-}
-
 std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global) {
     auto* cmd = app.add_subcommand(
         "validate", "Check .material files against their shaders' Properties in a pack");
@@ -54,14 +37,13 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
                 continue;
             }
             files.push_back(std::make_unique<SourceFile>(std::move(read).value()));
-            std::vector<material::MaterialIssue> issues;
+            DiagnosticList issues;
             material::Material m;
-            material::ParseMaterial(files.back()->text(), m, issues);
-            const bool is_json =
-                issues.empty() || issues.front().code != material::IssueCode::kJsonSyntax;
-            if (is_json && !m.shader.empty())
+            material::ParseMaterial(files.back()->text(), path, m, issues);
+            if (!m.shader.empty())  // empty when not JSON or without "shader" (both reported)
                 material::ValidateMaterial(m, p, fs::path(path).parent_path().string(), issues);
-            AddMaterialIssues(issues, *files.back(), diags);
+            issues.SortByPosition();
+            diags.Append(issues);
         }
         std::vector<const SourceFile*> views;
         for (const auto& f : files)
@@ -122,8 +104,8 @@ std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global) {
             return ReportError(global, DiagCode::kCannotWriteFile, output,
                                "file exists; pass --force to overwrite");
         }
-        Result<bool> written = base::WriteFileAtomically(output, text);
-        if (!written)
+        Status written = base::WriteFileAtomically(output, text);
+        if (!written.ok())
             return ReportError(global, DiagCode::kCannotWriteFile, output, written.error().message);
         std::printf("wrote %s (shader \"%s\", %s scaffold)\n", output.c_str(), args->name.c_str(),
                     args->scaffold.c_str());

@@ -17,14 +17,18 @@ namespace kiln::cli {
 using namespace kiln::pack;
 
 bool OpenPack(const std::string& path, MappedFile& file, Pack& pack, const GlobalOptions& global) {
-    std::optional<PackError> err = MappedFile::Map(path, file);
-    if (!err)
-        err = Pack::Open(file.bytes(), pack);
-    if (err) {
-        ReportError(global, DiagCode::kBadPack, path,
-                    err->message + " (" + PackErrorCodeName(err->code) + ")");
+    Result<MappedFile> mapped = MappedFile::Map(path);
+    if (!mapped) {
+        ReportError(global, mapped.error().code, path, mapped.error().message);
         return false;
     }
+    file = std::move(mapped).value();
+    Result<Pack> opened = Pack::Open(file.bytes());
+    if (!opened) {
+        ReportError(global, opened.error().code, path, opened.error().message);
+        return false;
+    }
+    pack = std::move(opened).value();
     return true;
 }
 
@@ -255,9 +259,10 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
                                "shader \"" + o->shader + "\" has no pass \"" + o->pass + "\"" +
                                    pack::DidYouMean(o->pass, PassNames(pack, *shader)));
         }
-        if (auto bad = pack.CheckKeywords(*pass, o->keywords)) {
-            return ReportError(global, DiagCode::kUnknownKeyword, o->file,
-                               "shader \"" + o->shader + "\" pass \"" + o->pass + "\": " + *bad);
+        if (Status declared = pack.CheckKeywords(*pass, o->keywords); !declared.ok()) {
+            return ReportError(global, declared.error().code, o->file,
+                               "shader \"" + o->shader + "\" pass \"" + o->pass +
+                                   "\": " + declared.error().message);
         }
         const VariantKey key = pack.KeyFor(*pass, o->keywords);
         const auto variant = pack.FindVariant(*pass, key);
@@ -274,9 +279,9 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
         const bool vert = o->stage[0] == 'v';
         const auto bytes =
             pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module).value());
-        Result<bool> written = base::WriteFileAtomically(
+        Status written = base::WriteFileAtomically(
             o->output, std::span<const uint8_t>(bytes.data(), bytes.size()), {{o->file}});
-        if (!written)
+        if (!written.ok())
             return ReportError(global, DiagCode::kCannotWriteFile, o->output,
                                written.error().message);
         return int(kExitOk);

@@ -33,22 +33,6 @@ std::string DefaultPack() {
     return (prefix / "share/kiln/materials.kpack").string();  // named in the error
 }
 
-DiagCode CodeFor(runtime::ErrorKind kind) {
-    switch (kind) {
-        case runtime::ErrorKind::kScene:
-            return DiagCode::kBadScene;
-        case runtime::ErrorKind::kMissingVariant:
-            return DiagCode::kMissingVariant;
-        case runtime::ErrorKind::kColor:
-            return DiagCode::kBadColorConfig;
-        case runtime::ErrorKind::kPack:
-            return DiagCode::kBadPack;
-        case runtime::ErrorKind::kFailed:
-            break;
-    }
-    return DiagCode::kRenderFailed;
-}
-
 // --camera: "auto" or an index from 0.
 std::string ParseCamera(const std::string& text, int& camera) {
     if (text == "auto") {
@@ -128,14 +112,14 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             PrintDiagnostics(diags, {}, global);
             return code;
         };
-        auto fail = [&](const runtime::Error& e, std::string file = "") {
+        auto fail = [&](const kiln::Error& e, std::string file = "") {
             std::string message = e.message;
             const std::string prefix = a->scene + ": ";
             if (file.empty() && message.rfind(prefix, 0) == 0) {
                 file = a->scene;  // "scene.gltf: what" -> a diagnostic in scene.gltf
                 message.erase(0, prefix.size());
             }
-            diags.Error(CodeFor(e.kind), file, kNoPosition, message);
+            diags.Error(e.code, file, kNoPosition, message);
             return finish(int(kExitInputError));
         };
         a->frame.default_light = !a->no_default_light;
@@ -154,20 +138,21 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         }
         if (!a->camera.empty())
             ParseCamera(a->camera, a->frame.camera);  // validated by the option's check
-        runtime::Scene scene;
-        std::vector<std::string> warnings;
-        if (auto e = runtime::LoadGltf(a->scene, scene, warnings)) {
-            return fail(*e);
+        Result<runtime::Scene> loaded = runtime::LoadGltf(a->scene, diags);
+        if (!loaded) {
+            return fail(loaded.error());
         }
+        runtime::Scene scene = std::move(loaded).value();
         if (!a->materials.empty()) {
-            if (auto e = runtime::LoadMaterialSidecar(a->materials, scene)) {
-                return fail(runtime::Error{e->message, runtime::ErrorKind::kScene});
+            if (Status read = runtime::LoadMaterialSidecar(a->materials, scene); !read.ok()) {
+                return fail(read.error());
             }
         }
-        runtime::ColorPipeline color;
-        if (auto e = runtime::ColorPipeline::Create(a->color, color)) {
-            return fail(*e);
+        Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create(a->color);
+        if (!made_color) {
+            return fail(made_color.error());
         }
+        const runtime::ColorPipeline color = std::move(made_color).value();
         runtime::RendererOptions options;
         options.validation = a->validation;
         options.device_filter = a->device;
@@ -175,34 +160,30 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         options.trust_packs = a->trust;
         options.missing_variant =
             a->closest ? pack::MissingVariantPolicy::kClosest : pack::MissingVariantPolicy::kError;
-        runtime::Renderer renderer;
-        if (auto e = runtime::Renderer::Create(options, renderer)) {
-            return fail(*e);
+        Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+        if (!made) {
+            return fail(made.error());
         }
+        runtime::Renderer renderer = std::move(made).value();
         if (a->packs.empty()) {
             a->packs.push_back(DefaultPack());
         }
         for (const std::string& p : a->packs) {
-            if (auto e = renderer.AddPack(p)) {
-                return fail(*e);
+            if (Status added = renderer.AddPack(p); !added.ok()) {
+                return fail(added.error());
             }
         }
         runtime::LinearImage image;
         runtime::FrameStats stats;
-        auto error = renderer.Render(scene, a->frame, color, image, stats);
-        for (const std::string& w : warnings) {
-            diags.Warning(DiagCode::kRenderWarning, "", kNoPosition, w);
-        }
-        for (const std::string& w : stats.warnings) {
-            diags.Warning(DiagCode::kRenderWarning, "", kNoPosition, w);
-        }
+        const Status rendered = renderer.Render(scene, a->frame, color, image, stats);
+        diags.Append(stats.warnings);
         if (!a->usage.empty()) {
-            if (auto e = renderer.WriteUsage(a->usage)) {
-                return fail(*e);
+            if (Status written = renderer.WriteUsage(a->usage); !written.ok()) {
+                return fail(written.error());
             }
         }
-        if (error) {
-            return fail(*error);
+        if (!rendered.ok()) {
+            return fail(rendered.error());
         }
         const std::vector<std::string> messages = renderer.ValidationMessages();
         for (const std::string& m : messages) {
@@ -211,12 +192,12 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         if (!messages.empty())
             return finish(int(kExitInputError));  // no image from a render the layer rejected
         if (!a->exr.empty()) {
-            if (auto e = runtime::WriteExr(a->exr, image)) {
-                return fail(*e, a->exr);
+            if (Status written = runtime::WriteExr(a->exr, image); !written.ok()) {
+                return fail(written.error(), a->exr);
             }
         }
-        if (auto e = runtime::WriteDisplayPng(a->output, image, color)) {
-            return fail(*e, a->output);
+        if (Status written = runtime::WriteDisplayPng(a->output, image, color); !written.ok()) {
+            return fail(written.error(), a->output);
         }
         std::printf(
             "%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes, %u "

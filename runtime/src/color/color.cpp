@@ -69,7 +69,7 @@ ColorPipeline::~ColorPipeline() = default;
 ColorPipeline::ColorPipeline(ColorPipeline&&) noexcept = default;
 ColorPipeline& ColorPipeline::operator=(ColorPipeline&&) noexcept = default;
 
-std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPipeline& out) {
+Result<ColorPipeline> ColorPipeline::Create(const ColorOptions& options) {
     auto impl = std::make_unique<Impl>();
     std::string description;
     try {
@@ -84,9 +84,8 @@ std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPip
         // OpenColorIO reads the file itself: a FIFO or device must not get that far.
         if (const std::string kind = path.empty() ? "" : base::NotRegularFileKind(path);
             !kind.empty()) {
-            return Error{
-                "the OpenColorIO config '" + path + "' is " + kind + ", not a regular file",
-                ErrorKind::kColor};
+            return Error{DiagCode::kBadColorConfig, "the OpenColorIO config '" + path + "' is " +
+                                                        kind + ", not a regular file"};
         }
         OCIO::ConstConfigRcPtr config =
             path.empty() ? builtin : OCIO::Config::CreateFromFile(path.c_str());
@@ -96,11 +95,11 @@ std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPip
         for (int i = 0; i < config->getNumDisplays(); ++i)
             displays.emplace_back(config->getDisplay(i));
         if (std::find(displays.begin(), displays.end(), display) == displays.end()) {
-            return Error{"display '" + display + "' is not in the OpenColorIO config" +
+            return Error{DiagCode::kBadColorConfig,
+                         "display '" + display + "' is not in the OpenColorIO config" +
                              (path.empty() ? std::string(" (built-in)") : " '" + path + "'") +
-                             pack::DidYouMean(display, displays) + " (displays: " +
-                             JoinNames(displays) + ")",
-                         ErrorKind::kColor};
+                             pack::DidYouMean(display, displays) +
+                             " (displays: " + JoinNames(displays) + ")"};
         }
         const std::string view =
             options.view.empty() ? config->getDefaultView(display.c_str()) : options.view;
@@ -108,10 +107,9 @@ std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPip
         for (int i = 0; i < config->getNumViews(display.c_str()); ++i)
             views.emplace_back(config->getView(display.c_str(), i));
         if (std::find(views.begin(), views.end(), view) == views.end()) {
-            return Error{"view '" + view + "' is not a view of display '" + display + "'" +
-                             pack::DidYouMean(view, views) + " (views: " + JoinNames(views) +
-                             ")",
-                         ErrorKind::kColor};
+            return Error{DiagCode::kBadColorConfig,
+                         "view '" + view + "' is not a view of display '" + display + "'" +
+                             pack::DidYouMean(view, views) + " (views: " + JoinNames(views) + ")"};
         }
         impl->display = config
                             ->getProcessor(OCIO::ROLE_SCENE_LINEAR, display.c_str(), view.c_str(),
@@ -120,16 +118,17 @@ std::optional<Error> ColorPipeline::Create(const ColorOptions& options, ColorPip
         description = (path.empty() ? std::string("built-in config") : "config '" + path + "'") +
                       ", display '" + display + "', view '" + view + "'";
     } catch (const OCIO::Exception& e) {
-        return Error{std::string("opencolorio: ") + e.what(), ErrorKind::kColor};
+        return Error{DiagCode::kBadColorConfig, std::string("opencolorio: ") + e.what()};
     }
     if (!std::isfinite(options.exposure) || std::fabs(options.exposure) > 64) {
-        return Error{"exposure must be a finite number of stops within [-64, 64]",
-                     ErrorKind::kColor};
+        return Error{DiagCode::kBadColorConfig,
+                     "exposure must be a finite number of stops within [-64, 64]"};
     }
     impl->exposure_scale = std::exp2(options.exposure);
+    ColorPipeline out;
     out.impl_ = std::move(impl);
     out.description_ = std::move(description);
-    return std::nullopt;
+    return out;
 }
 
 void ColorPipeline::SrgbToLinear(float rgb[3], bool hdr) const {

@@ -31,12 +31,12 @@ void Attribute(pack::ByteWriter& w,
 
 }  // namespace
 
-std::optional<Error> WritePng(const std::string& path,
-                              uint32_t width,
-                              uint32_t height,
-                              const std::vector<uint8_t>& rgba8) {
+Status WritePng(const std::string& path,
+                uint32_t width,
+                uint32_t height,
+                const std::vector<uint8_t>& rgba8) {
     if (width == 0 || height == 0 || rgba8.size() != size_t{width} * height * 4) {
-        return Error{"image data does not match its size"};
+        return Error{DiagCode::kRenderFailed, "image data does not match its size"};
     }
     std::vector<uint8_t> png;
     auto append = [](void* context, void* data, int size) {
@@ -46,17 +46,17 @@ std::optional<Error> WritePng(const std::string& path,
     };
     if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, rgba8.data(),
                                 int(width * 4))) {
-        return Error{"cannot encode '" + path + "' as PNG"};
+        return Error{DiagCode::kCannotWriteFile, "cannot encode '" + path + "' as PNG"};
     }
-    if (const Result<bool> written = base::WriteFileAtomically(path, png); !written) {
-        return Error{written.error().message};
+    if (const Status written = base::WriteFileAtomically(path, png); !written.ok()) {
+        return written.error();
     }
-    return std::nullopt;
+    return {};
 }
 
-std::optional<Error> WriteDisplayPng(const std::string& path,
-                                     const LinearImage& image,
-                                     const ColorPipeline& color) {
+Status WriteDisplayPng(const std::string& path,
+                       const LinearImage& image,
+                       const ColorPipeline& color) {
     std::vector<float> display = image.rgba;
     color.ApplyDisplay(display);
     std::vector<uint8_t> rgba8 = ColorPipeline::Quantize(display);
@@ -66,10 +66,10 @@ std::optional<Error> WriteDisplayPng(const std::string& path,
     return WritePng(path, image.width, image.height, rgba8);
 }
 
-std::optional<Error> WriteExr(const std::string& path, const LinearImage& image) {
+Status WriteExr(const std::string& path, const LinearImage& image) {
     const uint32_t w = image.width, h = image.height;
     if (w == 0 || h == 0 || image.rgba.size() != size_t{w} * h * 4) {
-        return Error{"image data does not match its size"};
+        return Error{DiagCode::kRenderFailed, "image data does not match its size"};
     }
     pack::ByteWriter out;
     out.Put(uint32_t{20000630});  // magic 76 2f 31 01
@@ -117,10 +117,10 @@ std::optional<Error> WriteExr(const std::string& path, const LinearImage& image)
             }
         }
     }
-    if (const Result<bool> written = base::WriteFileAtomically(path, out.bytes()); !written) {
-        return Error{written.error().message};
+    if (const Status written = base::WriteFileAtomically(path, out.bytes()); !written.ok()) {
+        return written.error();
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::runtime

@@ -11,14 +11,12 @@ struct State {
     size_t at = 0;
     uint32_t line = 1;
     size_t line_start = 0;
-    MaterialIssue* error = nullptr;
+    JsonError* error = nullptr;
 
     TextPos Pos() const {
         return TextPos{static_cast<uint32_t>(at), line, static_cast<uint32_t>(at - line_start + 1)};
     }
     bool Fail(const std::string& message) {
-        error->severity = IssueSeverity::kError;
-        error->code = IssueCode::kJsonSyntax;
         error->pos = Pos();
         error->message = message;
         return false;
@@ -240,7 +238,7 @@ const char* JsonKindName(JsonValue::Kind kind) {
     return "a value";
 }
 
-bool ParseJson(std::string_view text, JsonValue& out, MaterialIssue& error) {
+bool ParseJson(std::string_view text, JsonValue& out, JsonError& error) {
     State s;
     s.text = text;
     s.error = &error;

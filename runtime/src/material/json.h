@@ -29,8 +29,13 @@ const char* JsonKindName(JsonValue::Kind kind);
 
 inline constexpr size_t kMaxJsonDepth = 64;
 
+struct JsonError {
+    TextPos pos;
+    std::string message;
+};
+
 // Parses `text` into `out`; on failure returns false and sets `error` (position + message).
-bool ParseJson(std::string_view text, JsonValue& out, MaterialIssue& error);
+bool ParseJson(std::string_view text, JsonValue& out, JsonError& error);
 
 }  // namespace kiln::material
 

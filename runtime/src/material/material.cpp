@@ -8,6 +8,7 @@
 
 #include "kiln/pack/names.h"
 #include "kiln/pack/render_state.h"
+#include "material/issue.h"
 #include "material/json.h"
 
 namespace kiln::material {
@@ -16,11 +17,12 @@ namespace {
 using Kind = JsonValue::Kind;
 
 struct State {
-    std::vector<MaterialIssue>* issues;
+    DiagnosticList* diags;
+    const std::string* file;
     bool ok = true;
 
-    void Error(IssueCode code, TextPos pos, std::string message, std::string note = "") {
-        issues->push_back({IssueSeverity::kError, code, pos, std::move(message), std::move(note)});
+    void Error(DiagCode code, TextPos pos, std::string message, std::string note = "") {
+        AddIssue(*diags, *file, Severity::kError, code, pos, std::move(message), std::move(note));
         ok = false;
     }
 };
@@ -65,11 +67,11 @@ void ParseTexture(State& s, const JsonValue& v, PropertyValue& p) {
         } else if ((key == "scale" || key == "offset") && NumberArray(item, 2, 2, pair)) {
             (key == "scale" ? p.scale : p.offset) = {pair[0], pair[1]};
         } else if (key == "path" || key == "scale" || key == "offset") {
-            s.Error(IssueCode::kFieldType, item.pos,
+            s.Error(DiagCode::kMaterialFieldType, item.pos,
                     "texture field '" + key + "' must be " +
                         (key == "path" ? "a string" : "an array of two numbers"));
         } else {
-            s.Error(IssueCode::kUnknownField, pos, "unknown texture field '" + key + "'",
+            s.Error(DiagCode::kMaterialUnknownField, pos, "unknown texture field '" + key + "'",
                     "texture fields are path, scale and offset");
         }
     }
@@ -81,7 +83,7 @@ void ParseProperties(State& s, const JsonValue& v, Material& m) {
         const auto& [name, pos] = v.keys[i];
         const JsonValue& item = v.items[i];
         if (!seen.insert(name).second) {
-            s.Error(IssueCode::kDuplicate, pos, "property '" + name + "' is set twice");
+            s.Error(DiagCode::kMaterialDuplicate, pos, "property '" + name + "' is set twice");
             continue;
         }
         PropertyValue p;
@@ -92,7 +94,7 @@ void ParseProperties(State& s, const JsonValue& v, Material& m) {
         } else if (item.kind == Kind::kString || item.kind == Kind::kObject) {
             ParseTexture(s, item, p);
         } else if (!NumberArray(item, 1, 4, p.numbers)) {
-            s.Error(IssueCode::kFieldType, item.pos,
+            s.Error(DiagCode::kMaterialFieldType, item.pos,
                     "property '" + name +
                         "' must be a number, an array of 1 to 4 numbers, or a texture");
             continue;
@@ -105,9 +107,9 @@ void ParseKeywords(State& s, const JsonValue& v, Material& m) {
     std::set<std::string> seen;
     for (const JsonValue& item : v.items) {
         if (item.kind != Kind::kString) {
-            s.Error(IssueCode::kFieldType, item.pos, "a keyword must be a string");
+            s.Error(DiagCode::kMaterialFieldType, item.pos, "a keyword must be a string");
         } else if (!seen.insert(item.string).second) {
-            s.Error(IssueCode::kDuplicate, item.pos,
+            s.Error(DiagCode::kMaterialDuplicate, item.pos,
                     "keyword '" + item.string + "' is listed twice");
         } else {
             m.keywords.push_back({item.string, item.pos});
@@ -143,7 +145,7 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
             const std::optional<uint32_t> mask =
                 item.kind == Kind::kString ? pack::ParseColorMask(item.string) : std::nullopt;
             if (!mask) {
-                s.Error(IssueCode::kRenderState, item.pos,
+                s.Error(DiagCode::kMaterialRenderState, item.pos,
                         "ColorMask must be \"0\" or a combination of R, G, B and A such as "
                         "\"RGB\"");
                 continue;
@@ -156,7 +158,7 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
         if (!set) {
             const std::vector<std::string> fields = Names(pack::OverridableStateFields());
             const std::string near = ClosestName(key, fields);
-            s.Error(IssueCode::kRenderState, pos, "unknown render-state field '" + key + "'",
+            s.Error(DiagCode::kMaterialRenderState, pos, "unknown render-state field '" + key + "'",
                     near.empty() ? "overridable: " + Join(fields) : "did you mean '" + near + "'");
             continue;
         }
@@ -168,7 +170,7 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
             for (const JsonValue& f : item.items)
                 values.push_back(&f);
         } else {
-            s.Error(IssueCode::kRenderState, item.pos,
+            s.Error(DiagCode::kMaterialRenderState, item.pos,
                     key == "Blend" ? "Blend must be \"Off\" or an array of 2 or 4 blend factors"
                                    : key + " must be a string");
             continue;
@@ -185,7 +187,7 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
             if (!value) {
                 const std::string near =
                     f->kind == Kind::kString ? ClosestName(f->string, Names(names)) : "";
-                s.Error(IssueCode::kRenderState, f->pos,
+                s.Error(DiagCode::kMaterialRenderState, f->pos,
                         "invalid " + key + " value" +
                             (f->kind == Kind::kString ? " '" + f->string + "'" : ""),
                         near.empty() ? "allowed: " + Join(Names(names)) +
@@ -195,7 +197,7 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
             o.values.push_back(value ? std::string(names[*value]) : std::string());
         }
         if (key == "Blend" && values.size() == 1) {
-            s.Error(IssueCode::kRenderState, item.pos,
+            s.Error(DiagCode::kMaterialRenderState, item.pos,
                     "Blend needs a source and a destination factor, e.g. [\"One\", \"One\"]");
         }
         m.render_state.push_back(std::move(o));
@@ -204,16 +206,21 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
 
 }  // namespace
 
-bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIssue>& issues) {
-    State s{&issues};
+bool ParseMaterial(std::string_view text,
+                   const std::string& file,
+                   Material& out,
+                   DiagnosticList& diags) {
+    State s{&diags, &file};
+    out.file = file;
     JsonValue root;
-    MaterialIssue error;
+    JsonError error;
     if (!ParseJson(text, root, error)) {
-        issues.push_back(error);
+        AddIssue(diags, file, Severity::kError, DiagCode::kMaterialJsonSyntax, error.pos,
+                 error.message);
         return false;
     }
     if (root.kind != Kind::kObject) {
-        s.Error(IssueCode::kFieldType, root.pos,
+        s.Error(DiagCode::kMaterialFieldType, root.pos,
                 std::string("a material must be a JSON object, not ") + JsonKindName(root.kind));
         return false;
     }
@@ -231,16 +238,16 @@ bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIss
             for (const auto& [name, kind] : kFields)
                 names.push_back(name);
             const std::string near = ClosestName(key, names);
-            s.Error(IssueCode::kUnknownField, pos, "unknown material field '" + key + "'",
+            s.Error(DiagCode::kMaterialUnknownField, pos, "unknown material field '" + key + "'",
                     near.empty() ? "fields: " + Join(names) : "did you mean '" + near + "'");
             continue;
         }
         if (!seen.insert(key).second) {
-            s.Error(IssueCode::kDuplicate, pos, "field '" + key + "' appears twice");
+            s.Error(DiagCode::kMaterialDuplicate, pos, "field '" + key + "' appears twice");
             continue;
         }
         if (item.kind != field->second) {
-            s.Error(IssueCode::kFieldType, item.pos,
+            s.Error(DiagCode::kMaterialFieldType, item.pos,
                     "'" + key + "' must be " + JsonKindName(field->second) + ", not " +
                         JsonKindName(item.kind));
             continue;
@@ -249,7 +256,7 @@ bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIss
             // only convert what fits an int (a huge double -> int is undefined behaviour)
             out.version = std::abs(item.number) < 1e6 ? static_cast<int>(item.number) : -1;
             if (item.number != kFormatVersion) {
-                s.Error(IssueCode::kUnsupportedVersion, item.pos,
+                s.Error(DiagCode::kMaterialUnsupportedVersion, item.pos,
                         "unsupported material format version", "this build reads version 1");
             }
         } else if (key == "shader") {
@@ -264,7 +271,7 @@ bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIss
         }
     }
     if (!seen.count("shader"))
-        s.Error(IssueCode::kMissingField, root.pos, "material has no \"shader\" field");
+        s.Error(DiagCode::kMaterialMissingField, root.pos, "material has no \"shader\" field");
     return s.ok;
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "material/issue.h"
 #include "material/keywords.h"
 
 namespace kiln::material {
@@ -16,16 +17,17 @@ using pack::PropertyType;
 
 struct State {
     const pack::Pack& pack;
-    std::vector<MaterialIssue>& issues;
+    DiagnosticList& diags;
+    const std::string& file;
     bool ok = true;
 
-    void Add(IssueSeverity severity,
-             IssueCode code,
+    void Add(Severity severity,
+             DiagCode code,
              TextPos pos,
              std::string message,
              std::string note = "") {
-        issues.push_back({severity, code, pos, std::move(message), std::move(note)});
-        ok = ok && severity != IssueSeverity::kError;
+        AddIssue(diags, file, severity, code, pos, std::move(message), std::move(note));
+        ok = ok && severity != Severity::kError;
     }
 };
 
@@ -45,48 +47,48 @@ void CheckProperty(State& s,
     const size_t n = v.numbers.size();
     if (pack::IsTextureProperty(type)) {
         if (!texture) {
-            s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+            s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
                   what + " texture, not a number",
                   "write a path string or {\"path\": ..., \"scale\": [x, y], \"offset\": [x, y]}");
         } else if (!v.texture.empty() && !material_dir.empty() &&
                    !std::filesystem::exists(std::filesystem::path(material_dir) / v.texture)) {
-            s.Add(IssueSeverity::kWarning, IssueCode::kTextureNotFound, v.pos,
+            s.Add(Severity::kWarning, DiagCode::kMaterialTextureNotFound, v.pos,
                   "texture '" + v.texture + "' of property '" + v.name +
                       "' not found beside the material");
         }
         return;
     }
     if (texture) {
-        s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+        s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
               what + ", not a texture");
         return;
     }
     switch (type) {
         case PropertyType::kColor:
             if (n < 3)
-                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
                       what + ": give 3 or 4 numbers (r, g, b[, a])");
             return;
         case PropertyType::kVector:
             if (n < 2)
-                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
                       what + ": give 2 to 4 numbers");
             return;
         case PropertyType::kInt:
         case PropertyType::kInteger:
             if (n != 1 || std::trunc(v.numbers[0]) != v.numbers[0])
-                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
                       what + ": give one whole number");
             return;
         case PropertyType::kFloat:
         case PropertyType::kRange:
             if (n != 1) {
-                s.Add(IssueSeverity::kError, IssueCode::kPropertyValueType, v.pos,
+                s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
                       what + ": give one number");
             } else if (type == PropertyType::kRange &&
                        (v.numbers[0] < rec.range_min || v.numbers[0] > rec.range_max)) {
                 s.Add(
-                    IssueSeverity::kError, IssueCode::kOutOfRange, v.pos,
+                    Severity::kError, DiagCode::kMaterialOutOfRange, v.pos,
                     "value " + Number(v.numbers[0]) + " of property '" + v.name +
                         "' is outside its range",
                     "declared Range(" + Number(rec.range_min) + ", " + Number(rec.range_max) + ")");
@@ -126,7 +128,7 @@ void CheckKeywords(State& s, const Material& m, const pack::ShaderRec& shader) {
         const auto it = declared.find(k.name);
         if (it == declared.end()) {
             const std::string near = ClosestName(k.name, names);
-            s.Add(IssueSeverity::kError, IssueCode::kUnknownKeyword, k.pos,
+            s.Add(Severity::kError, DiagCode::kMaterialUnknownKeyword, k.pos,
                   "keyword '" + k.name + "' is not declared by shader '" + m.shader + "'",
                   near.empty() ? "" : "did you mean '" + near + "'");
             continue;
@@ -136,14 +138,14 @@ void CheckKeywords(State& s, const Material& m, const pack::ShaderRec& shader) {
             all_multi_compile = all_multi_compile && use.multi_compile;
             const auto [owner, inserted] = set_owner.emplace(use.set, &k);
             if (!inserted && owner->second->name != k.name) {
-                s.Add(IssueSeverity::kError, IssueCode::kConflictingKeywords, k.pos,
+                s.Add(Severity::kError, DiagCode::kMaterialConflictingKeywords, k.pos,
                       "keywords '" + owner->second->name + "' and '" + k.name +
                           "' are alternatives of one keyword set",
                       "enable at most one keyword of each set");
             }
         }
         if (all_multi_compile) {
-            s.Add(IssueSeverity::kWarning, IssueCode::kEngineKeyword, k.pos,
+            s.Add(Severity::kWarning, DiagCode::kMaterialEngineKeyword, k.pos,
                   "keyword '" + k.name +
                       "' is a multi_compile keyword the renderer chooses per draw; the material "
                       "setting is ignored");
@@ -160,7 +162,7 @@ void CheckSwitches(State& s, const Material& m, uint32_t shader) {
             if (k.name == sw.enabled ||
                 std::find(driven.begin(), driven.end(), k.name) == driven.end())
                 continue;
-            s.Add(IssueSeverity::kWarning, IssueCode::kKeywordContradictsProperty, k.pos,
+            s.Add(Severity::kWarning, DiagCode::kMaterialKeywordContradictsProperty, k.pos,
                   "keyword '" + k.name + "' is listed, but property '" + sw.property +
                       "' = " + Number(sw.value) +
                       (sw.enabled.empty() ? " turns it off" : " selects '" + sw.enabled + "'") +
@@ -175,15 +177,15 @@ void CheckSwitches(State& s, const Material& m, uint32_t shader) {
 bool ValidateMaterial(const Material& m,
                       const pack::Pack& pack,
                       const std::string& material_dir,
-                      std::vector<MaterialIssue>& issues) {
-    State s{pack, issues};
+                      DiagnosticList& diags) {
+    State s{pack, diags, m.file};
     const auto shader_index = pack.FindShader(m.shader);
     if (!shader_index) {
         std::vector<std::string> names;
         for (uint32_t i = 0; i < pack.Count(pack::SectionTag::kShaders); ++i)
             names.emplace_back(pack.String(pack.Shader(i).value().name));
         const std::string near = ClosestName(m.shader, names);
-        s.Add(IssueSeverity::kError, IssueCode::kUnknownShader, m.shader_pos,
+        s.Add(Severity::kError, DiagCode::kMaterialUnknownShader, m.shader_pos,
               "no shader '" + m.shader + "' in the pack",
               near.empty() ? "" : "did you mean '" + near + "'");
         return false;
@@ -202,7 +204,7 @@ bool ValidateMaterial(const Material& m,
         const auto it = props.find(v.name);
         if (it == props.end()) {
             const std::string near = ClosestName(v.name, names);
-            s.Add(IssueSeverity::kError, IssueCode::kUnknownProperty, v.pos,
+            s.Add(Severity::kError, DiagCode::kMaterialUnknownProperty, v.pos,
                   "shader '" + m.shader + "' has no property '" + v.name + "'",
                   near.empty() ? "" : "did you mean '" + near + "'");
             continue;

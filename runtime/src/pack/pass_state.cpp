@@ -229,8 +229,9 @@ Result<PassState> ResolvePassState(const Pack& pack,
                                    const PropertyLookup& properties,
                                    std::span<const StateOverride> overrides) {
     if (pass >= pack.Count(SectionTag::kPasses)) {
-        return Error{"pass index " + std::to_string(pass) + " is out of range (the pack has " +
-                     std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
+        return Error{DiagCode::kIndexOutOfRange,
+                     "pass index " + std::to_string(pass) + " is out of range (the pack has " +
+                         std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
     }
     Resolver r;
     PassState s;
@@ -261,7 +262,7 @@ Result<PassState> ResolvePassState(const Pack& pack,
         r.Override(s, o);
     }
     if (r.error) {
-        return Error{*r.error};
+        return Error{DiagCode::kMaterialRenderState, *r.error};
     }
     return s;
 }

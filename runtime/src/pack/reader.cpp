@@ -79,8 +79,8 @@ std::string TagName(uint32_t tag) {
     return s;
 }
 
-PackError Corrupt(std::string message) {
-    return PackError{PackErrorCode::kCorrupt, std::move(message)};
+Error Corrupt(std::string message) {
+    return Error{DiagCode::kBadPack, std::move(message)};
 }
 
 bool RangeOk(uint32_t first, uint32_t count, uint32_t total) {
@@ -88,24 +88,6 @@ bool RangeOk(uint32_t first, uint32_t count, uint32_t total) {
 }
 
 }  // namespace
-
-const char* PackErrorCodeName(PackErrorCode code) {
-    switch (code) {
-        case PackErrorCode::kIo:
-            return "io";
-        case PackErrorCode::kTruncated:
-            return "truncated";
-        case PackErrorCode::kNotAPack:
-            return "not-a-pack";
-        case PackErrorCode::kUnsupportedVersion:
-            return "unsupported-version";
-        case PackErrorCode::kChecksumMismatch:
-            return "checksum-mismatch";
-        case PackErrorCode::kCorrupt:
-            return "corrupt";
-    }
-    return "corrupt";
-}
 
 MappedFile::MappedFile(MappedFile&& other) noexcept
     : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)) {}
@@ -125,30 +107,32 @@ MappedFile::~MappedFile() {
     }
 }
 
-std::optional<PackError> MappedFile::Map(const std::string& path, MappedFile& out) {
+Result<MappedFile> MappedFile::Map(const std::string& path) {
     // O_NONBLOCK: opening a FIFO must not wait for a writer (fstat then refuses it).
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) {
-        return PackError{PackErrorCode::kIo, "cannot open '" + path + "': " + std::strerror(errno)};
+        return Error{DiagCode::kCannotReadFile,
+                     "cannot open '" + path + "': " + std::strerror(errno)};
     }
     struct stat st {};
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         close(fd);
-        return PackError{PackErrorCode::kIo, "'" + path + "' is not a regular file"};
+        return Error{DiagCode::kCannotReadFile, "'" + path + "' is not a regular file"};
     }
-    out = MappedFile();
+    MappedFile out;
     if (st.st_size == 0) {
         close(fd);
-        return std::nullopt;  // an empty mapping; Pack::Open reports it as truncated
+        return out;  // an empty mapping; Pack::Open reports it as truncated
     }
     void* p = mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
     close(fd);
     if (p == MAP_FAILED) {
-        return PackError{PackErrorCode::kIo, "cannot map '" + path + "': " + std::strerror(errno)};
+        return Error{DiagCode::kCannotReadFile,
+                     "cannot map '" + path + "': " + std::strerror(errno)};
     }
     out.data_ = static_cast<const uint8_t*>(p);
     out.size_ = static_cast<size_t>(st.st_size);
-    return std::nullopt;
+    return out;
 }
 
 size_t Pack::Index(SectionTag tag) {
@@ -176,8 +160,9 @@ Result<std::string_view> Pack::Keyword(uint32_t i) const {
 Error Pack::OutOfRange(SectionTag tag, uint32_t index) const {
     const uint32_t t = uint32_t(tag);
     const std::string name{char(t), char(t >> 8), char(t >> 16), char(t >> 24)};
-    return Error{"record " + std::to_string(index) + " of section " + name +
-                 " is out of range (the pack has " + std::to_string(Count(tag)) + ")"};
+    return Error{DiagCode::kIndexOutOfRange, "record " + std::to_string(index) + " of section " +
+                                                 name + " is out of range (the pack has " +
+                                                 std::to_string(Count(tag)) + ")"};
 }
 
 std::span<const uint32_t> Pack::SpirvWords(const ModuleRec& module) const {
@@ -196,28 +181,26 @@ std::span<const uint8_t> Pack::Spirv(const ModuleRec& module) const {
     return bytes_.subspan(s.offset + module.spirv_offset, module.spirv_size);
 }
 
-std::optional<PackError> Pack::Open(std::span<const uint8_t> bytes, Pack& out) {
-    out = Pack();
+Result<Pack> Pack::Open(std::span<const uint8_t> bytes) {
     if (bytes.size() < kHeaderSize) {
-        return PackError{PackErrorCode::kTruncated,
-                         "file is " + std::to_string(bytes.size()) +
-                             " bytes, shorter than a pack header (32 bytes)"};
+        return Error{DiagCode::kPackTruncated, "file is " + std::to_string(bytes.size()) +
+                                                   " bytes, shorter than a pack header (32 bytes)"};
     }
     ByteReader hr(bytes.first(kHeaderSize));
     const Header h = hr.Record<Header>();
     if (h.magic != kMagic) {
-        return PackError{PackErrorCode::kNotAPack, "not a kiln pack (bad magic)"};
+        return Error{DiagCode::kNotAPack, "not a kiln pack (bad magic)"};
     }
     if (h.format_major != kFormatMajor) {
-        return PackError{PackErrorCode::kUnsupportedVersion,
-                         "pack format " + std::to_string(h.format_major) + "." +
-                             std::to_string(h.format_minor) + " is not supported (reader knows " +
-                             std::to_string(kFormatMajor) + ".x)"};
+        return Error{DiagCode::kPackVersion, "pack format " + std::to_string(h.format_major) + "." +
+                                                 std::to_string(h.format_minor) +
+                                                 " is not supported (reader knows " +
+                                                 std::to_string(kFormatMajor) + ".x)"};
     }
     if (h.file_size > bytes.size()) {
-        return PackError{PackErrorCode::kTruncated,
-                         "pack is truncated: header says " + std::to_string(h.file_size) +
-                             " bytes, file has " + std::to_string(bytes.size())};
+        return Error{DiagCode::kPackTruncated,
+                     "pack is truncated: header says " + std::to_string(h.file_size) +
+                         " bytes, file has " + std::to_string(bytes.size())};
     }
     if (h.file_size < bytes.size()) {
         return Corrupt("pack has " + std::to_string(bytes.size() - h.file_size) +
@@ -236,15 +219,18 @@ std::optional<PackError> Pack::Open(std::span<const uint8_t> bytes, Pack& out) {
     const uint64_t sum = XXH64_digest(state);
     XXH64_freeState(state);
     if (sum != h.checksum) {
-        return PackError{PackErrorCode::kChecksumMismatch,
-                         "pack checksum does not match its contents (file corrupted)"};
+        return Error{DiagCode::kPackChecksum,
+                     "pack checksum does not match its contents (file corrupted)"};
     }
+    Pack out;
     out.bytes_ = bytes;
     out.header_ = h;
-    return out.Validate();
+    if (Status valid = out.Validate(); !valid.ok())
+        return valid.error();
+    return out;
 }
 
-std::optional<PackError> Pack::Validate() {
+Status Pack::Validate() {
     const uint64_t size = bytes_.size();
     if (header_.section_count > kMaxSections ||
         kHeaderSize + uint64_t{header_.section_count} * kSectionEntrySize > size) {
@@ -398,7 +384,7 @@ std::optional<PackError> Pack::Validate() {
         if (!str_ok(Record<ResourceRec>(SectionTag::kResources, i).name))
             return fail("RSRC", i);
     }
-    return std::nullopt;
+    return {};
 }
 
 std::optional<uint32_t> Pack::FindShader(std::string_view name) const {
@@ -472,10 +458,9 @@ VariantKey Pack::KeyFor(uint32_t pass, const std::vector<std::string>& enabled) 
     return key;
 }
 
-std::optional<std::string> Pack::CheckKeywords(uint32_t pass,
-                                               const std::vector<std::string>& enabled) const {
+Status Pack::CheckKeywords(uint32_t pass, const std::vector<std::string>& enabled) const {
     if (pass >= Count(SectionTag::kPasses))
-        return "no pass " + std::to_string(pass) + " in the pack";
+        return OutOfRange(SectionTag::kPasses, pass);
     std::vector<std::string> declared;
     const PassRec p = Record<PassRec>(SectionTag::kPasses, pass);
     for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
@@ -488,11 +473,12 @@ std::optional<std::string> Pack::CheckKeywords(uint32_t pass,
     }
     for (const std::string& name : enabled) {
         if (std::find(declared.begin(), declared.end(), name) == declared.end()) {
-            return "keyword '" + name + "' is not declared by the pass" +
-                   DidYouMean(name, declared);
+            return Error{
+                DiagCode::kUnknownKeyword,
+                "keyword '" + name + "' is not declared by the pass" + DidYouMean(name, declared)};
         }
     }
-    return std::nullopt;
+    return {};
 }
 
 std::vector<std::string> Pack::KeywordsOf(uint32_t pass, VariantKey key) const {

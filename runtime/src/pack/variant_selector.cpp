@@ -38,8 +38,9 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
                                               const std::vector<std::string>& keywords) {
     const Pack& pack = *pack_;
     if (pass >= pack.Count(SectionTag::kPasses)) {
-        return Error{"pass index " + std::to_string(pass) + " is out of range (the pack has " +
-                     std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
+        return Error{DiagCode::kIndexOutOfRange,
+                     "pass index " + std::to_string(pass) + " is out of range (the pack has " +
+                         std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
     }
     const VariantKey key = pack.KeyFor(pass, keywords);
     const PassRec p = pack.Pass(pass).value();
@@ -69,13 +70,14 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
     const std::string what = "shader '" + shader + "' pass '" + label +
                              "' has no variant for keywords '" + JoinKeywords(requested) + "'";
     if (ranked.empty()) {
-        return Error{what + " and no variants at all"};
+        return Error{DiagCode::kMissingVariant, what + " and no variants at all"};
     }
     if (policy_ == MissingVariantPolicy::kClosest) {
         return VariantChoice{ranked[0].second, false,
                              what + "; using the closest, " + closest.substr(0, closest.find(','))};
     }
-    return Error{what + " (stripped or never compiled); closest present: " + closest};
+    return Error{DiagCode::kMissingVariant,
+                 what + " (stripped or never compiled); closest present: " + closest};
 }
 
 std::vector<UsageEntry> UsageOf(const std::vector<const VariantSelector*>& selectors) {
@@ -109,13 +111,14 @@ std::string UsageFileText(const std::vector<UsageEntry>& entries) {
 Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text) {
     const nlohmann::json doc = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (doc.is_discarded() || !doc.is_object()) {
-        return Error{"a usage file must be a JSON object"};
+        return Error{DiagCode::kBadUsageFile, "a usage file must be a JSON object"};
     }
     if (!doc.contains("kiln_usage") || doc["kiln_usage"] != 1) {
-        return Error{"not a usage file of version 1 (no \"kiln_usage\": 1)"};
+        return Error{DiagCode::kBadUsageFile,
+                     "not a usage file of version 1 (no \"kiln_usage\": 1)"};
     }
     if (!doc.contains("lookups") || !doc["lookups"].is_array()) {
-        return Error{"a usage file needs a \"lookups\" array"};
+        return Error{DiagCode::kBadUsageFile, "a usage file needs a \"lookups\" array"};
     }
     std::vector<UsageEntry> out;
     for (const nlohmann::json& j : doc["lookups"]) {
@@ -123,24 +126,26 @@ Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text) {
         if (!j.is_object() || !j.contains("shader") || !j["shader"].is_string() ||
             !j.contains("pass") || !j["pass"].is_string() || !j.contains("keywords") ||
             !j["keywords"].is_array()) {
-            return Error{at + " needs \"shader\" and \"pass\" strings and a \"keywords\" array"};
+            return Error{DiagCode::kBadUsageFile,
+                         at + " needs \"shader\" and \"pass\" strings and a \"keywords\" array"};
         }
         UsageEntry e{j["shader"].get<std::string>(), j["pass"].get<std::string>(), {}, 0, true};
         for (const nlohmann::json& k : j["keywords"]) {
             if (!k.is_string()) {
-                return Error{at + ": a keyword must be a string"};
+                return Error{DiagCode::kBadUsageFile, at + ": a keyword must be a string"};
             }
             e.keywords.push_back(k.get<std::string>());
         }
         if (j.contains("count")) {
             if (!j["count"].is_number_unsigned()) {
-                return Error{at + ": \"count\" must be a non-negative integer"};
+                return Error{DiagCode::kBadUsageFile,
+                             at + ": \"count\" must be a non-negative integer"};
             }
             e.count = j["count"].get<uint64_t>();
         }
         if (j.contains("found")) {
             if (!j["found"].is_boolean()) {
-                return Error{at + ": \"found\" must be true or false"};
+                return Error{DiagCode::kBadUsageFile, at + ": \"found\" must be true or false"};
             }
             e.found = j["found"].get<bool>();
         }
@@ -149,7 +154,7 @@ Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text) {
     return out;
 }
 
-Result<bool> WriteUsageFile(const std::string& path, const std::vector<UsageEntry>& entries) {
+Status WriteUsageFile(const std::string& path, const std::vector<UsageEntry>& entries) {
     const std::string text = UsageFileText(entries);
     return base::WriteFileAtomically(path, std::string_view(text));
 }

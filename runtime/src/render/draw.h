@@ -24,11 +24,11 @@ struct Draw {
     std::vector<Write> writes;
 };
 
-std::optional<Error> RecordFrame(Renderer::State& s,
-                                 const FrameSettings& settings,
-                                 const std::vector<Draw>& draws,
-                                 const std::vector<uint8_t>& uniforms,
-                                 LinearImage& out);
+Status RecordFrame(Renderer::State& s,
+                   const FrameSettings& settings,
+                   const std::vector<Draw>& draws,
+                   const std::vector<uint8_t>& uniforms,
+                   LinearImage& out);
 
 }  // namespace kiln::runtime
 

@@ -57,23 +57,26 @@ struct Planner {
     std::vector<uint8_t> uniforms;
     VkDeviceSize alignment = 256;
 
-    void Warn(std::string w) {
-        if (std::find(stats.warnings.begin(), stats.warnings.end(), w) == stats.warnings.end()) {
-            stats.warnings.push_back(std::move(w));
+    // A warning about the scene, each once a frame.
+    void Warn(DiagCode code, std::string message) {
+        const auto& all = stats.warnings.all();
+        if (std::none_of(all.begin(), all.end(),
+                         [&](const Diagnostic& d) { return d.message == message; })) {
+            stats.warnings.Warning(code, scene.path, kNoPosition, std::move(message));
         }
     }
 
     // One draw of `pass` for a primitive, lit by `light` (and `vertex` lights in base passes).
-    std::optional<Error> Plan(const MaterialInstance& m,
-                              uint32_t pass,
-                              bool additive,
-                              const Light* light,
-                              const std::vector<const Light*>& vertex,
-                              const glm::mat4& world,
-                              const vk::Buffer& vb,
-                              const vk::Buffer& ib,
-                              uint32_t index_count,
-                              std::vector<Draw>& draws) {
+    Status Plan(const MaterialInstance& m,
+                uint32_t pass,
+                bool additive,
+                const Light* light,
+                const std::vector<const Light*>& vertex,
+                const glm::mat4& world,
+                const vk::Buffer& vb,
+                const vk::Buffer& ib,
+                uint32_t index_count,
+                std::vector<Draw>& draws) {
         LoadedPack& lp = *s.packs[m.pack];
         const pack::Pack& pack = lp.pack;
         std::vector<std::string> keywords = m.keywords;
@@ -93,11 +96,11 @@ struct Planner {
         }
         const Result<pack::VariantChoice> selected = lp.selector->Select(pass, keywords);
         if (!selected) {
-            return Error{m.name + ": " + selected.error().message, ErrorKind::kMissingVariant};
+            return Error{DiagCode::kMissingVariant, m.name + ": " + selected.error().message};
         }
         const pack::VariantChoice& choice = selected.value();
         if (!choice.exact) {
-            Warn(m.name + ": " + choice.warning);
+            Warn(DiagCode::kVariantFallback, m.name + ": " + choice.warning);
         }
         const std::vector<std::string> chosen =
             pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(choice.variant).value().key));
@@ -122,8 +125,10 @@ struct Planner {
             return it->second[0];
         };
         vk::RenderState state;
-        if (auto e = vk::ResolveRenderState(pack, pass, number, overrides, state)) {
-            return Error{m.name + ": pass '" + pack::PassLabel(pack, pass) + "': " + e->message};
+        if (Status e = vk::ResolveRenderState(pack, pass, number, overrides, state); !e.ok()) {
+            return Error{
+                DiagCode::kRenderFailed,
+                m.name + ": pass '" + pack::PassLabel(pack, pass) + "': " + e.error().message};
         }
         if (additive) {
             // The frame's alpha is coverage (docs/runtime.md): an additive pass adds light, and
@@ -132,12 +137,13 @@ struct Planner {
                 t.mask &= ~VkColorComponentFlags(VK_COLOR_COMPONENT_A_BIT);
         }
         Draw d;
-        if (auto e =
-                s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created)) {
-            return Error{"shader '" + std::string(pack.String(pack.Shader(m.shader).value().name)) +
+        if (Status e =
+                s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created);
+            !e.ok()) {
+            return Error{e.error().code,
+                         "shader '" + std::string(pack.String(pack.Shader(m.shader).value().name)) +
                              "' pass '" + pack::PassLabel(pack, pass) + "' variant '" +
-                             pack::JoinKeywords(chosen) + "': " + e->message,
-                         e->kind};
+                             pack::JoinKeywords(chosen) + "': " + e.error().message};
         }
         d.vertices = &vb;
         d.indices = &ib;
@@ -176,27 +182,30 @@ struct Planner {
                 }
                 if (kind == pack::ResourceKind::kStorageImage ||
                     kind == pack::ResourceKind::kStorageBuffer) {
-                    return Error{m.name + ": resource '" + name +
-                                 "' is a storage resource, which forward passes cannot bind"};
+                    return Error{DiagCode::kRenderFailed,
+                                 m.name + ": resource '" + name +
+                                     "' is a storage resource, which forward passes cannot bind"};
                 }
                 vk::ImageShape shape = vk::ImageShape::k2D;  // a lone sampler has none
                 if (kind != pack::ResourceKind::kSeparateSampler) {
                     const std::optional<vk::ImageShape> declared = render::ShapeOf(res);
                     if (!declared) {
-                        return Error{m.name + ": texture '" + name +
-                                     "' is 1D or a texel buffer, which the runtime cannot bind"};
+                        return Error{
+                            DiagCode::kRenderFailed,
+                            m.name + ": texture '" + name +
+                                "' is 1D or a texel buffer, which the runtime cannot bind"};
                     }
                     shape = *declared;
                 }
                 render::BoundTexture t;
                 auto it = m.textures.find(name);
-                if (auto e = textures.Get(
-                        it == m.textures.end() ? render::UnsetTexture(name) : it->second, shape,
-                        t)) {
+                if (Status e = textures.Get(
+                        it == m.textures.end() ? render::UnsetTexture(name) : it->second, shape, t);
+                    !e.ok()) {
                     return e;
                 }
                 if (!t.warning.empty()) {
-                    Warn(m.name + ": " + t.warning);
+                    Warn(DiagCode::kTextureFallback, m.name + ": " + t.warning);
                 }
                 material_extra[name + "_TexelSize"] = {
                     1.0f / float(t.width), 1.0f / float(t.height), float(t.width), float(t.height)};
@@ -239,7 +248,7 @@ struct Planner {
         }
         (additive ? stats.add_passes : stats.base_passes)++;
         draws.push_back(std::move(d));
-        return std::nullopt;
+        return {};
     }
 };
 
@@ -256,26 +265,26 @@ struct FrameBuffers {
     }
 };
 
-std::optional<Error> RenderForward(Renderer::State& s,
-                                   const Scene& scene,
-                                   const FrameSettings& settings,
-                                   const ColorPipeline& color,
-                                   LinearImage& out,
-                                   FrameStats& stats) {
+Status RenderForward(Renderer::State& s,
+                     const Scene& scene,
+                     const FrameSettings& settings,
+                     const ColorPipeline& color,
+                     LinearImage& out,
+                     FrameStats& stats) {
     if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
         settings.height > 16384) {
-        return Error{"image size must be between 1x1 and 16384x16384", ErrorKind::kScene};
+        return Error{DiagCode::kBadScene, "image size must be between 1x1 and 16384x16384"};
     }
     if (s.packs.empty()) {
-        return Error{"no variant pack loaded"};
+        return Error{DiagCode::kRenderFailed, "no variant pack loaded"};
     }
     if (scene.instances.empty()) {
-        return Error{(scene.path.empty() ? std::string("the scene") : scene.path) +
-                         ": nothing to draw (no node of the scene has a mesh)",
-                     ErrorKind::kScene};
+        return Error{DiagCode::kBadScene,
+                     (scene.path.empty() ? std::string("the scene") : scene.path) +
+                         ": nothing to draw (no node of the scene has a mesh)"};
     }
     render::CameraSetup camera;
-    if (auto e = render::ChooseCamera(scene, settings, camera)) {
+    if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok()) {
         return e;
     }
     stats.camera = camera.name;
@@ -283,11 +292,11 @@ std::optional<Error> RenderForward(Renderer::State& s,
     // Material instances, built on first use: a sidecar .material, else the glTF material on
     // Kiln/StandardMetallic. Index materials.size() is glTF's default material.
     std::vector<std::optional<MaterialInstance>> instances(scene.materials.size() + 1);
-    auto instance_for = [&](int index, const MaterialInstance*& m) -> std::optional<Error> {
+    auto instance_for = [&](int index, const MaterialInstance*& m) -> Status {
         const size_t slot = index < 0 ? scene.materials.size() : size_t(index);
         if (instances[slot]) {
             m = &*instances[slot];
-            return std::nullopt;
+            return {};
         }
         SceneMaterial gltf;
         gltf.name = "(default)";
@@ -297,7 +306,8 @@ std::optional<Error> RenderForward(Renderer::State& s,
         MaterialInstance inst;
         if (auto it = scene.material_files.find(gltf.name);
             index >= 0 && it != scene.material_files.end()) {
-            if (auto e = render::InstanceFromMaterialFile(s.PackList(), it->second, color, inst)) {
+            if (Status e = render::InstanceFromMaterialFile(s.PackList(), it->second, color, inst);
+                !e.ok()) {
                 return e;
             }
         } else {
@@ -309,15 +319,16 @@ std::optional<Error> RenderForward(Renderer::State& s,
                 }
             }
             if (!found) {
-                return Error{"glTF material '" + gltf.name +
-                             "' needs shader 'Kiln/StandardMetallic', which is in none of the "
-                             "loaded packs (add the shipped materials.kpack)"};
+                return Error{DiagCode::kRenderFailed,
+                             "glTF material '" + gltf.name +
+                                 "' needs shader 'Kiln/StandardMetallic', which is in none of the "
+                                 "loaded packs (add the shipped materials.kpack)"};
             }
             render::ApplyGltfMaterial(gltf, inst);
         }
         instances[slot] = std::move(inst);
         m = &*instances[slot];
-        return std::nullopt;
+        return {};
     };
 
     FrameBuffers gpu{s.context, {}};
@@ -334,9 +345,9 @@ std::optional<Error> RenderForward(Renderer::State& s,
         key.direction = glm::normalize(glm::vec3(-0.35f, -0.8f, -0.5f));
         key.intensity = 3.14159265f;  // pi lux: _LightColor0 = 1, Unity's default light
         scene_lights.push_back(key);
-        planner.Warn(
-            "the scene has no KHR_lights_punctual lights: lit by a default directional "
-            "light of pi lux (Unity's intensity 1) shining along (-0.35, -0.8, -0.5)");
+        planner.Warn(DiagCode::kDefaultLight,
+                     "the scene has no KHR_lights_punctual lights: lit by a default directional "
+                     "light of pi lux (Unity's intensity 1) shining along (-0.35, -0.8, -0.5)");
     }
     const Light* main = render::MainLight(scene_lights);
 
@@ -351,7 +362,7 @@ std::optional<Error> RenderForward(Renderer::State& s,
     for (const Instance& inst : scene.instances) {
         for (const Primitive& prim : scene.meshes[inst.mesh].primitives) {
             const MaterialInstance* m = nullptr;
-            if (auto e = instance_for(prim.material, m)) {
+            if (Status e = instance_for(prim.material, m); !e.ok()) {
                 return e;
             }
             glm::vec3 lo(std::numeric_limits<float>::max()), hi(-lo);
@@ -376,27 +387,30 @@ std::optional<Error> RenderForward(Renderer::State& s,
         const MaterialInstance& m = *item.material;
         const ShaderPasses passes = PassesOf(s.packs[m.pack]->pack, m.shader);
         if (passes.base.empty()) {
-            planner.Warn(m.name +
-                         ": the shader has no ForwardBase or untagged pass; objects "
-                         "using it are not drawn by the forward path");
+            planner.Warn(DiagCode::kPassNotDrawn,
+                         m.name +
+                             ": the shader has no ForwardBase or untagged pass; objects "
+                             "using it are not drawn by the forward path");
             continue;
         }
         auto& buffers = uploaded[item.primitive];
         if (!buffers.first) {
             const Primitive& p = *item.primitive;
             vk::Buffer& vb = gpu.buffers.emplace_back();
-            if (auto e =
+            if (Status e =
                     vk::CreateBufferWithData(s.context,
                                              {reinterpret_cast<const uint8_t*>(p.vertices.data()),
                                               p.vertices.size() * sizeof(MeshVertex)},
-                                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vb)) {
+                                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vb);
+                !e.ok()) {
                 return e;
             }
             vk::Buffer& ib = gpu.buffers.emplace_back();
-            if (auto e = vk::CreateBufferWithData(
+            if (Status e = vk::CreateBufferWithData(
                     s.context,
                     {reinterpret_cast<const uint8_t*>(p.indices.data()), p.indices.size() * 4},
-                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT, ib)) {
+                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT, ib);
+                !e.ok()) {
                 return e;
             }
             buffers = {&vb, &ib};
@@ -405,16 +419,18 @@ std::optional<Error> RenderForward(Renderer::State& s,
             render::LightsFor(scene_lights, main, item.center, item.radius, settings.pixel_lights);
         const uint32_t count = uint32_t(item.primitive->indices.size());
         for (uint32_t pass : passes.base) {
-            if (auto e =
+            if (Status e =
                     planner.Plan(m, pass, false, lights.main, lights.vertex, item.instance->world,
-                                 *buffers.first, *buffers.second, count, draws)) {
+                                 *buffers.first, *buffers.second, count, draws);
+                !e.ok()) {
                 return e;
             }
         }
         if (passes.add) {
             for (const Light* light : lights.pixel) {
-                if (auto e = planner.Plan(m, *passes.add, true, light, {}, item.instance->world,
-                                          *buffers.first, *buffers.second, count, draws)) {
+                if (Status e = planner.Plan(m, *passes.add, true, light, {}, item.instance->world,
+                                            *buffers.first, *buffers.second, count, draws);
+                    !e.ok()) {
                     return e;
                 }
             }

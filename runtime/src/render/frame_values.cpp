@@ -79,18 +79,17 @@ float Luminance(const glm::vec3& c) {
     return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
 }
 
-std::optional<runtime::Error> ChooseCamera(const runtime::Scene& scene,
-                                           const runtime::FrameSettings& settings,
-                                           CameraSetup& out) {
+Status ChooseCamera(const runtime::Scene& scene,
+                    const runtime::FrameSettings& settings,
+                    CameraSetup& out) {
     const float aspect = float(settings.width) / float(settings.height);
     using Settings = runtime::FrameSettings;
     if (settings.camera < Settings::kCameraAuto ||
         (settings.camera >= 0 && size_t(settings.camera) >= scene.cameras.size())) {
-        return runtime::Error{"camera " + std::to_string(settings.camera) +
-                                  " does not exist (the scene has " +
-                                  std::to_string(scene.cameras.size()) +
-                                  "; use an index from 0, or the automatic camera)",
-                              runtime::ErrorKind::kScene};
+        return Error{DiagCode::kBadScene, "camera " + std::to_string(settings.camera) +
+                                              " does not exist (the scene has " +
+                                              std::to_string(scene.cameras.size()) +
+                                              "; use an index from 0, or the automatic camera)"};
     }
     if (!scene.cameras.empty() && settings.camera != Settings::kCameraAuto) {
         const runtime::Camera& c = scene.cameras[size_t(std::max(settings.camera, 0))];
@@ -108,7 +107,7 @@ std::optional<runtime::Error> ChooseCamera(const runtime::Scene& scene,
             out.projection = glm::orthoRH_ZO(-c.xmag, c.xmag, -c.ymag, c.ymag, c.znear, far);
             out.zfar = far;
         }
-        return std::nullopt;
+        return {};
     }
     // No camera: frame the scene's bounds from the front, above and to the right.
     const auto [lo, hi] = runtime::SceneBounds(scene);
@@ -123,7 +122,7 @@ std::optional<runtime::Error> ChooseCamera(const runtime::Scene& scene,
     out.znear = std::max(distance - radius * 1.5f, distance * 0.01f);
     out.zfar = distance + radius * 2;
     out.projection = Perspective(yfov, aspect, out.znear, out.zfar);
-    return std::nullopt;
+    return {};
 }
 
 Values FrameValues(const runtime::Scene& scene,

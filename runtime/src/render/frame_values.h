@@ -25,9 +25,9 @@ struct CameraSetup {
     float znear = 0.05f, zfar = 0;  // 0: infinite
 };
 
-std::optional<runtime::Error> ChooseCamera(const runtime::Scene& scene,
-                                           const runtime::FrameSettings& settings,
-                                           CameraSetup& out);
+Status ChooseCamera(const runtime::Scene& scene,
+                    const runtime::FrameSettings& settings,
+                    CameraSetup& out);
 
 // UnityPerCamera, UnityPerFrame and UnityProbes (the scene's ambient as constant radiance).
 Values FrameValues(const runtime::Scene& scene,

@@ -91,30 +91,32 @@ void InstanceFromDefaults(const pack::Pack& pack,
     out = std::move(m);
 }
 
-std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
-                                                       const std::string& path,
-                                                       const runtime::ColorPipeline& color,
-                                                       MaterialInstance& out) {
+Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
+                                const std::string& path,
+                                const runtime::ColorPipeline& color,
+                                MaterialInstance& out) {
     Result<std::string> text = base::ReadRegularFile(path, runtime::kMaxSidecarBytes);
     if (!text) {
-        return runtime::Error{text.error().message};
+        return Error{DiagCode::kRenderFailed, text.error().message};
     }
     material::Material mat;
-    std::vector<material::MaterialIssue> issues;
-    auto first_error = [&]() -> std::optional<runtime::Error> {
-        for (const auto& issue : issues) {
-            if (issue.severity == material::IssueSeverity::kError) {
-                return runtime::Error{path + ":" + std::to_string(issue.pos.line) + ":" +
-                                      std::to_string(issue.pos.column) + ": " + issue.message};
+    DiagnosticList issues;
+    // The first error, with its code and position; warnings (a texture not found) are left to
+    // `kiln validate`.
+    auto first_error = [&]() -> Status {
+        for (const Diagnostic& d : issues.all()) {
+            if (d.severity >= Severity::kError) {
+                return Error{d.code, d.file + ":" + std::to_string(d.range.begin.line) + ":" +
+                                         std::to_string(d.range.begin.column) + ": " + d.message};
             }
         }
-        return std::nullopt;
+        return {};
     };
-    if (!material::ParseMaterial(text.value(), mat, issues)) {
-        if (auto e = first_error()) {
+    if (!material::ParseMaterial(text.value(), path, mat, issues)) {
+        if (Status e = first_error(); !e.ok()) {
             return e;
         }
-        return runtime::Error{path + ": not a valid material file"};
+        return Error{DiagCode::kRenderFailed, path + ": not a valid material file"};
     }
     // The first pack holding the shader wins (packs are searched in the order given).
     for (uint32_t pi = 0; pi < packs.size(); ++pi) {
@@ -124,9 +126,9 @@ std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const p
             continue;
         }
         const std::string dir = std::filesystem::path(path).parent_path().string();
-        issues.clear();
+        issues = DiagnosticList();
         material::ValidateMaterial(mat, pack, dir, issues);
-        if (auto e = first_error()) {
+        if (Status e = first_error(); !e.ok()) {
             return e;
         }
         MaterialInstance m;
@@ -163,11 +165,11 @@ std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const p
             m.overrides.push_back({o.field, o.values});
         }
         out = std::move(m);
-        return std::nullopt;
+        return {};
     }
-    return runtime::Error{path + ":" + std::to_string(mat.shader_pos.line) + ":" +
-                          std::to_string(mat.shader_pos.column) + ": shader '" + mat.shader +
-                          "' is in none of the loaded packs"};
+    return Error{DiagCode::kRenderFailed, path + ":" + std::to_string(mat.shader_pos.line) + ":" +
+                                              std::to_string(mat.shader_pos.column) + ": shader '" +
+                                              mat.shader + "' is in none of the loaded packs"};
 }
 
 void ApplyGltfMaterial(const runtime::SceneMaterial& g, MaterialInstance& m) {

@@ -38,7 +38,7 @@ struct MaterialInstance {
     std::vector<std::string> keywords;
     std::vector<pack::StateOverride> overrides;      // every pass (Blend: not additive passes)
     std::vector<pack::StateOverride> add_overrides;  // additive passes only
-    bool transparent = false;                      // drawn after opaque, back to front
+    bool transparent = false;                        // drawn after opaque, back to front
 };
 
 // The shader's Properties defaults. Colors (and [Gamma] floats/vectors) are sRGB-authored and
@@ -51,10 +51,10 @@ void InstanceFromDefaults(const pack::Pack& pack,
 
 // Reads, validates (against the pack) and applies a .material file on top of the shader's
 // defaults; the shader comes from the file. Errors carry file:line:col.
-std::optional<runtime::Error> InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
-                                                       const std::string& path,
-                                                       const runtime::ColorPipeline& color,
-                                                       MaterialInstance& out);
+Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
+                                const std::string& path,
+                                const runtime::ColorPipeline& color,
+                                MaterialInstance& out);
 
 // A glTF metallic-roughness material mapped onto Kiln/StandardMetallic (factors are linear in
 // glTF and written as they are; maps switch on their shader_feature keywords).

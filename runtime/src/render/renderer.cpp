@@ -6,7 +6,7 @@
 namespace kiln::runtime {
 namespace {
 
-std::optional<Error> CreateRenderPass(Renderer::State& s) {
+Status CreateRenderPass(Renderer::State& s) {
     VkAttachmentDescription attachments[2]{};
     attachments[0].format = s.color_format;
     attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
@@ -46,7 +46,7 @@ std::optional<Error> CreateRenderPass(Renderer::State& s) {
         r != VK_SUCCESS) {
         return vk::VkError("cannot create the render pass", r);
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
@@ -58,7 +58,8 @@ Renderer::State::~State() {
     vkDeviceWaitIdle(context.device);
     if (pipeline_cache) {
         if (!options.pipeline_cache.empty()) {
-            vk::SavePipelineCache(context, pipeline_cache, options.pipeline_cache);
+            // A destructor has no one to tell: a cache that cannot be saved is rebuilt next run.
+            (void)vk::SavePipelineCache(context, pipeline_cache, options.pipeline_cache);
         }
         vkDestroyPipelineCache(context.device, pipeline_cache, nullptr);
     }
@@ -85,34 +86,35 @@ std::vector<const pack::Pack*> Renderer::State::PackList() const {
     return out;
 }
 
-std::optional<Error> Renderer::State::GetPipeline(uint32_t pack,
-                                                  uint32_t variant,
-                                                  const vk::RenderState& state,
-                                                  const vk::Pipeline*& out,
-                                                  uint32_t& created) {
+Status Renderer::State::GetPipeline(uint32_t pack,
+                                    uint32_t variant,
+                                    const vk::RenderState& state,
+                                    const vk::Pipeline*& out,
+                                    uint32_t& created) {
     for (const PipelineEntry& p : pipelines) {
         if (p.pack == pack && p.variant == variant && p.state == state) {
             out = &p.pipeline;
-            return std::nullopt;
+            return {};
         }
     }
     PipelineEntry entry{pack, variant, state, {}};
     vk::PipelineTargets targets{render_pass, 1};
-    if (auto e = vk::CreatePipeline(context, packs[pack]->pack, variant, state, targets,
-                                    pipeline_cache, module_checker.get(), entry.pipeline)) {
+    if (Status e = vk::CreatePipeline(context, packs[pack]->pack, variant, state, targets,
+                                      pipeline_cache, module_checker.get(), entry.pipeline);
+        !e.ok()) {
         return e;
     }
     ++created;
     pipelines.push_back(std::move(entry));
     out = &pipelines.back().pipeline;
-    return std::nullopt;
+    return {};
 }
 
-std::optional<Error> Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out) {
+Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out) {
     auto it = samplers.find({repeat, nearest});
     if (it != samplers.end()) {
         out = it->second;
-        return std::nullopt;
+        return {};
     }
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
@@ -128,12 +130,12 @@ std::optional<Error> Renderer::State::Sampler(bool repeat, bool nearest, VkSampl
     }
     samplers[{repeat, nearest}] = sampler;
     out = sampler;
-    return std::nullopt;
+    return {};
 }
 
-std::optional<Error> Renderer::State::DefaultTexture(const std::string& requested,
-                                                     vk::ImageShape shape,
-                                                     const vk::Image*& out) {
+Status Renderer::State::DefaultTexture(const std::string& requested,
+                                       vk::ImageShape shape,
+                                       const vk::Image*& out) {
     // Unity's built-in defaults; an unknown or empty name is "gray".
     static const std::map<std::string, std::array<uint8_t, 4>> kDefaults = {
         {"white", {255, 255, 255, 255}}, {"black", {0, 0, 0, 0}},
@@ -143,15 +145,16 @@ std::optional<Error> Renderer::State::DefaultTexture(const std::string& requeste
     const std::string name = kDefaults.count(requested) ? requested : "gray";
     if (auto it = default_textures.find({name, shape}); it != default_textures.end()) {
         out = &it->second;
-        return std::nullopt;
+        return {};
     }
     const std::array<uint8_t, 4> texel = kDefaults.at(name);
     vk::Image image;
-    if (auto e = vk::CreateConstantImage(context, shape, VK_FORMAT_R8G8B8A8_UNORM, texel, image)) {
+    if (Status e = vk::CreateConstantImage(context, shape, VK_FORMAT_R8G8B8A8_UNORM, texel, image);
+        !e.ok()) {
         return e;
     }
     out = &(default_textures[{name, shape}] = image);
-    return std::nullopt;
+    return {};
 }
 
 Renderer::Renderer() = default;
@@ -159,14 +162,14 @@ Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
-std::optional<Error> Renderer::Create(const RendererOptions& options, Renderer& out) {
+Result<Renderer> Renderer::Create(const RendererOptions& options) {
     auto s = std::make_unique<State>();
     s->options = options;
     vk::ContextOptions co;
     co.validation = options.validation;
     co.device_filter = options.device_filter;
-    if (auto e = vk::CreateContext(co, s->context)) {
-        return e;
+    if (Status e = vk::CreateContext(co, s->context); !e.ok()) {
+        return e.error();
     }
     s->color_format =
         options.float32_target ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -179,53 +182,57 @@ std::optional<Error> Renderer::Create(const RendererOptions& options, Renderer& 
         }
     }
     if (s->depth_format == VK_FORMAT_UNDEFINED) {
-        return Error{
-            "the device has no depth-stencil format (D32_SFLOAT_S8_UINT or "
-            "D24_UNORM_S8_UINT)"};
+        return Error{DiagCode::kRenderFailed,
+                     "the device has no depth-stencil format (D32_SFLOAT_S8_UINT or "
+                     "D24_UNORM_S8_UINT)"};
     }
-    if (auto e = CreateRenderPass(*s)) {
-        return e;
+    if (Status e = CreateRenderPass(*s); !e.ok()) {
+        return e.error();
     }
     std::string note;
-    if (auto e =
-            vk::CreatePipelineCache(s->context, options.pipeline_cache, s->pipeline_cache, note)) {
-        return e;
+    if (Status e =
+            vk::CreatePipelineCache(s->context, options.pipeline_cache, s->pipeline_cache, note);
+        !e.ok()) {
+        return e.error();
     }
     if (!note.empty()) {
-        s->notes.push_back(note);
+        s->notes.Warning(DiagCode::kPipelineCacheIgnored, options.pipeline_cache, kNoPosition,
+                         note);
     }
     if (!options.trust_packs) {
         s->module_checker = std::make_unique<vk::ModuleChecker>(s->context.properties.limits);
     }
+    Renderer out;
     out.state_ = std::move(s);
-    return std::nullopt;
+    return out;
 }
 
-std::optional<Error> Renderer::AddPack(const std::string& path) {
+Status Renderer::AddPack(const std::string& path) {
     auto loaded = std::make_unique<LoadedPack>();
     loaded->path = path;
-    if (auto e = pack::MappedFile::Map(path, loaded->file)) {
-        return Error{path + ": " + e->message, ErrorKind::kPack};
+    Result<pack::MappedFile> mapped = pack::MappedFile::Map(path);
+    if (!mapped) {
+        return mapped.error();
     }
-    if (auto e = pack::Pack::Open(loaded->file.bytes(), loaded->pack)) {
-        return Error{
-            path + ": " + std::string(pack::PackErrorCodeName(e->code)) + ": " + e->message,
-            ErrorKind::kPack};
+    loaded->file = std::move(mapped).value();
+    Result<pack::Pack> opened = pack::Pack::Open(loaded->file.bytes());
+    if (!opened) {
+        return Error{opened.error().code, path + ": " + opened.error().message};
     }
+    loaded->pack = std::move(opened).value();
     loaded->selector =
         std::make_unique<pack::VariantSelector>(loaded->pack, state_->options.missing_variant);
     state_->packs.push_back(std::move(loaded));
-    return std::nullopt;
+    return {};
 }
 
-std::optional<Error> Renderer::Render(const Scene& scene,
-                                      const FrameSettings& settings,
-                                      const ColorPipeline& color,
-                                      LinearImage& out,
-                                      FrameStats& stats) {
+Status Renderer::Render(const Scene& scene,
+                        const FrameSettings& settings,
+                        const ColorPipeline& color,
+                        LinearImage& out,
+                        FrameStats& stats) {
     stats = FrameStats{};
-    stats.warnings = std::move(state_->notes);
-    state_->notes.clear();
+    stats.warnings = std::exchange(state_->notes, DiagnosticList());
     return RenderForward(*state_, scene, settings, color, out, stats);
 }
 
@@ -237,16 +244,12 @@ std::vector<std::string> Renderer::ValidationMessages() const {
     return vk::ValidationMessages(state_->context);
 }
 
-std::optional<Error> Renderer::WriteUsage(const std::string& path) const {
+Status Renderer::WriteUsage(const std::string& path) const {
     std::vector<const pack::VariantSelector*> selectors;
     for (const auto& p : state_->packs) {
         selectors.push_back(p->selector.get());
     }
-    if (const Result<bool> written = pack::WriteUsageFile(path, pack::UsageOf(selectors));
-        !written) {
-        return Error{written.error().message};
-    }
-    return std::nullopt;
+    return pack::WriteUsageFile(path, pack::UsageOf(selectors));
 }
 
 size_t Renderer::pack_count() const {

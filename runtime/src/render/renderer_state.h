@@ -41,31 +41,29 @@ struct Renderer::State {
     std::deque<PipelineEntry> pipelines;  // deque: entries are handed out by pointer
     std::map<std::pair<bool, bool>, VkSampler> samplers;  // (repeat, nearest)
     std::map<std::pair<std::string, vk::ImageShape>, vk::Image> default_textures;
-    std::vector<std::string> notes;  // pipeline-cache notes etc., reported with the next frame
+    DiagnosticList notes;  // pipeline-cache warnings etc., reported with the next frame
     std::unique_ptr<vk::ModuleChecker> module_checker;  // null when the packs are trusted
 
     ~State();
-    std::optional<Error> GetPipeline(uint32_t pack,
-                                     uint32_t variant,
-                                     const vk::RenderState& state,
-                                     const vk::Pipeline*& out,
-                                     uint32_t& created);
-    std::optional<Error> Sampler(bool repeat, bool nearest, VkSampler& out);
+    Status GetPipeline(uint32_t pack,
+                       uint32_t variant,
+                       const vk::RenderState& state,
+                       const vk::Pipeline*& out,
+                       uint32_t& created);
+    Status Sampler(bool repeat, bool nearest, VkSampler& out);
     // Unity's named defaults ("white", "black", "gray", "bump", "red"; others are "gray") in
     // the shape the shader declares.
-    std::optional<Error> DefaultTexture(const std::string& name,
-                                        vk::ImageShape shape,
-                                        const vk::Image*& out);
+    Status DefaultTexture(const std::string& name, vk::ImageShape shape, const vk::Image*& out);
     std::vector<const pack::Pack*> PackList() const;
 };
 
 // Renders a frame with the state's caches (render/forward.cpp).
-std::optional<Error> RenderForward(Renderer::State& state,
-                                   const Scene& scene,
-                                   const FrameSettings& settings,
-                                   const ColorPipeline& color,
-                                   LinearImage& out,
-                                   FrameStats& stats);
+Status RenderForward(Renderer::State& state,
+                     const Scene& scene,
+                     const FrameSettings& settings,
+                     const ColorPipeline& color,
+                     LinearImage& out,
+                     FrameStats& stats);
 
 }  // namespace kiln::runtime
 

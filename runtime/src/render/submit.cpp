@@ -57,23 +57,25 @@ struct FrameObjects {
 
 }  // namespace
 
-std::optional<Error> RecordFrame(Renderer::State& s,
-                                 const FrameSettings& settings,
-                                 const std::vector<Draw>& draws,
-                                 const std::vector<uint8_t>& uniforms,
-                                 LinearImage& out) {
+Status RecordFrame(Renderer::State& s,
+                   const FrameSettings& settings,
+                   const std::vector<Draw>& draws,
+                   const std::vector<uint8_t>& uniforms,
+                   LinearImage& out) {
     const vk::Context& c = s.context;
     const uint32_t w = settings.width, h = settings.height;
     FrameObjects f{c, {}, {}, VK_NULL_HANDLE, VK_NULL_HANDLE, {}};
-    if (auto e =
+    if (Status e =
             vk::CreateImage(c, w, h, s.color_format,
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                            VK_IMAGE_ASPECT_COLOR_BIT, f.color)) {
+                            VK_IMAGE_ASPECT_COLOR_BIT, f.color);
+        !e.ok()) {
         return e;
     }
-    if (auto e =
+    if (Status e =
             vk::CreateImage(c, w, h, s.depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                            VK_IMAGE_ASPECT_DEPTH_BIT, f.depth)) {
+                            VK_IMAGE_ASPECT_DEPTH_BIT, f.depth);
+        !e.ok()) {
         return e;
     }
     const VkImageView views[2] = {f.color.view, f.depth.view};
@@ -87,8 +89,9 @@ std::optional<Error> RecordFrame(Renderer::State& s,
     if (VkResult r = vkCreateFramebuffer(c.device, &fb, nullptr, &f.framebuffer); r != VK_SUCCESS) {
         return vk::VkError("cannot create the framebuffer", r);
     }
-    if (auto e =
-            vk::CreateBufferWithData(c, uniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, f.uniforms)) {
+    if (Status e =
+            vk::CreateBufferWithData(c, uniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, f.uniforms);
+        !e.ok()) {
         return e;
     }
 
@@ -162,7 +165,7 @@ std::optional<Error> RecordFrame(Renderer::State& s,
 
     VkCommandBuffer cmd = vk::BeginOneShot(c);
     if (cmd == VK_NULL_HANDLE) {
-        return Error{"cannot allocate a command buffer"};
+        return Error{DiagCode::kRenderFailed, "cannot allocate a command buffer"};
     }
     VkClearValue clear[2]{};
     clear[0].color = {{settings.background.r, settings.background.g, settings.background.b,
@@ -202,13 +205,13 @@ std::optional<Error> RecordFrame(Renderer::State& s,
         vkCmdDrawIndexed(cmd, d.index_count, 1, 0, 0, 0);
     }
     vkCmdEndRenderPass(cmd);
-    if (auto e = vk::SubmitAndWait(c, cmd)) {
+    if (Status e = vk::SubmitAndWait(c, cmd); !e.ok()) {
         return e;
     }
 
     const bool f32 = s.color_format == VK_FORMAT_R32G32B32A32_SFLOAT;
     std::vector<uint8_t> bytes;
-    if (auto e = vk::ReadBack(c, f.color, f32 ? 16 : 8, bytes)) {
+    if (Status e = vk::ReadBack(c, f.color, f32 ? 16 : 8, bytes); !e.ok()) {
         return e;
     }
     out.width = w;
@@ -223,7 +226,7 @@ std::optional<Error> RecordFrame(Renderer::State& s,
             out.rgba[i] = HalfToFloat(half);
         }
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::runtime

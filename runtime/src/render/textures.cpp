@@ -93,7 +93,7 @@ FrameTextures::~FrameTextures() {
     }
 }
 
-std::optional<runtime::Error> FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
+Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
     auto it = ambient_.find(shape);
     if (it == ambient_.end()) {
         // Linear radiance above 1 needs a float texel; RGBA16F is filterable on every device.
@@ -106,39 +106,38 @@ std::optional<runtime::Error> FrameTextures::Ambient(vk::ImageShape shape, Bound
         std::array<uint8_t, 8> texel{};
         std::memcpy(texel.data(), half.data(), texel.size());
         vk::Image image;
-        if (auto e = vk::CreateConstantImage(s_.context, shape, VK_FORMAT_R16G16B16A16_SFLOAT,
-                                             texel, image)) {
+        if (Status e = vk::CreateConstantImage(s_.context, shape, VK_FORMAT_R16G16B16A16_SFLOAT,
+                                               texel, image);
+            !e.ok()) {
             return e;
         }
         it = ambient_.emplace(shape, image).first;
     }
-    if (auto e = s_.Sampler(false, false, out.sampler)) {
+    if (Status e = s_.Sampler(false, false, out.sampler); !e.ok()) {
         return e;
     }
     out.view = it->second.view;
-    return std::nullopt;
+    return {};
 }
 
-std::optional<runtime::Error> FrameTextures::Default(const TextureBinding& binding,
-                                                     vk::ImageShape shape,
-                                                     std::string warning,
-                                                     BoundTexture& out) {
+Status FrameTextures::Default(const TextureBinding& binding,
+                              vk::ImageShape shape,
+                              std::string warning,
+                              BoundTexture& out) {
     const vk::Image* image = nullptr;
-    if (auto e = s_.DefaultTexture(binding.default_name, shape, image)) {
+    if (Status e = s_.DefaultTexture(binding.default_name, shape, image); !e.ok()) {
         return e;
     }
-    if (auto e = s_.Sampler(true, false, out.sampler)) {
+    if (Status e = s_.Sampler(true, false, out.sampler); !e.ok()) {
         return e;
     }
     out.view = image->view;
     out.width = out.height = 1;
     out.warning = std::move(warning);
-    return std::nullopt;
+    return {};
 }
 
-std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
-                                                 vk::ImageShape shape,
-                                                 BoundTexture& out) {
+Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, BoundTexture& out) {
     out = BoundTexture{};
     if (binding.source == TextureBinding::Source::kAmbient) {
         return Ambient(shape, out);
@@ -166,7 +165,7 @@ std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
     } else {
         key = binding.file;
     }
-    if (auto e = s_.Sampler(binding.repeat, binding.nearest, out.sampler)) {
+    if (Status e = s_.Sampler(binding.repeat, binding.nearest, out.sampler); !e.ok()) {
         return e;
     }
     auto it = images_.find({key, binding.srgb});
@@ -203,7 +202,7 @@ std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
                           "; downscaled to " + std::to_string(w) + "x" + std::to_string(h);
         }
         vk::Image image;
-        if (auto e = vk::CreateTexture(s_.context, w, h, rgba, binding.srgb, image)) {
+        if (Status e = vk::CreateTexture(s_.context, w, h, rgba, binding.srgb, image); !e.ok()) {
             return e;
         }
         it = images_.emplace(std::pair{key, binding.srgb}, image).first;
@@ -211,7 +210,7 @@ std::optional<runtime::Error> FrameTextures::Get(const TextureBinding& binding,
     out.view = it->second.view;
     out.width = it->second.width;
     out.height = it->second.height;
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::render

@@ -39,16 +39,14 @@ class FrameTextures {
 
     // Image files and scene images are 2D: a shader that declares another shape gets the
     // binding's default texture in its shape, with a warning.
-    std::optional<runtime::Error> Get(const TextureBinding& binding,
-                                      vk::ImageShape shape,
-                                      BoundTexture& out);
+    Status Get(const TextureBinding& binding, vk::ImageShape shape, BoundTexture& out);
 
   private:
-    std::optional<runtime::Error> Default(const TextureBinding& binding,
-                                          vk::ImageShape shape,
-                                          std::string warning,
-                                          BoundTexture& out);
-    std::optional<runtime::Error> Ambient(vk::ImageShape shape, BoundTexture& out);
+    Status Default(const TextureBinding& binding,
+                   vk::ImageShape shape,
+                   std::string warning,
+                   BoundTexture& out);
+    Status Ambient(vk::ImageShape shape, BoundTexture& out);
     runtime::Renderer::State& s_;
     const runtime::Scene& scene_;
     // (source key, srgb) -> uploaded image; the key is "#<image>" or the file path.

@@ -6,31 +6,25 @@
 
 namespace kiln::runtime {
 
-bool ReadAccessor(const tinygltf::Model& m,
-                  int index,
-                  int want,
-                  std::vector<float>& out,
-                  std::string& why) {
+Status ReadAccessor(const tinygltf::Model& m, int index, int want, std::vector<float>& out) {
     if (index < 0 || size_t(index) >= m.accessors.size()) {
-        why = "accessor " + std::to_string(index) + " does not exist";
-        return false;
+        return Error{DiagCode::kBadScene, "accessor " + std::to_string(index) + " does not exist"};
     }
     const tinygltf::Accessor& a = m.accessors[size_t(index)];
     if (a.sparse.isSparse) {
-        why = "sparse accessors are not supported";
-        return false;
+        return Error{DiagCode::kBadScene, "sparse accessors are not supported"};
     }
     const int comps = tinygltf::GetNumComponentsInType(uint32_t(a.type));
     const int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
     if (comps <= 0 || csize <= 0 || a.bufferView < 0 ||
         size_t(a.bufferView) >= m.bufferViews.size()) {
-        why = "accessor " + std::to_string(index) + " has no usable buffer view or type";
-        return false;
+        return Error{DiagCode::kBadScene,
+                     "accessor " + std::to_string(index) + " has no usable buffer view or type"};
     }
     const tinygltf::BufferView& view = m.bufferViews[size_t(a.bufferView)];
     if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size()) {
-        why = "buffer view " + std::to_string(a.bufferView) + " names no buffer";
-        return false;
+        return Error{DiagCode::kBadScene,
+                     "buffer view " + std::to_string(a.bufferView) + " names no buffer"};
     }
     const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
     const size_t elem = size_t(comps) * size_t(csize);
@@ -42,11 +36,13 @@ bool ReadAccessor(const tinygltf::Model& m,
                            view.byteLength <= data.size() - view.byteOffset &&
                            a.byteOffset <= view.byteLength;
     const size_t room = view_fits ? view.byteLength - a.byteOffset : 0;
-    const bool fits = view_fits && (a.count == 0 || (elem <= room && (a.count - 1) <=
-                                                         (room - elem) / std::max<size_t>(stride, 1)));
+    const bool fits =
+        view_fits &&
+        (a.count == 0 ||
+         (elem <= room && (a.count - 1) <= (room - elem) / std::max<size_t>(stride, 1)));
     if (!fits) {
-        why = "accessor " + std::to_string(index) + " reads past its buffer view";
-        return false;
+        return Error{DiagCode::kBadScene,
+                     "accessor " + std::to_string(index) + " reads past its buffer view"};
     }
     const size_t base = view.byteOffset + a.byteOffset;
     out.assign(a.count * size_t(want), 0.0f);
@@ -85,22 +81,19 @@ bool ReadAccessor(const tinygltf::Model& m,
                     break;
                 }
                 default:
-                    why = "accessor " + std::to_string(index) + " has an unknown component type";
-                    return false;
+                    return Error{DiagCode::kBadScene, "accessor " + std::to_string(index) +
+                                                          " has an unknown component type"};
             }
             out[i * size_t(want) + size_t(c)] = std::isfinite(v) ? v : 0.0f;
         }
     }
-    return true;
+    return {};
 }
 
-bool ReadIndices(const tinygltf::Model& m,
-                 int index,
-                 std::vector<uint32_t>& out,
-                 std::string& why) {
+Status ReadIndices(const tinygltf::Model& m, int index, std::vector<uint32_t>& out) {
     std::vector<float> f;
-    if (!ReadAccessor(m, index, 1, f, why)) {
-        return false;
+    if (Status read = ReadAccessor(m, index, 1, f); !read.ok()) {
+        return read;
     }
     const auto& a = m.accessors[size_t(index)];
     // glTF 2.0, 3.7.2.1: indices are unsigned bytes, shorts or ints (a float index out of range
@@ -108,10 +101,10 @@ bool ReadIndices(const tinygltf::Model& m,
     if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
-        why = "the indices accessor " + std::to_string(index) + " has component type " +
-              std::to_string(a.componentType) +
-              "; glTF indices are unsigned bytes (5121), shorts (5123) or ints (5125)";
-        return false;
+        return Error{DiagCode::kBadScene,
+                     "the indices accessor " + std::to_string(index) + " has component type " +
+                         std::to_string(a.componentType) +
+                         "; glTF indices are unsigned bytes (5121), shorts (5123) or ints (5125)"};
     }
     if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {  // exact above 2^24
         const auto& view = m.bufferViews[size_t(a.bufferView)];
@@ -121,10 +114,10 @@ bool ReadIndices(const tinygltf::Model& m,
         for (size_t i = 0; i < a.count; ++i) {
             std::memcpy(&out[i], data.data() + view.byteOffset + a.byteOffset + i * stride, 4);
         }
-        return true;
+        return {};
     }
     out.assign(f.begin(), f.end());
-    return true;
+    return {};
 }
 
 }  // namespace kiln::runtime

@@ -7,18 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "kiln/result.h"
+
 namespace kiln::runtime {
 
 // Accessor `index` as floats, `want` components per element (missing components 0), integer
-// types normalized when the accessor says so. False (with `why`) on any inconsistency.
-bool ReadAccessor(const tinygltf::Model& m,
-                  int index,
-                  int want,
-                  std::vector<float>& out,
-                  std::string& why);
+// types normalized when the accessor says so. An error (K0007) on any inconsistency.
+Status ReadAccessor(const tinygltf::Model& m, int index, int want, std::vector<float>& out);
 
 // An index accessor, exact for 32-bit indices.
-bool ReadIndices(const tinygltf::Model& m, int index, std::vector<uint32_t>& out, std::string& why);
+Status ReadIndices(const tinygltf::Model& m, int index, std::vector<uint32_t>& out);
 
 }  // namespace kiln::runtime
 

@@ -75,24 +75,22 @@ size_t JsonDepth(std::string_view json, size_t limit) {
     return deepest;
 }
 
-std::optional<Error> LoadGltfModel(const std::string& path,
-                                   tinygltf::Model& model,
-                                   std::string& warn) {
+Status LoadGltfModel(const std::string& path, tinygltf::Model& model, std::string& warn) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
-        return Error{path + ": no such file", ErrorKind::kScene};
+        return Error{DiagCode::kBadScene, path + ": no such file"};
     Result<std::string> bytes = base::ReadRegularFile(path, kMaxSceneFileBytes);
     if (!bytes)
-        return Error{bytes.error().message, ErrorKind::kScene};
+        return Error{DiagCode::kBadScene, bytes.error().message};
     const std::string& data = bytes.value();
     const bool binary = std::filesystem::path(path).extension() == ".glb";
     if (JsonDepth(JsonOf(data, binary), kMaxJsonDepth) > kMaxJsonDepth) {
-        return Error{path + ": JSON nested more than " + std::to_string(kMaxJsonDepth) +
-                         " deep; not a glTF file Kiln reads",
-                     ErrorKind::kScene};
+        return Error{DiagCode::kBadScene, path + ": JSON nested more than " +
+                                              std::to_string(kMaxJsonDepth) +
+                                              " deep; not a glTF file Kiln reads"};
     }
     if (data.size() > std::numeric_limits<unsigned int>::max())
-        return Error{path + ": too large", ErrorKind::kScene};
+        return Error{DiagCode::kBadScene, path + ": too large"};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(
         {&FileExists, &ExpandFilePath, &ReadWholeFile, &tinygltf::WriteWholeFile, nullptr});
@@ -106,10 +104,10 @@ std::optional<Error> LoadGltfModel(const std::string& path,
         std::string why;
         for (const std::string& line : MessageLines(err))
             why += (why.empty() ? "" : "; ") + line;
-        return Error{path + ": " + (why.empty() ? std::string("not a glTF file") : why),
-                     ErrorKind::kScene};
+        return Error{DiagCode::kBadScene,
+                     path + ": " + (why.empty() ? std::string("not a glTF file") : why)};
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::runtime

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "kiln/runtime/status.h"
+#include "kiln/result.h"
 
 namespace tinygltf {
 class Model;
@@ -32,9 +32,7 @@ size_t JsonDepth(std::string_view json, size_t limit);
 std::vector<std::string> MessageLines(const std::string& text);
 
 // Loads `path` (.gltf, or .glb by extension) into `model`; tinygltf's warnings go to `warn`.
-std::optional<Error> LoadGltfModel(const std::string& path,
-                                   tinygltf::Model& model,
-                                   std::string& warn);
+Status LoadGltfModel(const std::string& path, tinygltf::Model& model, std::string& warn);
 
 }  // namespace kiln::runtime
 

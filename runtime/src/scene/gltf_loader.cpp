@@ -23,33 +23,41 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-std::optional<Error> ReadPrimitive(const tinygltf::Model& m,
-                                   const tinygltf::Primitive& p,
-                                   const std::string& where,
-                                   Primitive& out,
-                                   std::vector<std::string>& warnings) {
+// Errors and warnings name `path` and `where` ("mesh M primitive P").
+Status ReadPrimitive(const tinygltf::Model& m,
+                     const tinygltf::Primitive& p,
+                     const std::string& path,
+                     const std::string& where,
+                     Primitive& out,
+                     DiagnosticList& diags) {
+    const std::string at = path + ": " + where;
     if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
-        warnings.push_back(where + ": primitive mode " + std::to_string(p.mode) +
-                           " is not triangles; skipped");
-        return std::nullopt;
+        diags.Warning(
+            DiagCode::kSceneContentIgnored, path, kNoPosition,
+            where + ": primitive mode " + std::to_string(p.mode) + " is not triangles; skipped");
+        return {};
     }
     auto attr = [&](const char* name) {
         auto it = p.attributes.find(name);
         return it == p.attributes.end() ? -1 : it->second;
     };
-    std::string why;
     std::vector<float> pos, nrm, uv0, uv1, tan, col;
-    if (attr("POSITION") < 0 || !ReadAccessor(m, attr("POSITION"), 3, pos, why)) {
-        return Error{where + ": " + (why.empty() ? "no POSITION attribute" : why)};
+    if (attr("POSITION") < 0) {
+        return Error{DiagCode::kBadScene, at + ": no POSITION attribute"};
+    }
+    if (Status read = ReadAccessor(m, attr("POSITION"), 3, pos); !read.ok()) {
+        return Error{DiagCode::kBadScene, at + ": " + read.error().message};
     }
     const size_t n = pos.size() / 3;
     auto optional = [&](const char* name, int comps, std::vector<float>& v) -> bool {
         if (attr(name) < 0) {
             return false;
         }
-        if (!ReadAccessor(m, attr(name), comps, v, why) || v.size() != n * size_t(comps)) {
-            warnings.push_back(where + ": attribute " + name +
-                               " ignored: " + (why.empty() ? "count differs from POSITION" : why));
+        const Status read = ReadAccessor(m, attr(name), comps, v);
+        if (!read.ok() || v.size() != n * size_t(comps)) {
+            diags.Warning(DiagCode::kSceneContentIgnored, path, kNoPosition,
+                          where + ": attribute " + name + " ignored: " +
+                              (read.ok() ? "count differs from POSITION" : read.error().message));
             v.clear();
             return false;
         }
@@ -103,8 +111,8 @@ std::optional<Error> ReadPrimitive(const tinygltf::Model& m,
         }
     }
     if (p.indices >= 0) {
-        if (!ReadIndices(m, p.indices, out.indices, why)) {
-            return Error{where + ": " + why};
+        if (Status read = ReadIndices(m, p.indices, out.indices); !read.ok()) {
+            return Error{DiagCode::kBadScene, at + ": " + read.error().message};
         }
     } else {
         out.indices.resize(n);
@@ -115,8 +123,9 @@ std::optional<Error> ReadPrimitive(const tinygltf::Model& m,
     out.indices.resize(out.indices.size() / 3 * 3);
     for (uint32_t& index : out.indices) {
         if (index >= n) {
-            return Error{where + ": index " + std::to_string(index) + " is past the " +
-                         std::to_string(n) + " vertices"};
+            return Error{DiagCode::kBadScene, at + ": index " + std::to_string(index) +
+                                                  " is past the " + std::to_string(n) +
+                                                  " vertices"};
         }
     }
     if (!has_normals) {  // flat normals are what glTF asks for; smooth per-vertex is close
@@ -143,7 +152,7 @@ std::optional<Error> ReadPrimitive(const tinygltf::Model& m,
     if (!out.has_tangents && has_uv0) {
         GenerateTangents(out);
     }
-    return std::nullopt;
+    return {};
 }
 
 TextureRef ReadTextureRef(const tinygltf::Model& m, int texture, int texcoord, float scale) {
@@ -255,17 +264,15 @@ glm::mat4 LocalMatrix(const tinygltf::Node& n) {
 
 }  // namespace
 
-std::optional<Error> LoadGltf(const std::string& path,
-                              Scene& out,
-                              std::vector<std::string>& warnings) {
+Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
     tinygltf::Model model;
     std::string warn;
-    const std::optional<Error> failed = LoadGltfModel(path, model, warn);
+    const Status loaded = LoadGltfModel(path, model, warn);
     for (const std::string& line : MessageLines(warn)) {
-        warnings.push_back(path + ": " + line);
+        diags.Warning(DiagCode::kGltfWarning, path, kNoPosition, line);
     }
-    if (failed) {
-        return failed;
+    if (!loaded.ok()) {
+        return loaded.error();
     }
     Scene scene;
     scene.path = path;
@@ -278,8 +285,9 @@ std::optional<Error> LoadGltf(const std::string& path,
             si.height = uint32_t(img.height);
             si.rgba8 = img.image;
         } else {
-            warnings.push_back(path + ": image '" + si.name + "' could not be decoded as 8-bit " +
-                               "RGBA; the default texture is used instead");
+            diags.Warning(DiagCode::kTextureFallback, path, kNoPosition,
+                          "image '" + si.name + "' could not be decoded as 8-bit RGBA; the " +
+                              "default texture is used instead");
         }
         scene.images.push_back(std::move(si));
     }
@@ -292,11 +300,11 @@ std::optional<Error> LoadGltf(const std::string& path,
         for (size_t pi = 0; pi < model.meshes[mi].primitives.size(); ++pi) {
             Primitive prim;
             const std::string where =
-                path + ": mesh " + std::to_string(mi) + " primitive " + std::to_string(pi);
-            if (auto e =
-                    ReadPrimitive(model, model.meshes[mi].primitives[pi], where, prim, warnings)) {
-                e->kind = ErrorKind::kScene;  // the file's content, not the renderer, is at fault
-                return e;
+                "mesh " + std::to_string(mi) + " primitive " + std::to_string(pi);
+            if (Status read =
+                    ReadPrimitive(model, model.meshes[mi].primitives[pi], path, where, prim, diags);
+                !read.ok()) {
+                return read.error();
             }
             if (!prim.indices.empty()) {
                 mesh.primitives.push_back(std::move(prim));
@@ -309,8 +317,9 @@ std::optional<Error> LoadGltf(const std::string& path,
     for (size_t i = 0; i < model.lights.size(); ++i) {
         light_problem[i] = CheckLight(model.lights[i]);
         if (!light_problem[i].empty()) {
-            warnings.push_back(path + ": light " + std::to_string(i) + " '" + model.lights[i].name +
-                               "' rejected: " + light_problem[i]);
+            diags.Warning(DiagCode::kSceneContentIgnored, path, kNoPosition,
+                          "light " + std::to_string(i) + " '" + model.lights[i].name +
+                              "' rejected: " + light_problem[i]);
         }
     }
     // One node of the walk (node_tree.h checked the hierarchy), at its world transform.
@@ -342,8 +351,9 @@ std::optional<Error> LoadGltf(const std::string& path,
             const tinygltf::Value& li = it->second.Get("light");
             const int light = li.IsInt() ? li.GetNumberAsInt() : -1;
             if (light < 0 || size_t(light) >= model.lights.size()) {
-                warnings.push_back(path + ": node '" + node.name + "' refers to light " +
-                                   std::to_string(light) + ", which does not exist; ignored");
+                diags.Warning(DiagCode::kSceneContentIgnored, path, kNoPosition,
+                              "node '" + node.name + "' refers to light " + std::to_string(light) +
+                                  ", which does not exist; ignored");
             } else if (light_problem[size_t(light)].empty()) {
                 const tinygltf::Light& gl = model.lights[size_t(light)];
                 Light l;
@@ -369,10 +379,10 @@ std::optional<Error> LoadGltf(const std::string& path,
     };
     const std::vector<int>* roots = nullptr;  // no scenes: every parentless node
     if (model.defaultScene >= 0 && size_t(model.defaultScene) >= model.scenes.size()) {
-        return Error{path + ": the default scene " + std::to_string(model.defaultScene) +
-                         " does not exist (the file has " + std::to_string(model.scenes.size()) +
-                         " scenes)",
-                     ErrorKind::kScene};
+        return Error{DiagCode::kBadScene, path + ": the default scene " +
+                                              std::to_string(model.defaultScene) +
+                                              " does not exist (the file has " +
+                                              std::to_string(model.scenes.size()) + " scenes)"};
     }
     if (model.defaultScene >= 0) {
         roots = &model.scenes[size_t(model.defaultScene)].nodes;
@@ -380,8 +390,8 @@ std::optional<Error> LoadGltf(const std::string& path,
         roots = &model.scenes[0].nodes;
     }
     std::vector<NodeVisit> order;
-    if (auto e = WalkNodeTree(model, path, roots, order))
-        return e;
+    if (Status walked = WalkNodeTree(model, path, roots, order); !walked.ok())
+        return walked.error();
     std::vector<glm::mat4> world(model.nodes.size(), glm::mat4(1.0f));
     for (const NodeVisit& v : order) {
         const glm::mat4 parent = v.parent < 0 ? glm::mat4(1.0f) : world[size_t(v.parent)];
@@ -392,12 +402,11 @@ std::optional<Error> LoadGltf(const std::string& path,
         std::filesystem::path(path).replace_extension(".kiln.json");
     std::error_code ec;
     if (std::filesystem::exists(sidecar, ec)) {
-        if (auto e = LoadMaterialSidecar(sidecar.string(), scene)) {
-            return e;
+        if (Status read = LoadMaterialSidecar(sidecar.string(), scene); !read.ok()) {
+            return read.error();
         }
     }
-    out = std::move(scene);
-    return std::nullopt;
+    return scene;
 }
 
 glm::vec3 ShaderLightColor(const Light& light) {

@@ -11,13 +11,11 @@ std::string NodeName(const tinygltf::Model& model, int index) {
 }
 
 Error SceneError(const std::string& path, const std::string& what) {
-    return Error{path + ": " + what, ErrorKind::kScene};
+    return Error{DiagCode::kBadScene, path + ": " + what};
 }
 
 // Each node's parent (-1: none), or an error for a bad child index or a second parent.
-std::optional<Error> Parents(const tinygltf::Model& model,
-                             const std::string& path,
-                             std::vector<int>& parent) {
+Status Parents(const tinygltf::Model& model, const std::string& path, std::vector<int>& parent) {
     const size_t n = model.nodes.size();
     parent.assign(n, -1);
     for (size_t i = 0; i < n; ++i) {
@@ -37,18 +35,18 @@ std::optional<Error> Parents(const tinygltf::Model& model,
             parent[size_t(child)] = int(i);
         }
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
 
-std::optional<Error> WalkNodeTree(const tinygltf::Model& model,
-                                  const std::string& path,
-                                  const std::vector<int>* roots,
-                                  std::vector<NodeVisit>& out) {
+Status WalkNodeTree(const tinygltf::Model& model,
+                    const std::string& path,
+                    const std::vector<int>* roots,
+                    std::vector<NodeVisit>& out) {
     out.clear();
     std::vector<int> parent;
-    if (auto e = Parents(model, path, parent))
+    if (Status e = Parents(model, path, parent); !e.ok())
         return e;
     std::vector<int> starts;
     if (roots == nullptr) {
@@ -63,8 +61,8 @@ std::optional<Error> WalkNodeTree(const tinygltf::Model& model,
     for (int r : starts) {
         if (r < 0 || size_t(r) >= model.nodes.size()) {
             return SceneError(path, "the scene's root node " + std::to_string(r) +
-                                        " does not exist (" +
-                                        std::to_string(model.nodes.size()) + " nodes)");
+                                        " does not exist (" + std::to_string(model.nodes.size()) +
+                                        " nodes)");
         }
         if (parent[size_t(r)] != -1 || root[size_t(r)]) {
             return SceneError(path, NodeName(model, r) +
@@ -87,7 +85,7 @@ std::optional<Error> WalkNodeTree(const tinygltf::Model& model,
         for (auto it = children.rbegin(); it != children.rend(); ++it)
             stack.push_back({*it, v.node});
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::runtime

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "kiln/runtime/status.h"
+#include "kiln/result.h"
 
 namespace kiln::runtime {
 
@@ -23,10 +23,10 @@ struct NodeVisit {
 };
 
 // The nodes of the scene `roots` (all parentless nodes when the file has no scenes), pre-order.
-std::optional<Error> WalkNodeTree(const tinygltf::Model& model,
-                                  const std::string& path,
-                                  const std::vector<int>* roots,
-                                  std::vector<NodeVisit>& out);
+Status WalkNodeTree(const tinygltf::Model& model,
+                    const std::string& path,
+                    const std::vector<int>* roots,
+                    std::vector<NodeVisit>& out);
 
 }  // namespace kiln::runtime
 

@@ -70,48 +70,53 @@ void GenerateTangents(Primitive& p) {
     p.has_tangents = true;
 }
 
-std::optional<Error> LoadMaterialSidecar(const std::string& path, Scene& scene) {
+Status LoadMaterialSidecar(const std::string& path, Scene& scene) {
     Result<std::string> text = base::ReadRegularFile(path, kMaxSidecarBytes);
     if (!text) {
-        return Error{text.error().message};
+        return text.error();
     }
     if (JsonDepth(text.value(), kMaxJsonDepth) > kMaxJsonDepth) {
-        return Error{path + ": JSON nested more than " + std::to_string(kMaxJsonDepth) + " deep"};
+        return Error{DiagCode::kBadScene,
+                     path + ": JSON nested more than " + std::to_string(kMaxJsonDepth) + " deep"};
     }
     nlohmann::json doc = nlohmann::json::parse(text.value(), nullptr, /*allow_exceptions=*/false);
     if (doc.is_discarded() || !doc.is_object()) {
-        return Error{path + ": not a JSON object"};
+        return Error{DiagCode::kBadScene, path + ": not a JSON object"};
     }
     const std::filesystem::path dir = std::filesystem::path(path).parent_path();
     for (const auto& [key, value] : doc.items()) {
         if (key == "kiln_materials") {
             if (!value.is_number_integer() || value.get<int>() != 1) {
-                return Error{path + ": kiln_materials must be 1"};
+                return Error{DiagCode::kBadScene, path + ": kiln_materials must be 1"};
             }
         } else if (key == "materials") {
             if (!value.is_object()) {
-                return Error{path +
-                             ": 'materials' must map glTF material names to .material files"};
+                return Error{
+                    DiagCode::kBadScene,
+                    path + ": 'materials' must map glTF material names to .material files"};
             }
             for (const auto& [name, file] : value.items()) {
                 if (!file.is_string()) {
-                    return Error{path + ": material '" + name + "' must name a .material file"};
+                    return Error{DiagCode::kBadScene,
+                                 path + ": material '" + name + "' must name a .material file"};
                 }
                 scene.material_files[name] = (dir / file.get<std::string>()).lexically_normal();
             }
         } else if (key == "ambient") {
             if (!value.is_array() || value.size() != 3 || !value[0].is_number() ||
                 !value[1].is_number() || !value[2].is_number()) {
-                return Error{path + ": 'ambient' must be three numbers (linear RGB)"};
+                return Error{DiagCode::kBadScene,
+                             path + ": 'ambient' must be three numbers (linear RGB)"};
             }
             scene.ambient =
                 glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>());
         } else if (key != "description") {
-            return Error{path + ": unknown field '" + key +
-                         "' (expected kiln_materials, materials, ambient, description)"};
+            return Error{DiagCode::kBadScene,
+                         path + ": unknown field '" + key +
+                             "' (expected kiln_materials, materials, ambient, description)"};
         }
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::runtime

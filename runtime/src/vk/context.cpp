@@ -59,7 +59,7 @@ std::optional<uint32_t> GraphicsQueueFamily(VkPhysicalDevice device) {
     return std::nullopt;
 }
 
-std::optional<runtime::Error> CreateInstance(const ContextOptions& options, Context& c) {
+Status CreateInstance(const ContextOptions& options, Context& c) {
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "kiln";
     app.pEngineName = "kiln";
@@ -69,9 +69,9 @@ std::optional<runtime::Error> CreateInstance(const ContextOptions& options, Cont
     std::vector<const char*> extensions;
     if (options.validation) {
         if (!HasLayer(kValidationLayer)) {
-            return runtime::Error{
-                "validation requested but VK_LAYER_KHRONOS_validation is not "
-                "installed (Debian package vulkan-validationlayers)"};
+            return Error{DiagCode::kRenderFailed,
+                         "validation requested but VK_LAYER_KHRONOS_validation is not "
+                         "installed (Debian package vulkan-validationlayers)"};
         }
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -100,14 +100,14 @@ std::optional<runtime::Error> CreateInstance(const ContextOptions& options, Cont
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(c.instance, "vkCreateDebugUtilsMessengerEXT"));
         if (!create || create(c.instance, &messenger, nullptr, &c.messenger) != VK_SUCCESS) {
-            return runtime::Error{"cannot create the validation message callback"};
+            return Error{DiagCode::kRenderFailed, "cannot create the validation message callback"};
         }
         c.validation = true;
     }
-    return std::nullopt;
+    return {};
 }
 
-std::optional<runtime::Error> PickDevice(const ContextOptions& options, Context& c) {
+Status PickDevice(const ContextOptions& options, Context& c) {
     uint32_t count = 0;
     vkEnumeratePhysicalDevices(c.instance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
@@ -132,16 +132,17 @@ std::optional<runtime::Error> PickDevice(const ContextOptions& options, Context&
         }
     }
     if (c.physical == VK_NULL_HANDLE) {
-        return runtime::Error{"no Vulkan 1.1 device with a graphics queue" +
-                              (options.device_filter.empty()
-                                   ? std::string()
-                                   : " matching '" + options.device_filter + "'") +
-                              " (devices: " + (seen.empty() ? "none" : seen) +
-                              "; install mesa-vulkan-drivers for lavapipe)"};
+        return Error{
+            DiagCode::kRenderFailed,
+            "no Vulkan 1.1 device with a graphics queue" +
+                (options.device_filter.empty() ? std::string()
+                                               : " matching '" + options.device_filter + "'") +
+                " (devices: " + (seen.empty() ? "none" : seen) +
+                "; install mesa-vulkan-drivers for lavapipe)"};
     }
     vkGetPhysicalDeviceMemoryProperties(c.physical, &c.memory);
     c.queue_family = *GraphicsQueueFamily(c.physical);
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
@@ -175,23 +176,23 @@ const char* ResultName(VkResult result) {
     }
 }
 
-runtime::Error VkError(const char* what, VkResult result) {
-    return runtime::Error{std::string(what) + " (" + ResultName(result) + " " +
-                          std::to_string(int(result)) + ")"};
+Error VkError(const char* what, VkResult result) {
+    return Error{DiagCode::kRenderFailed, std::string(what) + " (" + ResultName(result) + " " +
+                                              std::to_string(int(result)) + ")"};
 }
 
-std::optional<runtime::Error> CreateContext(const ContextOptions& options, Context& out) {
+Status CreateContext(const ContextOptions& options, Context& out) {
     Context c;
     c.log = new ValidationLog;
-    auto fail = [&](runtime::Error e) {
+    auto fail = [&](Error e) {
         DestroyContext(c);
-        return std::optional<runtime::Error>(std::move(e));
+        return Status(std::move(e));
     };
-    if (auto e = CreateInstance(options, c)) {
-        return fail(*e);
+    if (Status e = CreateInstance(options, c); !e.ok()) {
+        return fail(e.error());
     }
-    if (auto e = PickDevice(options, c)) {
-        return fail(*e);
+    if (Status e = PickDevice(options, c); !e.ok()) {
+        return fail(e.error());
     }
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -241,7 +242,7 @@ std::optional<runtime::Error> CreateContext(const ContextOptions& options, Conte
         return fail(VkError("cannot create a command pool", r));
     }
     out = c;
-    return std::nullopt;
+    return {};
 }
 
 void DestroyContext(Context& c) {
@@ -288,7 +289,7 @@ VkCommandBuffer BeginOneShot(const Context& context) {
     return cmd;
 }
 
-std::optional<runtime::Error> SubmitAndWait(const Context& context, VkCommandBuffer cmd) {
+Status SubmitAndWait(const Context& context, VkCommandBuffer cmd) {
     vkEndCommandBuffer(cmd);
     VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VkFence fence = VK_NULL_HANDLE;
@@ -305,7 +306,7 @@ std::optional<runtime::Error> SubmitAndWait(const Context& context, VkCommandBuf
     if (r != VK_SUCCESS) {
         return VkError("queue submission failed", r);
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::vk

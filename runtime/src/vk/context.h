@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "kiln/runtime/status.h"
+#include "kiln/result.h"
 
 namespace kiln::vk {
 
@@ -43,24 +43,24 @@ struct Context {
 };
 
 // Picks a discrete GPU, then an integrated or virtual one, then a CPU device (lavapipe).
-std::optional<runtime::Error> CreateContext(const ContextOptions& options, Context& out);
+Status CreateContext(const ContextOptions& options, Context& out);
 void DestroyContext(Context& context);
 
 // Messages reported so far (copied under the log's lock).
 std::vector<std::string> ValidationMessages(const Context& context);
 
 const char* ResultName(VkResult result);
-runtime::Error VkError(const char* what, VkResult result);
+Error VkError(const char* what, VkResult result);
 
-std::optional<runtime::Error> SubmitAndWait(const Context& context, VkCommandBuffer cmd);
+Status SubmitAndWait(const Context& context, VkCommandBuffer cmd);
 VkCommandBuffer BeginOneShot(const Context& context);
 
 // Records and submits a one-off command buffer on the queue and waits for it.
 template <class Record>
-std::optional<runtime::Error> SubmitOnce(const Context& context, Record&& record) {
+Status SubmitOnce(const Context& context, Record&& record) {
     VkCommandBuffer cmd = BeginOneShot(context);
     if (cmd == VK_NULL_HANDLE) {
-        return runtime::Error{"cannot allocate a command buffer"};
+        return Error{DiagCode::kRenderFailed, "cannot allocate a command buffer"};
     }
     record(cmd);
     return SubmitAndWait(context, cmd);

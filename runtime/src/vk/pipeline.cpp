@@ -53,10 +53,10 @@ VkDescriptorType DescriptorType(pack::ResourceKind kind) {
     return VK_DESCRIPTOR_TYPE_SAMPLER;
 }
 
-std::optional<runtime::Error> CreateLayout(const Context& c,
-                                           const pack::Pack& pack,
-                                           const std::array<pack::ModuleRec, 2>& modules,
-                                           VariantLayout& out) {
+Status CreateLayout(const Context& c,
+                    const pack::Pack& pack,
+                    const std::array<pack::ModuleRec, 2>& modules,
+                    VariantLayout& out) {
     // (set, binding) -> layout binding, stages OR-ed across the two modules.
     std::map<std::pair<uint32_t, uint32_t>, VkDescriptorSetLayoutBinding> bindings;
     auto add = [&](uint32_t set, uint32_t binding, VkDescriptorType type, uint32_t count,
@@ -88,25 +88,24 @@ std::optional<runtime::Error> CreateLayout(const Context& c,
     uint32_t set_count = 0;
     for (const auto& [key, b] : bindings) {
         if (key.first >= 8) {
-            return runtime::Error{"descriptor set " + std::to_string(key.first) +
-                                  " is beyond the 8 sets the runtime supports"};
+            return Error{DiagCode::kRenderFailed, "descriptor set " + std::to_string(key.first) +
+                                                      " is beyond the 8 sets the runtime supports"};
         }
         // The reflection is the pack's too: numbers no Kiln pack uses would reach the driver.
         if (key.second > kMaxBindingNumber || b.descriptorCount > kMaxDescriptorCount) {
-            return runtime::Error{"the pack's reflection names set " + std::to_string(key.first) +
-                                      " binding " + std::to_string(key.second) + " with " +
-                                      std::to_string(b.descriptorCount) +
-                                      " descriptors, more than any Kiln pack uses",
-                                  runtime::ErrorKind::kPack};
+            return Error{DiagCode::kBadPack, "the pack's reflection names set " +
+                                                 std::to_string(key.first) + " binding " +
+                                                 std::to_string(key.second) + " with " +
+                                                 std::to_string(b.descriptorCount) +
+                                                 " descriptors, more than any Kiln pack uses"};
         }
         set_count = std::max(set_count, key.first + 1);
     }
     if (out.push_constant_size > c.properties.limits.maxPushConstantsSize) {
-        return runtime::Error{"the variant's push constants take " +
-                                  std::to_string(out.push_constant_size) +
-                                  " bytes; the device allows " +
-                                  std::to_string(c.properties.limits.maxPushConstantsSize),
-                              runtime::ErrorKind::kPack};
+        return Error{DiagCode::kBadPack,
+                     "the variant's push constants take " + std::to_string(out.push_constant_size) +
+                         " bytes; the device allows " +
+                         std::to_string(c.properties.limits.maxPushConstantsSize)};
     }
     out.bindings.assign(set_count, {});
     for (const auto& [key, b] : bindings) {
@@ -133,7 +132,7 @@ std::optional<runtime::Error> CreateLayout(const Context& c,
         r != VK_SUCCESS) {
         return VkError("cannot create a pipeline layout", r);
     }
-    return std::nullopt;
+    return {};
 }
 
 // The name of the module's first OpEntryPoint (Kiln keeps the HLSL function's name), read with
@@ -165,24 +164,24 @@ std::string EntryPointName(std::span<const uint32_t> words) {
 
 }  // namespace
 
-std::optional<runtime::Error> CreatePipeline(const Context& c,
-                                             const pack::Pack& pack,
-                                             uint32_t variant,
-                                             const RenderState& state,
-                                             const PipelineTargets& targets,
-                                             VkPipelineCache cache,
-                                             ModuleChecker* checker,
-                                             Pipeline& out) {
+Status CreatePipeline(const Context& c,
+                      const pack::Pack& pack,
+                      uint32_t variant,
+                      const RenderState& state,
+                      const PipelineTargets& targets,
+                      VkPipelineCache cache,
+                      ModuleChecker* checker,
+                      Pipeline& out) {
     const pack::VariantRec v = pack.Variant(variant).value();
     const std::array<pack::ModuleRec, 2> modules = {pack.Module(v.vertex_module).value(),
                                                     pack.Module(v.fragment_module).value()};
     Pipeline p;
-    auto fail = [&](runtime::Error e) {
+    auto fail = [&](Error e) {
         DestroyPipeline(c, p);
-        return std::optional<runtime::Error>(std::move(e));
+        return Status(std::move(e));
     };
-    if (auto e = CreateLayout(c, pack, modules, p.layout)) {
-        return fail(*e);
+    if (Status e = CreateLayout(c, pack, modules, p.layout); !e.ok()) {
+        return fail(e.error());
     }
     std::set<std::pair<uint32_t, uint32_t>> layout;
     for (uint32_t s = 0; s < p.layout.bindings.size(); ++s) {
@@ -195,12 +194,13 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
         std::vector<uint32_t> words(spirv.size() / 4);
         std::memcpy(words.data(), spirv.data(), words.size() * 4);
         if (checker != nullptr) {
-            if (auto e = checker->Check(words, pack::Stage(modules[i].stage), layout))
-                return fail(*e);
+            if (Status e = checker->Check(words, pack::Stage(modules[i].stage), layout); !e.ok())
+                return fail(e.error());
         }
         entry_points[i] = EntryPointName(words);
         if (entry_points[i].empty()) {
-            return fail(runtime::Error{"a SPIR-V module of the variant has no entry point"});
+            return fail(Error{DiagCode::kRenderFailed,
+                              "a SPIR-V module of the variant has no entry point"});
         }
         VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         info.codeSize = words.size() * 4;
@@ -223,10 +223,11 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
         const std::string_view semantic = pack.String(var.semantic);
         const std::optional<Stream> stream = StreamFor(semantic);
         if (!stream) {
-            return fail(runtime::Error{"vertex input '" + std::string(pack.String(var.name)) +
-                                       "' has semantic '" + std::string(semantic) +
-                                       "', which no mesh stream provides (POSITION, NORMAL, "
-                                       "TEXCOORD0, TEXCOORD1, TANGENT, COLOR)"});
+            return fail(Error{DiagCode::kRenderFailed,
+                              "vertex input '" + std::string(pack.String(var.name)) +
+                                  "' has semantic '" + std::string(semantic) +
+                                  "', which no mesh stream provides (POSITION, NORMAL, "
+                                  "TEXCOORD0, TEXCOORD1, TANGENT, COLOR)"});
         }
         attributes.push_back({var.location, 0, stream->format, stream->offset});
     }
@@ -287,15 +288,16 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
     }
     for (uint32_t i = 0; i < targets.color_count; ++i) {
         if (state.targets[i].enable && state.targets[i].advanced) {
-            return fail(runtime::Error{
-                "an advanced BlendOp (Multiply, Screen, ... HSLLuminosity) needs "
-                "VK_EXT_blend_operation_advanced, which Kiln's renderer does not enable"});
+            return fail(
+                Error{DiagCode::kRenderFailed,
+                      "an advanced BlendOp (Multiply, Screen, ... HSLLuminosity) needs "
+                      "VK_EXT_blend_operation_advanced, which Kiln's renderer does not enable"});
         }
     }
     if (state.logic_op_enable && !c.logic_op) {
-        return fail(
-            runtime::Error{"a Logical* BlendOp needs the logicOp feature, which this "
-                           "Vulkan device does not support"});
+        return fail(Error{DiagCode::kRenderFailed,
+                          "a Logical* BlendOp needs the logicOp feature, which this "
+                          "Vulkan device does not support"});
     }
     VkPipelineColorBlendStateCreateInfo blend{
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
@@ -326,7 +328,7 @@ std::optional<runtime::Error> CreatePipeline(const Context& c,
         return fail(VkError("cannot create a graphics pipeline", r));
     }
     out = p;
-    return std::nullopt;
+    return {};
 }
 
 void DestroyPipeline(const Context& c, Pipeline& p) {

@@ -59,11 +59,11 @@ struct RenderState {
 RenderState ToVulkan(const pack::PassState& state);
 
 // pack::ResolvePassState, then ToVulkan.
-std::optional<runtime::Error> ResolveRenderState(const pack::Pack& pack,
-                                                 uint32_t pass,
-                                                 const pack::PropertyLookup& properties,
-                                                 std::span<const pack::StateOverride> overrides,
-                                                 RenderState& out);
+Status ResolveRenderState(const pack::Pack& pack,
+                          uint32_t pass,
+                          const pack::PropertyLookup& properties,
+                          std::span<const pack::StateOverride> overrides,
+                          RenderState& out);
 
 // The layouts a variant's reflection implies (sets 0..n, push constants).
 struct VariantLayout {
@@ -87,14 +87,14 @@ struct PipelineTargets {
 
 // `checker` looks at the variant's SPIR-V and reflection before the driver does
 // (vk/spirv_check.h); null for trusted packs.
-std::optional<runtime::Error> CreatePipeline(const Context& c,
-                                             const pack::Pack& pack,
-                                             uint32_t variant,
-                                             const RenderState& state,
-                                             const PipelineTargets& targets,
-                                             VkPipelineCache cache,
-                                             ModuleChecker* checker,
-                                             Pipeline& out);
+Status CreatePipeline(const Context& c,
+                      const pack::Pack& pack,
+                      uint32_t variant,
+                      const RenderState& state,
+                      const PipelineTargets& targets,
+                      VkPipelineCache cache,
+                      ModuleChecker* checker,
+                      Pipeline& out);
 void DestroyPipeline(const Context& c, Pipeline& pipeline);
 
 }  // namespace kiln::vk

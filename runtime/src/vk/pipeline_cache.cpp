@@ -74,10 +74,10 @@ std::string CheckPipelineCacheFile(const Context& c,
     return {};
 }
 
-std::optional<runtime::Error> CreatePipelineCache(const Context& c,
-                                                  const std::string& path,
-                                                  VkPipelineCache& out,
-                                                  std::string& note) {
+Status CreatePipelineCache(const Context& c,
+                           const std::string& path,
+                           VkPipelineCache& out,
+                           std::string& note) {
     std::vector<uint8_t> file;
     std::span<const uint8_t> data;
     std::error_code ec;
@@ -98,12 +98,10 @@ std::optional<runtime::Error> CreatePipelineCache(const Context& c,
     if (VkResult r = vkCreatePipelineCache(c.device, &info, nullptr, &out); r != VK_SUCCESS) {
         return VkError("cannot create a pipeline cache", r);
     }
-    return std::nullopt;
+    return {};
 }
 
-std::optional<runtime::Error> SavePipelineCache(const Context& c,
-                                                VkPipelineCache cache,
-                                                const std::string& path) {
+Status SavePipelineCache(const Context& c, VkPipelineCache cache, const std::string& path) {
     size_t size = 0;
     vkGetPipelineCacheData(c.device, cache, &size, nullptr);
     std::vector<uint8_t> data(size);
@@ -112,10 +110,10 @@ std::optional<runtime::Error> SavePipelineCache(const Context& c,
     }
     data.resize(size);
     const std::vector<uint8_t> file = EncodePipelineCacheFile(c, data);
-    if (const Result<bool> written = base::WriteFileAtomically(path, file); !written) {
-        return runtime::Error{written.error().message};
+    if (const Status written = base::WriteFileAtomically(path, file); !written.ok()) {
+        return Error{DiagCode::kRenderFailed, written.error().message};
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::vk

@@ -31,13 +31,11 @@ std::string CheckPipelineCacheFile(const Context& c,
 
 // Creates the cache, seeded from `path` when that file is valid. `note` says why a present
 // file was not used.
-std::optional<runtime::Error> CreatePipelineCache(const Context& c,
-                                                  const std::string& path,
-                                                  VkPipelineCache& out,
-                                                  std::string& note);
-std::optional<runtime::Error> SavePipelineCache(const Context& c,
-                                                VkPipelineCache cache,
-                                                const std::string& path);
+Status CreatePipelineCache(const Context& c,
+                           const std::string& path,
+                           VkPipelineCache& out,
+                           std::string& note);
+Status SavePipelineCache(const Context& c, VkPipelineCache cache, const std::string& path);
 std::vector<uint8_t> EncodePipelineCacheFile(const Context& c, std::span<const uint8_t> data);
 
 }  // namespace kiln::vk

@@ -150,17 +150,17 @@ RenderState ToVulkan(const pack::PassState& p) {
     return s;
 }
 
-std::optional<runtime::Error> ResolveRenderState(const pack::Pack& pack,
-                                                 uint32_t pass,
-                                                 const pack::PropertyLookup& properties,
-                                                 std::span<const pack::StateOverride> overrides,
-                                                 RenderState& out) {
+Status ResolveRenderState(const pack::Pack& pack,
+                          uint32_t pass,
+                          const pack::PropertyLookup& properties,
+                          std::span<const pack::StateOverride> overrides,
+                          RenderState& out) {
     Result<pack::PassState> state = pack::ResolvePassState(pack, pass, properties, overrides);
     if (!state) {
-        return runtime::Error{state.error().message};
+        return Error{DiagCode::kRenderFailed, state.error().message};
     }
     out = ToVulkan(state.value());
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::vk

@@ -19,16 +19,16 @@ std::optional<uint32_t> FindMemoryType(const Context& c,
     return std::nullopt;
 }
 
-std::optional<runtime::Error> Allocate(const Context& c,
-                                       const VkMemoryRequirements& req,
-                                       VkMemoryPropertyFlags wanted,
-                                       VkDeviceMemory& out) {
+Status Allocate(const Context& c,
+                const VkMemoryRequirements& req,
+                VkMemoryPropertyFlags wanted,
+                VkDeviceMemory& out) {
     auto type = FindMemoryType(c, req.memoryTypeBits, wanted);
     if (!type) {
         type = FindMemoryType(c, req.memoryTypeBits, 0);
     }
     if (!type) {
-        return runtime::Error{"no suitable Vulkan memory type"};
+        return Error{DiagCode::kRenderFailed, "no suitable Vulkan memory type"};
     }
     VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     info.allocationSize = req.size;
@@ -36,21 +36,21 @@ std::optional<runtime::Error> Allocate(const Context& c,
     if (VkResult r = vkAllocateMemory(c.device, &info, nullptr, &out); r != VK_SUCCESS) {
         return VkError("cannot allocate device memory", r);
     }
-    return std::nullopt;
+    return {};
 }
 
 // Creates `info`'s image in device-local memory and a view of every mip level and layer.
-std::optional<runtime::Error> CreateImageAndView(const Context& c,
-                                                 const VkImageCreateInfo& info,
-                                                 VkImageViewType view_type,
-                                                 VkImageAspectFlags aspect,
-                                                 Image& img) {
+Status CreateImageAndView(const Context& c,
+                          const VkImageCreateInfo& info,
+                          VkImageViewType view_type,
+                          VkImageAspectFlags aspect,
+                          Image& img) {
     if (VkResult r = vkCreateImage(c.device, &info, nullptr, &img.image); r != VK_SUCCESS) {
         return VkError("cannot create an image", r);
     }
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(c.device, img.image, &req);
-    if (auto e = Allocate(c, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, img.memory)) {
+    if (Status e = Allocate(c, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, img.memory); !e.ok()) {
         DestroyImage(c, img);
         return e;
     }
@@ -64,15 +64,12 @@ std::optional<runtime::Error> CreateImageAndView(const Context& c,
         DestroyImage(c, img);
         return VkError("cannot create an image view", r);
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
 
-std::optional<runtime::Error> CreateBuffer(const Context& c,
-                                           VkDeviceSize size,
-                                           VkBufferUsageFlags usage,
-                                           Buffer& out) {
+Status CreateBuffer(const Context& c, VkDeviceSize size, VkBufferUsageFlags usage, Buffer& out) {
     Buffer b;
     b.size = std::max<VkDeviceSize>(size, 4);
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -88,9 +85,9 @@ std::optional<runtime::Error> CreateBuffer(const Context& c,
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     if (!FindMemoryType(c, req.memoryTypeBits, host)) {
         DestroyBuffer(c, b);
-        return runtime::Error{"no host-visible coherent memory for a buffer"};
+        return Error{DiagCode::kRenderFailed, "no host-visible coherent memory for a buffer"};
     }
-    if (auto e = Allocate(c, req, host, b.memory)) {
+    if (Status e = Allocate(c, req, host, b.memory); !e.ok()) {
         DestroyBuffer(c, b);
         return e;
     }
@@ -101,20 +98,20 @@ std::optional<runtime::Error> CreateBuffer(const Context& c,
         return VkError("cannot map a buffer", r);
     }
     out = b;
-    return std::nullopt;
+    return {};
 }
 
-std::optional<runtime::Error> CreateBufferWithData(const Context& c,
-                                                   std::span<const uint8_t> data,
-                                                   VkBufferUsageFlags usage,
-                                                   Buffer& out) {
-    if (auto e = CreateBuffer(c, data.size(), usage, out)) {
+Status CreateBufferWithData(const Context& c,
+                            std::span<const uint8_t> data,
+                            VkBufferUsageFlags usage,
+                            Buffer& out) {
+    if (Status e = CreateBuffer(c, data.size(), usage, out); !e.ok()) {
         return e;
     }
     if (!data.empty()) {
         std::memcpy(out.mapped, data.data(), data.size());
     }
-    return std::nullopt;
+    return {};
 }
 
 void DestroyBuffer(const Context& c, Buffer& b) {
@@ -127,14 +124,14 @@ void DestroyBuffer(const Context& c, Buffer& b) {
     b = Buffer{};
 }
 
-std::optional<runtime::Error> CreateImage(const Context& c,
-                                          uint32_t width,
-                                          uint32_t height,
-                                          VkFormat format,
-                                          VkImageUsageFlags usage,
-                                          VkImageAspectFlags aspect,
-                                          Image& out,
-                                          uint32_t mip_levels) {
+Status CreateImage(const Context& c,
+                   uint32_t width,
+                   uint32_t height,
+                   VkFormat format,
+                   VkImageUsageFlags usage,
+                   VkImageAspectFlags aspect,
+                   Image& out,
+                   uint32_t mip_levels) {
     Image img;
     img.format = format;
     img.width = width;
@@ -150,11 +147,11 @@ std::optional<runtime::Error> CreateImage(const Context& c,
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    if (auto e = CreateImageAndView(c, info, VK_IMAGE_VIEW_TYPE_2D, aspect, img)) {
+    if (Status e = CreateImageAndView(c, info, VK_IMAGE_VIEW_TYPE_2D, aspect, img); !e.ok()) {
         return e;
     }
     out = img;
-    return std::nullopt;
+    return {};
 }
 
 void DestroyImage(const Context& c, Image& img) {
@@ -193,14 +190,14 @@ void ImageBarrier(VkCommandBuffer cmd,
     vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
-std::optional<runtime::Error> CreateTexture(const Context& c,
-                                            uint32_t width,
-                                            uint32_t height,
-                                            std::span<const uint8_t> rgba8,
-                                            bool srgb,
-                                            Image& out) {
+Status CreateTexture(const Context& c,
+                     uint32_t width,
+                     uint32_t height,
+                     std::span<const uint8_t> rgba8,
+                     bool srgb,
+                     Image& out) {
     if (width == 0 || height == 0 || rgba8.size() != size_t{width} * height * 4) {
-        return runtime::Error{"texture data does not match its size"};
+        return Error{DiagCode::kRenderFailed, "texture data does not match its size"};
     }
     const VkFormat format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
     VkFormatProperties props;
@@ -211,14 +208,16 @@ std::optional<runtime::Error> CreateTexture(const Context& c,
         (props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT);
     const uint32_t mips = can_blit ? uint32_t(std::bit_width(std::max(width, height))) : 1;
     Buffer staging;
-    if (auto e = CreateBufferWithData(c, rgba8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging)) {
+    if (Status e = CreateBufferWithData(c, rgba8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+        !e.ok()) {
         return e;
     }
     Image img;
-    if (auto e = CreateImage(c, width, height, format,
-                             VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                 VK_IMAGE_USAGE_SAMPLED_BIT,
-                             VK_IMAGE_ASPECT_COLOR_BIT, img, mips)) {
+    if (Status e = CreateImage(c, width, height, format,
+                               VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                   VK_IMAGE_USAGE_SAMPLED_BIT,
+                               VK_IMAGE_ASPECT_COLOR_BIT, img, mips);
+        !e.ok()) {
         DestroyBuffer(c, staging);
         return e;
     }
@@ -258,21 +257,22 @@ std::optional<runtime::Error> CreateTexture(const Context& c,
                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, mips - 1, 1);
     });
     DestroyBuffer(c, staging);
-    if (e) {
+    if (!e.ok()) {
         DestroyImage(c, img);
         return e;
     }
     out = img;
-    return std::nullopt;
+    return {};
 }
 
-std::optional<runtime::Error> CreateConstantImage(const Context& c,
-                                                  ImageShape shape,
-                                                  VkFormat format,
-                                                  std::span<const uint8_t> texel,
-                                                  Image& out) {
+Status CreateConstantImage(const Context& c,
+                           ImageShape shape,
+                           VkFormat format,
+                           std::span<const uint8_t> texel,
+                           Image& out) {
     if (shape == ImageShape::kCubeArray && !c.image_cube_array) {
-        return runtime::Error{"the device cannot sample cube-map arrays (imageCubeArray)"};
+        return Error{DiagCode::kRenderFailed,
+                     "the device cannot sample cube-map arrays (imageCubeArray)"};
     }
     const bool cube = shape == ImageShape::kCube || shape == ImageShape::kCubeArray;
     const uint32_t layers = cube ? 6u : 1u;  // a cube array of one cube is six layers
@@ -293,8 +293,9 @@ std::optional<runtime::Error> CreateConstantImage(const Context& c,
     Image img;
     img.format = format;
     img.width = img.height = 1;
-    if (auto e = CreateImageAndView(c, info, kViewTypes[size_t(shape)], VK_IMAGE_ASPECT_COLOR_BIT,
-                                    img)) {
+    if (Status e =
+            CreateImageAndView(c, info, kViewTypes[size_t(shape)], VK_IMAGE_ASPECT_COLOR_BIT, img);
+        !e.ok()) {
         return e;
     }
     std::vector<uint8_t> texels;
@@ -302,7 +303,8 @@ std::optional<runtime::Error> CreateConstantImage(const Context& c,
         texels.insert(texels.end(), texel.begin(), texel.end());
     }
     Buffer staging;
-    if (auto e = CreateBufferWithData(c, texels, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging)) {
+    if (Status e = CreateBufferWithData(c, texels, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+        !e.ok()) {
         DestroyImage(c, img);
         return e;
     }
@@ -322,21 +324,21 @@ std::optional<runtime::Error> CreateConstantImage(const Context& c,
                      VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
     });
     DestroyBuffer(c, staging);
-    if (e) {
+    if (!e.ok()) {
         DestroyImage(c, img);
         return e;
     }
     out = img;
-    return std::nullopt;
+    return {};
 }
 
-std::optional<runtime::Error> ReadBack(const Context& c,
-                                       const Image& image,
-                                       uint32_t bytes_per_pixel,
-                                       std::vector<uint8_t>& out) {
+Status ReadBack(const Context& c,
+                const Image& image,
+                uint32_t bytes_per_pixel,
+                std::vector<uint8_t>& out) {
     const VkDeviceSize size = VkDeviceSize{image.width} * image.height * bytes_per_pixel;
     Buffer staging;
-    if (auto e = CreateBuffer(c, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging)) {
+    if (Status e = CreateBuffer(c, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging); !e.ok()) {
         return e;
     }
     auto e = SubmitOnce(c, [&](VkCommandBuffer cmd) {
@@ -351,7 +353,7 @@ std::optional<runtime::Error> ReadBack(const Context& c,
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
                              &to_host, 0, nullptr, 0, nullptr);
     });
-    if (!e) {
+    if (e.ok()) {
         const auto* p = static_cast<const uint8_t*>(staging.mapped);
         out.assign(p, p + size);
     }

@@ -15,12 +15,12 @@ constexpr uint32_t kOpEntryPoint = 15, kOpDecorate = 71;
 constexpr uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34;
 constexpr uint32_t kModelVertex = 0, kModelFragment = 4;
 
-runtime::Error Bad(const std::string& what) {
-    return runtime::Error{"the pack's SPIR-V is rejected before it reaches the driver: " + what,
-                          runtime::ErrorKind::kPack};
+Error Bad(const std::string& what) {
+    return Error{DiagCode::kBadPack,
+                 "the pack's SPIR-V is rejected before it reaches the driver: " + what};
 }
 
-std::optional<runtime::Error> Validate(std::span<const uint32_t> words) {
+Status Validate(std::span<const uint32_t> words) {
     spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
     std::string first;
     tools.SetMessageConsumer(
@@ -32,7 +32,7 @@ std::optional<runtime::Error> Validate(std::span<const uint32_t> words) {
     options.SetScalarBlockLayout(false);
     if (!tools.Validate(words.data(), words.size(), options))
         return Bad("spirv-val: " + (first.empty() ? std::string("invalid module") : first));
-    return std::nullopt;
+    return {};
 }
 
 // The (set, binding) of every decorated variable and the entry points' execution models, read
@@ -42,7 +42,7 @@ struct Interface {
     std::set<uint32_t> models;
 };
 
-std::optional<runtime::Error> ReadInterface(std::span<const uint32_t> words, Interface& out) {
+Status ReadInterface(std::span<const uint32_t> words, Interface& out) {
     for (size_t i = 5; i < words.size();) {
         const uint32_t count = words[i] >> 16, opcode = words[i] & 0xFFFF;
         if (count == 0 || count > words.size() - i)
@@ -58,15 +58,14 @@ std::optional<runtime::Error> ReadInterface(std::span<const uint32_t> words, Int
         }
         i += count;
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
 
-std::optional<runtime::Error> ModuleChecker::Check(
-    std::span<const uint32_t> words,
-    pack::Stage stage,
-    const std::set<std::pair<uint32_t, uint32_t>>& layout) {
+Status ModuleChecker::Check(std::span<const uint32_t> words,
+                            pack::Stage stage,
+                            const std::set<std::pair<uint32_t, uint32_t>>& layout) {
     if (words.size() < 5 || words[0] != kSpirvMagic)
         return Bad("not a SPIR-V module");
     if (words[3] > kMaxIdBound) {
@@ -80,13 +79,13 @@ std::optional<runtime::Error> ModuleChecker::Check(
         known = validated_.count(hash) > 0;
     }
     if (!known) {
-        if (auto e = Validate(words))
+        if (Status e = Validate(words); !e.ok())
             return e;
         std::lock_guard<std::mutex> lock(mu_);
         validated_.insert(hash);
     }
     Interface in;
-    if (auto e = ReadInterface(words, in))
+    if (Status e = ReadInterface(words, in); !e.ok())
         return e;
     const uint32_t model = stage == pack::Stage::kVertex ? kModelVertex : kModelFragment;
     if (in.models.size() != 1 || *in.models.begin() != model) {
@@ -103,7 +102,7 @@ std::optional<runtime::Error> ModuleChecker::Check(
                        std::to_string(sb.second) + ", which the variant's layout does not have");
         }
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace kiln::vk

@@ -17,7 +17,7 @@
 #include <utility>
 
 #include "kiln/pack/format.h"
-#include "kiln/runtime/status.h"
+#include "kiln/result.h"
 
 namespace kiln::vk {
 
@@ -30,11 +30,11 @@ class ModuleChecker {
   public:
     explicit ModuleChecker(const VkPhysicalDeviceLimits& limits) : limits_(limits) {}
 
-    // nullopt when `words` may be handed to the driver as the `stage` module of a pipeline whose
+    // Success when `words` may be handed to the driver as the `stage` module of a pipeline whose
     // layout has exactly the (set, binding) pairs in `layout`.
-    std::optional<runtime::Error> Check(std::span<const uint32_t> words,
-                                        pack::Stage stage,
-                                        const std::set<std::pair<uint32_t, uint32_t>>& layout);
+    Status Check(std::span<const uint32_t> words,
+                 pack::Stage stage,
+                 const std::set<std::pair<uint32_t, uint32_t>>& layout);
 
     const VkPhysicalDeviceLimits& limits() const { return limits_; }
     // Distinct modules spirv-val has accepted so far.

@@ -2,6 +2,8 @@
 // turns the pass's render state into enums (no string compares): what an engine's loader does.
 #include <cstdio>
 
+#include "kiln/diagnostic.h"
+
 #include "kiln/pack/pass_id.h"
 #include "kiln/pack/reader.h"
 #include "kiln/pack/render_state.h"
@@ -14,16 +16,20 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: pick_variant PACK\n");
         return 2;
     }
-    MappedFile file;
-    Pack pack;
-    if (auto e = MappedFile::Map(argv[1], file)) {
-        std::fprintf(stderr, "%s\n", e->message.c_str());
+    // Every call that can fail gives a kiln::Result: a value or an Error with a stable code.
+    const kiln::Result<MappedFile> file = MappedFile::Map(argv[1]);
+    if (!file) {
+        std::fprintf(stderr, "%s [%s]\n", file.error().message.c_str(),
+                     kiln::FormatDiagCode(file.error().code).c_str());
         return 1;
     }
-    if (auto e = Pack::Open(file.bytes(), pack)) {
-        std::fprintf(stderr, "%s\n", e->message.c_str());
+    const kiln::Result<Pack> opened = Pack::Open(file.value().bytes());
+    if (!opened) {
+        std::fprintf(stderr, "%s [%s]\n", opened.error().message.c_str(),
+                     kiln::FormatDiagCode(opened.error().code).c_str());
         return 1;
     }
+    const Pack& pack = opened.value();
     const auto shader = pack.FindShader("Consumer/Lit");
     const auto pass = shader ? pack.FindPass(*shader, "ForwardBase") : std::nullopt;
     if (!pass) {
@@ -52,6 +58,7 @@ int main(int argc, char** argv) {
                 JoinKeywords(pack.KeywordsOf(*pass, VariantKey(variant.key))).c_str(), spirv.size(),
                 spirv.empty() ? 0u : spirv[0], alpha_blend ? "yes" : "no",
                 state.value().zwrite ? "on" : "off");
-    // An index past the end is an error, not a crash.
-    return pack.Module(100000).ok() ? 1 : 0;
+    // An index past the end is an error with its code, not a crash.
+    const kiln::Result<ModuleRec> past_end = pack.Module(100000);
+    return !past_end && past_end.error().code == kiln::DiagCode::kIndexOutOfRange ? 0 : 1;
 }

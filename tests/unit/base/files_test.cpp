@@ -23,6 +23,7 @@ TEST(BaseFiles, OnlyRegularFilesWithinTheLimitAreRead) {
     EXPECT_EQ(base::ReadRegularFile(file, 5).value(), "hello");
     Result<std::string> r = base::ReadRegularFile(file, 4);
     ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, DiagCode::kCannotReadFile);
     EXPECT_NE(r.error().message.find("larger than the limit of 4 bytes"), std::string::npos);
     r = base::ReadRegularFile(dir.path(), 100);
     ASSERT_FALSE(r);
@@ -44,7 +45,7 @@ TEST(BaseFiles, OutputsReplaceRegularFilesAndKeepTheirMode) {
     ScratchDir dir;
     const std::string out = dir.Write("out.bin", "old");
     ASSERT_EQ(chmod(out.c_str(), 0640), 0);
-    ASSERT_TRUE(base::WriteFileAtomically(out, std::string_view("new")));
+    ASSERT_TRUE(base::WriteFileAtomically(out, std::string_view("new")).ok());
     EXPECT_EQ(ReadFile(out), "new");
     struct stat st {};
     ASSERT_EQ(stat(out.c_str(), &st), 0);
@@ -60,23 +61,25 @@ TEST(BaseFiles, AnOutputThatIsAnInputADirectoryAFifoOrADeviceIsRefused) {
     const std::string in = dir.Write("in.shader", "source");
     base::WriteOptions options;
     options.inputs = {in};
-    Result<bool> r = base::WriteFileAtomically(in, std::string_view("pack"), options);
-    ASSERT_FALSE(r);
+    Status r = base::WriteFileAtomically(in, std::string_view("pack"), options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, DiagCode::kCannotWriteFile);
     EXPECT_NE(r.error().message.find("is the input"), std::string::npos) << r.error().message;
     EXPECT_EQ(ReadFile(in), "source");
     // Through a link to the input, too.
     fs::create_symlink(in, dir.path() + "/link");
-    EXPECT_FALSE(base::WriteFileAtomically(dir.path() + "/link", std::string_view("x"), options));
+    EXPECT_FALSE(
+        base::WriteFileAtomically(dir.path() + "/link", std::string_view("x"), options).ok());
     EXPECT_EQ(ReadFile(in), "source");
 
     r = base::WriteFileAtomically(dir.path(), std::string_view("x"));
-    ASSERT_FALSE(r);
+    ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().message.find("is a directory; kiln writes only regular files"),
               std::string::npos);
     const std::string fifo = dir.path() + "/fifo";
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
     r = base::WriteFileAtomically(fifo, std::string_view("x"));
-    ASSERT_FALSE(r);
+    ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().message.find("is a FIFO"), std::string::npos);
     struct stat st {};
     ASSERT_EQ(lstat(fifo.c_str(), &st), 0);
@@ -92,19 +95,18 @@ TEST(BaseFiles, AnOutputThatIsALinkIsWrittenThroughAndStaysALink) {
     const std::string target = dir.Write("real.kpack", "old");
     const std::string link = dir.path() + "/link.kpack";
     fs::create_symlink("real.kpack", link);
-    ASSERT_TRUE(base::WriteFileAtomically(link, std::string_view("new")));
+    ASSERT_TRUE(base::WriteFileAtomically(link, std::string_view("new")).ok());
     EXPECT_TRUE(fs::is_symlink(link));
     EXPECT_EQ(ReadFile(target), "new");
     // A dangling link creates its target.
     fs::create_symlink("made.kpack", dir.path() + "/dangling");
-    ASSERT_TRUE(base::WriteFileAtomically(dir.path() + "/dangling", std::string_view("made")));
+    ASSERT_TRUE(base::WriteFileAtomically(dir.path() + "/dangling", std::string_view("made")).ok());
     EXPECT_EQ(ReadFile(dir.path() + "/made.kpack"), "made");
 }
 
 TEST(BaseFiles, AnUnwritableOutputSaysWhy) {
-    const Result<bool> r =
-        base::WriteFileAtomically("/nonexistent-dir/out.kpack", std::string_view("x"));
-    ASSERT_FALSE(r);
+    const Status r = base::WriteFileAtomically("/nonexistent-dir/out.kpack", std::string_view("x"));
+    ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().message.find("No such file or directory"), std::string::npos)
         << r.error().message;
     EXPECT_EQ(r.error().message.find("Success"), std::string::npos) << r.error().message;

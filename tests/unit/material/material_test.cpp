@@ -10,26 +10,24 @@
 namespace kiln::test {
 namespace {
 
-using material::IssueCode;
-using material::IssueSeverity;
 using material::Material;
-using material::MaterialIssue;
 
-// "line:col Knnnn message" per issue.
-std::string Brief(const std::vector<MaterialIssue>& issues) {
+// "line:col Knnnn message (note)" per diagnostic; each names the file it was given.
+std::string Brief(const DiagnosticList& issues) {
     std::string s;
-    for (const MaterialIssue& i : issues) {
-        s += std::to_string(i.pos.line) + ":" + std::to_string(i.pos.column) + " K" +
-             std::to_string(static_cast<unsigned>(i.code)) + " " + i.message +
-             (i.note.empty() ? "" : " (" + i.note + ")") + "\n";
+    for (const Diagnostic& d : issues.all()) {
+        EXPECT_EQ(d.file, "t.material");
+        s += std::to_string(d.range.begin.line) + ":" + std::to_string(d.range.begin.column) + " " +
+             FormatDiagCode(d.code) + " " + d.message +
+             (d.notes.empty() ? "" : " (" + d.notes[0].message + ")") + "\n";
     }
     return s;
 }
 
-std::vector<MaterialIssue> Parse(const std::string& text, Material* out = nullptr) {
-    std::vector<MaterialIssue> issues;
+DiagnosticList Parse(const std::string& text, Material* out = nullptr) {
+    DiagnosticList issues;
     Material m;
-    material::ParseMaterial(text, m, issues);
+    material::ParseMaterial(text, "t.material", m, issues);
     if (out)
         *out = m;
     return issues;
@@ -137,7 +135,7 @@ const pack::Pack& TestPack() {
         CompileRun run = Compile({path});
         EXPECT_TRUE(run.out.ok) << test::Brief(run.diags);
         bytes = run.out.pack;
-        EXPECT_FALSE(pack::Pack::Open(bytes, p));
+        EXPECT_TRUE(kiln::test::OpenInto(bytes, p));
     }
     return p;
 }
@@ -148,13 +146,10 @@ std::string Validate(const std::string& props,
     const std::string text = "{\"shader\": \"" + shader + "\",\n\"properties\": " + props +
                              ",\n\"keywords\": " + keywords + "}";
     Material m;
-    std::vector<MaterialIssue> issues;
-    EXPECT_TRUE(material::ParseMaterial(text, m, issues)) << Brief(issues);
+    DiagnosticList issues;
+    EXPECT_TRUE(material::ParseMaterial(text, "t.material", m, issues)) << Brief(issues);
     const bool ok = material::ValidateMaterial(m, TestPack(), "", issues);
-    bool any_error = false;
-    for (const auto& i : issues)
-        any_error |= i.severity == IssueSeverity::kError;
-    EXPECT_EQ(ok, !any_error);
+    EXPECT_EQ(ok, !issues.has_errors());
     return Brief(issues);
 }
 
@@ -172,8 +167,8 @@ TEST(MaterialKeywords, TogglesAndKeywordEnumsDriveKeywords) {
         const std::string text = "{\"shader\": \"Test/M\", \"properties\": " + props +
                                  ", \"keywords\": " + keywords + "}";
         Material m;
-        std::vector<MaterialIssue> issues;
-        EXPECT_TRUE(material::ParseMaterial(text, m, issues)) << Brief(issues);
+        DiagnosticList issues;
+        EXPECT_TRUE(material::ParseMaterial(text, "t.material", m, issues)) << Brief(issues);
         std::string out;
         for (const std::string& k :
              material::EnabledKeywords(m, TestPack(), *TestPack().FindShader("Test/M")))
@@ -239,14 +234,14 @@ TEST(MaterialValidate, KeywordsMustBeDeclaredAndNotAlternatives) {
 TEST(MaterialValidate, EveryTruncatedPrefixFailsCleanly) {
     const std::string text = ReadFile(DataPath("../materials/StandardMetallic.material"));
     for (size_t n = 0; n < text.size(); ++n) {
-        std::vector<MaterialIssue> issues;
+        DiagnosticList issues;
         Material m;
-        const bool ok = material::ParseMaterial(text.substr(0, n), m, issues);
+        const bool ok = material::ParseMaterial(text.substr(0, n), "t.material", m, issues);
         // Every prefix that stops before the closing brace is incomplete JSON.
         if (n <= text.rfind('}')) {
             EXPECT_FALSE(ok) << n;
-            ASSERT_FALSE(issues.empty()) << n;
-            EXPECT_LE(issues.front().pos.offset, n);
+            ASSERT_TRUE(issues.has_errors()) << n;
+            EXPECT_LE(issues.all().front().range.begin.offset, n);
         }
     }
 }

@@ -34,7 +34,7 @@ void Reseal(std::vector<uint8_t>& b) {
 
 TEST(PackReader, RoundTripOfACompiledPack) {
     Pack p;
-    ASSERT_FALSE(Pack::Open(CompiledPack(), p));
+    ASSERT_TRUE(kiln::test::OpenInto(CompiledPack(), p));
     EXPECT_EQ(p.Count(SectionTag::kShaders), 2u);
     EXPECT_NE(std::string(p.String(p.meta().producer)).find("glslang"), std::string::npos);
     const auto shader = p.FindShader("Test/MultiLight");
@@ -73,10 +73,15 @@ TEST(PackReader, RoundTripOfACompiledPack) {
     EXPECT_FALSE(p.FindShader("Nope"));
     // KeyFor ignores names no set declares (as Unity ignores such material keywords);
     // CheckKeywords names the first with the closest declared keyword.
-    EXPECT_FALSE(p.CheckKeywords(*by_name, {"POINT"}));
-    EXPECT_EQ(p.CheckKeywords(*by_name, {"POINT", "SPOTT"}),
+    EXPECT_TRUE(p.CheckKeywords(*by_name, {"POINT"}).ok());
+    const Status typo = p.CheckKeywords(*by_name, {"POINT", "SPOTT"});
+    ASSERT_FALSE(typo.ok());
+    EXPECT_EQ(typo.error().code, DiagCode::kUnknownKeyword);
+    EXPECT_EQ(typo.error().message,
               "keyword 'SPOTT' is not declared by the pass; did you mean 'SPOT'?");
-    EXPECT_EQ(p.CheckKeywords(999, {}), "no pass 999 in the pack");
+    const Status past_end = p.CheckKeywords(999, {});
+    ASSERT_FALSE(past_end.ok());
+    EXPECT_EQ(past_end.error().code, DiagCode::kIndexOutOfRange);
     // The SPIR-V as words, for vkCreateShaderModule.
     const ModuleRec m = p.Module(0).value();
     const std::span<const uint32_t> words = p.SpirvWords(m);
@@ -86,9 +91,10 @@ TEST(PackReader, RoundTripOfACompiledPack) {
 
 TEST(PackReader, OutOfRangeIndicesAreRejected) {
     Pack p;
-    ASSERT_FALSE(Pack::Open(CompiledPack(), p));
+    ASSERT_TRUE(kiln::test::OpenInto(CompiledPack(), p));
     const Result<ModuleRec> module = p.Module(100000);
     ASSERT_FALSE(module.ok());
+    EXPECT_EQ(module.error().code, DiagCode::kIndexOutOfRange);
     EXPECT_EQ(module.error().message,
               "record 100000 of section MODL is out of range (the pack has " +
                   std::to_string(p.Count(SectionTag::kModules)) + ")");
@@ -118,11 +124,10 @@ TEST(PackReader, EveryTruncatedPrefixIsRejected) {
     const std::vector<uint8_t>& full = CompiledPack();
     for (size_t n = 0; n < full.size(); ++n) {
         std::vector<uint8_t> prefix(full.begin(), full.begin() + static_cast<ptrdiff_t>(n));
-        Pack p;
-        auto err = Pack::Open(prefix, p);
-        ASSERT_TRUE(err) << "prefix of " << n << " bytes accepted";
+        const Result<Pack> opened = Pack::Open(prefix);
+        ASSERT_FALSE(opened) << "prefix of " << n << " bytes accepted";
         if (n >= kHeaderSize) {
-            EXPECT_EQ(err->code, PackErrorCode::kTruncated) << n;
+            EXPECT_EQ(opened.error().code, DiagCode::kPackTruncated) << n;
         }
     }
 }
@@ -132,27 +137,25 @@ TEST(PackReader, EveryBitFlipIsRejected) {
     for (size_t i = 0; i < b.size(); ++i) {
         const int bit = int(i % 8);
         b[i] ^= uint8_t(1u << bit);
-        Pack p;
-        auto err = Pack::Open(b, p);
-        ASSERT_TRUE(err) << "flip at byte " << i;
+        ASSERT_FALSE(Pack::Open(b)) << "flip at byte " << i;
         b[i] ^= uint8_t(1u << bit);
     }
 }
 
 TEST(PackReader, ForeignAndOtherVersionFilesGetTypedErrors) {
-    Pack p;
     std::vector<uint8_t> b = CompiledPack();
     b[0] = 'X';
-    EXPECT_EQ(Pack::Open(b, p)->code, PackErrorCode::kNotAPack);
+    EXPECT_EQ(Pack::Open(b).error().code, DiagCode::kNotAPack);
     b = CompiledPack();
     b[4] = 2;  // format major 2
     Reseal(b);
-    auto err = Pack::Open(b, p);
-    EXPECT_EQ(err->code, PackErrorCode::kUnsupportedVersion);
-    EXPECT_EQ(err->message, "pack format 2.0 is not supported (reader knows 1.x)");
+    const Result<Pack> other = Pack::Open(b);
+    ASSERT_FALSE(other);
+    EXPECT_EQ(other.error().code, DiagCode::kPackVersion);
+    EXPECT_EQ(other.error().message, "pack format 2.0 is not supported (reader knows 1.x)");
     b = CompiledPack();
     b.push_back(0);
-    EXPECT_EQ(Pack::Open(b, p)->code, PackErrorCode::kCorrupt);
+    EXPECT_EQ(Pack::Open(b).error().code, DiagCode::kBadPack);
 }
 
 TEST(PackReader, ValidChecksumDoesNotMakeBadIndicesSafe) {
@@ -165,7 +168,7 @@ TEST(PackReader, ValidChecksumDoesNotMakeBadIndicesSafe) {
         b[i] = b[i + 1] = b[i + 2] = b[i + 3] = 0xff;
         Reseal(b);
         Pack p;
-        if (Pack::Open(b, p)) {
+        if (!kiln::test::OpenInto(b, p)) {
             ++rejected;
             continue;
         }

@@ -29,12 +29,12 @@ struct WriteOptions {
 // Writes `bytes` to `path` atomically. An output that is one of the inputs (the same file, by
 // device and inode) is refused. An output that is a symbolic link is written through: the file it
 // points to is replaced and the link is kept.
-Result<bool> WriteFileAtomically(const std::string& path,
-                                 std::span<const uint8_t> bytes,
-                                 const WriteOptions& options = {});
-Result<bool> WriteFileAtomically(const std::string& path,
-                                 std::string_view text,
-                                 const WriteOptions& options = {});
+Status WriteFileAtomically(const std::string& path,
+                           std::span<const uint8_t> bytes,
+                           const WriteOptions& options = {});
+Status WriteFileAtomically(const std::string& path,
+                           std::string_view text,
+                           const WriteOptions& options = {});
 
 // The checks WriteFileAtomically makes before it writes, for a command that wants to refuse a bad
 // output before doing the work: `path` (or the file its symbolic link names) is absent or a

@@ -1,7 +1,7 @@
 // Material instances: the `.material` JSON format (docs/material-format.md), its parser and its
 // validation against a shader's Properties and keywords in a compiled pack. Shared by the `kiln`
 // CLI (build-time checks) and the runtime (loading). Never throws, never prints: problems are
-// returned as MaterialIssue with stable codes (K6xxx, docs/diagnostics.md).
+// added to a DiagnosticList with stable codes (K6xxx, docs/diagnostics.md).
 #ifndef KILN_MATERIAL_MATERIAL_H_
 #define KILN_MATERIAL_MATERIAL_H_
 
@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kiln/diagnostic.h"
 #include "kiln/pack/names.h"
 #include "kiln/pack/reader.h"
 
@@ -18,41 +19,8 @@ namespace kiln::material {
 
 inline constexpr int kFormatVersion = 1;
 
-struct TextPos {
-    uint32_t offset = 0;  // byte offset into the file
-    uint32_t line = 1;
-    uint32_t column = 1;
-};
-
-enum class IssueSeverity : uint8_t { kWarning, kError };
-
-// Stable codes, printed as K<number>.
-enum class IssueCode : uint16_t {
-    kJsonSyntax = 6001,           // not valid JSON
-    kUnknownField = 6002,         // a field the format does not have
-    kFieldType = 6003,            // a field with the wrong JSON type
-    kUnsupportedVersion = 6004,   // "kiln_material" is not a version this build reads
-    kMissingField = 6005,         // "shader" absent
-    kUnknownShader = 6006,        // no shader of that name in the pack
-    kUnknownProperty = 6007,      // not in the shader's Properties
-    kPropertyValueType = 6008,    // value does not fit the property's type
-    kOutOfRange = 6009,           // Range(min, max) property outside its range
-    kUnknownKeyword = 6010,       // keyword no pass of the shader declares
-    kConflictingKeywords = 6011,  // two keywords of one set
-    kEngineKeyword = 6012,        // warning: a multi_compile keyword the renderer chooses
-    kRenderState = 6013,          // unknown render-state field or value
-    kTextureNotFound = 6014,      // warning: texture file missing beside the material
-    kDuplicate = 6015,            // the same property or keyword twice
-    kKeywordContradictsProperty = 6016,  // warning: a listed keyword its [Toggle] property turns off
-};
-
-struct MaterialIssue {
-    IssueSeverity severity = IssueSeverity::kError;
-    IssueCode code = IssueCode::kJsonSyntax;
-    TextPos pos;
-    std::string message;  // lower-case, one sentence, no trailing period
-    std::string note;     // optional: "did you mean '_Color'", the allowed values, ...
-};
+// Positions in a .material file: byte offset, 1-based line and column.
+using TextPos = SourceLoc;
 
 // A property value as written: numbers (1 for scalars, 2-4 for vectors and colours) or a
 // texture (path relative to the .material file, tiling scale and offset).
@@ -80,6 +48,7 @@ struct RenderStateOverride {
 };
 
 struct Material {
+    std::string file;  // the path diagnostics name (ParseMaterial's `file`)
     int version = kFormatVersion;
     std::string shader;
     TextPos shader_pos;
@@ -88,19 +57,23 @@ struct Material {
     std::vector<RenderStateOverride> render_state;
 };
 
-// Parses a .material file. Returns false when an error was added to `issues`; `out` then still
-// holds every well-formed part (so validation can report more than the first problem), unless
-// the text is not JSON at all (an IssueCode::kJsonSyntax issue).
-bool ParseMaterial(std::string_view text, Material& out, std::vector<MaterialIssue>& issues);
+// Parses a .material file; `file` is the path its diagnostics name. Returns false when an error
+// was added to `diags`; `out` then still holds every well-formed part (so validation can report
+// more than the first problem), unless the text is not JSON at all (K6001, and `out.shader` is
+// empty). A diagnostic's "did you mean" or list of allowed values is its note.
+bool ParseMaterial(std::string_view text,
+                   const std::string& file,
+                   Material& out,
+                   DiagnosticList& diags);
 
 // Checks `m` against the shader of its name in `pack`: every property exists and has a value of
 // its type within its Range, every keyword is declared (and not two of one set), render-state
 // overrides are valid. `material_dir`, when not empty, is where texture paths are looked up.
-// Returns false when an error was added.
+// Returns false when an error was added to `diags` (which name `m.file`).
 bool ValidateMaterial(const Material& m,
                       const pack::Pack& pack,
                       const std::string& material_dir,
-                      std::vector<MaterialIssue>& issues);
+                      DiagnosticList& diags);
 
 // The keywords `m` enables on `shader` of `pack`: its "keywords" plus those its values of
 // [Toggle]/[ToggleOff]/[KeywordEnum] properties enable (kiln/pack/property_keywords.h; a property

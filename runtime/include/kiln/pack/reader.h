@@ -19,21 +19,10 @@
 
 namespace kiln::pack {
 
-enum class PackErrorCode {
-    kIo,                  // cannot open or map the file
-    kTruncated,           // shorter than its header says
-    kNotAPack,            // wrong magic
-    kUnsupportedVersion,  // another format major version
-    kChecksumMismatch,    // bytes changed after writing
-    kCorrupt,             // structurally invalid (bad bound, index, alignment)
-};
-
-struct PackError {
-    PackErrorCode code = PackErrorCode::kCorrupt;
-    std::string message;  // lower-case, one sentence
-};
-
-const char* PackErrorCodeName(PackErrorCode code);
+// Errors are kiln::Error with DiagCode kCannotReadFile (cannot open or map the file),
+// kPackTruncated (shorter than its header says), kNotAPack (wrong magic), kPackVersion (another
+// format major version), kPackChecksum (bytes changed after writing) or kBadPack (structurally
+// invalid: a bound, index or alignment).
 
 // A read-only file mapping.
 class MappedFile {
@@ -45,7 +34,7 @@ class MappedFile {
     MappedFile& operator=(MappedFile&& other) noexcept;
     ~MappedFile();
 
-    static std::optional<PackError> Map(const std::string& path, MappedFile& out);
+    static Result<MappedFile> Map(const std::string& path);
     std::span<const uint8_t> bytes() const { return {data_, size_}; }
 
   private:
@@ -55,7 +44,8 @@ class MappedFile {
 
 class Pack {
   public:
-    static std::optional<PackError> Open(std::span<const uint8_t> bytes, Pack& out);
+    // The pack views `bytes`, which must outlive it.
+    static Result<Pack> Open(std::span<const uint8_t> bytes);
 
     uint16_t format_minor() const { return header_.format_minor; }
     MetaRec meta() const {
@@ -99,12 +89,11 @@ class Pack {
     // The key selecting, in each keyword set, the enabled keyword (or the set's first keyword
     // when none of its keywords is enabled). Names in no set are ignored.
     VariantKey KeyFor(uint32_t pass, const std::vector<std::string>& enabled) const;
-    // nullopt when every name in `enabled` is a keyword of the pass; else a message naming the
-    // first that is not, with the closest declared keyword. For keyword lists that must not
+    // Success when every name in `enabled` is a keyword of the pass; else an error naming the
+    // first that is not, with the closest declared keyword (K4015). For keyword lists that must not
     // hold typos (kiln extract); KeyFor ignores such names, as Unity ignores a material keyword
     // its shader does not declare.
-    std::optional<std::string> CheckKeywords(uint32_t pass,
-                                             const std::vector<std::string>& enabled) const;
+    Status CheckKeywords(uint32_t pass, const std::vector<std::string>& enabled) const;
     // The keyword names a key selects (no-keyword entries omitted).
     std::vector<std::string> KeywordsOf(uint32_t pass, VariantKey key) const;
 
@@ -122,7 +111,7 @@ class Pack {
     }
     Error OutOfRange(SectionTag tag, uint32_t index) const;
     static size_t Index(SectionTag tag);
-    std::optional<PackError> Validate();
+    Status Validate();
 
     std::span<const uint8_t> bytes_;
     Header header_;

@@ -68,7 +68,7 @@ std::vector<UsageEntry> UsageOf(const std::vector<const VariantSelector*>& selec
 std::string UsageFileText(const std::vector<UsageEntry>& entries);
 Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text);
 // Writes UsageFileText via a temporary file (kiln/base/files.h).
-Result<bool> WriteUsageFile(const std::string& path, const std::vector<UsageEntry>& entries);
+Status WriteUsageFile(const std::string& path, const std::vector<UsageEntry>& entries);
 
 }  // namespace kiln::pack
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "kiln/runtime/status.h"
+#include "kiln/result.h"
 
 namespace kiln::runtime {
 
@@ -33,7 +33,7 @@ class ColorPipeline {
     ColorPipeline(ColorPipeline&&) noexcept;
     ColorPipeline& operator=(ColorPipeline&&) noexcept;
 
-    static std::optional<Error> Create(const ColorOptions& options, ColorPipeline& out);
+    static Result<ColorPipeline> Create(const ColorOptions& options);
 
     // sRGB-encoded to linear through the built-in config. Without `hdr` the input is clamped to
     // [0, 1] first (an LDR colour picker's range); with it, values above 1 follow the curve.
@@ -60,17 +60,17 @@ struct LinearImage {
 };
 
 // 8-bit RGBA PNG, written to a temporary file and renamed.
-std::optional<Error> WritePng(const std::string& path,
-                              uint32_t width,
-                              uint32_t height,
-                              const std::vector<uint8_t>& rgba8);
+Status WritePng(const std::string& path,
+                uint32_t width,
+                uint32_t height,
+                const std::vector<uint8_t>& rgba8);
 // A rendered linear image through `color`'s display transform, quantized to 8 bits and written
 // as an opaque PNG (coverage is not transparency).
-std::optional<Error> WriteDisplayPng(const std::string& path,
-                                     const LinearImage& image,
-                                     const ColorPipeline& color);
+Status WriteDisplayPng(const std::string& path,
+                       const LinearImage& image,
+                       const ColorPipeline& color);
 // Uncompressed 32-bit float RGBA OpenEXR (scanline), written to a temporary file and renamed.
-std::optional<Error> WriteExr(const std::string& path, const LinearImage& image);
+Status WriteExr(const std::string& path, const LinearImage& image);
 
 }  // namespace kiln::runtime
 

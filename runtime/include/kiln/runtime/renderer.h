@@ -12,11 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "kiln/diagnostic.h"
 #include "kiln/pack/reader.h"
+#include "kiln/pack/variant_selector.h"
+#include "kiln/result.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/scene.h"
-#include "kiln/runtime/status.h"
-#include "kiln/pack/variant_selector.h"
 
 namespace kiln::runtime {
 
@@ -52,7 +53,9 @@ struct FrameStats {
     uint32_t vertex_lit = 0;   // base draws with VERTEXLIGHT_ON
     uint32_t pipelines_created = 0;
     std::string camera;  // which camera was used
-    std::vector<std::string> warnings;
+    // What the frame did not render as asked (K0012-K0015, K0024), each once; the file is the
+    // scene, or the pack or cache a warning is about.
+    DiagnosticList warnings;
 };
 
 class Renderer {
@@ -62,22 +65,22 @@ class Renderer {
     Renderer(Renderer&&) noexcept;
     Renderer& operator=(Renderer&&) noexcept;
 
-    static std::optional<Error> Create(const RendererOptions& options, Renderer& out);
+    static Result<Renderer> Create(const RendererOptions& options);
 
     // Maps and validates a pack; shaders are looked up in the order packs were added.
-    std::optional<Error> AddPack(const std::string& path);
+    Status AddPack(const std::string& path);
 
     // Renders one frame into a linear (scene-referred) image. Colour properties are decoded
     // from sRGB through `color`.
-    std::optional<Error> Render(const Scene& scene,
-                                const FrameSettings& settings,
-                                const ColorPipeline& color,
-                                LinearImage& out,
-                                FrameStats& stats);
+    Status Render(const Scene& scene,
+                  const FrameSettings& settings,
+                  const ColorPipeline& color,
+                  LinearImage& out,
+                  FrameStats& stats);
 
     std::string DeviceName() const;
     std::vector<std::string> ValidationMessages() const;
-    std::optional<Error> WriteUsage(const std::string& path) const;
+    Status WriteUsage(const std::string& path) const;
 
     size_t pack_count() const;
     const pack::Pack& pack(size_t index) const;

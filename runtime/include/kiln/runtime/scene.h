@@ -14,8 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "kiln/diagnostic.h"
 #include "kiln/pack/vertex.h"
-#include "kiln/runtime/status.h"
+#include "kiln/result.h"
 
 namespace kiln::runtime {
 
@@ -112,15 +113,14 @@ struct Scene {
 };
 
 // Loads a .gltf or .glb. Recoverable problems (an invalid light, a missing image) are dropped
-// with a warning; anything that leaves no usable scene is an error.
-std::optional<Error> LoadGltf(const std::string& path,
-                              Scene& out,
-                              std::vector<std::string>& warnings);
+// with a warning added to `diags` (K0013, K0016, K0017; the file is the scene); anything that
+// leaves no usable scene is an error (K0007).
+Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags);
 
 // Reads a material sidecar: {"kiln_materials": 1, "materials": {"<glTF material>": "x.material"},
 // "ambient": [r, g, b]}; paths relative to the sidecar. LoadGltf reads "<scene>.kiln.json"
 // beside the scene by itself when present.
-std::optional<Error> LoadMaterialSidecar(const std::string& path, Scene& scene);
+Status LoadMaterialSidecar(const std::string& path, Scene& scene);
 
 // Fills tangents from positions, normals and UV0 (per-triangle UV derivatives accumulated per
 // vertex, Gram-Schmidt against the normal, handedness from the bitangent).

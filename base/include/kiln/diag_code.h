@@ -1,16 +1,10 @@
-// Diagnostics: the library never prints. Every stage appends to a DiagnosticList; the CLI formats
-// it (text or JSON). Codes are stable: once published a code keeps its meaning
-// (docs/diagnostics.md).
-#ifndef KILN_DIAGNOSTIC_H_
-#define KILN_DIAGNOSTIC_H_
+// The stable diagnostic codes and severities every Kiln library reports with: compiler
+// diagnostics, the runtime's errors and warnings, the pack reader and .material files. Once
+// published a code keeps its meaning (docs/diagnostics.md).
+#ifndef KILN_DIAG_CODE_H_
+#define KILN_DIAG_CODE_H_
 
-#include <cstddef>
 #include <cstdint>
-#include <string>
-#include <string_view>
-#include <vector>
-
-#include "kiln/source.h"
 
 namespace kiln {
 
@@ -20,20 +14,35 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 //   K0xxx  input/output          K1xxx  ShaderLab lexer
 //   K2xxx  ShaderLab parser      K3xxx  ShaderLab semantic checks
 //   K4xxx  pragmas and variants  K5xxx  HLSL compilation, SPIR-V, reflection, bindings
-//   K6xxx  material instances (kiln::material::IssueCode, runtime/include/kiln/material)
+//   K6xxx  material instances
 //   K9xxx  internal compiler errors
 enum class DiagCode : uint16_t {
     kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
     kCannotWriteFile = 2,
-    kBadCommandLine = 3,      // an unknown subcommand or option value the CLI reports itself
-    kBadPack = 4,             // a pack that cannot be read (the reader's reason in the message)
+    kBadCommandLine = 3,  // an unknown subcommand or option value the CLI reports itself
+    kBadPack = 4,  // a pack that is structurally invalid (the reader's reason in the message)
     kUnknownPackName = 5,     // a shader or pass name the pack does not hold
     kMissingVariant = 6,      // the pack holds no variant with the requested keywords
     kBadScene = 7,            // a scene that cannot be loaded or rendered as asked
     kRenderFailed = 8,        // the renderer failed (device, pipeline, validation messages)
     kBadColorConfig = 9,      // an OpenColorIO config, display or view that does not exist
-    kRenderWarning = 10,      // the runtime's warnings (scene content it skipped or changed)
+    kRenderWarning = 10,      // a runtime warning without a code of its own below
     kWorkerUnavailable = 11,  // no compile worker process could be found or started
+    // The runtime's warnings: the frame was rendered, but not entirely as the input asked.
+    kVariantFallback = 12,      // a missing variant replaced by the nearest (--missing-variant)
+    kTextureFallback = 13,      // a texture not found or not decodable: the default used
+    kDefaultLight = 14,         // a scene without lights lit by the default directional light
+    kPassNotDrawn = 15,         // a shader with no pass the render path draws
+    kSceneContentIgnored = 16,  // glTF content the loader skips (primitive mode, attribute, light)
+    kGltfWarning = 17,          // a warning of the glTF parser (tinygltf) about the file
+    // Packs that cannot be read, besides K0004.
+    kPackTruncated = 18,         // shorter than its header says
+    kNotAPack = 19,              // not a kiln pack (wrong magic)
+    kPackVersion = 20,           // another format major version
+    kPackChecksum = 21,          // the bytes changed after the pack was written
+    kIndexOutOfRange = 22,       // an index given to a pack's API is past the end of its section
+    kBadUsageFile = 23,          // a usage file (kiln render --usage) that cannot be read
+    kPipelineCacheIgnored = 24,  // warning: a --pipeline-cache file that does not fit the device
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,
@@ -105,76 +114,27 @@ enum class DiagCode : uint16_t {
     kMacroExpansionTooLarge = 5013,  // a macro whose expansion is over the budget
     kExpressionTooLong = 5014,       // one statement or expression with too many terms
 
-    // K6xxx: material instances; the values are kiln::material::IssueCode's (runtime).
-    kMaterialFirst = 6001,
-    kMaterialLast = 6099,
+    // K6xxx: material instances (.material files, kiln/material/material.h).
+    kMaterialJsonSyntax = 6001,           // not valid JSON
+    kMaterialUnknownField = 6002,         // a field the format does not have
+    kMaterialFieldType = 6003,            // a field with the wrong JSON type
+    kMaterialUnsupportedVersion = 6004,   // "kiln_material" is not a version this build reads
+    kMaterialMissingField = 6005,         // "shader" absent
+    kMaterialUnknownShader = 6006,        // no shader of that name in the pack
+    kMaterialUnknownProperty = 6007,      // not in the shader's Properties
+    kMaterialPropertyValueType = 6008,    // value does not fit the property's type
+    kMaterialOutOfRange = 6009,           // Range(min, max) property outside its range
+    kMaterialUnknownKeyword = 6010,       // keyword no pass of the shader declares
+    kMaterialConflictingKeywords = 6011,  // two keywords of one set
+    kMaterialEngineKeyword = 6012,        // warning: a multi_compile keyword the renderer chooses
+    kMaterialRenderState = 6013,          // unknown render-state field or value
+    kMaterialTextureNotFound = 6014,      // warning: texture file missing beside the material
+    kMaterialDuplicate = 6015,            // the same property or keyword twice
+    kMaterialKeywordContradictsProperty = 6016,  // warning: a keyword its [Toggle] turns off
 
     kInternalError = 9001,
 };
 
-// "K1234".
-std::string FormatDiagCode(DiagCode code);
-std::string_view SeverityName(Severity severity);
-
-struct DiagnosticNote {
-    std::string file;
-    SourceRange range;
-    std::string message;
-};
-
-struct Diagnostic {
-    Severity severity = Severity::kError;
-    DiagCode code = DiagCode::kInternalError;
-    std::string file;
-    SourceRange range;
-    std::string message;  // lower-case, one sentence, no trailing period
-    std::vector<DiagnosticNote> notes;
-};
-
-class DiagnosticList {
-  public:
-    // Errors past this limit are dropped and replaced by one kTooManyErrors error.
-    static constexpr size_t kDefaultErrorLimit = 100;
-
-    Diagnostic& Add(Severity severity,
-                    DiagCode code,
-                    std::string file,
-                    SourceRange range,
-                    std::string message);
-    Diagnostic& Error(DiagCode code, std::string file, SourceRange range, std::string message) {
-        return Add(Severity::kError, code, std::move(file), range, std::move(message));
-    }
-    Diagnostic& Warning(DiagCode code, std::string file, SourceRange range, std::string message) {
-        return Add(Severity::kWarning, code, std::move(file), range, std::move(message));
-    }
-
-    const std::vector<Diagnostic>& all() const { return diags_; }
-    size_t error_count() const { return errors_; }
-    bool has_errors() const { return errors_ > 0; }
-    bool has_internal_errors() const { return internal_ > 0; }
-    // True once the error limit was hit: callers should stop early.
-    bool saturated() const { return saturated_; }
-    void set_error_limit(size_t limit) { limit_ = limit; }
-    void Append(const DiagnosticList& other);
-
-  private:
-    std::vector<Diagnostic> diags_;
-    size_t errors_ = 0;
-    size_t internal_ = 0;
-    size_t limit_ = kDefaultErrorLimit;
-    bool saturated_ = false;
-    Diagnostic overflow_sink_;
-};
-
-// Compiler-style text: "file:line:col: error: message [K1234]" followed by the source line and a
-// caret/underline when `source` is the file the diagnostic points into, then its notes. `color`
-// adds ANSI colours (a terminal's choice: the CLI's --color).
-std::string FormatDiagnosticsText(const DiagnosticList& diags,
-                                  const std::vector<const SourceFile*>& sources,
-                                  bool color = false);
-// A JSON array of diagnostics (format in docs/diagnostics.md).
-std::string FormatDiagnosticsJson(const DiagnosticList& diags);
-
 }  // namespace kiln
 
-#endif  // KILN_DIAGNOSTIC_H_
+#endif  // KILN_DIAG_CODE_H_

@@ -62,6 +62,12 @@ void DiagnosticList::Append(const DiagnosticList& other) {
     }
 }
 
+void DiagnosticList::SortByPosition() {
+    std::stable_sort(diags_.begin(), diags_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.file != b.file ? a.file < b.file : a.range.begin.offset < b.range.begin.offset;
+    });
+}
+
 namespace {
 
 const SourceFile* FindSource(const std::vector<const SourceFile*>& sources,
