@@ -6,6 +6,7 @@
 #include "driver/compile_state.h"
 #include "driver/isolation.h"
 #include "driver/parallel.h"
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/property_keywords.h"
 #include "kiln/shaderlab/ast.h"
 #include "pack/pack_builder.h"
@@ -274,24 +275,9 @@ void CheckInterfaces(CompileState& st) {
                                      " but the shader does not declare it as " + want);
             }
         }
-        // Globals the runtime fills (docs/shader-library.md); not material properties.
-        static const std::set<std::string> kEngineGlobals = {"_LightColor0",
-                                                             "_WorldSpaceLightPos0",
-                                                             "_WorldSpaceCameraPos",
-                                                             "_Time",
-                                                             "_SinTime",
-                                                             "_CosTime",
-                                                             "unity_DeltaTime",
-                                                             "_ProjectionParams",
-                                                             "_ScreenParams",
-                                                             "_ZBufferParams",
-                                                             "_LightMatrix0",
-                                                             "_LightPositionRange",
-                                                             "_LightShadowData",
-                                                             "_SpecColor"};
+        // Globals the runtime fills (kiln/pack/engine_names.h); not material properties.
         for (const auto& [name, mem] : members) {
-            if (declared.count(name) || kEngineGlobals.count(name) ||
-                name.rfind("unity_", 0) == 0 || name.rfind("UNITY_", 0) == 0) {
+            if (declared.count(name) || pack::IsEngineGlobal(name)) {
                 continue;
             }
             st.diags.Warning(

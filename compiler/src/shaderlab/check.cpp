@@ -4,6 +4,7 @@
 #include <cstring>
 #include <map>
 
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/names.h"
 #include "kiln/shaderlab/parse.h"
 #include "parser.h"
@@ -58,8 +59,6 @@ struct State {
 };
 
 void State::CheckProperties() {
-    static const char* const kTextureDefaults[] = {"white", "black", "gray",       "grey",
-                                                   "bump",  "red",   "linearGray", ""};
     for (const Property& p : shader.properties) {
         auto [it, inserted] = props.emplace(p.name, &p);
         if (!inserted) {
@@ -81,11 +80,7 @@ void State::CheckProperties() {
             }
         }
         if (IsTextureType(p.type)) {
-            bool known = false;
-            for (const char* name : kTextureDefaults) {
-                known = known || EqualsIgnoreCase(p.default_texture, name);
-            }
-            if (!known) {
+            if (!p.default_texture.empty() && !pack::FindDefaultTexture(p.default_texture)) {
                 Warning(DiagCode::kUnknownTextureDefault, p.default_range,
                         "unknown default texture \"" + p.default_texture + "\" for '" + p.name +
                             "'; expected white, black, gray, bump, red or \"\"; gray is used");

@@ -284,15 +284,16 @@ std::optional<Shortcut> BuiltinShortcut(const std::string& name) {
     // A light pass with real-time shadows: each light type with the shadow kinds it can have,
     // soft shadows for depth and cube shadows, and the mixed-lighting (shadowmask) keywords.
     const Sets light_shadow_sets = {
-        {"POINT", "DIRECTIONAL", "SPOT", "POINT_COOKIE", "DIRECTIONAL_COOKIE"},
+        {pack::kKeywordPoint, pack::kKeywordDirectional, pack::kKeywordSpot,
+         pack::kKeywordPointCookie, pack::kKeywordDirectionalCookie},
         {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"},
         {"", "SHADOWS_SOFT"},
         {"", "SHADOWS_SHADOWMASK"},
         {"", "LIGHTMAP_SHADOW_MIXING"}};
     const Rules light_shadow_rules = {
-        {"SHADOWS_DEPTH", {"SPOT"}, {}, {}},
-        {"SHADOWS_SCREEN", {"DIRECTIONAL", "DIRECTIONAL_COOKIE"}, {}, {}},
-        {"SHADOWS_CUBE", {"POINT", "POINT_COOKIE"}, {}, {}},
+        {"SHADOWS_DEPTH", {pack::kKeywordSpot}, {}, {}},
+        {"SHADOWS_SCREEN", {pack::kKeywordDirectional, pack::kKeywordDirectionalCookie}, {}, {}},
+        {"SHADOWS_CUBE", {pack::kKeywordPoint, pack::kKeywordPointCookie}, {}, {}},
         {"SHADOWS_SOFT", {"SHADOWS_DEPTH", "SHADOWS_CUBE"}, {}, {}},
         {"LIGHTMAP_SHADOW_MIXING",
          {"SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE", "SHADOWS_SHADOWMASK"},
@@ -343,7 +344,7 @@ std::optional<Shortcut> BuiltinShortcut(const std::string& name) {
                          {"", "UNITY_HDR_ON"},
                          {"", "SHADOWS_SHADOWMASK"},
                          {"", "LIGHTMAP_SHADOW_MIXING"},
-                         {"", "LIGHTPROBE_SH"}},
+                         {"", pack::kKeywordLightProbeSH}},
                         {dirlightmap, {"LIGHTMAP_SHADOW_MIXING", {"LIGHTMAP_ON"}, {}, {}}}};
     }
     if (name == "multi_compile_shadowcaster") {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kiln/pack/engine_names.h"
 #include "kiln/reference/sh.h"
 
 namespace kiln::render {
@@ -44,10 +45,10 @@ Values CameraValues(const CameraSetup& camera) {
     if (camera.zfar > 0) {
         // Perspective: z = f (d - n) / (d (f - n)), so 1/d = (1 - f/n)/f * z + (f/n)/f.
         const float f = camera.zfar;
-        v["_ZBufferParams"] = {1 - f / n, f / n, (1 - f / n) / f, 1 / n};
+        v[pack::kGlobalZBufferParams] = {1 - f / n, f / n, (1 - f / n) / f, 1 / n};
     } else {
         // Infinite far plane: z = 1 - n/d, 1/d = (1 - z)/n.
-        v["_ZBufferParams"] = {-1e30f, 1e30f, -1 / n, 1 / n};
+        v[pack::kGlobalZBufferParams] = {-1e30f, 1e30f, -1 / n, 1 / n};
     }
     v["unity_OrthoParams"] = {ortho ? 1 / p[0][0] : 0, ortho ? 1 / p[1][1] : 0, 0,
                               ortho ? 1.0f : 0};
@@ -131,14 +132,14 @@ Values FrameValues(const runtime::Scene& scene,
     const float t = settings.time;
     const float w = float(settings.width), h = float(settings.height);
     Values v;
-    v["_Time"] = {t / 20, t, 2 * t, 3 * t};
-    v["_SinTime"] = {std::sin(t / 8), std::sin(t / 4), std::sin(t / 2), std::sin(t)};
-    v["_CosTime"] = {std::cos(t / 8), std::cos(t / 4), std::cos(t / 2), std::cos(t)};
+    v[pack::kGlobalTime] = {t / 20, t, 2 * t, 3 * t};
+    v[pack::kGlobalSinTime] = {std::sin(t / 8), std::sin(t / 4), std::sin(t / 2), std::sin(t)};
+    v[pack::kGlobalCosTime] = {std::cos(t / 8), std::cos(t / 4), std::cos(t / 2), std::cos(t)};
     v["unity_DeltaTime"] = {1.0f / 60, 60.0f, 1.0f / 60, 60.0f};
-    v["_WorldSpaceCameraPos"] = {camera.position.x, camera.position.y, camera.position.z};
+    v[pack::kGlobalWorldSpaceCameraPos] = {camera.position.x, camera.position.y, camera.position.z};
     const float far = camera.zfar > 0 ? camera.zfar : 1e30f;
-    v["_ProjectionParams"] = {1, camera.znear, far, camera.zfar > 0 ? 1 / far : 0};
-    v["_ScreenParams"] = {w, h, 1 + 1 / w, 1 + 1 / h};
+    v[pack::kGlobalProjectionParams] = {1, camera.znear, far, camera.zfar > 0 ? 1 / far : 0};
+    v[pack::kGlobalScreenParams] = {w, h, 1 + 1 / w, 1 + 1 / h};
     v["unity_MatrixV"] = Mat(camera.view);
     v["unity_MatrixInvV"] = Mat(glm::inverse(camera.view));
     v["unity_MatrixVP"] = Mat(camera.projection * camera.view);
@@ -179,24 +180,25 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
     Values v;
     if (light) {
         const glm::vec3 c = runtime::ShaderLightColor(*light);
-        v["_LightColor0"] = {c.r, c.g, c.b, 1};
+        v[pack::kGlobalLightColor0] = {c.r, c.g, c.b, 1};
         if (light->type == runtime::LightType::kDirectional) {
             const glm::vec3 d = -light->direction;  // towards the light
-            v["_WorldSpaceLightPos0"] = {d.x, d.y, d.z, 0};
+            v[pack::kGlobalWorldSpaceLightPos0] = {d.x, d.y, d.z, 0};
         } else {
-            v["_WorldSpaceLightPos0"] = {light->position.x, light->position.y, light->position.z,
-                                         1};
+            v[pack::kGlobalWorldSpaceLightPos0] = {light->position.x, light->position.y,
+                                                   light->position.z, 1};
             // Unity: w = 1 / range (the shadow-cube distance scale); unlimited lights 0.
-            v["_LightPositionRange"] = {light->position.x, light->position.y, light->position.z,
-                                        light->range > 0 ? 1 / light->range : 0};
+            v[pack::kGlobalLightPositionRange] = {light->position.x, light->position.y,
+                                                  light->position.z,
+                                                  light->range > 0 ? 1 / light->range : 0};
         }
         v["kiln_SpotDirection0"] = {light->direction.x, light->direction.y, light->direction.z, 0};
         const float inv_range2 = light->range > 0 ? 1 / (light->range * light->range) : 0;
         v["kiln_LightParams0"] = {inv_range2, std::cos(light->outer_cone),
                                   std::cos(light->inner_cone), 0};
     } else {
-        v["_LightColor0"] = {0, 0, 0, 0};
-        v["_WorldSpaceLightPos0"] = {0, 1, 0, 0};
+        v[pack::kGlobalLightColor0] = {0, 0, 0, 0};
+        v[pack::kGlobalWorldSpaceLightPos0] = {0, 1, 0, 0};
         v["kiln_SpotDirection0"] = {0, -1, 0, 0};
         v["kiln_LightParams0"] = {0, -1, -1, 0};
     }

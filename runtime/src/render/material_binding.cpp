@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "kiln/base/files.h"
+#include "kiln/pack/engine_names.h"
 #include "scene/gltf_input.h"
 
 namespace kiln::render {
@@ -76,7 +77,8 @@ void InstanceFromDefaults(const pack::Pack& pack,
             TextureBinding t;
             t.default_name = std::string(pack.String(p.texture_default));
             t.srgb = !(HasAttribute(pack, p, "Normal") || HasAttribute(pack, p, "Linear") ||
-                       t.default_name == "bump");
+                       pack::FindDefaultTexture(t.default_name) ==
+                           pack::FindDefaultTexture(pack::kDefaultTextureBump));
             m.textures[name] = t;
             m.values[name + "_ST"] = {1, 1, 0, 0};
             continue;

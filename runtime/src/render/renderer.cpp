@@ -1,5 +1,10 @@
 #include "kiln/runtime/renderer.h"
 
+#include <array>
+#include <string>
+#include <utility>
+
+#include "kiln/pack/engine_names.h"
 #include "render/renderer_state.h"
 #include "vk/pipeline_cache.h"
 
@@ -136,18 +141,17 @@ Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out) {
 Status Renderer::State::DefaultTexture(const std::string& requested,
                                        vk::ImageShape shape,
                                        const vk::Image*& out) {
-    // Unity's built-in defaults; an unknown or empty name is "gray".
-    static const std::map<std::string, std::array<uint8_t, 4>> kDefaults = {
-        {"white", {255, 255, 255, 255}}, {"black", {0, 0, 0, 0}},
-        {"gray", {128, 128, 128, 128}},  {"grey", {128, 128, 128, 128}},
-        {"bump", {128, 128, 255, 128}},  {"red", {255, 0, 0, 255}},
-    };
-    const std::string name = kDefaults.count(requested) ? requested : "gray";
+    // Unity's built-in defaults (kiln/pack/engine_names.h); an unknown or empty name is "gray".
+    const pack::DefaultTexture* known = pack::FindDefaultTexture(requested);
+    const pack::DefaultTexture& texture =
+        known ? *known : *pack::FindDefaultTexture(pack::kDefaultTextureFallback);
+    const std::string name = texture.name;
     if (auto it = default_textures.find({name, shape}); it != default_textures.end()) {
         out = &it->second;
         return {};
     }
-    const std::array<uint8_t, 4> texel = kDefaults.at(name);
+    const std::array<uint8_t, 4> texel = {texture.rgba[0], texture.rgba[1], texture.rgba[2],
+                                          texture.rgba[3]};
     vk::Image image;
     if (Status e = vk::CreateConstantImage(context, shape, VK_FORMAT_R8G8B8A8_UNORM, texel, image);
         !e.ok()) {

@@ -1,9 +1,16 @@
 // Names the compiler's Unity knowledge and the runtime's forward path must spell alike: the
-// LightMode values Kiln's renderer draws (and the compiler's UNITY_PASS_* defines key on), and the
+// LightMode values Kiln's renderer draws (and the compiler's UNITY_PASS_* defines key on), the
 // engine keywords the renderer enables, which the compiler's multi_compile_fwdbase/_fwdadd
-// shortcuts declare. Plain `const char*`, so they initialise std::string tables directly.
+// shortcuts declare, the built-in globals the renderer fills (which the compiler therefore does
+// not ask to be Properties), and Unity's named default textures (which the compiler accepts in
+// Properties and the renderer binds). Plain `const char*`, so they initialise std::string tables
+// directly. The G-buffer layout joins them with the deferred path (issue 16).
 #ifndef KILN_PACK_ENGINE_NAMES_H_
 #define KILN_PACK_ENGINE_NAMES_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
 
 namespace kiln::pack {
 
@@ -30,6 +37,88 @@ inline constexpr const char* kKeywordPointCookie = "POINT_COOKIE";
 inline constexpr const char* kKeywordDirectionalCookie = "DIRECTIONAL_COOKIE";
 inline constexpr const char* kKeywordLightProbeSH = "LIGHTPROBE_SH";
 inline constexpr const char* kKeywordVertexLight = "VERTEXLIGHT_ON";
+
+// Built-in globals the renderer fills per frame, light or draw that are not named unity_* or
+// UNITY_* (every such name is the engine's too: IsEngineGlobal). docs/shader-library.md.
+inline constexpr const char* kGlobalLightColor0 = "_LightColor0";
+inline constexpr const char* kGlobalWorldSpaceLightPos0 = "_WorldSpaceLightPos0";
+inline constexpr const char* kGlobalWorldSpaceCameraPos = "_WorldSpaceCameraPos";
+inline constexpr const char* kGlobalTime = "_Time";
+inline constexpr const char* kGlobalSinTime = "_SinTime";
+inline constexpr const char* kGlobalCosTime = "_CosTime";
+inline constexpr const char* kGlobalProjectionParams = "_ProjectionParams";
+inline constexpr const char* kGlobalScreenParams = "_ScreenParams";
+inline constexpr const char* kGlobalZBufferParams = "_ZBufferParams";
+inline constexpr const char* kGlobalLightPositionRange = "_LightPositionRange";
+// Unity sets these too; Kiln's renderer does not yet (shadows, cookies: issue 18), and a shader
+// reading them gets zero, as in Unity without that feature.
+inline constexpr const char* kGlobalLightMatrix0 = "_LightMatrix0";
+inline constexpr const char* kGlobalLightShadowData = "_LightShadowData";
+inline constexpr const char* kGlobalSpecColor = "_SpecColor";
+
+inline constexpr const char* kEngineGlobals[] = {
+    kGlobalLightColor0,
+    kGlobalWorldSpaceLightPos0,
+    kGlobalWorldSpaceCameraPos,
+    kGlobalTime,
+    kGlobalSinTime,
+    kGlobalCosTime,
+    kGlobalProjectionParams,
+    kGlobalScreenParams,
+    kGlobalZBufferParams,
+    kGlobalLightPositionRange,
+    kGlobalLightMatrix0,
+    kGlobalLightShadowData,
+    kGlobalSpecColor,
+};
+
+// Whether the engine, not a material, sets the global `name`.
+constexpr bool IsEngineGlobal(std::string_view name) {
+    if (name.substr(0, 6) == "unity_" || name.substr(0, 6) == "UNITY_") {
+        return true;
+    }
+    for (const char* g : kEngineGlobals) {
+        if (name == g) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// Unity's named default textures for a texture property (`_MainTex ("Albedo", 2D) = "white" {}`)
+// and the RGBA8 texel the renderer binds for each. An empty or unknown name is "gray".
+struct DefaultTexture {
+    const char* name;
+    uint8_t rgba[4];
+};
+inline constexpr const char* kDefaultTextureBump = "bump";
+inline constexpr const char* kDefaultTextureFallback = "gray";
+inline constexpr DefaultTexture kDefaultTextures[] = {
+    {"white", {255, 255, 255, 255}},
+    {"black", {0, 0, 0, 0}},
+    {"gray", {128, 128, 128, 128}},
+    {"grey", {128, 128, 128, 128}},
+    {"linearGray", {128, 128, 128, 128}},
+    {kDefaultTextureBump, {128, 128, 255, 128}},  // a flat tangent-space normal
+    {"red", {255, 0, 0, 255}},
+};
+
+// The default texture of that name, ignoring ASCII case ("White" is "white", as the ShaderLab
+// check has always accepted); nullptr for a name Unity does not define.
+constexpr const DefaultTexture* FindDefaultTexture(std::string_view name) {
+    auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
+    for (const DefaultTexture& t : kDefaultTextures) {
+        const std::string_view n = t.name;
+        bool same = n.size() == name.size();
+        for (size_t i = 0; same && i < n.size(); ++i) {
+            same = lower(n[i]) == lower(name[i]);
+        }
+        if (same) {
+            return &t;
+        }
+    }
+    return nullptr;
+}
 
 }  // namespace kiln::pack
 
