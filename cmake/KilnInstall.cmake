@@ -1,7 +1,7 @@
 # cmake --install: the kiln tool and its worker, the libraries with their public headers, the
 # built-in include library, the shipped materials pack, Kiln.cmake and a KilnConfig.cmake whose
 # imported targets are kiln::pack (read packs, pick variants: no Vulkan), kiln::material,
-# kiln::runtime, kiln::compiler, and the executables kiln::kiln and kiln::worker. Nothing
+# kiln::runtime, kiln::compiler, and the executables kiln::kiln, kiln::worker and kiln::render. Nothing
 # installed names the build or source tree: kiln finds its templates and pack relative to itself
 # (docs/install.md).
 include(GNUInstallDirs)
@@ -18,13 +18,14 @@ set_target_properties(kiln_runtime PROPERTIES EXPORT_NAME runtime)
 set_target_properties(kiln_compiler PROPERTIES EXPORT_NAME compiler)
 set_target_properties(kiln PROPERTIES EXPORT_NAME kiln)
 set_target_properties(kiln-worker PROPERTIES EXPORT_NAME worker)
+set_target_properties(kiln-render PROPERTIES EXPORT_NAME render)
 
 foreach(_t kiln_base kiln_pack kiln_material kiln_reference kiln_runtime kiln_compiler)
     target_include_directories(${_t} INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 endforeach()
 
 install(TARGETS kiln_base kiln_pack kiln_material kiln_reference kiln_runtime kiln_compiler
-                kiln kiln-worker
+                kiln kiln-worker kiln-render
     EXPORT KilnTargets
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

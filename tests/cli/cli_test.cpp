@@ -347,5 +347,22 @@ TEST(Cli, KilnWithoutItsTemplatesSaysWhereItLooked) {
     EXPECT_FALSE(std::filesystem::exists(dir.path() + "/out.kpack"));
 }
 
+// kiln itself links no renderer: `kiln render` is kiln-render beside it, and without it the
+// command says so (K0025) instead of failing to start for a missing libvulkan.
+TEST(Cli, RenderRunsKilnRenderBesideKilnAndSaysWhenItIsMissing) {
+    ScratchDir dir;
+    std::filesystem::copy_file(KILN_BINARY, dir.path() + "/kiln");
+    const std::string err = dir.path() + "/err.txt";
+    const std::string cmd = dir.path() + "/kiln --diagnostics-format=json render " +
+                            DataPath("cli/mistakes/triangle.gltf") + " -o " + dir.path() +
+                            "/out.png 2>" + err;
+    const int status = std::system(cmd.c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+    const std::string text = ReadFile(err);
+    EXPECT_NE(text.find("\"code\": \"K0025\""), std::string::npos) << text;
+    EXPECT_NE(text.find(dir.path() + "/kiln-render"), std::string::npos) << text;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() + "/out.png"));
+}
+
 }  // namespace
 }  // namespace kiln::test

@@ -10,10 +10,18 @@ trap 'rm -rf "$work"' EXIT
 prefix="$work/prefix"
 
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
-for f in bin/kiln bin/kiln-worker lib/cmake/Kiln/KilnConfig.cmake lib/cmake/Kiln/Kiln.cmake \
+for f in bin/kiln bin/kiln-worker bin/kiln-render lib/cmake/Kiln/KilnConfig.cmake lib/cmake/Kiln/Kiln.cmake \
          include/kiln/pack/reader.h share/kiln/materials.kpack share/kiln/templates/UnityCG.cginc; do
     [ -e "$prefix/$f" ] || { echo "FAIL: $f was not installed"; exit 1; }
 done
+
+# A build machine's kiln needs no renderer libraries; kiln-render (kiln render) has them.
+needed=$(readelf -d "$prefix/bin/kiln" | grep NEEDED || true)
+if echo "$needed" | grep -Eq 'vulkan|OpenColorIO|tinygltf'; then
+    echo "FAIL: bin/kiln links a renderer library:"; echo "$needed"; exit 1
+fi
+readelf -d "$prefix/bin/kiln-render" | grep -q 'libvulkan' ||
+    { echo "FAIL: bin/kiln-render does not link the Vulkan loader"; exit 1; }
 
 # Nothing installed may point back at the build folder (the prefix must be relocatable).
 if grep -rlF "$build" "$prefix"; then

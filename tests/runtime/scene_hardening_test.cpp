@@ -288,7 +288,11 @@ TEST(GltfHardening, SidecarsAreBoundedRegularFiles) {
                         << "}";
     e = runtime::LoadMaterialSidecar(deep.string(), scene);
     ASSERT_FALSE(e.ok());
-    EXPECT_NE(e.error().message.find("JSON nested more than 128 deep"), std::string::npos)
+    EXPECT_EQ(e.error().code, DiagCode::kBadScene);
+    // The .material reader's bounded JSON parser, with the position where it stopped.
+    EXPECT_NE(e.error().message.find("deep.kiln.json:1:"), std::string::npos)
+        << e.error().message;
+    EXPECT_NE(e.error().message.find("nesting deeper than 64 levels"), std::string::npos)
         << e.error().message;
 }
 

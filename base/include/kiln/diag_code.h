@@ -43,6 +43,7 @@ enum class DiagCode : uint16_t {
     kIndexOutOfRange = 22,       // an index given to a pack's API is past the end of its section
     kBadUsageFile = 23,          // a usage file (kiln render --usage) that cannot be read
     kPipelineCacheIgnored = 24,  // warning: a --pipeline-cache file that does not fit the device
+    kRendererUnavailable = 25,   // kiln render: kiln-render could not be found or run
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,

@@ -11,7 +11,7 @@
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/compile.h"
-#include "kiln/runtime/scene.h"
+#include "kiln/material/sidecar.h"
 
 namespace kiln::cli {
 namespace {
@@ -158,12 +158,12 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
     o.all_features = f.all_features;
     for (const std::string& path : f.materials) {
         if (path.size() >= 10 && path.compare(path.size() - 10, 10, ".kiln.json") == 0) {
-            runtime::Scene scene;
-            if (Status read = runtime::LoadMaterialSidecar(path, scene); !read.ok()) {
-                diags.Error(read.error().code, path, kNoPosition, read.error().message);
+            const Result<material::MaterialSidecar> sidecar = material::ReadMaterialSidecar(path);
+            if (!sidecar) {
+                diags.Error(sidecar.error().code, path, kNoPosition, sidecar.error().message);
                 continue;
             }
-            for (const auto& [gltf_name, file] : scene.material_files)
+            for (const auto& [gltf_name, file] : sidecar.value().materials)
                 ReadMaterialKeywords(file, o, files, diags);
         } else {
             ReadMaterialKeywords(path, o, files, diags);

@@ -1,5 +1,8 @@
 // kiln: the command-line driver. A thin layer over the kiln_compiler library: flags in,
-// library calls, diagnostics out.
+// library calls, diagnostics out. The same file, built with KILN_RENDER_TOOL, is kiln-render:
+// only the render command, the one that links the renderer (Vulkan, OpenColorIO, tinygltf).
+// `kiln render ...` runs kiln-render from beside kiln with the same arguments, so a build
+// machine's kiln needs none of those libraries (docs/install.md).
 #include <unistd.h>
 
 #include <algorithm>
@@ -7,7 +10,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "commands.h"
 #include "kiln/pack/format.h"
@@ -115,6 +121,30 @@ int ReportParseError(const CLI::ParseError& e,
     return kExitUsageError;
 }
 
+#ifndef KILN_RENDER_TOOL
+// `kiln ... render ...`: kiln-render beside this kiln, with the whole command line. Returns only
+// when it cannot be run (K0025).
+int RunRenderTool(int argc, char** argv) {
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const std::filesystem::path tool = self.parent_path() / "kiln-render";
+    std::vector<char*> args(argv, argv + argc);
+    const std::string path = tool.string();
+    args[0] = const_cast<char*>(path.c_str());
+    args.push_back(nullptr);
+    if (!ec) {
+        execv(path.c_str(), args.data());
+    }
+    const std::vector<std::string> words(argv + 1, argv + argc);
+    GlobalOptions global;
+    global.diag_format = GlobalValue(words, "--diagnostics-format") == "json" ? DiagFormat::kJson
+                                                                              : DiagFormat::kText;
+    return ReportError(global, DiagCode::kRendererUnavailable, "",
+                       "cannot run the renderer '" + path + "': " + std::strerror(errno) +
+                           "; kiln render is kiln-render, installed beside kiln with the runtime");
+}
+#endif
+
 }  // namespace
 }  // namespace kiln::cli
 
@@ -146,6 +176,11 @@ std::vector<std::string> RewriteArgs(int argc, char** argv) {
 int main(int argc, char** argv) {
     using namespace kiln::cli;
     try {
+#ifndef KILN_RENDER_TOOL
+        if (FirstWord(std::vector<std::string>(argv + 1, argv + argc)) == "render") {
+            return RunRenderTool(argc, argv);
+        }
+#endif
         CLI::App app{"kiln: shader-variant compiler for Vulkan", "kiln"};
         app.require_subcommand(0, 1);
         app.set_version_flag("-V,--version", VersionText, "Print kiln's version and those of "
@@ -166,6 +201,10 @@ int main(int argc, char** argv) {
         app.fallthrough();
         app.add_subcommand("version", "Print the versions (as --version)");
 
+#ifdef KILN_RENDER_TOOL
+        const std::map<std::string, std::function<int()>> commands{
+            {"render", AddRenderCommand(app, global)}};
+#else
         const std::map<std::string, std::function<int()>> commands{
             {"parse", AddParseCommand(app, global)},
             {"compile", AddCompileCommand(app, global)},
@@ -174,7 +213,13 @@ int main(int argc, char** argv) {
             {"extract", AddExtractCommand(app, global)},
             {"validate", AddValidateCommand(app, global)},
             {"new", AddNewCommand(app, global)},
-            {"render", AddRenderCommand(app, global)}};
+            // Listed for --help and "did you mean"; main() hands it to kiln-render first.
+            {"render", [&] {
+                 app.add_subcommand("render",
+                                    "Render a glTF scene with packs (runs kiln-render, beside kiln)");
+                 return [] { return int(kExitUsageError); };
+             }()}};
+#endif
 
         std::vector<std::string> args = RewriteArgs(argc, argv);
         std::vector<std::string> names;

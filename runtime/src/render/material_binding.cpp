@@ -97,7 +97,7 @@ Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
                                 const std::string& path,
                                 const runtime::ColorPipeline& color,
                                 MaterialInstance& out) {
-    Result<std::string> text = base::ReadRegularFile(path, runtime::kMaxSidecarBytes);
+    Result<std::string> text = base::ReadRegularFile(path, material::kMaxFileBytes);
     if (!text) {
         return Error{DiagCode::kRenderFailed, text.error().message};
     }

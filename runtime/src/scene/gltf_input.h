@@ -21,7 +21,6 @@ class Model;
 namespace kiln::runtime {
 
 inline constexpr uint64_t kMaxSceneFileBytes = uint64_t{1} << 30;  // .gltf, .glb, .bin, images
-inline constexpr uint64_t kMaxSidecarBytes = uint64_t{16} << 20;   // .kiln.json, .material
 inline constexpr size_t kMaxJsonDepth = 128;
 
 // Deepest nesting of arrays and objects in JSON text (strings skipped); stops counting once past

@@ -1,6 +1,4 @@
-// GenerateTangents and the material sidecar reader.
-#include <nlohmann/json.hpp>
-
+// GenerateTangents, and the material sidecar applied to a scene.
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -10,8 +8,7 @@
 
 #include "kiln/runtime/scene.h"
 
-#include "kiln/base/files.h"
-#include "scene/gltf_input.h"
+#include "kiln/material/sidecar.h"
 
 namespace kiln::runtime {
 
@@ -71,50 +68,16 @@ void GenerateTangents(Primitive& p) {
 }
 
 Status LoadMaterialSidecar(const std::string& path, Scene& scene) {
-    Result<std::string> text = base::ReadRegularFile(path, kMaxSidecarBytes);
-    if (!text) {
-        return text.error();
+    Result<material::MaterialSidecar> read = material::ReadMaterialSidecar(path);
+    if (!read) {
+        return read.error();
     }
-    if (JsonDepth(text.value(), kMaxJsonDepth) > kMaxJsonDepth) {
-        return Error{DiagCode::kBadScene,
-                     path + ": JSON nested more than " + std::to_string(kMaxJsonDepth) + " deep"};
+    for (const auto& [name, file] : read.value().materials) {
+        scene.material_files[name] = file;
     }
-    nlohmann::json doc = nlohmann::json::parse(text.value(), nullptr, /*allow_exceptions=*/false);
-    if (doc.is_discarded() || !doc.is_object()) {
-        return Error{DiagCode::kBadScene, path + ": not a JSON object"};
-    }
-    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-    for (const auto& [key, value] : doc.items()) {
-        if (key == "kiln_materials") {
-            if (!value.is_number_integer() || value.get<int>() != 1) {
-                return Error{DiagCode::kBadScene, path + ": kiln_materials must be 1"};
-            }
-        } else if (key == "materials") {
-            if (!value.is_object()) {
-                return Error{
-                    DiagCode::kBadScene,
-                    path + ": 'materials' must map glTF material names to .material files"};
-            }
-            for (const auto& [name, file] : value.items()) {
-                if (!file.is_string()) {
-                    return Error{DiagCode::kBadScene,
-                                 path + ": material '" + name + "' must name a .material file"};
-                }
-                scene.material_files[name] = (dir / file.get<std::string>()).lexically_normal();
-            }
-        } else if (key == "ambient") {
-            if (!value.is_array() || value.size() != 3 || !value[0].is_number() ||
-                !value[1].is_number() || !value[2].is_number()) {
-                return Error{DiagCode::kBadScene,
-                             path + ": 'ambient' must be three numbers (linear RGB)"};
-            }
-            scene.ambient =
-                glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>());
-        } else if (key != "description") {
-            return Error{DiagCode::kBadScene,
-                         path + ": unknown field '" + key +
-                             "' (expected kiln_materials, materials, ambient, description)"};
-        }
+    if (read.value().has_ambient) {
+        const auto& a = read.value().ambient;
+        scene.ambient = glm::vec3(a[0], a[1], a[2]);
     }
     return {};
 }

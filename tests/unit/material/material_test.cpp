@@ -1,6 +1,7 @@
 // The .material parser and validator: every error kind with its position, the shipped
 // instances, and robustness on every truncated prefix.
 #include "kiln/material/material.h"
+#include "kiln/material/sidecar.h"
 
 #include <gtest/gtest.h>
 
@@ -244,6 +245,31 @@ TEST(MaterialValidate, EveryTruncatedPrefixFailsCleanly) {
             EXPECT_LE(issues.all().front().range.begin.offset, n);
         }
     }
+}
+
+// The sidecar reader lives with the material reader (no renderer needed): paths relative to the
+// sidecar, errors with the file, line and column.
+TEST(MaterialSidecar, ReadsMaterialsAndAmbientAndPointsAtMistakes) {
+    ScratchDir dir;
+    const std::string good = dir.Write(
+        "s.kiln.json",
+        R"({"kiln_materials": 1, "materials": {"Red": "m/red.material"}, "ambient": [0.1, 0.2, 0.3]})");
+    const Result<material::MaterialSidecar> read = material::ReadMaterialSidecar(good);
+    ASSERT_TRUE(read) << read.error().message;
+    EXPECT_EQ(read.value().materials.at("Red"), dir.path() + "/m/red.material");
+    EXPECT_TRUE(read.value().has_ambient);
+    EXPECT_FLOAT_EQ(read.value().ambient[2], 0.3f);
+    const std::string bad = dir.Write("t.kiln.json", "{\n  \"materiels\": {}\n}");
+    const Result<material::MaterialSidecar> typo = material::ReadMaterialSidecar(bad);
+    ASSERT_FALSE(typo);
+    EXPECT_EQ(typo.error().code, DiagCode::kBadScene);
+    EXPECT_EQ(typo.error().message,
+              bad + ":2:3: unknown field 'materiels' (expected kiln_materials, materials, "
+                    "ambient, description)");
+    const Result<material::MaterialSidecar> missing =
+        material::ReadMaterialSidecar(dir.path() + "/none.kiln.json");
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.error().code, DiagCode::kCannotReadFile);
 }
 
 }  // namespace

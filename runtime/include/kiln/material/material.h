@@ -18,6 +18,8 @@
 namespace kiln::material {
 
 inline constexpr int kFormatVersion = 1;
+// The largest .material or .kiln.json file read (a FIFO or device is refused before reading).
+inline constexpr uint64_t kMaxFileBytes = uint64_t{16} << 20;
 
 // Positions in a .material file: byte offset, 1-based line and column.
 using TextPos = SourceLoc;

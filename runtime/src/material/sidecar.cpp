@@ -1,0 +1,76 @@
+#include "kiln/material/sidecar.h"
+
+#include <filesystem>
+#include <string>
+
+#include "kiln/base/files.h"
+#include "kiln/material/material.h"
+#include "material/json.h"
+
+namespace kiln::material {
+namespace {
+
+using Kind = JsonValue::Kind;
+
+Error At(const std::string& path, TextPos pos, const std::string& message) {
+    return Error{DiagCode::kBadScene, path + ":" + std::to_string(pos.line) + ":" +
+                                          std::to_string(pos.column) + ": " + message};
+}
+
+}  // namespace
+
+Result<MaterialSidecar> ReadMaterialSidecar(const std::string& path) {
+    Result<std::string> text = base::ReadRegularFile(path, kMaxFileBytes);
+    if (!text) {
+        return text.error();
+    }
+    JsonValue doc;
+    JsonError error;
+    if (!ParseJson(text.value(), doc, error)) {
+        return At(path, error.pos, error.message);
+    }
+    if (doc.kind != Kind::kObject) {
+        return At(path, doc.pos, "a material sidecar must be a JSON object");
+    }
+    MaterialSidecar out;
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    for (size_t i = 0; i < doc.items.size(); ++i) {
+        const auto& [key, key_pos] = doc.keys[i];
+        const JsonValue& value = doc.items[i];
+        if (key == "kiln_materials") {
+            if (value.kind != Kind::kNumber || value.number != 1) {
+                return At(path, value.pos, "kiln_materials must be 1");
+            }
+        } else if (key == "materials") {
+            if (value.kind != Kind::kObject) {
+                return At(path, value.pos,
+                          "'materials' must map glTF material names to .material files");
+            }
+            for (size_t m = 0; m < value.items.size(); ++m) {
+                const std::string& name = value.keys[m].first;
+                if (value.items[m].kind != Kind::kString) {
+                    return At(path, value.items[m].pos,
+                              "material '" + name + "' must name a .material file");
+                }
+                out.materials[name] = (dir / value.items[m].string).lexically_normal().string();
+            }
+        } else if (key == "ambient") {
+            bool ok = value.kind == Kind::kArray && value.items.size() == 3;
+            for (size_t c = 0; ok && c < 3; ++c) {
+                ok = value.items[c].kind == Kind::kNumber;
+                out.ambient[c] = ok ? float(value.items[c].number) : 0.0f;
+            }
+            if (!ok) {
+                return At(path, value.pos, "'ambient' must be three numbers (linear RGB)");
+            }
+            out.has_ambient = true;
+        } else if (key != "description") {
+            return At(path, key_pos,
+                      "unknown field '" + key +
+                          "' (expected kiln_materials, materials, ambient, description)");
+        }
+    }
+    return out;
+}
+
+}  // namespace kiln::material
