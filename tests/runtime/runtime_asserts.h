@@ -13,27 +13,15 @@
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
+#include "support/result_asserts.h"
 
 namespace kiln::testing {
 
 // The runtime's Result/Status calls into existing objects, as assertions that print the error:
 // ASSERT_TRUE(CreateInto(options, renderer)), EXPECT_TRUE(Ok(renderer.AddPack(path))).
-inline ::testing::AssertionResult Ok(const Status& status) {
-    if (status.ok()) {
-        return ::testing::AssertionSuccess();
-    }
-    return ::testing::AssertionFailure()
-           << FormatDiagCode(status.error().code) << ": " << status.error().message;
-}
-template <class T>
-::testing::AssertionResult Into(Result<T> result, T& out) {
-    if (!result) {
-        return ::testing::AssertionFailure()
-               << FormatDiagCode(result.error().code) << ": " << result.error().message;
-    }
-    out = std::move(result).value();
-    return ::testing::AssertionSuccess();
-}
+using test::Into;
+using test::Ok;
+
 inline ::testing::AssertionResult CreateInto(const runtime::RendererOptions& options,
                                              runtime::Renderer& out) {
     return Into(runtime::Renderer::Create(options), out);

@@ -13,48 +13,11 @@
 namespace kiln::test {
 
 ::testing::AssertionResult OpenInto(std::span<const uint8_t> bytes, pack::Pack& out) {
-    Result<pack::Pack> opened = pack::Pack::Open(bytes);
-    if (!opened) {
-        return ::testing::AssertionFailure()
-               << FormatDiagCode(opened.error().code) << ": " << opened.error().message;
-    }
-    out = std::move(opened).value();
-    return ::testing::AssertionSuccess();
+    return Into(pack::Pack::Open(bytes), out);
 }
 
 ::testing::AssertionResult MapInto(const std::string& path, pack::MappedFile& out) {
-    Result<pack::MappedFile> mapped = pack::MappedFile::Map(path);
-    if (!mapped) {
-        return ::testing::AssertionFailure()
-               << FormatDiagCode(mapped.error().code) << ": " << mapped.error().message;
-    }
-    out = std::move(mapped).value();
-    return ::testing::AssertionSuccess();
-}
-
-::testing::AssertionResult Succeeded(const Status& status) {
-    if (!status.ok()) {
-        return ::testing::AssertionFailure()
-               << FormatDiagCode(status.error().code) << ": " << status.error().message;
-    }
-    return ::testing::AssertionSuccess();
-}
-
-bool AnyMessageContains(const DiagnosticList& diags, std::string_view text) {
-    for (const Diagnostic& d : diags.all()) {
-        if (d.message.find(text) != std::string::npos) {
-            return true;
-        }
-    }
-    return false;
-}
-
-std::string Messages(const DiagnosticList& diags) {
-    std::string out;
-    for (const Diagnostic& d : diags.all()) {
-        out += FormatDiagCode(d.code) + " " + d.file + ": " + d.message + "\n";
-    }
-    return out;
+    return Into(pack::MappedFile::Map(path), out);
 }
 
 std::string ReadFile(const std::string& path) {

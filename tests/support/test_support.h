@@ -15,6 +15,7 @@
 #include "kiln/pack/reader.h"
 #include "kiln/shaderlab/parse.h"
 #include "kiln/source.h"
+#include "support/result_asserts.h"
 
 namespace kiln::test {
 
@@ -43,12 +44,6 @@ ParseOutcome ParseText(const std::string& text, const std::string& name = "test.
 // ASSERT_TRUE(OpenInto(bytes, pack)) prints the reader's error when it fails.
 ::testing::AssertionResult OpenInto(std::span<const uint8_t> bytes, pack::Pack& out);
 ::testing::AssertionResult MapInto(const std::string& path, pack::MappedFile& out);
-// A Status as an assertion: EXPECT_TRUE(Succeeded(s)) prints the error's code and message.
-::testing::AssertionResult Succeeded(const Status& status);
-
-// Whether any diagnostic's message holds `text`; and the messages, one a line, for a failure.
-bool AnyMessageContains(const DiagnosticList& diags, std::string_view text);
-std::string Messages(const DiagnosticList& diags);
 
 // One line per diagnostic: "K2003 3:5 error: message" (notes indented below).
 std::string Summarize(const DiagnosticList& diags);
