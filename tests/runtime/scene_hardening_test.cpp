@@ -124,6 +124,60 @@ TEST(GltfHardening, AttributeIndicesOutOfRangeAreReportedNotFollowed) {
         << all;
 }
 
+// Sparse accessors (glTF 2.0, 3.6.2.3): the base elements, then the substitutions; without a
+// buffer view the base is zeros. Indices past the count and views too short are errors.
+json SparseTriangle(int index, int base_view) {
+    json g = Triangle();
+    // A second buffer: one unsigned short index (then 2 padding bytes) and one VEC3 value.
+    // Index `index`, value (5, 6, 7) as little-endian float32.
+    const unsigned char bytes[16] = {uint8_t(index), 0, 0, 0, 0, 0, 0xa0, 0x40,
+                                     0, 0, 0xc0, 0x40, 0, 0, 0xe0, 0x40};
+    static const char* b64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string enc;
+    for (size_t i = 0; i < 16; i += 3) {
+        const uint32_t n = uint32_t(bytes[i]) << 16 | (i + 1 < 16 ? uint32_t(bytes[i + 1]) << 8 : 0) |
+                           (i + 2 < 16 ? bytes[i + 2] : 0);
+        enc += b64[n >> 18 & 63];
+        enc += b64[n >> 12 & 63];
+        enc += i + 1 < 16 ? b64[n >> 6 & 63] : '=';
+        enc += i + 2 < 16 ? b64[n & 63] : '=';
+    }
+    g["buffers"].push_back({{"byteLength", 16}, {"uri", "data:application/octet-stream;base64," + enc}});
+    g["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 0}, {"byteLength", 2}});
+    g["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 4}, {"byteLength", 12}});
+    g["accessors"][0]["sparse"] = {
+        {"count", 1},
+        {"indices", {{"bufferView", 1}, {"componentType", 5123}}},
+        {"values", {{"bufferView", 2}}}};
+    g["accessors"][0]["max"] = {5, 6, 7};
+    if (base_view < 0) {
+        g["accessors"][0].erase("bufferView");
+    }
+    return g;
+}
+
+TEST(GltfHardening, SparseAccessorsReplaceTheirElements) {
+    for (int base : {0, -1}) {
+        const Loaded l = Load(SparseTriangle(1, base));
+        ASSERT_FALSE(l.error) << l.error->message;
+        const auto& v = l.scene.meshes.at(0).primitives.at(0).vertices;
+        ASSERT_EQ(v.size(), 3u);
+        EXPECT_EQ(v[1].position[0], 5.0f);
+        EXPECT_EQ(v[1].position[2], 7.0f);
+        EXPECT_EQ(v[0].position[0], base == 0 ? -1.0f : 0.0f);  // kept, or zero without a view
+    }
+    const Loaded past = Load(SparseTriangle(3, 0));
+    ASSERT_TRUE(past.error);
+    EXPECT_NE(past.error->message.find("sparse index 3 is past its 3 elements"), std::string::npos)
+        << past.error->message;
+    json shortview = SparseTriangle(1, 0);
+    shortview["accessors"][0]["sparse"]["count"] = 2;
+    const Loaded s = Load(shortview);
+    ASSERT_TRUE(s.error);
+    EXPECT_NE(s.error->message.find("sparse indices reads past its buffer view"), std::string::npos)
+        << s.error->message;
+}
+
 // A valid 100,000-node chain once overflowed the recursive walk's stack.
 TEST(GltfHardening, ADeepChainLoadsWithoutRecursion) {
     json g = Triangle();

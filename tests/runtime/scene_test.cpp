@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -81,6 +82,22 @@ TEST(GltfLights, LampHasFivePointLightsWithDefaultedColours) {
         EXPECT_GE(l.intensity, 0.0f);
         EXPECT_TRUE(std::isfinite(l.position.x));
     }
+}
+
+TEST(GltfScene, SparseAccessorSampleRaisesItsThreePeaks) {
+    REQUIRE_SHARED();
+    runtime::Scene scene;
+    DiagnosticList warnings;
+    ASSERT_TRUE(
+        LoadInto(Shared("SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf"), scene, warnings));
+    float top = 0;
+    int raised = 0;
+    for (const auto& v : scene.meshes.at(0).primitives.at(0).vertices) {
+        top = std::max(top, v.position[1]);
+        raised += v.position[1] > 1.5f;
+    }
+    EXPECT_EQ(top, 4.0f);  // the accessor's max, reached only through the substitutions
+    EXPECT_EQ(raised, 3);
 }
 
 TEST(GltfScene, CamerasSampleHasAPerspectiveAndAnOrthographicCamera) {
