@@ -206,4 +206,71 @@ std::string FormatDiagnosticsJson(const DiagnosticList& diags) {
     return arr.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
+namespace {
+
+bool ReadRange(const nlohmann::json& j, SourceRange& r) {
+    auto pos = [](const nlohmann::json& p, SourceLoc& out) {
+        if (!p.is_object() || !p.contains("line") || !p["line"].is_number_unsigned() ||
+            !p.contains("column") || !p["column"].is_number_unsigned()) {
+            return false;
+        }
+        out.line = p["line"].get<uint32_t>();
+        out.column = p["column"].get<uint32_t>();
+        return true;
+    };
+    return j.is_object() && j.contains("begin") && j.contains("end") && pos(j["begin"], r.begin) &&
+           pos(j["end"], r.end);
+}
+
+bool ReadStringField(const nlohmann::json& j, const char* key, std::string& out) {
+    if (!j.contains(key) || !j[key].is_string()) {
+        return false;
+    }
+    out = j[key].get<std::string>();
+    return true;
+}
+
+}  // namespace
+
+Result<DiagnosticList> ParseDiagnosticsJson(std::string_view text) {
+    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    const Error bad{DiagCode::kInternalError, "not a JSON array of Kiln diagnostics"};
+    if (doc.is_discarded() || !doc.is_array()) {
+        return bad;
+    }
+    DiagnosticList out;
+    out.set_error_limit(SIZE_MAX);
+    for (const nlohmann::json& j : doc) {
+        std::string severity, code, file, message;
+        SourceRange range;
+        if (!j.is_object() || !ReadStringField(j, "severity", severity) ||
+            !ReadStringField(j, "code", code) || !ReadStringField(j, "file", file) ||
+            !ReadStringField(j, "message", message) || !j.contains("range") ||
+            !ReadRange(j["range"], range) || code.size() != 5 || code[0] != 'K' ||
+            code.find_first_not_of("0123456789", 1) != std::string::npos) {
+            return bad;
+        }
+        Severity sev = Severity::kError;
+        for (Severity s :
+             {Severity::kNote, Severity::kWarning, Severity::kError, Severity::kInternal}) {
+            if (SeverityName(s) == severity) {
+                sev = s;
+            }
+        }
+        Diagnostic& d =
+            out.Add(sev, static_cast<DiagCode>(std::stoi(code.substr(1))), file, range, message);
+        if (j.contains("notes") && j["notes"].is_array()) {
+            for (const nlohmann::json& n : j["notes"]) {
+                DiagnosticNote note;
+                if (n.is_object() && ReadStringField(n, "file", note.file) &&
+                    ReadStringField(n, "message", note.message) && n.contains("range") &&
+                    ReadRange(n["range"], note.range)) {
+                    d.notes.push_back(std::move(note));
+                }
+            }
+        }
+    }
+    return out;
+}
+
 }  // namespace kiln

@@ -89,14 +89,14 @@ TEST(PassIdentity, OneNameEverywhere) {
     EXPECT_NE(missing.error().message.find("pass '" + kExpected[0] + "'"), std::string::npos)
         << missing.error().message;
     ASSERT_TRUE(selector.Select(3, {}).ok());
-    const Result<std::vector<pack::UsageEntry>> usage =
-        pack::ParseUsageFile(pack::UsageFileText(pack::UsageOf({&selector})));
+    const Result<pack::UsageLog> usage =
+        pack::ParseUsageFile(pack::UsageFileText({pack::UsageOf({&selector}), {}}));
     ASSERT_TRUE(usage.ok()) << usage.error().message;
-    ASSERT_EQ(usage.value().size(), 2u);
-    EXPECT_EQ(usage.value()[0].pass, kExpected[0]);
-    EXPECT_FALSE(usage.value()[0].found);
-    EXPECT_EQ(usage.value()[1].pass, kExpected[3]);
-    EXPECT_EQ(pk.FindPass(0, usage.value()[1].pass), std::optional<uint32_t>(3));
+    ASSERT_EQ(usage.value().lookups.size(), 2u);
+    EXPECT_EQ(usage.value().lookups[0].pass, kExpected[0]);
+    EXPECT_FALSE(usage.value().lookups[0].found);
+    EXPECT_EQ(usage.value().lookups[1].pass, kExpected[3]);
+    EXPECT_EQ(pk.FindPass(0, usage.value().lookups[1].pass), std::optional<uint32_t>(3));
 
     // `kiln extract --pass` takes the same name.
     EXPECT_EQ(test::RunKiln("extract " + pack_path + " --shader Bridge/Passes --pass \"" +
@@ -120,9 +120,36 @@ TEST(UsageFile, RejectsWhatIsNotOne) {
         pack::ParseUsageFile("{\"kiln_usage\": 1, \"lookups\": [{\"shader\": \"a\", \"pass\": 1, "
                              "\"keywords\": []}]}")
             .ok());
+    EXPECT_FALSE(pack::ParseUsageFile("{\"kiln_usage\": 1, \"lookups\": [], \"materials\": "
+                                      "[{\"material\": \"m\"}]}")
+                     .ok());
+    EXPECT_FALSE(pack::ParseUsageFile("{\"kiln_usage\": 1, \"lookups\": [{\"shader\": \"a\", "
+                                      "\"pass\": \"p\", \"keywords\": [], \"requested_by\": "
+                                      "\"x\"}]}")
+                     .ok());
     const auto ok = pack::ParseUsageFile("{\"kiln_usage\": 1, \"lookups\": []}");
     ASSERT_TRUE(ok.ok());
-    EXPECT_TRUE(ok.value().empty());
+    EXPECT_TRUE(ok.value().lookups.empty());
+}
+
+TEST(UsageFile, KeepsWhoAskedAndTheMaterials) {
+    pack::UsageLog log;
+    pack::UsageEntry e{"S", "FORWARD", {"POINT"}, 3, true, {}, 0};
+    for (const char* who : {"m on node 'a': point light 'l'", "m on node 'a': point light 'l'",
+                            "m on node 'b': point light 'l'"}) {
+        pack::AddRequester(e.requested_by, e.requesters, who);  // the same reason is kept once
+    }
+    log.lookups.push_back(e);
+    log.materials.push_back({"m", "S"});
+    const auto back = pack::ParseUsageFile(pack::UsageFileText(log));
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    ASSERT_EQ(back.value().lookups.size(), 1u);
+    EXPECT_EQ(back.value().lookups[0].requested_by,
+              (std::vector<std::string>{"m on node 'a': point light 'l'",
+                                        "m on node 'b': point light 'l'"}));
+    EXPECT_EQ(back.value().lookups[0].requesters, 3u);
+    EXPECT_EQ(back.value().lookups[0].keywords, std::vector<std::string>{"POINT"});
+    EXPECT_EQ(back.value().materials, log.materials);
 }
 
 TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
@@ -155,7 +182,7 @@ TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
 
     test::ScratchDir dir;
     const std::string usage = dir.path() + "/usage.json";
-    ASSERT_TRUE(pack::WriteUsageFile(usage, pack::UsageOf({&strict, &lenient})).ok());
+    ASSERT_TRUE(pack::WriteUsageFile(usage, {pack::UsageOf({&strict, &lenient}), {}}).ok());
     std::ifstream in(usage);
     const nlohmann::json doc = nlohmann::json::parse(in);
     EXPECT_EQ(doc["kiln_usage"], 1);

@@ -99,6 +99,9 @@ enum class DiagCode : uint16_t {
     kEntryPointNotFound = 4014,
     kUnknownKeyword = 4015,
     kMisspelledPragma = 4016,
+    kUnknownRequestedPass = 4017,      // a scene or usage file looks up a pass the shader lacks
+    kRequestedVariantNotBuilt = 4018,  // warning: a looked-up variant skip_variants or a rule drops
+    kSceneVerifyFailed = 4019,         // --verify-scene: the stripped pack misses a needed variant
 
     kHlslError = 5001,
     kHlslWarning = 5002,

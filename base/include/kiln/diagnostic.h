@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "kiln/diag_code.h"
+#include "kiln/result.h"
 #include "kiln/source.h"
 
 namespace kiln {
@@ -79,6 +80,9 @@ std::string FormatDiagnosticsText(const DiagnosticList& diags,
                                   bool color = false);
 // A JSON array of diagnostics (format in docs/diagnostics.md).
 std::string FormatDiagnosticsJson(const DiagnosticList& diags);
+// Reads FormatDiagnosticsJson's text back (a Kiln tool reporting another's diagnostics as its
+// own, as kiln compile --scene does with kiln-render's); an error when it is not such an array.
+Result<DiagnosticList> ParseDiagnosticsJson(std::string_view text);
 
 }  // namespace kiln
 

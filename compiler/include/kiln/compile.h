@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "kiln/diagnostic.h"
+#include "kiln/pack/variant_selector.h"
 #include "kiln/source.h"
 
 namespace kiln {
@@ -65,6 +66,13 @@ struct CompileOptions {
     // limit (--program-timeout) and the resident-memory limit (--program-memory).
     double program_timeout_seconds = 60;
     uint64_t program_memory_mib = 2048;
+    // Scene-driven stripping (kiln compile --scene, --usage): when set, every pass builds exactly
+    // the variants these lookups ask for (matched by shader name and pass name, keywords mapped
+    // as the runtime maps them), and a shader that is neither looked up nor used by one of the
+    // log's materials is left out of the pack. Passes keep their records (so pass names stay
+    // the same) with only the requested variants. The product of a pass's keyword sets is never
+    // enumerated. shader_feature narrowing, --keywords and --all-features do not apply.
+    std::optional<pack::UsageLog> requests;
     // Called from the driver thread as work completes (phase, done, total).
     std::function<void(const char*, size_t, size_t)> progress;
 };
@@ -86,14 +94,32 @@ struct KeywordSetReport {
     std::string stage;  // "", "vertex" or "fragment"
 };
 
+// A variant a stripped compile (CompileOptions::requests) built or left out, and who asked.
+struct RequestedVariantReport {
+    std::vector<std::string> keywords;
+    std::vector<std::string> requested_by;  // from the lookups (kiln/pack/variant_selector.h)
+    uint64_t requesters = 0;
+    std::string excluded_because;  // set when it was asked for but is not built
+};
+
 struct PassReport {
     std::string shader;
     std::string pass;  // "FORWARD" or "#2" when unnamed
     std::string light_mode;
     std::vector<KeywordSetReport> sets;
-    uint64_t permutations = 0;
+    uint64_t permutations = 0;  // saturates at UINT64_MAX
     size_t variants = 0;
     size_t unique_vertex = 0, unique_fragment = 0;
+    // Stripped compiles: the variants built (in key order) and those asked for but not built.
+    std::vector<RequestedVariantReport> kept, excluded;
+};
+
+// What a stripped compile left out beyond variants.
+struct StripReport {
+    bool active = false;                        // CompileOptions::requests was set
+    std::vector<std::string> shaders_left_out;  // no lookup and no material use them
+    // Lookups of shaders that are not in this compile (another pack's): (shader, count).
+    std::vector<std::pair<std::string, size_t>> other_shaders;
 };
 
 struct CompileOutput {
@@ -101,6 +127,7 @@ struct CompileOutput {
     std::vector<uint8_t> pack;  // empty unless ok and a pack was requested
     CompileStats stats;
     std::vector<PassReport> passes;
+    StripReport strip;
     // Every file read (shaders and includes), for diagnostics output and depfiles.
     std::vector<std::shared_ptr<const SourceFile>> files;
 };
@@ -114,6 +141,13 @@ CompileOutput CompileShaders(const std::vector<std::string>& paths,
 CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
                               const CompileOptions& options,
                               DiagnosticList& diags);
+
+// A pack of the shaders' passes, tags, render state, keyword sets and Properties without any
+// variant (nothing is compiled): what a planner needs to know which variants a scene will look
+// up (kiln render --dry-run, for kiln compile --scene). `pack` holds it when `ok`.
+CompileOutput BuildSkeletonPack(const std::vector<std::string>& paths,
+                                const CompileOptions& options,
+                                DiagnosticList& diags);
 
 // The templates/ directory this build of Kiln uses: $KILN_TEMPLATES_DIR, else the source tree's.
 std::string DefaultTemplatesDir();

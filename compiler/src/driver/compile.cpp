@@ -99,7 +99,7 @@ void CheckRequestedKeywords(CompileState& st) {
     }
 }
 
-// Phase 2: pragmas and variant expansion; one StageTask per (variant, stage).
+// Phase 2: pragmas and variant expansion (CompileOptions::requests: driver/requests.cpp).
 void ExpandPasses(CompileState& st) {
     for (size_t s = 0; s < st.shaders.size(); ++s) {
         const driver::ShaderUnit& unit = st.shaders[s];
@@ -132,6 +132,10 @@ void ExpandPasses(CompileState& st) {
         }
     }
     CheckRequestedKeywords(st);
+}
+
+// One StageTask per (variant, stage) of every pass: its assembled source.
+void CreateTasks(CompileState& st) {
     for (size_t p = 0; p < st.passes.size(); ++p) {
         driver::PassUnit& pu = st.passes[p];
         const driver::ShaderUnit& unit = st.shaders[pu.shader];
@@ -268,10 +272,12 @@ void FillReports(const CompileState& st, CompileOutput& out) {
     out.stats.unique_programs = st.jobs.size();
 }
 
+enum class Mode { kPack, kAnalyze, kSkeleton };
+
 CompileOutput Run(const std::vector<std::string>& paths,
                   const CompileOptions& options,
                   DiagnosticList& diags,
-                  bool build_pack) {
+                  Mode mode) {
     frontend::InitializeGlslang();  // before any thread starts
     CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
@@ -285,19 +291,38 @@ CompileOutput Run(const std::vector<std::string>& paths,
         return out;
     }
     LoadShaders(st, paths);
+    if (mode == Mode::kSkeleton) {
+        if (!diags.has_errors())
+            driver::ExpandRequestedPasses(st, true);
+        if (!diags.has_errors())
+            out.pack = driver::EmitPack(st, out.stats);
+        FillReports(st, out);
+        out.files = st.files.Files();
+        out.ok = !diags.has_errors();
+        if (!out.ok)
+            out.pack.clear();
+        return out;
+    }
     std::unique_ptr<worker::Executor> exec;
     if (!diags.has_errors()) {
         exec = driver::MakeExecutor(st);
         st.exec = exec.get();
     }
+    if (!diags.has_errors()) {
+        if (options.requests) {
+            driver::ExpandRequestedPasses(st, false);
+        } else {
+            ExpandPasses(st);
+        }
+    }
     if (!diags.has_errors())
-        ExpandPasses(st);
+        CreateTasks(st);
     bool preprocessed = false;
     if (!diags.has_errors()) {
         PreprocessAndDedup(st);
         preprocessed = true;
     }
-    if (!build_pack) {
+    if (mode == Mode::kAnalyze) {
         if (preprocessed)
             driver::ReportJobDiagnostics(st);
     } else if (!diags.has_errors()) {
@@ -311,6 +336,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
             out.pack = driver::EmitPack(st, out.stats);
     }
     FillReports(st, out);
+    driver::FillStripReport(st, out);
     out.files = st.files.Files();
     out.ok = !diags.has_errors();
     if (!out.ok)
@@ -323,13 +349,19 @@ CompileOutput Run(const std::vector<std::string>& paths,
 CompileOutput CompileShaders(const std::vector<std::string>& paths,
                              const CompileOptions& options,
                              DiagnosticList& diags) {
-    return Run(paths, options, diags, true);
+    return Run(paths, options, diags, Mode::kPack);
 }
 
 CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
                               const CompileOptions& options,
                               DiagnosticList& diags) {
-    return Run(paths, options, diags, false);
+    return Run(paths, options, diags, Mode::kAnalyze);
+}
+
+CompileOutput BuildSkeletonPack(const std::vector<std::string>& paths,
+                                const CompileOptions& options,
+                                DiagnosticList& diags) {
+    return Run(paths, options, diags, Mode::kSkeleton);
 }
 
 std::string DefaultTemplatesDir() {

@@ -24,6 +24,7 @@ struct ShaderUnit {
     std::shared_ptr<const SourceFile> file;
     std::optional<shaderlab::Shader> ast;
     std::vector<FlatPass> passes;
+    bool emit = true;  // false: a stripped compile leaves the shader out of the pack
 };
 
 struct PassUnit {
@@ -32,6 +33,9 @@ struct PassUnit {
     variants::PassPragmas pragmas;
     variants::Expansion expansion;
     std::vector<size_t> tasks;  // StageTask indices, variant-major (vertex, fragment)
+    // A stripped compile's lookups of this pass, and those it does not build (requests.cpp).
+    std::vector<const pack::UsageEntry*> requests;
+    std::vector<variants::ExcludedRequest> excluded;
 };
 
 // One (variant, stage) of a pass.
@@ -96,6 +100,12 @@ inline void Progress(const CompileOptions& o, const char* phase, size_t done, si
     if (o.progress)
         o.progress(phase, done, total);
 }
+
+// Phase 2 of a stripped compile or a skeleton pack (requests.cpp): every pass of a kept shader
+// expands exactly its requested variants (none for a skeleton).
+void ExpandRequestedPasses(CompileState& st, bool skeleton);
+// The stripped compile's report: kept and excluded variants with who asked, shaders left out.
+void FillStripReport(const CompileState& st, CompileOutput& out);
 
 // Phase 4, in compile_jobs.cpp: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats);

@@ -224,6 +224,9 @@ void CheckInterfaces(CompileState& st) {
                 }
             }
         }
+        // A stripped compile builds what one scene needs: a property its variants leave unread
+        // may be read by others.
+        every_feature_built = every_feature_built && !st.options.requests;
         std::set<std::string> declared;
         const std::string& file = unit.file->path();
         for (const shaderlab::Property& prop : unit.ast->properties) {
@@ -291,6 +294,8 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
     pack_builder::PackBuilder b;
     for (size_t s = 0; s < st.shaders.size(); ++s) {
         const ShaderUnit& unit = st.shaders[s];
+        if (!unit.emit)
+            continue;  // a stripped compile leaves it out
         const shaderlab::Shader& ast = *unit.ast;
         pack::ShaderRec sr;
         sr.name = b.Str(ast.name);

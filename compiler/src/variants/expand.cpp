@@ -30,6 +30,90 @@ std::vector<std::string> EnabledKeywords(const std::vector<KeywordSet>& sets,
     return out;
 }
 
+pack::VariantKey KeyForKeywords(const std::vector<KeywordSet>& sets,
+                                const std::vector<SetLayout>& layout,
+                                const std::vector<std::string>& enabled) {
+    pack::VariantKey key;
+    for (size_t s = 0; s < sets.size() && s < layout.size(); ++s) {
+        const auto& kws = sets[s].keywords;
+        for (uint32_t k = 0; k < kws.size(); ++k) {
+            if (!kws[k].empty() &&
+                std::find(enabled.begin(), enabled.end(), kws[k]) != enabled.end()) {
+                key.Set(layout[s].shift, layout[s].bits, k);
+                break;
+            }
+        }
+    }
+    return key;
+}
+
+std::string ExclusionReason(const PassPragmas& pragmas, const std::vector<std::string>& enabled) {
+    for (const auto& a : pragmas.skip_variants) {
+        if (std::find(enabled.begin(), enabled.end(), a.text) != enabled.end())
+            return "'#pragma skip_variants' names '" + a.text + "'";
+    }
+    const KeywordRule* rule = BrokenRule(pragmas.rules, enabled);
+    if (!rule)
+        return "";
+    auto list = [](const std::vector<std::string>& words) {
+        std::string out;
+        for (const std::string& w : words)
+            out += (out.empty() ? "" : ", ") + w;
+        return out;
+    };
+    std::string why = "'#pragma " + rule->pragma + "' never builds " + rule->keyword;
+    if (!rule->any_of.empty())
+        why += " without one of " + list(rule->any_of);
+    if (!rule->none_of.empty())
+        why += (rule->any_of.empty() ? " with any of " : ", or with any of ") + list(rule->none_of);
+    return why;
+}
+
+std::optional<Expansion> ExpandRequested(const PassPragmas& pragmas,
+                                         const std::vector<std::vector<std::string>>& requests,
+                                         uint64_t max_variants,
+                                         const std::string& pass_label,
+                                         const std::string& file,
+                                         SourceRange pass_range,
+                                         DiagnosticList& diags,
+                                         std::vector<ExcludedRequest>& excluded) {
+    Expansion ex;
+    auto layout = LayoutSets(pragmas.sets);
+    if (!layout) {
+        diags.Error(
+            DiagCode::kVariantKeyTooWide, file, pass_range,
+            "keyword sets of pass " + pass_label +
+                " need more than 64 bits of variant key; split the pass or use fewer keywords");
+        return std::nullopt;
+    }
+    ex.layout = *layout;
+    ex.permutations = 1;
+    for (const KeywordSet& set : pragmas.sets) {
+        const uint64_t n = std::max<size_t>(set.keywords.size(), 1);
+        ex.effective_sizes.push_back(set.keywords.size());
+        ex.permutations = ex.permutations > UINT64_MAX / n ? UINT64_MAX : ex.permutations * n;
+    }
+    for (size_t r = 0; r < requests.size(); ++r) {
+        const pack::VariantKey key = KeyForKeywords(pragmas.sets, ex.layout, requests[r]);
+        const std::vector<std::string> enabled = EnabledKeywords(pragmas.sets, ex.layout, key);
+        if (std::string why = ExclusionReason(pragmas, enabled); !why.empty()) {
+            excluded.push_back({r, enabled, std::move(why)});
+            continue;
+        }
+        ex.keys.push_back(key);
+    }
+    std::sort(ex.keys.begin(), ex.keys.end());
+    ex.keys.erase(std::unique(ex.keys.begin(), ex.keys.end()), ex.keys.end());
+    if (ex.keys.size() > max_variants) {
+        diags.Error(DiagCode::kTooManyVariants, file, pass_range,
+                    std::to_string(ex.keys.size()) + " variants requested for pass " + pass_label +
+                        ", over the limit of " + std::to_string(max_variants) +
+                        " (--max-variants)");
+        return std::nullopt;
+    }
+    return ex;
+}
+
 std::string DescribeKeywords(const std::vector<std::string>& keywords) {
     if (keywords.empty())
         return "(no keywords)";

@@ -51,6 +51,39 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                                         SourceRange pass_range,
                                         DiagnosticList& diags);
 
+// The key of the variant that enables `enabled`: in each set the first of its keywords that
+// `enabled` names, else the set's first choice. This is the rule pack::Pack::KeyFor applies to a
+// pack's sets (a test checks that both agree), so a lookup the runtime recorded maps back to the
+// variant it asked for.
+pack::VariantKey KeyForKeywords(const std::vector<KeywordSet>& sets,
+                                const std::vector<SetLayout>& layout,
+                                const std::vector<std::string>& enabled);
+
+// Why a variant enabling `enabled` is not built ("skip_variants names 'POINT'", a shortcut's
+// rule); empty when it is built.
+std::string ExclusionReason(const PassPragmas& pragmas, const std::vector<std::string>& enabled);
+
+// A requested variant that is not built, and why.
+struct ExcludedRequest {
+    size_t request = 0;  // index into the requests
+    std::vector<std::string> keywords;
+    std::string reason;
+};
+
+// The variants a scene or usage file asks for, and only those: each request's key, kept when
+// skip_variants and the shortcut rules allow it (`excluded` gets the others, with the reason).
+// Nothing enumerates the product of the sets, so a pass declaring 2^40 combinations is planned
+// from its requests alone. `permutations` is that product (UINT64_MAX when it overflows), what
+// the kept variants are a part of. No requests (or none kept) gives an expansion without keys.
+std::optional<Expansion> ExpandRequested(const PassPragmas& pragmas,
+                                         const std::vector<std::vector<std::string>>& requests,
+                                         uint64_t max_variants,
+                                         const std::string& pass_label,
+                                         const std::string& file,
+                                         SourceRange pass_range,
+                                         DiagnosticList& diags,
+                                         std::vector<ExcludedRequest>& excluded);
+
 // The keywords a key enables, in set order ("no keyword" choices omitted).
 std::vector<std::string> EnabledKeywords(const std::vector<KeywordSet>& sets,
                                          const std::vector<SetLayout>& layout,

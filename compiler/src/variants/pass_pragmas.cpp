@@ -365,8 +365,8 @@ std::optional<Shortcut> BuiltinShortcut(const std::string& name) {
     return std::nullopt;
 }
 
-bool SatisfiesRules(const std::vector<KeywordRule>& rules,
-                    const std::vector<std::string>& keywords) {
+const KeywordRule* BrokenRule(const std::vector<KeywordRule>& rules,
+                              const std::vector<std::string>& keywords) {
     auto on = [&](const std::string& k) {
         return std::find(keywords.begin(), keywords.end(), k) != keywords.end();
     };
@@ -375,13 +375,18 @@ bool SatisfiesRules(const std::vector<KeywordRule>& rules,
             continue;
         }
         if (!r.any_of.empty() && std::none_of(r.any_of.begin(), r.any_of.end(), on)) {
-            return false;
+            return &r;
         }
         if (std::any_of(r.none_of.begin(), r.none_of.end(), on)) {
-            return false;
+            return &r;
         }
     }
-    return true;
+    return nullptr;
+}
+
+bool SatisfiesRules(const std::vector<KeywordRule>& rules,
+                    const std::vector<std::string>& keywords) {
+    return BrokenRule(rules, keywords) == nullptr;
 }
 
 PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& blocks,

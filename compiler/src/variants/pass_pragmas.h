@@ -71,6 +71,9 @@ std::optional<Shortcut> BuiltinShortcut(const std::string& name);
 // True when the enabled `keywords` satisfy every rule.
 bool SatisfiesRules(const std::vector<KeywordRule>& rules,
                     const std::vector<std::string>& keywords);
+// The first rule the enabled `keywords` break, or nullptr.
+const KeywordRule* BrokenRule(const std::vector<KeywordRule>& rules,
+                              const std::vector<std::string>& keywords);
 
 bool IsNoKeyword(const std::string& word);  // "_", "__", ...
 

@@ -79,6 +79,41 @@ std::optional<int> ParseUnityVersion(const std::string& text);
 std::vector<const SourceFile*> Views(const CompileOutput& out,
                                      const std::vector<std::unique_ptr<SourceFile>>& more = {});
 
+// kiln-render beside this program; the shipped pack (../share/kiln/materials.kpack when
+// installed, ../materials/materials.kpack in the build tree).
+std::string RenderToolPath();
+std::string ShippedPackPath();
+
+// Scene-driven stripping for kiln compile (scene_strip.cpp): --scene, --usage, --path,
+// --pixel-lights, --explain, --verify-scene.
+struct SceneStripFlags {
+    std::vector<std::string> scenes, usage_files;
+    std::string path = "forward";
+    uint32_t pixel_lights = 4;
+    bool explain = false, explain_json = false, verify = false;
+    bool active() const { return !scenes.empty() || !usage_files.empty(); }
+};
+void AddSceneStripOptions(CLI::App& cmd, SceneStripFlags& flags);
+// Fills options.requests from the usage files and a dry run of each scene (kiln-render) over a
+// pack of the shaders without variants; `sidecars` are --materials. False after errors.
+bool PlanRequests(const SceneStripFlags& flags,
+                  const std::vector<std::string>& shaders,
+                  const std::vector<std::string>& sidecars,
+                  CompileOptions& options,
+                  DiagnosticList& diags);
+// --verify-scene: each scene's dry run against the stripped pack; every lookup it misses is a
+// K4019 error. False after errors.
+bool VerifyScenes(const SceneStripFlags& flags,
+                  const std::vector<uint8_t>& pack,
+                  const std::vector<std::string>& sidecars,
+                  DiagnosticList& diags);
+// --explain / --explain-json on stdout: what was kept and why, what was left out, and what that
+// saved, given the compile's wall time and the size of the same pack without variants.
+void PrintExplain(const SceneStripFlags& flags,
+                  const CompileOutput& out,
+                  double seconds,
+                  size_t skeleton_bytes);
+
 // Each registers its subcommand; the returned function runs it.
 std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& global);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -188,6 +189,35 @@ std::vector<const SourceFile*> Views(const CompileOutput& out,
     return views;
 }
 
+namespace {
+
+// Flags that do not go together with scene-driven stripping; "" when they are fine.
+std::string CheckStripFlags(const SceneStripFlags& strip, const CompilerFlags& flags) {
+    if (!strip.active()) {
+        if (strip.explain || strip.explain_json || strip.verify)
+            return "--explain, --explain-json and --verify-scene need --scene or --usage";
+        return "";
+    }
+    if (strip.path == "deferred")
+        return "--path deferred: Kiln's renderer draws the forward path only (the deferred path "
+               "is not built yet), so no lookups of it can be planned; use --path forward";
+    if (flags.all_features || !flags.keywords.empty())
+        return "--all-features and --keywords do not apply with --scene or --usage: the scene's "
+               "lookups decide every variant";
+    if (strip.verify && strip.scenes.empty())
+        return "--verify-scene needs --scene (a usage file has no scene to replay)";
+    if (flags.materials.size() > 1)
+        return "--materials: with --scene, one <scene>.kiln.json sidecar at most";
+    for (const std::string& m : flags.materials) {
+        if (strip.scenes.empty() || m.size() < 10 || m.compare(m.size() - 10, 10, ".kiln.json"))
+            return "--materials '" + m + "': with --scene, --materials takes the scene's " +
+                   "<scene>.kiln.json sidecar (material instances come from the scene)";
+    }
+    return "";
+}
+
+}  // namespace
+
 std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& global) {
     struct Options {
         std::vector<std::string> files;
@@ -200,6 +230,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         bool md = false;
         std::string mf;
         bool stats = false;
+        SceneStripFlags strip;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("compile", "Compile .shader files into a variant pack");
@@ -222,6 +253,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
     cmd->add_flag("--md", o->md, "")->group("");
     cmd->add_option("--mf", o->mf, "")->group("");
     cmd->add_flag("--stats", o->stats, "Print variant and compile counts on stdout");
+    AddSceneStripOptions(*cmd, o->strip);
     cmd->footer(
         "Compiler-style options:\n"
         "  -O0 | -O | -Os              Optimization: none, performance (the default; also -O1,\n"
@@ -231,8 +263,16 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
 
     return [o, &global]() {
         DiagnosticList diags;
+        if (std::string bad = CheckStripFlags(o->strip, o->flags); !bad.empty()) {
+            ReportError(global, DiagCode::kBadCommandLine, "", bad);
+            return int(kExitUsageError);
+        }
         std::vector<std::unique_ptr<SourceFile>> material_files;
-        CompileOptions options = ToCompileOptions(o->flags, material_files, diags);
+        // With --scene, --materials are the scene's sidecars (the dry run reads them).
+        CompilerFlags flags = o->flags;
+        if (o->strip.active())
+            flags.materials.clear();
+        CompileOptions options = ToCompileOptions(flags, material_files, diags);
         if (diags.has_errors()) {
             PrintDiagnostics(diags, Views(CompileOutput{}, material_files), global);
             return ExitCodeFor(diags);
@@ -266,9 +306,25 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                 return ExitCodeFor(diags);
             }
         }
+        if (o->strip.active() &&
+            !PlanRequests(o->strip, o->files, o->flags.materials, options, diags)) {
+            PrintDiagnostics(diags, {}, global);
+            return ExitCodeFor(diags);
+        }
+        const auto started = std::chrono::steady_clock::now();
         CompileOutput out = CompileShaders(o->files, options, diags);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         for (const auto& f : out.files)
             inputs.push_back(f->path());
+        if (out.ok && o->strip.active() &&
+            !VerifyScenes(o->strip, out.pack, o->flags.materials, diags))
+            out.ok = false;  // no pack that misses what the scene needs
+        if (out.ok && (o->strip.explain || o->strip.explain_json)) {
+            DiagnosticList ignored;  // the compile read these shaders already
+            PrintExplain(o->strip, out, seconds,
+                         BuildSkeletonPack(o->files, options, ignored).pack.size());
+        }
         if (out.ok) {
             Status written = base::WriteFileAtomically(
                 o->output, std::span<const uint8_t>(out.pack.data(), out.pack.size()), {inputs});

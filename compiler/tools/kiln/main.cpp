@@ -125,16 +125,11 @@ int ReportParseError(const CLI::ParseError& e,
 // `kiln ... render ...`: kiln-render beside this kiln, with the whole command line. Returns only
 // when it cannot be run (K0025).
 int RunRenderTool(int argc, char** argv) {
-    std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    const std::filesystem::path tool = self.parent_path() / "kiln-render";
     std::vector<char*> args(argv, argv + argc);
-    const std::string path = tool.string();
+    const std::string path = RenderToolPath();
     args[0] = const_cast<char*>(path.c_str());
     args.push_back(nullptr);
-    if (!ec) {
-        execv(path.c_str(), args.data());
-    }
+    execv(path.c_str(), args.data());
     const std::vector<std::string> words(argv + 1, argv + argc);
     GlobalOptions global;
     global.diag_format = GlobalValue(words, "--diagnostics-format") == "json" ? DiagFormat::kJson

@@ -8,30 +8,12 @@
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/runtime/color.h"
+#include "kiln/runtime/plan.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
 
 namespace kiln::cli {
 namespace {
-namespace fs = std::filesystem;
-
-// The shipped materials pack, found from the executable: <prefix>/share/kiln/materials.kpack
-// when installed, build/materials/materials.kpack in the build tree.
-std::string DefaultPack() {
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) {
-        return "materials.kpack";
-    }
-    const fs::path prefix = exe.parent_path().parent_path();
-    for (const fs::path& p :
-         {prefix / "share/kiln/materials.kpack", prefix / "materials/materials.kpack"}) {
-        if (fs::exists(p, ec)) {
-            return p.string();
-        }
-    }
-    return (prefix / "share/kiln/materials.kpack").string();  // named in the error
-}
 
 // --camera: "auto" or an index from 0.
 std::string ParseCamera(const std::string& text, int& camera) {
@@ -47,19 +29,70 @@ std::string ParseCamera(const std::string& text, int& camera) {
     return "";
 }
 
+struct RenderArgs {
+    std::string scene, output = "out.png", exr, materials, usage, pipeline_cache;
+    std::vector<std::string> packs;
+    runtime::FrameSettings frame;
+    runtime::ColorOptions color;
+    bool validation = false, closest = false, no_default_light = false, trust = false;
+    bool dry_run = false, allow_missing = false;
+    std::string device, camera;
+};
+
+// --dry-run: the frame's lookups without a device (kiln/runtime/plan.h), written to --usage.
+int DryRun(const RenderArgs& a,
+           const runtime::Scene& scene,
+           const runtime::ColorPipeline& color,
+           DiagnosticList& diags,
+           const GlobalOptions& global) {
+    auto finish = [&](int code) {
+        PrintDiagnostics(diags, {}, global);
+        return code;
+    };
+    std::vector<std::unique_ptr<pack::MappedFile>> files;
+    std::vector<std::unique_ptr<pack::Pack>> packs;
+    std::vector<const pack::Pack*> views;
+    for (const std::string& path : a.packs) {
+        Result<pack::MappedFile> mapped = pack::MappedFile::Map(path);
+        if (!mapped) {
+            diags.Error(mapped.error().code, path, kNoPosition, mapped.error().message);
+            return finish(int(kExitInputError));
+        }
+        files.push_back(std::make_unique<pack::MappedFile>(std::move(mapped).value()));
+        Result<pack::Pack> opened = pack::Pack::Open(files.back()->bytes());
+        if (!opened) {
+            diags.Error(opened.error().code, path, kNoPosition, opened.error().message);
+            return finish(int(kExitInputError));
+        }
+        packs.push_back(std::make_unique<pack::Pack>(std::move(opened).value()));
+        views.push_back(packs.back().get());
+    }
+    Result<runtime::ScenePlan> planned = runtime::PlanScene(views, scene, a.frame, color, diags);
+    if (!planned) {
+        diags.Error(planned.error().code, a.scene, kNoPosition, planned.error().message);
+        return finish(int(kExitInputError));
+    }
+    const runtime::ScenePlan& plan = planned.value();
+    if (!a.allow_missing) {
+        diags.Append(plan.missing);
+    }
+    if (!a.usage.empty()) {
+        if (Status written = pack::WriteUsageFile(a.usage, plan.usage); !written.ok()) {
+            diags.Error(written.error().code, a.usage, kNoPosition, written.error().message);
+            return finish(int(kExitInputError));
+        }
+    }
+    std::printf("%s: dry run, %u objects, %u draws, %zu distinct lookups, %zu missing\n",
+                a.scene.c_str(), plan.objects, plan.draws, plan.usage.lookups.size(),
+                plan.missing.all().size());
+    return finish(ExitCodeFor(diags));
+}
+
 }  // namespace
 
 std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global) {
     auto* cmd = app.add_subcommand("render", "Render a glTF scene headless with the runtime");
-    struct Args {
-        std::string scene, output = "out.png", exr, materials, usage, pipeline_cache;
-        std::vector<std::string> packs;
-        runtime::FrameSettings frame;
-        runtime::ColorOptions color;
-        bool validation = false, closest = false, no_default_light = false, trust = false;
-        std::string device, camera;
-    };
-    auto a = std::make_shared<Args>();
+    auto a = std::make_shared<RenderArgs>();
     cmd->add_option("scene", a->scene, ".gltf or .glb file")->required();
     cmd->add_option("--pack", a->packs,
                     "Variant packs to take shaders from, searched in order (default: the "
@@ -100,6 +133,12 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
     cmd->add_flag("--closest-variant", a->closest,
                   "Take the closest variant (with a warning) when one was stripped");
     cmd->add_option("--usage", a->usage, "Write every variant lookup to this JSON file");
+    cmd->add_flag("--dry-run", a->dry_run,
+                  "Plan the frame without a GPU: make every variant lookup a render makes (and "
+                  "write them to --usage), draw nothing; a variant the packs lack is an error");
+    cmd->add_flag("--allow-missing", a->allow_missing,
+                  "With --dry-run: record lookups of variants the packs lack without failing "
+                  "(planning against packs not built yet, as kiln compile --scene does)");
     cmd->add_option("--pipeline-cache", a->pipeline_cache, "Persist the VkPipelineCache here");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
     cmd->add_flag("--trust-packs", a->trust,
@@ -153,6 +192,12 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             return fail(made_color.error());
         }
         const runtime::ColorPipeline color = std::move(made_color).value();
+        if (a->packs.empty()) {
+            a->packs.push_back(ShippedPackPath());
+        }
+        if (a->dry_run) {
+            return DryRun(*a, scene, color, diags, global);
+        }
         runtime::RendererOptions options;
         options.validation = a->validation;
         options.device_filter = a->device;
@@ -165,9 +210,6 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             return fail(made.error());
         }
         runtime::Renderer renderer = std::move(made).value();
-        if (a->packs.empty()) {
-            a->packs.push_back(DefaultPack());
-        }
         for (const std::string& p : a->packs) {
             if (Status added = renderer.AddPack(p); !added.ok()) {
                 return fail(added.error());

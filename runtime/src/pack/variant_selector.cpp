@@ -35,7 +35,8 @@ std::string JoinKeywords(const std::vector<std::string>& keywords) {
 }
 
 Result<VariantChoice> VariantSelector::Select(uint32_t pass,
-                                              const std::vector<std::string>& keywords) {
+                                              const std::vector<std::string>& keywords,
+                                              const std::string& requester) {
     const Pack& pack = *pack_;
     if (pass >= pack.Count(SectionTag::kPasses)) {
         return Error{DiagCode::kIndexOutOfRange,
@@ -49,6 +50,9 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
     const std::vector<std::string> requested = pack.KeywordsOf(pass, key);
     Usage& usage = usage_[{shader, label, requested}];
     ++usage.count;
+    if (!requester.empty()) {
+        AddRequester(usage.requested_by, usage.requesters, requester);
+    }
 
     if (std::optional<uint32_t> v = pack.FindVariant(pass, key)) {
         return VariantChoice{*v, true, {}};
@@ -84,31 +88,113 @@ std::vector<UsageEntry> UsageOf(const std::vector<const VariantSelector*>& selec
     std::vector<UsageEntry> out;
     for (const VariantSelector* s : selectors) {
         for (const auto& [key, usage] : s->usage()) {
-            out.push_back(
-                {std::get<0>(key), std::get<1>(key), std::get<2>(key), usage.count, usage.found});
+            out.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), usage.count,
+                           usage.found, usage.requested_by, usage.requesters});
         }
     }
     return out;
 }
 
-std::string UsageFileText(const std::vector<UsageEntry>& entries) {
+void AddRequester(std::vector<std::string>& requested_by,
+                  uint64_t& requesters,
+                  const std::string& reason) {
+    ++requesters;
+    if (requested_by.size() < kMaxRequestedBy &&
+        std::find(requested_by.begin(), requested_by.end(), reason) == requested_by.end()) {
+        requested_by.push_back(reason);
+    }
+}
+
+std::string UsageFileText(const UsageLog& log) {
     nlohmann::ordered_json lookups = nlohmann::ordered_json::array();
-    for (const UsageEntry& e : entries) {
+    for (const UsageEntry& e : log.lookups) {
         nlohmann::ordered_json entry;
         entry["shader"] = e.shader;
         entry["pass"] = e.pass;
         entry["keywords"] = e.keywords;
         entry["count"] = e.count;
         entry["found"] = e.found;
+        if (!e.requested_by.empty()) {
+            entry["requested_by"] = e.requested_by;
+            entry["requesters"] = e.requesters;
+        }
         lookups.push_back(std::move(entry));
     }
     nlohmann::ordered_json doc;
     doc["kiln_usage"] = 1;
     doc["lookups"] = std::move(lookups);
+    if (!log.materials.empty()) {
+        nlohmann::ordered_json materials = nlohmann::ordered_json::array();
+        for (const UsageMaterial& m : log.materials) {
+            materials.push_back({{"material", m.material}, {"shader", m.shader}});
+        }
+        doc["materials"] = std::move(materials);
+    }
     return doc.dump(2) + "\n";
 }
 
-Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text) {
+namespace {
+
+// A list of strings under `key` of `j`, when present; an error naming `at` otherwise.
+Status ReadStrings(const nlohmann::json& j,
+                   const char* key,
+                   const std::string& at,
+                   std::vector<std::string>& out) {
+    if (!j.contains(key)) {
+        return {};
+    }
+    if (!j[key].is_array()) {
+        return Error{DiagCode::kBadUsageFile, at + ": \"" + key + "\" must be an array"};
+    }
+    for (const nlohmann::json& k : j[key]) {
+        if (!k.is_string()) {
+            return Error{DiagCode::kBadUsageFile,
+                         at + ": each of \"" + key + "\" must be a string"};
+        }
+        out.push_back(k.get<std::string>());
+    }
+    return {};
+}
+
+Status ReadCount(const nlohmann::json& j, const char* key, const std::string& at, uint64_t& out) {
+    if (!j.contains(key)) {
+        return {};
+    }
+    if (!j[key].is_number_unsigned()) {
+        return Error{DiagCode::kBadUsageFile,
+                     at + ": \"" + key + "\" must be a non-negative integer"};
+    }
+    out = j[key].get<uint64_t>();
+    return {};
+}
+
+Result<UsageEntry> ReadLookup(const nlohmann::json& j, const std::string& at) {
+    if (!j.is_object() || !j.contains("shader") || !j["shader"].is_string() ||
+        !j.contains("pass") || !j["pass"].is_string() || !j.contains("keywords") ||
+        !j["keywords"].is_array()) {
+        return Error{DiagCode::kBadUsageFile,
+                     at + " needs \"shader\" and \"pass\" strings and a \"keywords\" array"};
+    }
+    UsageEntry e{j["shader"].get<std::string>(), j["pass"].get<std::string>(), {}, 0, true, {}, 0};
+    for (Status s : {ReadStrings(j, "keywords", at, e.keywords), ReadCount(j, "count", at, e.count),
+                     ReadStrings(j, "requested_by", at, e.requested_by),
+                     ReadCount(j, "requesters", at, e.requesters)}) {
+        if (!s.ok()) {
+            return s.error();
+        }
+    }
+    if (j.contains("found")) {
+        if (!j["found"].is_boolean()) {
+            return Error{DiagCode::kBadUsageFile, at + ": \"found\" must be true or false"};
+        }
+        e.found = j["found"].get<bool>();
+    }
+    return e;
+}
+
+}  // namespace
+
+Result<UsageLog> ParseUsageFile(std::string_view text) {
     const nlohmann::json doc = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (doc.is_discarded() || !doc.is_object()) {
         return Error{DiagCode::kBadUsageFile, "a usage file must be a JSON object"};
@@ -120,42 +206,34 @@ Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text) {
     if (!doc.contains("lookups") || !doc["lookups"].is_array()) {
         return Error{DiagCode::kBadUsageFile, "a usage file needs a \"lookups\" array"};
     }
-    std::vector<UsageEntry> out;
+    UsageLog out;
     for (const nlohmann::json& j : doc["lookups"]) {
-        const std::string at = "lookup " + std::to_string(out.size() + 1);
-        if (!j.is_object() || !j.contains("shader") || !j["shader"].is_string() ||
-            !j.contains("pass") || !j["pass"].is_string() || !j.contains("keywords") ||
-            !j["keywords"].is_array()) {
-            return Error{DiagCode::kBadUsageFile,
-                         at + " needs \"shader\" and \"pass\" strings and a \"keywords\" array"};
+        Result<UsageEntry> e = ReadLookup(j, "lookup " + std::to_string(out.lookups.size() + 1));
+        if (!e) {
+            return e.error();
         }
-        UsageEntry e{j["shader"].get<std::string>(), j["pass"].get<std::string>(), {}, 0, true};
-        for (const nlohmann::json& k : j["keywords"]) {
-            if (!k.is_string()) {
-                return Error{DiagCode::kBadUsageFile, at + ": a keyword must be a string"};
-            }
-            e.keywords.push_back(k.get<std::string>());
+        out.lookups.push_back(std::move(e).value());
+    }
+    if (doc.contains("materials")) {
+        if (!doc["materials"].is_array()) {
+            return Error{DiagCode::kBadUsageFile, "\"materials\" must be an array"};
         }
-        if (j.contains("count")) {
-            if (!j["count"].is_number_unsigned()) {
+        for (const nlohmann::json& m : doc["materials"]) {
+            if (!m.is_object() || !m.contains("material") || !m["material"].is_string() ||
+                !m.contains("shader") || !m["shader"].is_string()) {
                 return Error{DiagCode::kBadUsageFile,
-                             at + ": \"count\" must be a non-negative integer"};
+                             "material " + std::to_string(out.materials.size() + 1) +
+                                 " needs \"material\" and \"shader\" strings"};
             }
-            e.count = j["count"].get<uint64_t>();
+            out.materials.push_back(
+                {m["material"].get<std::string>(), m["shader"].get<std::string>()});
         }
-        if (j.contains("found")) {
-            if (!j["found"].is_boolean()) {
-                return Error{DiagCode::kBadUsageFile, at + ": \"found\" must be true or false"};
-            }
-            e.found = j["found"].get<bool>();
-        }
-        out.push_back(std::move(e));
     }
     return out;
 }
 
-Status WriteUsageFile(const std::string& path, const std::vector<UsageEntry>& entries) {
-    const std::string text = UsageFileText(entries);
+Status WriteUsageFile(const std::string& path, const UsageLog& log) {
+    const std::string text = UsageFileText(log);
     return base::WriteFileAtomically(path, std::string_view(text));
 }
 

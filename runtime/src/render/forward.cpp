@@ -1,9 +1,6 @@
-// RenderForward: the lecture's forward path. For every primitive of every instance: its
-// material instance, the shader's ForwardBase (or untagged) pass lit by the main directional
-// light with ambient and vertex lights, then one ForwardAdd pass per further pixel light with
-// DIRECTIONAL / POINT / SPOT selecting the variant. Opaque objects first, in scene order, then
-// transparent ones back to front. Draws are planned on the CPU first (pipelines, uniform bytes,
-// descriptors), then one command buffer records them all.
+// RenderForward: the lecture's forward path. The draw list (render/forward_plan.h: passes,
+// lights and keywords per primitive) becomes draws: the variant each asks for, its pipeline,
+// uniform bytes and descriptors, decided on the CPU; then one command buffer records them all.
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -14,6 +11,7 @@
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
 #include "render/draw.h"
+#include "render/forward_plan.h"
 #include "render/frame_values.h"
 #include "render/renderer_state.h"
 #include "render/textures.h"
@@ -24,30 +22,7 @@ namespace {
 using render::MaterialInstance;
 using render::Values;
 
-struct ShaderPasses {
-    std::vector<uint32_t> base;  // ForwardBase, Always or untagged, in order
-    std::optional<uint32_t> add;
-};
-
-ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
-    ShaderPasses out;
-    const pack::ShaderRec s = pack.Shader(shader).value();
-    for (uint32_t p = s.first_pass; p < s.first_pass + s.pass_count; ++p) {
-        const pack::PassRec rec = pack.Pass(p).value();
-        if (rec.subshader != 0) {
-            continue;  // the first SubShader is the one that runs
-        }
-        const std::string_view mode = pack::LightModeOf(pack, p);
-        if (mode.empty() || mode == pack::kLightModeForwardBase || mode == pack::kLightModeAlways) {
-            out.base.push_back(p);
-        } else if (mode == pack::kLightModeForwardAdd && !out.add) {
-            out.add = p;
-        }
-    }
-    return out;
-}
-
-struct Planner {
+struct DrawBuilder {
     Renderer::State& s;
     const Scene& scene;
     const ColorPipeline& color;
@@ -59,42 +34,25 @@ struct Planner {
 
     // A warning about the scene, each once a frame.
     void Warn(DiagCode code, std::string message) {
-        const auto& all = stats.warnings.all();
-        if (std::none_of(all.begin(), all.end(),
-                         [&](const Diagnostic& d) { return d.message == message; })) {
-            stats.warnings.Warning(code, scene.path, kNoPosition, std::move(message));
-        }
+        render::WarnOnce(stats.warnings, scene, code, std::move(message));
     }
 
-    // One draw of `pass` for a primitive, lit by `light` (and `vertex` lights in base passes).
-    Status Plan(const MaterialInstance& m,
-                uint32_t pass,
-                bool additive,
-                const Light* light,
-                const std::vector<const Light*>& vertex,
-                const glm::mat4& world,
-                const vk::Buffer& vb,
-                const vk::Buffer& ib,
-                uint32_t index_count,
-                std::vector<Draw>& draws) {
+    // One draw of a request's pass for its primitive (vertex and index buffers uploaded).
+    Status Build(const render::DrawRequest& request,
+                 const vk::Buffer& vb,
+                 const vk::Buffer& ib,
+                 std::vector<Draw>& draws) {
+        const MaterialInstance& m = *request.material;
+        const uint32_t pass = request.pass;
+        const bool additive = request.additive;
+        const Light* light = request.light;
+        const std::vector<const Light*>& vertex = request.vertex;
+        const glm::mat4& world = request.instance->world;
+        const uint32_t index_count = uint32_t(request.primitive->indices.size());
         LoadedPack& lp = *s.packs[m.pack];
         const pack::Pack& pack = lp.pack;
-        std::vector<std::string> keywords = m.keywords;
-        if (additive) {
-            const LightType type = light ? light->type : LightType::kDirectional;
-            keywords.emplace_back(type == LightType::kPoint  ? pack::kKeywordPoint
-                                  : type == LightType::kSpot ? pack::kKeywordSpot
-                                                             : pack::kKeywordDirectional);
-        } else {
-            keywords.emplace_back(pack::kKeywordDirectional);
-            // Objects without lightmaps take ambient light from the light probes (unity_SH*), as in
-            // Unity; passes that do not declare the keyword ignore it.
-            keywords.emplace_back(pack::kKeywordLightProbeSH);
-            if (!vertex.empty()) {
-                keywords.emplace_back(pack::kKeywordVertexLight);
-            }
-        }
-        const Result<pack::VariantChoice> selected = lp.selector->Select(pass, keywords);
+        const Result<pack::VariantChoice> selected =
+            lp.selector->Select(pass, request.keywords, request.reason);
         if (!selected) {
             return Error{DiagCode::kMissingVariant, m.name + ": " + selected.error().message};
         }
@@ -289,113 +247,29 @@ Status RenderForward(Renderer::State& s,
     }
     stats.camera = camera.name;
 
-    // Material instances, built on first use: a sidecar .material, else the glTF material on
-    // Kiln/StandardMetallic. Index materials.size() is glTF's default material.
-    std::vector<std::optional<MaterialInstance>> instances(scene.materials.size() + 1);
-    auto instance_for = [&](int index, const MaterialInstance*& m) -> Status {
-        const size_t slot = index < 0 ? scene.materials.size() : size_t(index);
-        if (instances[slot]) {
-            m = &*instances[slot];
-            return {};
-        }
-        SceneMaterial gltf;
-        gltf.name = "(default)";
-        if (index >= 0) {
-            gltf = scene.materials[slot];
-        }
-        MaterialInstance inst;
-        if (auto it = scene.material_files.find(gltf.name);
-            index >= 0 && it != scene.material_files.end()) {
-            if (Status e = render::InstanceFromMaterialFile(s.PackList(), it->second, color, inst);
-                !e.ok()) {
-                return e;
-            }
-        } else {
-            bool found = false;
-            for (uint32_t p = 0; p < s.packs.size() && !found; ++p) {
-                if (auto shader = s.packs[p]->pack.FindShader("Kiln/StandardMetallic")) {
-                    render::InstanceFromDefaults(s.packs[p]->pack, p, *shader, color, inst);
-                    found = true;
-                }
-            }
-            if (!found) {
-                return Error{DiagCode::kRenderFailed,
-                             "glTF material '" + gltf.name +
-                                 "' needs shader 'Kiln/StandardMetallic', which is in none of the "
-                                 "loaded packs (add the shipped materials.kpack)"};
-            }
-            render::ApplyGltfMaterial(gltf, inst);
-        }
-        instances[slot] = std::move(inst);
-        m = &*instances[slot];
-        return {};
-    };
-
     FrameBuffers gpu{s.context, {}};
     render::FrameTextures textures(s, scene);
-    Planner planner{s,     scene, color, textures, render::FrameValues(scene, settings, camera),
-                    stats, {},    256};
-    planner.alignment =
+    DrawBuilder builder{s,     scene, color, textures, render::FrameValues(scene, settings, camera),
+                        stats, {},    256};
+    builder.alignment =
         std::max<VkDeviceSize>(256, s.context.properties.limits.minUniformBufferOffsetAlignment);
-    std::vector<Light> scene_lights = scene.lights;
-    if (scene_lights.empty() && settings.default_light) {
-        Light key;
-        key.name = "default light";
-        key.type = LightType::kDirectional;
-        key.direction = glm::normalize(glm::vec3(-0.35f, -0.8f, -0.5f));
-        key.intensity = 3.14159265f;  // pi lux: _LightColor0 = 1, Unity's default light
-        scene_lights.push_back(key);
-        planner.Warn(DiagCode::kDefaultLight,
-                     "the scene has no KHR_lights_punctual lights: lit by a default directional "
-                     "light of pi lux (Unity's intensity 1) shining along (-0.35, -0.8, -0.5)");
+    render::ForwardPlan plan;
+    if (Status e = render::PlanForward(s.PackList(), scene, settings, camera.position, color, plan,
+                                       stats.warnings);
+        !e.ok()) {
+        return e;
     }
-    const Light* main = render::MainLight(scene_lights);
-
-    struct Item {
-        const Instance* instance;
-        const Primitive* primitive;
-        const MaterialInstance* material;
-        glm::vec3 center;
-        float radius, depth;
-    };
-    std::vector<Item> opaque, transparent;
-    for (const Instance& inst : scene.instances) {
-        for (const Primitive& prim : scene.meshes[inst.mesh].primitives) {
-            const MaterialInstance* m = nullptr;
-            if (Status e = instance_for(prim.material, m); !e.ok()) {
-                return e;
-            }
-            glm::vec3 lo(std::numeric_limits<float>::max()), hi(-lo);
-            for (const MeshVertex& v : prim.vertices) {
-                const glm::vec3 w(inst.world * glm::vec4(glm::make_vec3(v.position), 1));
-                lo = glm::min(lo, w);
-                hi = glm::max(hi, w);
-            }
-            const glm::vec3 center = (lo + hi) * 0.5f;
-            const float depth = glm::length(center - camera.position);
-            (m->transparent ? transparent : opaque)
-                .push_back({&inst, &prim, m, center, glm::length(hi - lo) * 0.5f, depth});
-        }
+    for (const MaterialInstance& m : plan.materials) {
+        s.used_materials.insert(
+            {m.name, std::string(s.packs[m.pack]->pack.String(
+                         s.packs[m.pack]->pack.Shader(m.shader).value().name))});
     }
-    std::stable_sort(transparent.begin(), transparent.end(),
-                     [](const Item& a, const Item& b) { return a.depth > b.depth; });
-    opaque.insert(opaque.end(), transparent.begin(), transparent.end());
-
     std::vector<Draw> draws;
     std::map<const Primitive*, std::pair<const vk::Buffer*, const vk::Buffer*>> uploaded;
-    for (const Item& item : opaque) {
-        const MaterialInstance& m = *item.material;
-        const ShaderPasses passes = PassesOf(s.packs[m.pack]->pack, m.shader);
-        if (passes.base.empty()) {
-            planner.Warn(DiagCode::kPassNotDrawn,
-                         m.name +
-                             ": the shader has no ForwardBase or untagged pass; objects "
-                             "using it are not drawn by the forward path");
-            continue;
-        }
-        auto& buffers = uploaded[item.primitive];
+    for (const render::DrawRequest& r : plan.draws) {
+        auto& buffers = uploaded[r.primitive];
         if (!buffers.first) {
-            const Primitive& p = *item.primitive;
+            const Primitive& p = *r.primitive;
             vk::Buffer& vb = gpu.buffers.emplace_back();
             if (Status e =
                     vk::CreateBufferWithData(s.context,
@@ -415,29 +289,12 @@ Status RenderForward(Renderer::State& s,
             }
             buffers = {&vb, &ib};
         }
-        const render::ObjectLights lights =
-            render::LightsFor(scene_lights, main, item.center, item.radius, settings.pixel_lights);
-        const uint32_t count = uint32_t(item.primitive->indices.size());
-        for (uint32_t pass : passes.base) {
-            if (Status e =
-                    planner.Plan(m, pass, false, lights.main, lights.vertex, item.instance->world,
-                                 *buffers.first, *buffers.second, count, draws);
-                !e.ok()) {
-                return e;
-            }
+        if (Status e = builder.Build(r, *buffers.first, *buffers.second, draws); !e.ok()) {
+            return e;
         }
-        if (passes.add) {
-            for (const Light* light : lights.pixel) {
-                if (Status e = planner.Plan(m, *passes.add, true, light, {}, item.instance->world,
-                                            *buffers.first, *buffers.second, count, draws);
-                    !e.ok()) {
-                    return e;
-                }
-            }
-        }
-        ++stats.objects;
     }
-    return RecordFrame(s, settings, draws, planner.uniforms, out);
+    stats.objects = plan.objects;
+    return RecordFrame(s, settings, draws, builder.uniforms, out);
 }
 
 }  // namespace kiln::runtime

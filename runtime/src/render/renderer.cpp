@@ -253,7 +253,9 @@ Status Renderer::WriteUsage(const std::string& path) const {
     for (const auto& p : state_->packs) {
         selectors.push_back(p->selector.get());
     }
-    return pack::WriteUsageFile(path, pack::UsageOf(selectors));
+    return pack::WriteUsageFile(
+        path,
+        {pack::UsageOf(selectors), {state_->used_materials.begin(), state_->used_materials.end()}});
 }
 
 size_t Renderer::pack_count() const {

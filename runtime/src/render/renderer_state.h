@@ -6,6 +6,7 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,7 @@ struct Renderer::State {
     std::map<std::pair<bool, bool>, VkSampler> samplers;  // (repeat, nearest)
     std::map<std::pair<std::string, vk::ImageShape>, vk::Image> default_textures;
     DiagnosticList notes;  // pipeline-cache warnings etc., reported with the next frame
+    std::set<pack::UsageMaterial> used_materials;       // every frame's, for the usage file
     std::unique_ptr<vk::ModuleChecker> module_checker;  // null when the packs are trusted
 
     ~State();

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/compile_support.h"
 #include "support/test_support.h"
 #include "variants/pass_pragmas.h"
 
@@ -176,6 +177,95 @@ TEST(Expand, KeyWiderThan64BitsIsRejected) {
     DiagnosticList diags;
     EXPECT_FALSE(ExpandVariants(p, {}, "P", "t", {}, diags));
     EXPECT_EQ(diags.all()[0].code, DiagCode::kVariantKeyTooWide);
+}
+
+TEST(ExpandRequested, BuildsExactlyTheRequestedKeysAndSaysWhyOthersAreNot) {
+    PassPragmas p;
+    auto shortcut = BuiltinShortcut("multi_compile_fwdadd_fullshadows");
+    for (const auto& kws : shortcut->sets)
+        p.sets.push_back(Set(kws));
+    p.rules = shortcut->rules;
+    for (auto& r : p.rules)
+        r.pragma = "multi_compile_fwdadd_fullshadows";
+    p.sets.push_back(Set({"", "_NORMALMAP"}, pack::KeywordSetKind::kShaderFeature));
+    p.skip_variants = {{"SPOT", {}}};
+    DiagnosticList diags;
+    std::vector<ExcludedRequest> excluded;
+    const auto ex = ExpandRequested(p,
+                                    {{"POINT", "_NORMALMAP"},
+                                     {"POINT", "_NORMALMAP", "NOT_DECLARED"},  // the same key
+                                     {"SPOT"},
+                                     {"DIRECTIONAL", "SHADOWS_DEPTH"},
+                                     {}},
+                                    4096, "P", "t", {}, diags, excluded);
+    ASSERT_TRUE(ex);
+    EXPECT_FALSE(diags.has_errors());
+    std::vector<std::string> kept;
+    for (auto k : ex->keys)
+        kept.push_back(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+    // {} is the key of every set's first choice: POINT (the shortcut's first light type).
+    EXPECT_EQ(kept, (std::vector<std::string>{"POINT", "POINT _NORMALMAP"}));
+    ASSERT_EQ(excluded.size(), 2u);
+    EXPECT_EQ(excluded[0].request, 2u);
+    EXPECT_EQ(excluded[0].reason, "'#pragma skip_variants' names 'SPOT'");
+    EXPECT_EQ(excluded[1].reason,
+              "'#pragma multi_compile_fwdadd_fullshadows' never builds SHADOWS_DEPTH without one "
+              "of SPOT");
+    EXPECT_EQ(ex->permutations, 5u * 4 * 2 * 2 * 2 * 2);
+}
+
+// 2^40 declared combinations: the expansion works from the requests alone (enumerating the
+// product would not finish).
+TEST(ExpandRequested, NeverEnumeratesTheProduct) {
+    PassPragmas p;
+    for (int i = 0; i < 40; ++i)
+        p.sets.push_back(Set({"", "K" + std::to_string(i)}));
+    DiagnosticList diags;
+    std::vector<ExcludedRequest> excluded;
+    const auto ex = ExpandRequested(p, {{"K3", "K39"}}, 4096, "P", "t", {}, diags, excluded);
+    ASSERT_TRUE(ex);
+    ASSERT_EQ(ex->keys.size(), 1u);
+    EXPECT_EQ(ex->permutations, uint64_t{1} << 40);
+    EXPECT_EQ(EnabledKeywords(p.sets, ex->layout, ex->keys[0]),
+              (std::vector<std::string>{"K3", "K39"}));
+    EXPECT_FALSE(ExpandRequested(p, {{"K1"}, {"K2"}}, 1, "\"P\"", "t", {}, diags, excluded));
+    EXPECT_EQ(diags.all().back().message,
+              "2 variants requested for pass \"P\", over the limit of 1 (--max-variants)");
+}
+
+// The compiler maps a recorded lookup back to a key as the pack reader does (Pack::KeyFor).
+TEST(ExpandRequested, KeysAgreeWithThePackReader) {
+    test::ScratchDir dir;
+    const std::string shader = dir.Write(
+        "k.shader",
+        "Shader \"K\" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma fragment f\n"
+        "#pragma multi_compile DIRECTIONAL POINT SPOT\n#pragma multi_compile _ A B\n"
+        "#pragma shader_feature C\nfloat4 v(float4 p : POSITION) : SV_POSITION { return p; }\n"
+        "float4 f() : SV_Target { return 0; }\nENDCG } } }\n");
+    CompileOptions options;
+    options.all_features = true;
+    const test::CompileRun run = test::Compile({shader}, options);
+    ASSERT_TRUE(run.out.ok) << test::Summarize(run.diags);
+    pack::Pack pk;
+    ASSERT_TRUE(test::OpenInto(run.out.pack, pk));
+    DiagnosticList diags;
+    const PassPragmas p = [&] {
+        PassPragmas out;
+        out.sets = {Set({"DIRECTIONAL", "POINT", "SPOT"}), Set({"", "A", "B"}),
+                    Set({"", "C"}, pack::KeywordSetKind::kShaderFeature)};
+        return out;
+    }();
+    const auto layout = LayoutSets(p.sets);
+    ASSERT_TRUE(layout);
+    for (const std::vector<std::string>& request :
+         std::vector<std::vector<std::string>>{{},
+                                               {"SPOT", "B", "C"},
+                                               {"A", "POINT"},
+                                               {"C", "X", "DIRECTIONAL", "POINT"},
+                                               {"B", "A"}}) {
+        EXPECT_EQ(KeyForKeywords(p.sets, *layout, request).bits(), pk.KeyFor(0, request).bits())
+            << DescribeKeywords(request);
+    }
 }
 
 }  // namespace

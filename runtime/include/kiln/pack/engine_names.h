@@ -38,6 +38,9 @@ inline constexpr const char* kKeywordDirectionalCookie = "DIRECTIONAL_COOKIE";
 inline constexpr const char* kKeywordLightProbeSH = "LIGHTPROBE_SH";
 inline constexpr const char* kKeywordVertexLight = "VERTEXLIGHT_ON";
 
+// The shader the renderer maps a glTF metallic-roughness material onto (no sidecar .material).
+inline constexpr const char* kShaderStandardMetallic = "Kiln/StandardMetallic";
+
 // Built-in globals the renderer fills per frame, light or draw that are not named unity_* or
 // UNITY_* (every such name is the engine's too: IsEngineGlobal). docs/shader-library.md.
 inline constexpr const char* kGlobalLightColor0 = "_LightColor0";

@@ -21,6 +21,9 @@ enum class MissingVariantPolicy {
     kClosest,  // take the closest variant (fewest keyword sets differing) and warn
 };
 
+// Who asked for a lookup: at most this many distinct requesters are kept per lookup.
+inline constexpr size_t kMaxRequestedBy = 16;
+
 struct VariantChoice {
     uint32_t variant = 0;  // index into the pack's variant table
     bool exact = true;
@@ -35,12 +38,19 @@ class VariantSelector {
     // O(log n): the key is built from the keywords (names in no keyword set of the pass are
     // ignored, as Unity ignores them) and binary-searched in the pass's sorted variant table. An
     // error for a pass index out of range, and (kError) for a variant the pack lacks.
-    Result<VariantChoice> Select(uint32_t pass, const std::vector<std::string>& keywords);
+    // `requester`, when not empty, is recorded with the lookup (who asked: a planned frame's
+    // "material on node: light").
+    Result<VariantChoice> Select(uint32_t pass,
+                                 const std::vector<std::string>& keywords,
+                                 const std::string& requester = {});
 
-    // Every Select() so far, grouped: (shader, pass's PassLabel, keywords) -> (count, found).
+    // Every Select() so far, grouped: (shader, pass's PassLabel, keywords) -> (count, found,
+    // who asked).
     struct Usage {
         uint64_t count = 0;
         bool found = true;
+        std::vector<std::string> requested_by;  // at most kMaxRequestedBy, distinct
+        uint64_t requesters = 0;
     };
     using UsageKey = std::tuple<std::string, std::string, std::vector<std::string>>;
     const std::map<UsageKey, Usage>& usage() const { return usage_; }
@@ -54,21 +64,43 @@ class VariantSelector {
 // Keywords as messages show them: "A B C", or "(no keywords)".
 std::string JoinKeywords(const std::vector<std::string>& keywords);
 
-// One line of a usage file.
+// One line of a usage file: a (shader, pass, keywords) lookup, how often it was made and whether
+// the pack had the variant. `requested_by` says who asked (a planned frame fills it: "material on
+// node: which light"); at most kMaxRequestedBy distinct entries are kept, `requesters` counts all.
 struct UsageEntry {
     std::string shader, pass;  // pass: its PassLabel (kiln/pack/pass_id.h)
     std::vector<std::string> keywords;
     uint64_t count = 0;
     bool found = true;
+    std::vector<std::string> requested_by;
+    uint64_t requesters = 0;
+};
+
+// A material instance a frame resolved, and the shader it uses: stripping keeps such a shader
+// even when none of its passes is drawn, so the stripped pack renders as the full one does.
+struct UsageMaterial {
+    std::string material, shader;
+    friend bool operator==(const UsageMaterial&, const UsageMaterial&) = default;
+    friend auto operator<=>(const UsageMaterial&, const UsageMaterial&) = default;
+};
+
+// A usage file (kiln_usage 1): the lookups, then the materials (optional in the file).
+struct UsageLog {
+    std::vector<UsageEntry> lookups;
+    std::vector<UsageMaterial> materials;
 };
 
 std::vector<UsageEntry> UsageOf(const std::vector<const VariantSelector*>& selectors);
+// Adds a requester to a lookup: counted, and kept when new and fewer than kMaxRequestedBy are.
+void AddRequester(std::vector<std::string>& requested_by,
+                  uint64_t& requesters,
+                  const std::string& reason);
 // The usage file's text (JSON, kiln_usage 1) and its reader; the reader rejects anything else
 // with a message naming what is wrong.
-std::string UsageFileText(const std::vector<UsageEntry>& entries);
-Result<std::vector<UsageEntry>> ParseUsageFile(std::string_view text);
+std::string UsageFileText(const UsageLog& log);
+Result<UsageLog> ParseUsageFile(std::string_view text);
 // Writes UsageFileText via a temporary file (kiln/base/files.h).
-Status WriteUsageFile(const std::string& path, const std::vector<UsageEntry>& entries);
+Status WriteUsageFile(const std::string& path, const UsageLog& log);
 
 }  // namespace kiln::pack
 
