@@ -85,6 +85,9 @@ struct CompileStats {
     size_t glslang_compiles = 0;  // unique programs compiled by glslang in this run
     size_t cache_hits = 0;        // unique programs taken from the cache
     size_t modules = 0;           // distinct SPIR-V modules in the pack
+    // Variants not stored because their keyword is an alias of another (identical SPIR-V in
+    // both stages): lookups of them find the other keyword's variants.
+    size_t aliased_variants = 0;
 };
 
 struct KeywordSetReport {

@@ -279,7 +279,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
                   DiagnosticList& diags,
                   Mode mode) {
     frontend::InitializeGlslang();  // before any thread starts
-    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}};
+    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
     if (options.templates_dir.empty() && DefaultTemplatesDir().empty()) {
         // An installed kiln without its share/kiln folder, or a program linking the library

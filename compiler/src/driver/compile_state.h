@@ -14,6 +14,7 @@
 #include "kiln/pack/variant_key.h"
 #include "kiln/shaderlab/ast.h"
 #include "spirv/reflection.h"
+#include "variants/alias_merge.h"
 #include "variants/expand.h"
 #include "variants/pass_pragmas.h"
 #include "worker/executor.h"
@@ -86,6 +87,8 @@ struct CompileState {
     std::vector<Job> jobs;
     // Per pass: (job index -> final module), filled by the binding phase.
     std::vector<std::map<size_t, FinalModule>> finals;
+    // Keyword aliases the pack records (EmitPack): (pass index, alias).
+    std::vector<std::pair<size_t, variants::KeywordAlias>> aliases;
 };
 
 // The entry point of a task's stage.

@@ -13,6 +13,7 @@
 #include "spirv/bindings.h"
 #include "spirv/optimize.h"
 #include "spirv/reflect.h"
+#include "variants/alias_merge.h"
 
 namespace kiln::driver {
 namespace {
@@ -367,6 +368,7 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
                 rec.flags |= pack::kPassExcludeRenderers;
             rec.first_variant = static_cast<uint32_t>(b.variants.size());
             const uint32_t pass_index = static_cast<uint32_t>(b.passes.size());
+            std::vector<pack::VariantRec> pass_variants;
             for (size_t v = 0; v < pu.expansion.keys.size(); ++v) {
                 const FinalModule& vs = FinalFor(st, p, pu.tasks[2 * v]);
                 const FinalModule& fs = FinalFor(st, p, pu.tasks[2 * v + 1]);
@@ -375,9 +377,17 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
                 vr.key = pu.expansion.keys[v].bits();
                 vr.vertex_module = b.AddModule(Stage::kVertex, vs.words, vs.reflection);
                 vr.fragment_module = b.AddModule(Stage::kFragment, fs.words, fs.reflection);
-                b.variants.push_back(vr);
+                pass_variants.push_back(vr);
             }
-            rec.variant_count = static_cast<uint32_t>(pu.expansion.keys.size());
+            for (const variants::KeywordAlias& a : variants::MergeRedundantKeywords(
+                     pu.pragmas.sets, pu.expansion.layout, pass_variants)) {
+                b.aliases.push_back(
+                    {rec.first_keyword_set + static_cast<uint32_t>(a.set), a.from, a.to, 0});
+                st.aliases.push_back({p, a});
+            }
+            stats.aliased_variants += pu.expansion.keys.size() - pass_variants.size();
+            b.variants.insert(b.variants.end(), pass_variants.begin(), pass_variants.end());
+            rec.variant_count = static_cast<uint32_t>(pass_variants.size());
             b.passes.push_back(rec);
         }
         sr.pass_count = static_cast<uint32_t>(b.passes.size()) - sr.first_pass;
@@ -390,6 +400,7 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
                                                                         : 1;
     meta.flags = st.options.debug_info ? 1u : 0u;
     stats.modules = b.module_count();
+
     return b.Finish(meta);
 }
 

@@ -105,6 +105,8 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
     sections.push_back(Records(SectionTag::kKeywordSets, keyword_sets));
     sections.push_back(Records(SectionTag::kKeywords, keywords));
     sections.push_back(Records(SectionTag::kVariants, variants));
+    if (!aliases.empty())
+        sections.push_back(Records(SectionTag::kKeywordAliases, aliases));
     sections.push_back(Records(SectionTag::kModules, modules_));
     sections.push_back(Records(SectionTag::kInterface, interface_));
     sections.push_back(Records(SectionTag::kBlocks, blocks_));

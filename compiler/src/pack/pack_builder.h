@@ -34,7 +34,8 @@ class PackBuilder {
     std::vector<pack::StateRec> states;
     std::vector<pack::KeywordSetRec> keyword_sets;
     std::vector<pack::StrRef> keywords;
-    std::vector<pack::VariantRec> variants;  // must be sorted by (pass, key) before Finish
+    std::vector<pack::VariantRec> variants;      // must be sorted by (pass, key) before Finish
+    std::vector<pack::KeywordAliasRec> aliases;  // sorted by (set, from); written when any
 
     uint32_t module_count() const { return static_cast<uint32_t>(modules_.size()); }
 

@@ -351,9 +351,10 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
             const CompileStats& s = out.stats;
             std::printf(
                 "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, "
-                "glslang compiles %zu, cache hits %zu, modules %zu\n",
+                "glslang compiles %zu, cache hits %zu, modules %zu, aliased variants %zu\n",
                 static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
-                s.unique_programs, s.glslang_compiles, s.cache_hits, s.modules);
+                s.unique_programs, s.glslang_compiles, s.cache_hits, s.modules,
+                s.aliased_variants);
         }
         PrintDiagnostics(diags, Views(out, material_files), global);
         return ExitCodeFor(diags);

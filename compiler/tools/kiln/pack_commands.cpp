@@ -76,8 +76,16 @@ nlohmann::json InfoJson(const Pack& p) {
                 for (uint32_t w = 0; w < kr.keyword_count; ++w) {
                     words.push_back(p.Keyword(kr.first_keyword + w).value());
                 }
+                nlohmann::json aliases = nlohmann::json::object();
+                for (uint32_t w = 0; w < kr.keyword_count; ++w) {
+                    if (const uint32_t to = p.AliasOf(k, w); to != w) {
+                        aliases[std::string(p.Keyword(kr.first_keyword + w).value())] =
+                            p.Keyword(kr.first_keyword + to).value();
+                    }
+                }
                 sets.push_back({{"kind", kr.kind == 0 ? "multi_compile" : "shader_feature"},
                                 {"keywords", words},
+                                {"aliases", aliases},
                                 {"shift", kr.key_shift},
                                 {"bits", kr.key_bits}});
             }
@@ -185,9 +193,12 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) 
                 std::string sets;
                 for (const auto& k : p["keyword_sets"]) {
                     std::string words;
+                    auto shown = [](const std::string& kw) { return kw.empty() ? "_" : kw; };
                     for (const auto& w : k["keywords"]) {
                         const std::string kw = w.get<std::string>();
-                        words += (words.empty() ? "" : " ") + (kw.empty() ? std::string("_") : kw);
+                        words += (words.empty() ? "" : " ") + shown(kw);
+                        if (k["aliases"].contains(kw))  // BAZ=_: BAZ finds _'s variants
+                            words += "=" + shown(k["aliases"][kw].get<std::string>());
                     }
                     sets += " [" + words + "]";
                 }

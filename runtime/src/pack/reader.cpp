@@ -27,8 +27,13 @@ constexpr SectionTag kAllTags[] = {
     SectionTag::kTags,       SectionTag::kStates,     SectionTag::kKeywordSets,
     SectionTag::kKeywords,   SectionTag::kVariants,   SectionTag::kModules,
     SectionTag::kSpirv,      SectionTag::kInterface,  SectionTag::kBlocks,
-    SectionTag::kMembers,    SectionTag::kResources,
+    SectionTag::kMembers,    SectionTag::kResources,  SectionTag::kKeywordAliases,
 };
+
+// Sections a pack may leave out (later minor versions' additions); absent means empty.
+bool Optional(SectionTag tag) {
+    return tag == SectionTag::kKeywordAliases;
+}
 
 // Encoded record size per section; 0 for raw byte sections.
 size_t RecordSizeOf(SectionTag tag) {
@@ -66,6 +71,8 @@ size_t RecordSizeOf(SectionTag tag) {
             return RecordSize<MemberRec>();
         case SectionTag::kResources:
             return RecordSize<ResourceRec>();
+        case SectionTag::kKeywordAliases:
+            return RecordSize<KeywordAliasRec>();
     }
     return 0;
 }
@@ -261,7 +268,7 @@ Status Pack::Validate() {
         sections_[slot] = e;
     }
     for (size_t i = 0; i < kSectionSlots; ++i) {
-        if (!seen[i])
+        if (!seen[i] && !Optional(kAllTags[i]))
             return Corrupt("section " + TagName(uint32_t(kAllTags[i])) + " is missing");
     }
     if (Count(SectionTag::kMeta) != 1)
@@ -325,6 +332,25 @@ Status Pack::Validate() {
             k.key_bits > 32 || k.key_shift > 64 - k.key_bits ||
             k.key_bits != BitsForCount(k.keyword_count)) {
             return fail("KSET", i);
+        }
+    }
+    // Aliases: sorted by (set, from), in range, to a lower keyword that is no alias itself.
+    const uint32_t n_aliases = Count(SectionTag::kKeywordAliases);
+    for (uint32_t i = 0; i < n_aliases; ++i) {
+        const auto a = Record<KeywordAliasRec>(SectionTag::kKeywordAliases, i);
+        if (a.keyword_set >= n_sets || a.to >= a.from ||
+            a.from >=
+                Record<KeywordSetRec>(SectionTag::kKeywordSets, a.keyword_set).keyword_count ||
+            a.to >= Record<KeywordSetRec>(SectionTag::kKeywordSets, a.keyword_set).keyword_count ||
+            AliasOf(a.keyword_set, a.to) != a.to) {
+            return fail("KALI", i);
+        }
+        if (i > 0) {
+            const auto prev = Record<KeywordAliasRec>(SectionTag::kKeywordAliases, i - 1);
+            if (prev.keyword_set > a.keyword_set ||
+                (prev.keyword_set == a.keyword_set && prev.from >= a.from)) {
+                return Corrupt("keyword alias table is not sorted at record " + std::to_string(i));
+            }
         }
     }
     for (uint32_t i = 0; i < n_passes; ++i) {
@@ -421,10 +447,33 @@ std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) c
     return std::nullopt;
 }
 
+uint32_t Pack::AliasOf(uint32_t keyword_set, uint32_t index) const {
+    const uint32_t n = Count(SectionTag::kKeywordAliases);
+    uint32_t lo = 0, hi = n;  // sorted by (set, from): a binary search
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        const auto a = Record<KeywordAliasRec>(SectionTag::kKeywordAliases, mid);
+        if (a.keyword_set == keyword_set && a.from == index)
+            return a.to;
+        if (a.keyword_set < keyword_set || (a.keyword_set == keyword_set && a.from < index)) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return index;
+}
+
 std::optional<uint32_t> Pack::FindVariant(uint32_t pass, VariantKey key) const {
     if (pass >= Count(SectionTag::kPasses))
         return std::nullopt;
     const PassRec p = Record<PassRec>(SectionTag::kPasses, pass);
+    if (Count(SectionTag::kKeywordAliases) > 0) {
+        for (uint32_t s = p.first_keyword_set; s < p.first_keyword_set + p.keyword_set_count; ++s) {
+            const KeywordSetRec set = Record<KeywordSetRec>(SectionTag::kKeywordSets, s);
+            key.Set(set.key_shift, set.key_bits, AliasOf(s, key.Get(set.key_shift, set.key_bits)));
+        }
+    }
     uint32_t lo = p.first_variant, hi = p.first_variant + p.variant_count;
     while (lo < hi) {
         const uint32_t mid = lo + (hi - lo) / 2;

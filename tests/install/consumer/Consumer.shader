@@ -15,7 +15,12 @@ Shader "Consumer/Lit" {
             #include "UnityCG.cginc"
             float4 _Color;
             float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
-            float4 frag() : SV_Target { return _Color; }
+            float4 frag() : SV_Target {
+            #ifdef FOG_LINEAR
+                return _Color * 0.5;  // the keyword changes the code, so it is no alias
+            #endif
+                return _Color;
+            }
             ENDCG
         }
     }

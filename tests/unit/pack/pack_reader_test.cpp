@@ -48,8 +48,12 @@ TEST(PackReader, RoundTripOfACompiledPack) {
     ASSERT_TRUE(by_name && by_light_mode);
     EXPECT_EQ(*by_name, *by_light_mode);
     const PassRec pass = p.Pass(*by_name).value();
-    EXPECT_EQ(pass.variant_count, 3u);
+    // light.cginc lights POINT and SPOT alike: SPOT is stored as an alias of POINT (KALI).
+    EXPECT_EQ(pass.variant_count, 2u);
     EXPECT_EQ(pass.keyword_set_count, 1u);
+    EXPECT_EQ(p.Count(SectionTag::kKeywordAliases), 1u);
+    EXPECT_EQ(p.AliasOf(pass.first_keyword_set, 2), 1u);  // SPOT -> POINT
+    EXPECT_EQ(p.AliasOf(pass.first_keyword_set, 1), 1u);
     bool saw_blend = false;
     for (uint32_t s = pass.first_state; s < pass.first_state + pass.state_count; ++s) {
         const auto st = p.Get<StateRec>(SectionTag::kStates, s).value();
@@ -57,7 +61,7 @@ TEST(PackReader, RoundTripOfACompiledPack) {
             saw_blend = p.String(st.text) == "One";
     }
     EXPECT_TRUE(saw_blend);
-    for (const char* kw : {"DIRECTIONAL", "POINT", "SPOT"}) {
+    for (const char* kw : {"DIRECTIONAL", "POINT", "SPOT"}) {  // SPOT finds POINT's variant
         const VariantKey key = p.KeyFor(*by_name, {kw, "UNRELATED"});
         const auto v = p.FindVariant(*by_name, key);
         ASSERT_TRUE(v) << kw;
@@ -142,6 +146,37 @@ TEST(PackReader, EveryBitFlipIsRejected) {
     }
 }
 
+// Bytes of the KALI section of `b` (the section table read by hand), or b.size() when absent.
+size_t AliasSection(const std::vector<uint8_t>& b) {
+    const uint32_t sections = b[12] | b[13] << 8 | b[14] << 16 | uint32_t(b[15]) << 24;
+    for (uint32_t i = 0; i < sections; ++i) {
+        const uint8_t* e = b.data() + kHeaderSize + i * kSectionEntrySize;
+        if (std::equal(e, e + 4, "KALI")) {
+            uint64_t offset = 0;
+            for (int k = 7; k >= 0; --k)
+                offset = offset << 8 | e[8 + k];
+            return size_t(offset);
+        }
+    }
+    return b.size();
+}
+
+TEST(PackReader, KeywordAliasesAreCheckedLikeEveryOtherIndex) {
+    const std::vector<uint8_t> good = CompiledPack();
+    const size_t at = AliasSection(good);
+    ASSERT_LT(at + 16, good.size());
+    // {set, from, to, reserved}: to == from, to past the set, an unknown set, to an alias.
+    for (const auto& [field, value] :
+         std::vector<std::pair<size_t, uint8_t>>{{8, 2}, {8, 3}, {0, 99}, {4, 0}}) {
+        std::vector<uint8_t> b = good;
+        b[at + field] = value;
+        Reseal(b);
+        const Result<Pack> p = Pack::Open(b);
+        ASSERT_FALSE(p) << field << "=" << int(value);
+        EXPECT_EQ(p.error().code, DiagCode::kBadPack);
+    }
+}
+
 TEST(PackReader, ForeignAndOtherVersionFilesGetTypedErrors) {
     std::vector<uint8_t> b = CompiledPack();
     b[0] = 'X';
@@ -152,7 +187,7 @@ TEST(PackReader, ForeignAndOtherVersionFilesGetTypedErrors) {
     const Result<Pack> other = Pack::Open(b);
     ASSERT_FALSE(other);
     EXPECT_EQ(other.error().code, DiagCode::kPackVersion);
-    EXPECT_EQ(other.error().message, "pack format 2.0 is not supported (reader knows 1.x)");
+    EXPECT_EQ(other.error().message, "pack format 2.1 is not supported (reader knows 1.x)");
     b = CompiledPack();
     b.push_back(0);
     EXPECT_EQ(Pack::Open(b).error().code, DiagCode::kBadPack);

@@ -16,7 +16,7 @@ namespace kiln::pack {
 
 inline constexpr std::array<char, 4> kMagic = {'K', 'P', 'A', 'K'};
 inline constexpr uint16_t kFormatMajor = 1;  // readers reject another major
-inline constexpr uint16_t kFormatMinor = 0;  // additions readers may ignore
+inline constexpr uint16_t kFormatMinor = 1;  // additions readers may ignore (1: KALI)
 inline constexpr uint32_t kHeaderSize = 32;
 inline constexpr uint32_t kSectionEntrySize = 24;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -45,6 +45,8 @@ enum class SectionTag : uint32_t {
     kBlocks = FourCC('B', 'L', 'C', 'K'),       // BlockRec
     kMembers = FourCC('M', 'E', 'M', 'B'),      // MemberRec
     kResources = FourCC('R', 'S', 'R', 'C'),    // ResourceRec
+    // Optional (format 1.1): keyword aliases, KeywordAliasRec sorted by (keyword_set, from).
+    kKeywordAliases = FourCC('K', 'A', 'L', 'I'),
 };
 
 struct Header {  // 32 bytes
@@ -229,6 +231,17 @@ struct KeywordSetRec {                              // 24 bytes
     uint32_t flags = 0;                             // KeywordSetFlags
     uint32_t first_keyword = 0, keyword_count = 0;  // into KWRD; an empty name is "no keyword"
     uint32_t key_shift = 0, key_bits = 0;           // see variant_key.h
+};
+
+// Keyword `from` of a keyword set gives, in every variant of its pass, the same SPIR-V as keyword
+// `to` (both stages, every combination of the other sets): the compiler built `to`'s variants
+// only, and a lookup that enables `from` finds them (Pack::FindVariant maps it). `to` is never
+// itself aliased. A reader of format 1.0 skips the section, and such a lookup is a clear
+// missing-variant error there, never another variant.
+struct KeywordAliasRec {        // 16 bytes
+    uint32_t keyword_set = 0;   // index into KSET
+    uint32_t from = 0, to = 0;  // keyword indices within the set
+    uint32_t reserved = 0;
 };
 
 struct VariantRec {  // 24 bytes

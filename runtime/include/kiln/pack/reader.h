@@ -83,8 +83,11 @@ class Pack {
     // A pass by its one name (PassLabel, kiln/pack/pass_id.h), else by its Name, else by its
     // LightMode tag (first match in SubShader order); case-insensitive.
     std::optional<uint32_t> FindPass(uint32_t shader, std::string_view name) const;
-    // Binary search of the sorted variant table: O(log n).
+    // Binary search of the sorted variant table: O(log n). Keyword aliases (KALI) are applied
+    // first: a key that enables an aliased keyword finds the variant of the keyword it aliases.
     std::optional<uint32_t> FindVariant(uint32_t pass, VariantKey key) const;
+    // The keyword index that `index` of keyword set `keyword_set` aliases, or `index` itself.
+    uint32_t AliasOf(uint32_t keyword_set, uint32_t index) const;
 
     // The key selecting, in each keyword set, the enabled keyword (or the set's first keyword
     // when none of its keywords is enabled). Names in no set are ignored.
@@ -98,7 +101,7 @@ class Pack {
     std::vector<std::string> KeywordsOf(uint32_t pass, VariantKey key) const;
 
   private:
-    static constexpr size_t kSectionSlots = 17;
+    static constexpr size_t kSectionSlots = 18;
     template <class Rec>
     Rec Record(SectionTag tag, uint32_t index) const {  // index < Count(tag)
         const SectionEntry& s = sections_[Index(tag)];

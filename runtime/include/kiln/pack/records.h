@@ -111,6 +111,13 @@ constexpr void Visit(V& v, KeywordSetRec& r) {
     v(r.key_bits);
 }
 template <class V>
+constexpr void Visit(V& v, KeywordAliasRec& r) {
+    v(r.keyword_set);
+    v(r.from);
+    v(r.to);
+    v(r.reserved);
+}
+template <class V>
 constexpr void Visit(V& v, VariantRec& r) {
     v(r.pass);
     v(r.reserved);
@@ -199,6 +206,7 @@ static_assert(RecordSize<PassRec>() == 56);
 static_assert(RecordSize<TagRec>() == 16);
 static_assert(RecordSize<StateRec>() == 24);
 static_assert(RecordSize<KeywordSetRec>() == 24);
+static_assert(RecordSize<KeywordAliasRec>() == 16);
 static_assert(RecordSize<VariantRec>() == 24);
 static_assert(RecordSize<ModuleRec>() == 48);
 static_assert(RecordSize<InterfaceVarRec>() == 32);
