@@ -103,7 +103,7 @@ Shader "Kiln/MultiLight"
             #pragma vertex MultiLightVertex
             #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment MultiLightAddFragment
-            #pragma multi_compile DIRECTIONAL POINT SPOT
+            #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
             ENDCG
         }
     }

@@ -186,7 +186,7 @@ Shader "Kiln/StandardMetallic"
             #pragma vertex MetallicVertex
             #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment AddFragment
-            #pragma multi_compile DIRECTIONAL POINT SPOT
+            #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
             #pragma shader_feature_local _NORMALMAP
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
             #pragma shader_feature_local_fragment _ALPHATEST_ON

@@ -94,7 +94,7 @@ Shader "KILN_SHADER_NAME"
             #pragma vertex Vertex
             #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment AddFragment
-            #pragma multi_compile DIRECTIONAL POINT SPOT
+            #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
             ENDCG
         }
     }

@@ -14,7 +14,7 @@ enum class Severity : uint8_t { kNote, kWarning, kError, kInternal };
 //   K0xxx  input/output          K1xxx  ShaderLab lexer
 //   K2xxx  ShaderLab parser      K3xxx  ShaderLab semantic checks
 //   K4xxx  pragmas and variants  K5xxx  HLSL compilation, SPIR-V, reflection, bindings
-//   K6xxx  material instances
+//   K6xxx  material instances    K7xxx  kiln lint
 //   K9xxx  internal compiler errors
 enum class DiagCode : uint16_t {
     kCannotReadFile = 1,  // also: larger than kMaxSourceFileBytes
@@ -102,6 +102,7 @@ enum class DiagCode : uint16_t {
     kUnknownRequestedPass = 4017,      // a scene or usage file looks up a pass the shader lacks
     kRequestedVariantNotBuilt = 4018,  // warning: a looked-up variant skip_variants or a rule drops
     kSceneVerifyFailed = 4019,         // --verify-scene: the stripped pack misses a needed variant
+    kBadVariantBudget = 4020,          // a "KilnMaxVariants" tag that is not a positive number
 
     kHlslError = 5001,
     kHlslWarning = 5002,
@@ -135,6 +136,20 @@ enum class DiagCode : uint16_t {
     kMaterialTextureNotFound = 6014,      // warning: texture file missing beside the material
     kMaterialDuplicate = 6015,            // the same property or keyword twice
     kMaterialKeywordContradictsProperty = 6016,  // warning: a keyword its [Toggle] turns off
+
+    // K7xxx: kiln lint (docs/variants.md, "Lint"): warnings about what keywords cost and where
+    // they are wasted or declared so that variants go missing at run time.
+    kLintKeywordChangesNothing = 7001,     // every variant with it compiles to the same SPIR-V
+    kLintKeywordOneStage = 7002,           // a set's keywords change only one stage
+    kLintRedundantKeywords = 7003,         // two keywords of a set give identical SPIR-V
+    kLintEngineShaderFeature = 7004,       // shader_feature of a keyword the engine sets per draw
+    kLintMaterialMultiCompile = 7005,      // multi_compile of keywords only material properties set
+    kLintShaderFeatureLooksGlobal = 7006,  // shader_feature of a keyword that looks set from code
+    kLintKeywordDeclaredTwoWays = 7007,    // one keyword in differing sets of two passes
+    kLintTooManyKeywords = 7008,           // past Unity's documented keyword limits
+    kLintPropertyKeywordUndeclared = 7009,  // [Toggle(KW)] / [KeywordEnum] of an undeclared keyword
+    kLintKeywordWithoutToggle = 7010,  // a keyword [Toggle] on a property would drive, without it
+    kLintStateContradictsPass = 7011,  // render state the pass's LightMode or Queue contradicts
 
     kInternalError = 9001,
 };

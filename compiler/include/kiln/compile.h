@@ -49,7 +49,10 @@ struct CompileOptions {
     std::string templates_dir;  // the built-in include library; empty: DefaultTemplatesDir()
     OptimizationLevel opt_level = OptimizationLevel::kPerformance;
     bool debug_info = false;  // -g: keep names and debug info in the SPIR-V
-    unsigned jobs = 0;        // 0: all cores
+    // Store a keyword whose variants duplicate another keyword's as an alias of it (pack format
+    // 1.1); false (--no-keyword-aliases) stores every variant, for readers of format 1.0.
+    bool keyword_aliases = true;
+    unsigned jobs = 0;  // 0: all cores
     // shader_feature variants, as in Unity: the all-off combination plus one combination per
     // material instance of the shader (keyed by shader name), plus `keywords` (--keywords) for
     // every shader; or, with all_features (--all-features), every combination. A material's
@@ -58,8 +61,9 @@ struct CompileOptions {
     std::map<std::string, std::vector<MaterialRequest>> materials;
     std::optional<std::set<std::string>> keywords;
     bool all_features = false;
-    uint64_t max_variants = 4096;  // per pass
-    std::string cache_dir;         // empty: no cache
+    // Per pass; a pass (or its SubShader) tagged "KilnMaxVariants" = "N" has the smaller of both.
+    uint64_t max_variants = 4096;
+    std::string cache_dir;  // empty: no cache
     Isolation isolation = Isolation::kWorkers;
     std::string worker_path;  // empty: $KILN_WORKER, else kiln-worker beside the program
     // Per program (one stage of one variant, or its preprocessing), in a worker: the wall-clock
@@ -111,7 +115,10 @@ struct PassReport {
     std::string light_mode;
     std::vector<KeywordSetReport> sets;
     uint64_t permutations = 0;  // saturates at UINT64_MAX
+    std::string formula;        // the product as written: "3 x 2 x 4 shader_feature combinations"
+    uint64_t budget = 0;        // the most variants the pass may have (--max-variants, its tag)
     size_t variants = 0;
+    size_t aliased = 0;  // of `variants`, those stored as another keyword's (an alias)
     size_t unique_vertex = 0, unique_fragment = 0;
     // Stripped compiles: the variants built (in key order) and those asked for but not built.
     std::vector<RequestedVariantReport> kept, excluded;
@@ -151,6 +158,15 @@ CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
 CompileOutput BuildSkeletonPack(const std::vector<std::string>& paths,
                                 const CompileOptions& options,
                                 DiagnosticList& diags);
+
+// kiln lint: compiles every variant of every pass (every shader_feature combination, within the
+// variant budgets) and reports, as K7xxx warnings at the pragma, property or pass concerned, what
+// the keywords cost and where they are wasted (docs/variants.md, "Lint"); the compile's own
+// diagnostics come too. The PassReports hold each pass's variant count, the product that made it
+// and its budget; `pack` the pack the checks read.
+CompileOutput LintShaders(const std::vector<std::string>& paths,
+                          const CompileOptions& options,
+                          DiagnosticList& diags);
 
 // The templates/ directory this build of Kiln uses: $KILN_TEMPLATES_DIR, else the source tree's.
 std::string DefaultTemplatesDir();

@@ -104,6 +104,11 @@ inline void Progress(const CompileOptions& o, const char* phase, size_t done, si
         o.progress(phase, done, total);
 }
 
+// Phase 2 (expand_passes.cpp): pragmas and variant keys of every pass, then a StageTask per
+// (variant, stage) with its assembled source.
+void ExpandPasses(CompileState& st);
+void CreateTasks(CompileState& st);
+
 // Phase 2 of a stripped compile or a skeleton pack (requests.cpp): every pass of a kept shader
 // expands exactly its requested variants (none for a skeleton).
 void ExpandRequestedPasses(CompileState& st, bool skeleton);

@@ -379,8 +379,12 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
                 vr.fragment_module = b.AddModule(Stage::kFragment, fs.words, fs.reflection);
                 pass_variants.push_back(vr);
             }
-            for (const variants::KeywordAlias& a : variants::MergeRedundantKeywords(
-                     pu.pragmas.sets, pu.expansion.layout, pass_variants)) {
+            std::vector<variants::KeywordAlias> aliases;
+            if (st.options.keyword_aliases) {
+                aliases = variants::MergeRedundantKeywords(pu.pragmas.sets, pu.expansion.layout,
+                                                           pass_variants);
+            }
+            for (const variants::KeywordAlias& a : aliases) {
                 b.aliases.push_back(
                     {rec.first_keyword_set + static_cast<uint32_t>(a.set), a.from, a.to, 0});
                 st.aliases.push_back({p, a});

@@ -80,9 +80,9 @@ void ExpandRequestedPasses(CompileState& st, bool skeleton) {
                 for (const pack::UsageEntry* e : pu.requests)
                     requests.push_back(e->keywords);
             }
-            auto ex = variants::ExpandRequested(pu.pragmas, requests, st.options.max_variants,
-                                                "\"" + fp.label + "\"", path, fp.program->range,
-                                                st.diags, pu.excluded);
+            auto ex = variants::ExpandRequested(
+                pu.pragmas, requests, VariantBudget(fp, st.options.max_variants, path, st.diags),
+                "\"" + fp.label + "\"", path, fp.program->range, st.diags, pu.excluded);
             if (!ex)
                 continue;
             pu.expansion = std::move(*ex);

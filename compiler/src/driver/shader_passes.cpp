@@ -249,4 +249,25 @@ std::string TagValue(const FlatPass& pass, const std::string& key) {
     return "";
 }
 
+uint64_t VariantBudget(const FlatPass& pass,
+                       uint64_t max_variants,
+                       const std::string& file,
+                       DiagnosticList& diags) {
+    const std::string text = TagValue(pass, kTagMaxVariants);
+    if (text.empty())
+        return max_variants;
+    uint64_t budget = 0;
+    const bool digits =
+        text.size() <= 18 && text.find_first_not_of("0123456789") == std::string::npos;
+    if (digits)
+        budget = std::stoull(text);
+    if (!digits || budget == 0) {
+        diags.Error(DiagCode::kBadVariantBudget, file, pass.pass->range,
+                    "tag \"" + std::string(kTagMaxVariants) + "\" = \"" + text + "\" of pass \"" +
+                        pass.label + "\" is not a positive number of variants");
+        return max_variants;
+    }
+    return std::min(budget, max_variants);
+}
+
 }  // namespace kiln::driver

@@ -49,6 +49,16 @@ std::vector<FlatPass> FlattenPasses(const shaderlab::Shader& shader,
 
 std::string TagValue(const FlatPass& pass, const std::string& key);
 
+// The tag that sets a pass's variant budget ("KilnMaxVariants" = "48", on the Pass or its
+// SubShader): the pass may have at most the smaller of it and --max-variants.
+inline constexpr const char* kTagMaxVariants = "KilnMaxVariants";
+// The most variants `pass` may have; a tag value that is not a positive integer is an error
+// (K4020), and the limit is then `max_variants`.
+uint64_t VariantBudget(const FlatPass& pass,
+                       uint64_t max_variants,
+                       const std::string& file,
+                       DiagnosticList& diags);
+
 }  // namespace kiln::driver
 
 #endif  // KILN_DRIVER_SHADER_PASSES_H_

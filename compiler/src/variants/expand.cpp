@@ -92,7 +92,11 @@ std::optional<Expansion> ExpandRequested(const PassPragmas& pragmas,
         const uint64_t n = std::max<size_t>(set.keywords.size(), 1);
         ex.effective_sizes.push_back(set.keywords.size());
         ex.permutations = ex.permutations > UINT64_MAX / n ? UINT64_MAX : ex.permutations * n;
+        if (n > 1)
+            ex.formula += (ex.formula.empty() ? "" : " x ") + std::to_string(n);
     }
+    if (ex.formula.empty())
+        ex.formula = "1";
     for (size_t r = 0; r < requests.size(); ++r) {
         const pack::VariantKey key = KeyForKeywords(pragmas.sets, ex.layout, requests[r]);
         const std::vector<std::string> enabled = EnabledKeywords(pragmas.sets, ex.layout, key);
@@ -197,6 +201,7 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                    " shader_feature combinations";
     }
     ex.permutations = overflow ? UINT64_MAX : product;
+    ex.formula = formula.empty() ? std::string("1") : formula;
     // The limit applies to the variants actually built: the product less what the shortcut rules
     // and skip_variants exclude. Enumerating is cheap up to a few million combinations; beyond
     // that (and beyond the limit itself) the product alone decides.

@@ -38,6 +38,7 @@ struct Expansion {
     size_t feature_combinations = 0;      // distinct shader_feature combinations built
     // multi_compile product x feature_combinations, before rules and skip_variants.
     uint64_t permutations = 0;
+    std::string formula;  // the product as written: "3 x 2 x 4 shader_feature combinations"
 };
 
 // Bit layout of the sets (see kiln/pack/variant_key.h); nullopt when wider than 64 bits.

@@ -33,6 +33,15 @@ const std::set<std::string> kIgnoredPragmas = {"fragmentoption",
                                                "debug",
                                                "vertex_format"};
 
+// Unity's built-in keyword shortcuts (BuiltinShortcut).
+const char* const kShortcutNames[] = {
+    "multi_compile_fwdbase",      "multi_compile_fwdbasealpha",
+    "multi_compile_fwdadd",       "multi_compile_fwdadd_fullshadows",
+    "multi_compile_lightpass",    "multi_compile_prepassfinal",
+    "multi_compile_shadowcaster", "multi_compile_shadowcollector",
+    "multi_compile_fog",          "multi_compile_instancing",
+    "multi_compile_particles"};
+
 // Entry-point pragmas of stages Kiln does not compile.
 const std::set<std::string> kOtherStages = {"geometry", "hull",   "domain",
                                             "surface",  "kernel", "raytracing"};
@@ -259,10 +268,7 @@ struct State {
                         n.push_back(std::string(base) + local + stage);
                 }
             }
-            for (const char* s : {"fwdbase", "fwdbasealpha", "fwdadd", "fwdadd_fullshadows",
-                                  "lightpass", "prepassfinal", "shadowcaster", "shadowcollector",
-                                  "fog", "instancing", "particles"})
-                n.push_back(std::string("multi_compile_") + s);
+            n.insert(n.end(), std::begin(kShortcutNames), std::end(kShortcutNames));
             return n;
         }();
         return names;
@@ -270,6 +276,20 @@ struct State {
 };
 
 }  // namespace
+
+bool IsBuiltinKeyword(const std::string& word) {
+    static const std::set<std::string> all = [] {
+        std::set<std::string> out;
+        for (const char* name : kShortcutNames) {
+            const std::optional<Shortcut> shortcut = BuiltinShortcut(name);
+            for (const auto& set : shortcut->sets)
+                out.insert(set.begin(), set.end());
+        }
+        out.erase("");
+        return out;
+    }();
+    return all.count(word) > 0;
+}
 
 bool IsNoKeyword(const std::string& word) {
     return !word.empty() && word.find_first_not_of('_') == std::string::npos;

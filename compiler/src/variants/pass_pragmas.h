@@ -76,6 +76,9 @@ const KeywordRule* BrokenRule(const std::vector<KeywordRule>& rules,
                               const std::vector<std::string>& keywords);
 
 bool IsNoKeyword(const std::string& word);  // "_", "__", ...
+// A keyword one of Unity's built-in shortcuts declares: the engine sets it per draw (light type,
+// shadows, lightmaps, fog, instancing), never a material.
+bool IsBuiltinKeyword(const std::string& word);
 
 }  // namespace kiln::variants
 

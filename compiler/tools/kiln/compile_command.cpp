@@ -230,6 +230,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         bool md = false;
         std::string mf;
         bool stats = false;
+        bool no_aliases = false;
         SceneStripFlags strip;
     };
     auto o = std::make_shared<Options>();
@@ -253,6 +254,9 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
     cmd->add_flag("--md", o->md, "")->group("");
     cmd->add_option("--mf", o->mf, "")->group("");
     cmd->add_flag("--stats", o->stats, "Print variant and compile counts on stdout");
+    cmd->add_flag("--no-keyword-aliases", o->no_aliases,
+                  "Store every variant, also those of keywords whose SPIR-V duplicates another "
+                  "keyword's (pack format 1.0 readers need this)");
     AddSceneStripOptions(*cmd, o->strip);
     cmd->footer(
         "Compiler-style options:\n"
@@ -281,6 +285,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                             : o->opt == "s" ? OptimizationLevel::kSize
                                             : OptimizationLevel::kPerformance;
         options.debug_info = o->debug;
+        options.keyword_aliases = !o->no_aliases;
         options.cache_dir =
             o->no_cache ? "" : (o->cache_dir.empty() ? DefaultCacheDir() : o->cache_dir);
         const bool tty = isatty(STDERR_FILENO) && global.diag_format == DiagFormat::kText;
@@ -353,8 +358,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                 "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, "
                 "glslang compiles %zu, cache hits %zu, modules %zu, aliased variants %zu\n",
                 static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
-                s.unique_programs, s.glslang_compiles, s.cache_hits, s.modules,
-                s.aliased_variants);
+                s.unique_programs, s.glslang_compiles, s.cache_hits, s.modules, s.aliased_variants);
         }
         PrintDiagnostics(diags, Views(out, material_files), global);
         return ExitCodeFor(diags);

@@ -156,6 +156,8 @@ std::vector<std::string> RewriteArgs(int argc, char** argv) {
             args.push_back("--opt=s");
         } else if (a.size() > 2 && a.rfind("-O", 0) == 0 && a[2] != '-') {
             args.push_back("--opt=" + a.substr(2));  // rejected with the valid spellings
+        } else if (a == "-Werror") {
+            args.push_back("--werror");
         } else if (a == "-MD") {
             args.push_back("--md");
         } else if (a == "-MF") {
@@ -204,6 +206,7 @@ int main(int argc, char** argv) {
             {"parse", AddParseCommand(app, global)},
             {"compile", AddCompileCommand(app, global)},
             {"variants", AddVariantsCommand(app, global)},
+            {"lint", AddLintCommand(app, global)},
             {"info", AddInfoCommand(app, global)},
             {"extract", AddExtractCommand(app, global)},
             {"validate", AddValidateCommand(app, global)},

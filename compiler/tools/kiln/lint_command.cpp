@@ -1,0 +1,116 @@
+// kiln lint A.shader... [-Werror] [--json]: what the keywords cost and where they are wasted
+// (docs/variants.md, "Lint"). Every variant of every pass is compiled (every shader_feature
+// combination); the report gives each pass's variant count with the product that made it and its
+// budget, then the K7xxx warnings with the compile's own diagnostics.
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+
+namespace kiln::cli {
+namespace {
+
+std::string PassLine(const PassReport& p) {
+    std::string line = "  pass \"" + p.pass + "\"";
+    if (!p.light_mode.empty())
+        line += " (LightMode " + p.light_mode + ")";
+    line += ": " +
+            (p.formula.find(" x ") == std::string::npos ? std::string() : p.formula + " = ") +
+            std::to_string(p.permutations);
+    if (p.variants != p.permutations)
+        line += ", " + std::to_string(p.variants) + " after the shortcut rules and skip_variants";
+    line += " variants";
+    if (p.aliased > 0)
+        line += " (" + std::to_string(p.aliased) + " stored as aliases)";
+    return line + ", budget " + std::to_string(p.budget) + "\n";
+}
+
+void PrintText(const CompileOutput& out) {
+    std::map<std::string, size_t> totals;
+    for (const PassReport& p : out.passes)
+        totals[p.shader] += p.variants;
+    std::string shader;
+    for (const PassReport& p : out.passes) {
+        if (p.shader != shader) {
+            shader = p.shader;
+            std::printf("Shader \"%s\": %zu variants\n", shader.c_str(), totals[shader]);
+        }
+        std::printf("%s", PassLine(p).c_str());
+    }
+}
+
+nlohmann::json Report(const CompileOutput& out, const DiagnosticList& diags) {
+    nlohmann::ordered_json shaders = nlohmann::ordered_json::array();
+    for (const PassReport& p : out.passes) {
+        if (shaders.empty() || shaders.back()["name"] != p.shader)
+            shaders.push_back(
+                {{"name", p.shader}, {"variants", 0}, {"passes", nlohmann::json::array()}});
+        auto& s = shaders.back();
+        s["variants"] = s["variants"].get<size_t>() + p.variants;
+        s["passes"].push_back({{"pass", p.pass},
+                               {"light_mode", p.light_mode},
+                               {"variants", p.variants},
+                               {"permutations", p.permutations},
+                               {"formula", p.formula},
+                               {"aliased", p.aliased},
+                               {"budget", p.budget}});
+    }
+    size_t warnings = 0;
+    for (const Diagnostic& d : diags.all())
+        warnings += d.severity == Severity::kWarning;
+    return {{"kiln_lint", 1},
+            {"shaders", shaders},
+            {"errors", diags.error_count()},
+            {"warnings", warnings},
+            {"diagnostics", nlohmann::json::parse(FormatDiagnosticsJson(diags))}};
+}
+
+}  // namespace
+
+std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) {
+    struct Options {
+        std::vector<std::string> files;
+        CompilerFlags flags;
+        bool werror = false, json = false;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand(
+        "lint", "Report what the keywords cost and where they are wasted (every variant is built)");
+    cmd->add_option("files", o->files, "ShaderLab files")->required();
+    AddCompilerOptions(*cmd, o->flags);
+    cmd->add_flag("--werror", o->werror, "")->group("");
+    cmd->add_flag("--json", o->json,
+                  "Print one JSON document on stdout: the counts and every diagnostic");
+    cmd->footer("Compiler-style options:\n  -Werror                     Treat warnings as errors");
+    return [o, &global]() {
+        DiagnosticList diags;
+        std::vector<std::unique_ptr<SourceFile>> material_files;
+        CompileOptions options = ToCompileOptions(o->flags, material_files, diags);
+        if (diags.has_errors()) {
+            PrintDiagnostics(diags, Views(CompileOutput{}, material_files), global);
+            return ExitCodeFor(diags);
+        }
+        options.cache_dir = DefaultCacheDir();
+        const CompileOutput out = LintShaders(o->files, options, diags);
+        diags.SortByPosition();
+        DiagnosticList shown;
+        for (const Diagnostic& d : diags.all()) {
+            const bool promote = o->werror && d.severity == Severity::kWarning;
+            Diagnostic& c = shown.Add(promote ? Severity::kError : d.severity, d.code, d.file,
+                                      d.range, d.message);
+            c.notes = d.notes;
+        }
+        if (o->json) {
+            std::printf("%s\n", Report(out, shown).dump(2).c_str());
+        } else {
+            PrintText(out);
+            PrintDiagnostics(shown, Views(out, material_files), global);
+        }
+        return ExitCodeFor(shown);
+    };
+}
+
+}  // namespace kiln::cli
