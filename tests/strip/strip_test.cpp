@@ -224,6 +224,40 @@ TEST(SceneStrip, APassOf2To40CombinationsIsPlannedFromItsRequests) {
         << r.out;
 }
 
+// kiln diff between the full and a stripped pack: per pass, what was added or removed, and a
+// budget for CI.
+TEST(SceneStrip, DiffCountsVariantsAndBytesPerPassWithABudget) {
+    ScratchDir dir;
+    const std::string full = dir.path() + "/full.kpack", sun = dir.path() + "/sun.kpack";
+    ASSERT_EQ(CompileStripLight(full, "").exit_code, 0);
+    ASSERT_EQ(CompileStripLight(sun, "sun.gltf").exit_code, 0);
+    const RunResult grow = RunKiln("diff " + sun + " " + full);
+    ASSERT_EQ(grow.exit_code, 0) << grow.err;
+    EXPECT_NE(grow.out.find("shader \"Test/StripLight\" pass \"FORWARD_DELTA\": +3 variants, +"),
+              std::string::npos)
+        << grow.out;
+    EXPECT_NE(grow.out.find("total: +6 variants, +"), std::string::npos) << grow.out;
+    const RunResult json = RunKiln("diff --json " + full + " " + sun);
+    ASSERT_EQ(json.exit_code, 0);
+    const nlohmann::json doc = nlohmann::json::parse(json.out);
+    uint64_t removed = 0;
+    for (const auto& p : doc["passes"]) {
+        EXPECT_LE(p["bytes"]["new"].get<uint64_t>(), p["bytes"]["old"].get<uint64_t>());
+        removed += p["variants"]["old"].get<uint64_t>() - p["variants"]["new"].get<uint64_t>();
+    }
+    EXPECT_EQ(removed, 6u);
+    // Over the budget: exit 1 with K0026; within it (or shrinking): exit 0.
+    const RunResult over = RunKiln("diff --max-added-variants 5 " + sun + " " + full);
+    EXPECT_EQ(over.exit_code, 1);
+    EXPECT_NE(over.err.find("6 variants more than the old one, over the budget of 5"),
+              std::string::npos)
+        << over.err;
+    EXPECT_NE(over.err.find("[K0026]"), std::string::npos);
+    EXPECT_EQ(RunKiln("diff --max-added-variants 6 " + sun + " " + full).exit_code, 0);
+    EXPECT_EQ(RunKiln("diff --max-added-bytes 0 " + full + " " + sun).exit_code, 0);
+    EXPECT_EQ(RunKiln("diff --max-added-bytes 1000 " + sun + " " + full).exit_code, 1);
+}
+
 TEST(SceneStrip, FlagsThatDoNotApplyAreRefused) {
     ScratchDir dir;
     const std::string out = dir.path() + "/x.kpack";

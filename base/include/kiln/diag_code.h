@@ -44,6 +44,7 @@ enum class DiagCode : uint16_t {
     kBadUsageFile = 23,          // a usage file (kiln render --usage) that cannot be read
     kPipelineCacheIgnored = 24,  // warning: a --pipeline-cache file that does not fit the device
     kRendererUnavailable = 25,   // kiln render: kiln-render could not be found or run
+    kPackGrowthOverBudget = 26,  // kiln diff: the new pack grew past --max-added-variants/bytes
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,

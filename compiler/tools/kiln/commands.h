@@ -119,6 +119,7 @@ std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global)
 std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddDiffCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global);

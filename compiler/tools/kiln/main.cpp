@@ -207,6 +207,7 @@ int main(int argc, char** argv) {
             {"compile", AddCompileCommand(app, global)},
             {"variants", AddVariantsCommand(app, global)},
             {"lint", AddLintCommand(app, global)},
+            {"diff", AddDiffCommand(app, global)},
             {"info", AddInfoCommand(app, global)},
             {"extract", AddExtractCommand(app, global)},
             {"validate", AddValidateCommand(app, global)},

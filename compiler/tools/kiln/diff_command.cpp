@@ -1,0 +1,151 @@
+// kiln diff OLD.kpack NEW.kpack [--max-added-variants N] [--max-added-bytes B] [--json]: variants
+// and bytes added or removed per shader and pass, for CI: "+48 variants, +310 KiB". A pass's bytes
+// are the SPIR-V of the distinct modules its variants use; the total is the packs' file sizes.
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "kiln/pack/pass_id.h"
+
+namespace kiln::cli {
+namespace {
+
+using namespace kiln::pack;
+
+struct PassSize {
+    uint64_t variants = 0, bytes = 0;
+};
+using Sizes = std::map<std::pair<std::string, std::string>, PassSize>;  // (shader, pass)
+
+Sizes SizesOf(const Pack& p) {
+    Sizes out;
+    for (uint32_t pass = 0; pass < p.Count(SectionTag::kPasses); ++pass) {
+        const PassRec rec = p.Pass(pass).value();
+        PassSize& size =
+            out[{std::string(p.String(p.Shader(rec.shader).value().name)), PassLabel(p, pass)}];
+        size.variants = rec.variant_count;
+        std::set<uint32_t> modules;
+        for (uint32_t v = rec.first_variant; v < rec.first_variant + rec.variant_count; ++v) {
+            const VariantRec vr = p.Variant(v).value();
+            modules.insert({vr.vertex_module, vr.fragment_module});
+        }
+        for (uint32_t m : modules)
+            size.bytes += p.Module(m).value().spirv_size;
+    }
+    return out;
+}
+
+std::string Signed(int64_t n, const char* unit) {
+    return (n > 0 ? "+" : "") + std::to_string(n) + unit;
+}
+
+// "+310 KiB", "-2.5 KiB", "+0 KiB".
+std::string KiB(int64_t bytes) {
+    char buf[64];
+    const double k = double(bytes) / 1024.0;
+    std::snprintf(buf, sizeof buf,
+                  k == int64_t(k) || k >= 100 || k <= -100 ? "%+.0f KiB" : "%+.1f KiB", k);
+    return buf;
+}
+
+}  // namespace
+
+std::function<int()> AddDiffCommand(CLI::App& app, const GlobalOptions& global) {
+    struct Options {
+        std::string old_pack, new_pack;
+        int64_t max_variants = -1, max_bytes = -1;
+        bool json = false;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand(
+        "diff", "Variants and bytes each shader and pass gains or loses between two packs");
+    cmd->add_option("old", o->old_pack, "The pack before")->required();
+    cmd->add_option("new", o->new_pack, "The pack after")->required();
+    cmd->add_option("--max-added-variants", o->max_variants,
+                    "Fail (exit 1) when the new pack has more than N variants more in all")
+        ->check(CLI::NonNegativeNumber.description(""))
+        ->option_text("N");
+    cmd->add_option("--max-added-bytes", o->max_bytes,
+                    "Fail (exit 1) when the new pack file is more than B bytes larger")
+        ->check(CLI::NonNegativeNumber.description(""))
+        ->option_text("B");
+    cmd->add_flag("--json", o->json, "Print JSON");
+    return [o, &global]() {
+        MappedFile old_file, new_file;
+        Pack old_pack, new_pack;
+        if (!OpenPack(o->old_pack, old_file, old_pack, global) ||
+            !OpenPack(o->new_pack, new_file, new_pack, global)) {
+            return int(kExitInputError);
+        }
+        const Sizes before = SizesOf(old_pack), after = SizesOf(new_pack);
+        std::set<std::pair<std::string, std::string>> keys;
+        for (const auto& [k, v] : before)
+            keys.insert(k);
+        for (const auto& [k, v] : after)
+            keys.insert(k);
+        nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+        int64_t added_variants = 0;
+        std::string text;
+        for (const auto& key : keys) {
+            const auto b = before.find(key), a = after.find(key);
+            const PassSize was = b == before.end() ? PassSize{} : b->second;
+            const PassSize now = a == after.end() ? PassSize{} : a->second;
+            const int64_t dv = int64_t(now.variants) - int64_t(was.variants);
+            const int64_t db = int64_t(now.bytes) - int64_t(was.bytes);
+            added_variants += dv;
+            const char* status = b == before.end()  ? "added"
+                                 : a == after.end() ? "removed"
+                                 : dv || db         ? "changed"
+                                                    : "unchanged";
+            passes.push_back({{"shader", key.first},
+                              {"pass", key.second},
+                              {"status", status},
+                              {"variants", {{"old", was.variants}, {"new", now.variants}}},
+                              {"bytes", {{"old", was.bytes}, {"new", now.bytes}}}});
+            if (std::string(status) == "unchanged")
+                continue;
+            text += "shader \"" + key.first + "\" pass \"" + key.second +
+                    "\": " + Signed(dv, " variants") + ", " + KiB(db) + " (" + status + ", " +
+                    std::to_string(was.variants) + " -> " + std::to_string(now.variants) +
+                    " variants)\n";
+        }
+        const int64_t added_bytes =
+            int64_t(new_file.bytes().size()) - int64_t(old_file.bytes().size());
+        DiagnosticList diags;
+        if (o->max_variants >= 0 && added_variants > o->max_variants) {
+            diags.Error(DiagCode::kPackGrowthOverBudget, o->new_pack, kNoPosition,
+                        "the new pack has " + std::to_string(added_variants) +
+                            " variants more than the old one, over the budget of " +
+                            std::to_string(o->max_variants) + " (--max-added-variants)");
+        }
+        if (o->max_bytes >= 0 && added_bytes > o->max_bytes) {
+            diags.Error(DiagCode::kPackGrowthOverBudget, o->new_pack, kNoPosition,
+                        "the new pack is " + std::to_string(added_bytes) +
+                            " bytes larger than the old one, over the budget of " +
+                            std::to_string(o->max_bytes) + " (--max-added-bytes)");
+        }
+        if (o->json) {
+            const nlohmann::ordered_json doc = {
+                {"passes", passes},
+                {"total",
+                 {{"variants",
+                   {{"old", old_pack.Count(SectionTag::kVariants)},
+                    {"new", new_pack.Count(SectionTag::kVariants)}}},
+                  {"bytes", {{"old", old_file.bytes().size()}, {"new", new_file.bytes().size()}}}}},
+                {"over_budget", diags.has_errors()}};
+            std::printf("%s\n", doc.dump(2).c_str());
+        } else {
+            std::printf("%stotal: %s, %s (pack %zu -> %zu bytes)\n", text.c_str(),
+                        Signed(added_variants, " variants").c_str(), KiB(added_bytes).c_str(),
+                        old_file.bytes().size(), new_file.bytes().size());
+        }
+        PrintDiagnostics(diags, {}, global);
+        return ExitCodeFor(diags);
+    };
+}
+
+}  // namespace kiln::cli
