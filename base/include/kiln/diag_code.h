@@ -45,6 +45,7 @@ enum class DiagCode : uint16_t {
     kPipelineCacheIgnored = 24,  // warning: a --pipeline-cache file that does not fit the device
     kRendererUnavailable = 25,   // kiln render: kiln-render could not be found or run
     kPackGrowthOverBudget = 26,  // kiln diff: the new pack grew past --max-added-variants/bytes
+    kVariantTestFailed = 27,     // kiln test: a variant failed a check of the harness
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,

@@ -125,6 +125,7 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
 std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace kiln::cli
 

@@ -1,7 +1,8 @@
 // kiln: the command-line driver. A thin layer over the kiln_compiler library: flags in,
 // library calls, diagnostics out. The same file, built with KILN_RENDER_TOOL, is kiln-render:
-// only the render command, the one that links the renderer (Vulkan, OpenColorIO, tinygltf).
-// `kiln render ...` runs kiln-render from beside kiln with the same arguments, so a build
+// only the render and test commands, the ones that link the renderer (Vulkan, OpenColorIO,
+// tinygltf). `kiln render ...` and `kiln test ...` run kiln-render from beside kiln with the same
+// arguments, so a build
 // machine's kiln needs none of those libraries (docs/install.md).
 #include <unistd.h>
 
@@ -174,7 +175,8 @@ int main(int argc, char** argv) {
     using namespace kiln::cli;
     try {
 #ifndef KILN_RENDER_TOOL
-        if (FirstWord(std::vector<std::string>(argv + 1, argv + argc)) == "render") {
+        const std::string first = FirstWord(std::vector<std::string>(argv + 1, argv + argc));
+        if (first == "render" || first == "test") {
             return RunRenderTool(argc, argv);
         }
 #endif
@@ -200,7 +202,8 @@ int main(int argc, char** argv) {
 
 #ifdef KILN_RENDER_TOOL
         const std::map<std::string, std::function<int()>> commands{
-            {"render", AddRenderCommand(app, global)}};
+            {"render", AddRenderCommand(app, global)},
+            {"test", AddTestCommand(app, global)}};
 #else
         const std::map<std::string, std::function<int()>> commands{
             {"parse", AddParseCommand(app, global)},
@@ -212,10 +215,16 @@ int main(int argc, char** argv) {
             {"extract", AddExtractCommand(app, global)},
             {"validate", AddValidateCommand(app, global)},
             {"new", AddNewCommand(app, global)},
-            // Listed for --help and "did you mean"; main() hands it to kiln-render first.
+            // Listed for --help and "did you mean"; main() hands them to kiln-render first.
             {"render", [&] {
                  app.add_subcommand("render",
                                     "Render a glTF scene with packs (runs kiln-render, beside kiln)");
+                 return [] { return int(kExitUsageError); };
+             }()},
+            {"test", [&] {
+                 app.add_subcommand("test",
+                                    "Draw every variant of packs in a test harness and check it "
+                                    "(runs kiln-render, beside kiln)");
                  return [] { return int(kExitUsageError); };
              }()}};
 #endif

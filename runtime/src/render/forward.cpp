@@ -247,12 +247,6 @@ Status RenderForward(Renderer::State& s,
     }
     stats.camera = camera.name;
 
-    FrameBuffers gpu{s.context, {}};
-    render::FrameTextures textures(s, scene);
-    DrawBuilder builder{s,     scene, color, textures, render::FrameValues(scene, settings, camera),
-                        stats, {},    256};
-    builder.alignment =
-        std::max<VkDeviceSize>(256, s.context.properties.limits.minUniformBufferOffsetAlignment);
     render::ForwardPlan plan;
     if (Status e = render::PlanForward(s.PackList(), scene, settings, camera.position, color, plan,
                                        stats.warnings);
@@ -264,6 +258,23 @@ Status RenderForward(Renderer::State& s,
             {m.name, std::string(s.packs[m.pack]->pack.String(
                          s.packs[m.pack]->pack.Shader(m.shader).value().name))});
     }
+    return DrawPlan(s, scene, settings, camera, color, plan, out, stats);
+}
+
+Status DrawPlan(Renderer::State& s,
+                const Scene& scene,
+                const FrameSettings& settings,
+                const render::CameraSetup& camera,
+                const ColorPipeline& color,
+                const render::ForwardPlan& plan,
+                LinearImage& out,
+                FrameStats& stats) {
+    FrameBuffers gpu{s.context, {}};
+    render::FrameTextures textures(s, scene);
+    DrawBuilder builder{s,     scene, color, textures, render::FrameValues(scene, settings, camera),
+                        stats, {},    256};
+    builder.alignment =
+        std::max<VkDeviceSize>(256, s.context.properties.limits.minUniformBufferOffsetAlignment);
     std::vector<Draw> draws;
     std::map<const Primitive*, std::pair<const vk::Buffer*, const vk::Buffer*>> uploaded;
     for (const render::DrawRequest& r : plan.draws) {

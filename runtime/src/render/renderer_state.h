@@ -16,6 +16,11 @@
 #include "vk/pipeline.h"
 #include "vk/resources.h"
 
+namespace kiln::render {
+struct CameraSetup;
+struct ForwardPlan;
+}  // namespace kiln::render
+
 namespace kiln::runtime {
 
 struct LoadedPack {
@@ -59,13 +64,24 @@ struct Renderer::State {
     std::vector<const pack::Pack*> PackList() const;
 };
 
-// Renders a frame with the state's caches (render/forward.cpp).
+// Renders a frame with the state's caches (render/forward.cpp): plans it (render/forward_plan.h),
+// then draws the plan.
 Status RenderForward(Renderer::State& state,
                      const Scene& scene,
                      const FrameSettings& settings,
                      const ColorPipeline& color,
                      LinearImage& out,
                      FrameStats& stats);
+// Draws a planned frame: each request's variant, pipeline, uniforms and descriptors, then one
+// command buffer (what RenderForward does after planning; kiln test plans its own frames).
+Status DrawPlan(Renderer::State& state,
+                const Scene& scene,
+                const FrameSettings& settings,
+                const render::CameraSetup& camera,
+                const ColorPipeline& color,
+                const render::ForwardPlan& plan,
+                LinearImage& out,
+                FrameStats& stats);
 
 }  // namespace kiln::runtime
 

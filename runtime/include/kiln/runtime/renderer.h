@@ -58,6 +58,9 @@ struct FrameStats {
     DiagnosticList warnings;
 };
 
+struct VariantTestOptions;
+struct VariantTestReport;
+
 class Renderer {
   public:
     Renderer();
@@ -88,6 +91,10 @@ class Renderer {
     struct State;  // opaque: defined inside the library
 
   private:
+    // kiln test's harness draws with the renderer's state (kiln/runtime/variant_test.h).
+    friend Result<VariantTestReport> TestVariants(Renderer& renderer,
+                                                  const ColorPipeline& color,
+                                                  const VariantTestOptions& options);
     std::unique_ptr<State> state_;
 };
 

@@ -1,0 +1,140 @@
+// kiln test PACK... [--shader S] [--sample N --seed S] [--size N] [--keep-failures DIR] [--json]:
+// every variant drawn in the runtime's test harness and checked (kiln/runtime/variant_test.h).
+// Each failure is a K0027 error naming the shader, pass, keyword set, property values and check,
+// with its render kept as a PNG; the exit status is 1 when any variant fails.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "kiln/pack/variant_selector.h"
+#include "kiln/runtime/color.h"
+#include "kiln/runtime/renderer.h"
+#include "kiln/runtime/variant_test.h"
+
+namespace kiln::cli {
+namespace {
+
+// A file name from a failure's description: letters, digits, '-', '_' and '.' only.
+std::string FileName(size_t index, const runtime::VariantTestFailure& f) {
+    std::string raw = f.shader + "_" + f.pass + "_" + pack::JoinKeywords(f.keywords) + "_" +
+                      f.properties + "_" + f.check;
+    for (char& c : raw) {
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.')
+            c = '_';
+    }
+    char prefix[32];
+    std::snprintf(prefix, sizeof prefix, "%03zu-", index + 1);
+    return prefix + raw.substr(0, 160) + ".png";
+}
+
+}  // namespace
+
+std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global) {
+    struct Args {
+        std::vector<std::string> packs, shaders;
+        runtime::VariantTestOptions options;
+        uint32_t sample = 0;
+        std::string keep = "kiln-test-failures", device;
+        bool json = false, no_validation = false;
+    };
+    auto a = std::make_shared<Args>();
+    auto* cmd = app.add_subcommand(
+        "test", "Draw every variant of packs in a test harness and check it (docs/variants.md)");
+    cmd->add_option("packs", a->packs, "Variant packs (.kpack)")->required();
+    cmd->add_option("--shader", a->shaders, "Only this shader (repeatable)");
+    cmd->add_option("--sample", a->sample, "Test N variants chosen with --seed instead of all")
+        ->check(CLI::PositiveNumber.description(""))
+        ->option_text("N");
+    cmd->add_option("--seed", a->options.seed, "Seed of --sample (default 1)");
+    cmd->add_option("--size", a->options.size, "Harness image side in pixels (default 64)")
+        ->check(CLI::Range(16, 4096).description(""))
+        ->option_text("N");
+    cmd->add_option("--keep-failures", a->keep,
+                    "Folder for the PNG of each failing render (default kiln-test-failures)");
+    cmd->add_flag("--json", a->json, "Print the report as JSON on stdout");
+    cmd->add_flag("--no-validation", a->no_validation,
+                  "Do not enable VK_LAYER_KHRONOS_validation (its messages fail a variant)");
+    cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
+    return [a, &global] {
+        DiagnosticList diags;
+        auto finish = [&](int code) {
+            PrintDiagnostics(diags, {}, global);
+            return code;
+        };
+        auto fail = [&](const kiln::Error& e, const std::string& file) {
+            diags.Error(e.code, file, kNoPosition, e.message);
+            return finish(int(kExitInputError));
+        };
+        Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create({});
+        if (!made_color)
+            return fail(made_color.error(), "");
+        const runtime::ColorPipeline color = std::move(made_color).value();
+        runtime::RendererOptions options;
+        options.validation = !a->no_validation;
+        options.device_filter = a->device;
+        options.float32_target = true;  // the checks compare linear values
+        Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+        if (!made)
+            return fail(made.error(), "");
+        runtime::Renderer renderer = std::move(made).value();
+        for (const std::string& p : a->packs) {
+            if (Status added = renderer.AddPack(p); !added.ok())
+                return fail(added.error(), p);
+        }
+        a->options.shaders = a->shaders;
+        if (a->sample > 0)
+            a->options.sample = a->sample;
+        Result<runtime::VariantTestReport> ran = runtime::TestVariants(renderer, color, a->options);
+        if (!ran)
+            return fail(ran.error(), "");
+        const runtime::VariantTestReport& report = ran.value();
+        nlohmann::ordered_json failures = nlohmann::ordered_json::array();
+        for (size_t i = 0; i < report.failures.size(); ++i) {
+            const runtime::VariantTestFailure& f = report.failures[i];
+            std::string png;
+            if (!f.image.rgba.empty()) {
+                std::error_code ec;
+                std::filesystem::create_directories(a->keep, ec);
+                png = (std::filesystem::path(a->keep) / FileName(i, f)).string();
+                if (!runtime::WriteDisplayPng(png, f.image, color).ok())
+                    png.clear();
+            }
+            diags.Error(DiagCode::kVariantTestFailed, f.pack, kNoPosition,
+                        "shader '" + f.shader + "' pass '" + f.pass + "' variant '" +
+                            pack::JoinKeywords(f.keywords) + "' with " + f.properties + ": " +
+                            f.check + ": " + f.message +
+                            (png.empty() ? std::string() : " (render kept in " + png + ")"));
+            failures.push_back({{"pack", f.pack},
+                                {"shader", f.shader},
+                                {"pass", f.pass},
+                                {"keywords", f.keywords},
+                                {"properties", f.properties},
+                                {"check", f.check},
+                                {"message", f.message},
+                                {"png", png}});
+        }
+        if (a->json) {
+            const nlohmann::ordered_json doc = {{"kiln_test", 1},
+                                                {"variants", report.variants},
+                                                {"renders", report.renders},
+                                                {"skipped", report.skipped},
+                                                {"failures", failures},
+                                                {"passed", report.failures.empty()}};
+            std::printf("%s\n", doc.dump(2).c_str());
+        } else {
+            for (const std::string& s : report.skipped)
+                std::printf("skipped %s\n", s.c_str());
+            std::printf(
+                "kiln test: %zu variants, %zu renders on '%s', %zu passes skipped: %zu "
+                "failures\n",
+                report.variants, report.renders, renderer.DeviceName().c_str(),
+                report.skipped.size(), report.failures.size());
+        }
+        return finish(ExitCodeFor(diags));
+    };
+}
+
+}  // namespace kiln::cli

@@ -1,0 +1,66 @@
+// kiln test: every variant of every pass of the loaded packs (or a seeded sample) drawn by the
+// Vulkan runtime in one standard harness, with checks a broken variant fails. The harness is a
+// sphere over a plane seen by one camera; a pass is lit by a light of the type its keywords name
+// (ForwardAdd: DIRECTIONAL, POINT or SPOT; base passes: the main directional light, plus a point
+// light as a vertex light for VERTEXLIGHT_ON), placed at the camera so the sphere's centre faces
+// it. Each variant is drawn with its shader's Properties at their defaults, then each Range()
+// property at its minimum and at its maximum (the others at their defaults). The checks:
+//   pipeline   the variant's pipeline is created and drawn (SPIR-V, layout, render state)
+//   validation the Vulkan validation layer reports nothing while it is drawn
+//   finite     every output pixel is finite (no NaN or infinity)
+//   lit        a lit variant (LightMode ForwardBase or ForwardAdd) is not black on the sphere,
+//              where its light faces the surface
+//   additive   an additive pass (ForwardAdd) only adds to what was drawn before it: over a grey
+//              background no channel of any pixel falls below the background
+//   no-light   with its light at intensity 0 a variant draws exactly what it draws with no light
+//              (within 1e-5 in linear fp32: both renders run the same SPIR-V, and the light's
+//              contribution is multiplied by zero)
+#ifndef KILN_RUNTIME_VARIANT_TEST_H_
+#define KILN_RUNTIME_VARIANT_TEST_H_
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kiln/result.h"
+#include "kiln/runtime/color.h"
+#include "kiln/runtime/renderer.h"
+
+namespace kiln::runtime {
+
+struct VariantTestOptions {
+    uint32_t size = 64;              // the square image's side in pixels
+    std::optional<uint32_t> sample;  // test this many variants, chosen with `seed`; all if unset
+    uint64_t seed = 1;
+    std::vector<std::string> shaders;  // only these shaders (by name); all if empty
+};
+
+struct VariantTestFailure {
+    std::string pack, shader, pass;
+    std::vector<std::string> keywords;
+    // The property values of the failing render: "(defaults)", or "_Exponent = 0 (Range min)".
+    std::string properties;
+    std::string check;    // "pipeline", "validation", "finite", "lit", "additive", "no-light"
+    std::string message;  // what was seen
+    LinearImage image;    // the failing render (empty when nothing was drawn)
+};
+
+struct VariantTestReport {
+    size_t variants = 0, renders = 0;
+    std::vector<VariantTestFailure> failures;
+    // Passes the forward path does not draw (Deferred, ShadowCaster, Meta, ...): not run, each
+    // with the reason.
+    std::vector<std::string> skipped;
+};
+
+// Runs the harness over every pack `renderer` holds. An error only when the harness itself
+// cannot run (no pack, no device); a failing variant is a failure in the report.
+Result<VariantTestReport> TestVariants(Renderer& renderer,
+                                       const ColorPipeline& color,
+                                       const VariantTestOptions& options);
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_VARIANT_TEST_H_
