@@ -3,8 +3,8 @@
 #   1. the -Werror build and its full test suite (unit, golden, CLI, fuzz-corpus replay),
 #   2. one clang build with AddressSanitizer + UndefinedBehaviorSanitizer (KILN_SANITIZE) and the
 #      libFuzzer targets (KILN_FUZZ): the same suite under the sanitizers, then each target
-#      (ShaderLab parser, pack reader, material parser, glTF loader, compile driver with its
-#      worker processes) on its corpus and a bounded fuzz run,
+#      (ShaderLab parser, pack reader, material parser, usage-file and diagnostics readers, glTF
+#      loader, compile driver with its worker processes) on its corpus and a bounded fuzz run,
 #   3. the benchmarks, checked against the speed targets in bench/check_targets.py.
 # Environment: KILN_FUZZ_SECONDS (default 60) bounds each fuzz run of step 2.
 set -euo pipefail
@@ -59,6 +59,7 @@ fuzz shaderlab 65536 10 "$seconds" tests/fuzz/corpus/shaderlab tests/golden/pars
     materials
 fuzz pack 65536 10 "$seconds" tests/fuzz/corpus/pack
 fuzz material 16384 10 "$seconds" tests/fuzz/corpus/material materials
+fuzz usage 65536 10 "$((seconds / 2))" tests/fuzz/corpus/usage
 fuzz gltf 65536 10 "$seconds" tests/fuzz/corpus/gltf
 # Each compile input runs glslang in kiln-worker processes, whose own limit is 10 s a program. Its
 # seeds take about 90 s on a 2-core machine before mutation starts: the budget adds them.

@@ -152,6 +152,21 @@ TEST(UsageFile, KeepsWhoAskedAndTheMaterials) {
     EXPECT_EQ(back.value().materials, log.materials);
 }
 
+// Every truncated prefix of a usage file is an error with a message, never a crash.
+TEST(UsageFile, EveryTruncatedPrefixIsRejectedCleanly) {
+    pack::UsageLog log;
+    log.lookups.push_back({"S", "FORWARD", {"POINT", "_NORMALMAP"}, 3, false, {"m on node 'a'"}, 1});
+    log.materials.push_back({"m", "S"});
+    const std::string text = pack::UsageFileText(log);
+    for (size_t n = 0; n < text.size(); ++n) {
+        const auto read = pack::ParseUsageFile(std::string_view(text).substr(0, n));
+        if (!read.ok()) {
+            EXPECT_FALSE(read.error().message.empty()) << n;
+        }
+    }
+    EXPECT_TRUE(pack::ParseUsageFile(text).ok());
+}
+
 TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
     pack::MappedFile file;
     pack::Pack pack;

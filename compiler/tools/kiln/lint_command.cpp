@@ -107,6 +107,7 @@ std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) 
             std::printf("%s\n", Report(out, shown).dump(2).c_str());
         } else {
             PrintText(out);
+            std::fflush(stdout);  // the report, then the diagnostics, also when both are piped
             PrintDiagnostics(shown, Views(out, material_files), global);
         }
         return ExitCodeFor(shown);

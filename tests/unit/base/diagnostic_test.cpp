@@ -90,5 +90,32 @@ TEST(Diagnostics, ErrorLimitAddsOneTooManyErrorsAndStops) {
     EXPECT_EQ(diags.all().back().code, DiagCode::kTooManyErrors);
 }
 
+
+// The JSON a Kiln tool prints reads back as the same diagnostics (kiln compile --scene reads
+// kiln-render's this way); anything else is an error.
+TEST(DiagnosticsJson, ReadsBackWhatItWrote) {
+    DiagnosticList d;
+    Diagnostic& e = d.Error(DiagCode::kMissingVariant, "scene.gltf", {{0, 3, 4}, {0, 3, 9}},
+                            "shader 'S' pass 'P' has no variant");
+    e.notes.push_back({"x.shader", {{0, 1, 2}, {0, 1, 5}}, "declared here"});
+    d.Warning(DiagCode::kDefaultLight, "scene.gltf", kNoPosition, "default light");
+    const Result<DiagnosticList> back = ParseDiagnosticsJson(FormatDiagnosticsJson(d));
+    ASSERT_TRUE(back.ok());
+    ASSERT_EQ(back.value().all().size(), 2u);
+    const Diagnostic& b = back.value().all()[0];
+    EXPECT_EQ(b.code, DiagCode::kMissingVariant);
+    EXPECT_EQ(b.severity, Severity::kError);
+    EXPECT_EQ(b.range.begin.line, 3u);
+    EXPECT_EQ(b.range.end.column, 9u);
+    ASSERT_EQ(b.notes.size(), 1u);
+    EXPECT_EQ(b.notes[0].message, "declared here");
+    EXPECT_EQ(back.value().all()[1].severity, Severity::kWarning);
+    for (const char* bad : {"", "{}", "[{\"code\": \"K1\"}]", "[1]",
+                            "[{\"severity\": \"error\", \"code\": \"X0006\", \"file\": \"\", "
+                            "\"message\": \"m\", \"range\": {}}]"}) {
+        EXPECT_FALSE(ParseDiagnosticsJson(bad).ok()) << bad;
+    }
+}
+
 }  // namespace
 }  // namespace kiln::test
