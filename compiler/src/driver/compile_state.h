@@ -105,7 +105,9 @@ inline void Progress(const CompileOptions& o, const char* phase, size_t done, si
 }
 
 // Phase 2 (expand_passes.cpp): pragmas and variant keys of every pass, then a StageTask per
-// (variant, stage) with its assembled source.
+// (variant, stage) with its assembled source. ReadPass reads one flattened pass's pragmas
+// (nullopt after reporting errors).
+std::optional<PassUnit> ReadPass(CompileState& st, size_t shader, size_t flat);
 void ExpandPasses(CompileState& st);
 void CreateTasks(CompileState& st);
 

@@ -63,6 +63,19 @@ void CheckRequestedKeywords(CompileState& st) {
 
 }  // namespace
 
+std::optional<PassUnit> ReadPass(CompileState& st, size_t shader, size_t flat) {
+    const ShaderUnit& unit = st.shaders[shader];
+    const FlatPass& fp = unit.passes[flat];
+    PassUnit pu;
+    pu.shader = shader;
+    pu.flat = flat;
+    const size_t errors_before = st.diags.error_count();
+    pu.pragmas = variants::ReadPassPragmas(fp.blocks, unit.file->path(), fp.pass->range, st.diags);
+    if (st.diags.error_count() != errors_before)
+        return std::nullopt;
+    return pu;
+}
+
 // Phase 2: pragmas and variant expansion (CompileOptions::requests: driver/requests.cpp).
 void ExpandPasses(CompileState& st) {
     for (size_t s = 0; s < st.shaders.size(); ++s) {
@@ -80,13 +93,10 @@ void ExpandPasses(CompileState& st) {
         }
         for (size_t f = 0; f < unit.passes.size(); ++f) {
             const FlatPass& fp = unit.passes[f];
-            PassUnit pu;
-            pu.shader = s;
-            pu.flat = f;
-            const size_t errors_before = st.diags.error_count();
-            pu.pragmas = variants::ReadPassPragmas(fp.blocks, path, fp.pass->range, st.diags);
-            if (st.diags.error_count() != errors_before)
+            std::optional<PassUnit> read = ReadPass(st, s, f);
+            if (!read)
                 continue;
+            PassUnit& pu = *read;
             variants::VariantRequest budgeted = request;
             budgeted.max_variants = VariantBudget(fp, st.options.max_variants, path, st.diags);
             auto ex = variants::ExpandVariants(pu.pragmas, budgeted, "\"" + fp.label + "\"", path,

@@ -67,13 +67,10 @@ void ExpandRequestedPasses(CompileState& st, bool skeleton) {
         const std::string& path = unit.file->path();
         for (size_t f = 0; f < unit.passes.size(); ++f) {
             const FlatPass& fp = unit.passes[f];
-            PassUnit pu;
-            pu.shader = s;
-            pu.flat = f;
-            const size_t errors_before = st.diags.error_count();
-            pu.pragmas = variants::ReadPassPragmas(fp.blocks, path, fp.pass->range, st.diags);
-            if (st.diags.error_count() != errors_before)
+            std::optional<PassUnit> read = ReadPass(st, s, f);
+            if (!read)
                 continue;
+            PassUnit& pu = *read;
             std::vector<std::vector<std::string>> requests;
             if (auto it = lookups.find(fp.label); it != lookups.end()) {
                 pu.requests = it->second;

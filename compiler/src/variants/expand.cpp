@@ -30,6 +30,26 @@ std::vector<std::string> EnabledKeywords(const std::vector<KeywordSet>& sets,
     return out;
 }
 
+namespace {
+
+// LayoutSets, or K4011 when the sets need more than 64 bits.
+std::optional<std::vector<SetLayout>> LayoutOrReport(const PassPragmas& pragmas,
+                                                     const std::string& pass_label,
+                                                     const std::string& file,
+                                                     SourceRange pass_range,
+                                                     DiagnosticList& diags) {
+    auto layout = LayoutSets(pragmas.sets);
+    if (!layout) {
+        diags.Error(
+            DiagCode::kVariantKeyTooWide, file, pass_range,
+            "keyword sets of pass " + pass_label +
+                " need more than 64 bits of variant key; split the pass or use fewer keywords");
+    }
+    return layout;
+}
+
+}  // namespace
+
 pack::VariantKey KeyForKeywords(const std::vector<KeywordSet>& sets,
                                 const std::vector<SetLayout>& layout,
                                 const std::vector<std::string>& enabled) {
@@ -78,14 +98,9 @@ std::optional<Expansion> ExpandRequested(const PassPragmas& pragmas,
                                          DiagnosticList& diags,
                                          std::vector<ExcludedRequest>& excluded) {
     Expansion ex;
-    auto layout = LayoutSets(pragmas.sets);
-    if (!layout) {
-        diags.Error(
-            DiagCode::kVariantKeyTooWide, file, pass_range,
-            "keyword sets of pass " + pass_label +
-                " need more than 64 bits of variant key; split the pass or use fewer keywords");
+    auto layout = LayoutOrReport(pragmas, pass_label, file, pass_range, diags);
+    if (!layout)
         return std::nullopt;
-    }
     ex.layout = *layout;
     ex.permutations = 1;
     for (const KeywordSet& set : pragmas.sets) {
@@ -134,14 +149,9 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                                         SourceRange pass_range,
                                         DiagnosticList& diags) {
     Expansion ex;
-    auto layout = LayoutSets(pragmas.sets);
-    if (!layout) {
-        diags.Error(
-            DiagCode::kVariantKeyTooWide, file, pass_range,
-            "keyword sets of pass " + pass_label +
-                " need more than 64 bits of variant key; split the pass or use fewer keywords");
+    auto layout = LayoutOrReport(pragmas, pass_label, file, pass_range, diags);
+    if (!layout)
         return std::nullopt;
-    }
     ex.layout = *layout;
 
     // Choices: every index of a multi_compile set (and of shader_feature sets with

@@ -7,20 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "kiln/pack/variant_selector.h"
 
 namespace kiln::cli {
 namespace {
-
-std::string Join(const std::vector<std::string>& words) {
-    if (words.empty()) {
-        return "(no keywords)";
-    }
-    std::string out;
-    for (const std::string& w : words) {
-        out += (out.empty() ? "" : " ") + w;
-    }
-    return out;
-}
 
 std::string Count(uint64_t n) {
     return n == UINT64_MAX ? std::string("more than 2^64") : std::to_string(n);
@@ -57,7 +47,7 @@ void PrintText(const CompileOutput& out, double seconds, size_t skeleton_bytes) 
         std::printf("shader \"%s\" pass \"%s\": kept %zu of %s keyword combinations\n",
                     p.shader.c_str(), p.pass.c_str(), p.variants, Count(p.permutations).c_str());
         for (const RequestedVariantReport& v : p.kept) {
-            std::printf("  kept %s: %llu lookup%s\n", Join(v.keywords).c_str(),
+            std::printf("  kept %s: %llu lookup%s\n", pack::JoinKeywords(v.keywords).c_str(),
                         static_cast<unsigned long long>(v.requesters),
                         v.requesters == 1 ? "" : "s");
             for (const std::string& who : v.requested_by) {
@@ -69,7 +59,7 @@ void PrintText(const CompileOutput& out, double seconds, size_t skeleton_bytes) 
             }
         }
         for (const RequestedVariantReport& v : p.excluded) {
-            std::printf("  not built %s: %s\n", Join(v.keywords).c_str(),
+            std::printf("  not built %s: %s\n", pack::JoinKeywords(v.keywords).c_str(),
                         v.excluded_because.c_str());
         }
         if (p.variants == 0) {
