@@ -26,7 +26,7 @@ std::vector<std::string> Findings(const nlohmann::json& report) {
 }
 
 TEST(Lint, EachFindingIsAtItsPragmaPropertyOrPass) {
-    const RunResult r = RunKiln("lint --json " + Wasteful());
+    const RunResult r = RunKiln("lint --no-cache --json " + Wasteful());
     ASSERT_EQ(r.exit_code, 0) << r.err;  // warnings only
     const nlohmann::json report = nlohmann::json::parse(r.out);
     const std::vector<std::string> found = Findings(report);
@@ -64,7 +64,7 @@ TEST(Lint, EachFindingIsAtItsPragmaPropertyOrPass) {
 }
 
 TEST(Lint, TextShowsTheCountsAndWerrorFails) {
-    const RunResult r = RunKiln("lint " + Wasteful());
+    const RunResult r = RunKiln("lint --no-cache " + Wasteful());
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_NE(r.out.find("pass \"BASE\" (LightMode ForwardBase): 2 x 3 x 2 x 2 x 2 x 2 = 96 "
                          "variants (64 stored as aliases), budget 4096"),
@@ -74,13 +74,13 @@ TEST(Lint, TextShowsTheCountsAndWerrorFails) {
                                       "changes no code"),
               std::string::npos)
         << r.err;
-    const RunResult strict = RunKiln("lint -Werror " + Wasteful());
+    const RunResult strict = RunKiln("lint --no-cache -Werror " + Wasteful());
     EXPECT_EQ(strict.exit_code, 1);
     EXPECT_NE(strict.err.find(":50:13: error: keyword 'UNUSED_KW'"), std::string::npos);
 }
 
 TEST(Lint, AVariantBudgetFailsTheLint) {
-    const RunResult r = RunKiln("lint --max-variants 50 " + Wasteful());
+    const RunResult r = RunKiln("lint --no-cache --max-variants 50 " + Wasteful());
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("2 x 3 x 2 x 2 x 2 x 2 = 96 variants in pass \"BASE\", over the limit of "
                          "50 (--max-variants) [K4008]"),
@@ -93,11 +93,11 @@ TEST(Lint, AVariantBudgetFailsTheLint) {
         text.replace(text.find(tag + from), tag.size() + from.size(), tag + to);
     };
     retag("\"8\"", "\"3\"");
-    const RunResult tagged = RunKiln("lint " + dir.Write("Tagged.shader", text));
+    const RunResult tagged = RunKiln("lint --no-cache " + dir.Write("Tagged.shader", text));
     EXPECT_EQ(tagged.exit_code, 1);
     EXPECT_NE(tagged.err.find("over the limit of 3"), std::string::npos) << tagged.err;
     retag("\"3\"", "\"x\"");
-    const RunResult bad = RunKiln("lint " + dir.Write("Bad.shader", text));
+    const RunResult bad = RunKiln("lint --no-cache " + dir.Write("Bad.shader", text));
     EXPECT_NE(bad.err.find("[K4020]"), std::string::npos) << bad.err;
 }
 
@@ -107,7 +107,7 @@ TEST(Lint, TheShippedMaterialsAreClean) {
          {"Unlit", "Lambert", "LambertAmbient", "BlinnPhong", "BlinnPhongTextured",
           "EnergyConserving", "Standard", "StandardMetallic", "MultiLight", "Deferred"})
         files += DataPath("../materials/") + s + ".shader ";
-    const RunResult r = RunKiln("lint -Werror " + files);
+    const RunResult r = RunKiln("lint --no-cache -Werror " + files);
     EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 

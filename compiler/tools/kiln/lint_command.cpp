@@ -74,7 +74,8 @@ std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) 
     struct Options {
         std::vector<std::string> files;
         CompilerFlags flags;
-        bool werror = false, json = false;
+        bool werror = false, json = false, no_cache = false;
+        std::string cache_dir;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
@@ -82,6 +83,8 @@ std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) 
     cmd->add_option("files", o->files, "ShaderLab files")->required();
     AddCompilerOptions(*cmd, o->flags);
     cmd->add_flag("--werror", o->werror, "")->group("");
+    cmd->add_option("--cache-dir", o->cache_dir, "Compile cache (default: the user cache folder)");
+    cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the compile cache");
     cmd->add_flag("--json", o->json,
                   "Print one JSON document on stdout: the counts and every diagnostic");
     cmd->footer("Compiler-style options:\n  -Werror                     Treat warnings as errors");
@@ -93,7 +96,8 @@ std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) 
             PrintDiagnostics(diags, Views(CompileOutput{}, material_files), global);
             return ExitCodeFor(diags);
         }
-        options.cache_dir = DefaultCacheDir();
+        options.cache_dir =
+            o->no_cache ? "" : (o->cache_dir.empty() ? DefaultCacheDir() : o->cache_dir);
         const CompileOutput out = LintShaders(o->files, options, diags);
         diags.SortByPosition();
         DiagnosticList shown;
