@@ -1,6 +1,7 @@
 // kiln diff OLD.kpack NEW.kpack [--max-added-variants N] [--max-added-bytes B] [--json]: variants
 // and bytes added or removed per shader and pass, for CI: "+48 variants, +310 KiB". A pass's bytes
 // are the SPIR-V of the distinct modules its variants use; the total is the packs' file sizes.
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -47,8 +48,8 @@ std::string Signed(int64_t n, const char* unit) {
 std::string KiB(int64_t bytes) {
     char buf[64];
     const double k = double(bytes) / 1024.0;
-    std::snprintf(buf, sizeof buf,
-                  k == int64_t(k) || k >= 100 || k <= -100 ? "%+.0f KiB" : "%+.1f KiB", k);
+    const bool whole = std::floor(k) == k || std::abs(k) >= 100;
+    std::snprintf(buf, sizeof buf, whole ? "%+.0f KiB" : "%+.1f KiB", k);
     return buf;
 }
 
