@@ -130,8 +130,11 @@ void FillReports(const CompileState& st, CompileOutput& out) {
         r.variants = pu.expansion.keys.size();
         for (pack::VariantKey key : pu.expansion.keys) {
             r.aliased += std::any_of(st.aliases.begin(), st.aliases.end(), [&](const auto& a) {
+                if (&st.passes[a.first] != &pu) {
+                    return false;  // another pass's alias: its set indexes that pass's layout
+                }
                 const variants::SetLayout& l = pu.expansion.layout[a.second.set];
-                return &st.passes[a.first] == &pu && key.Get(l.shift, l.bits) == a.second.from;
+                return key.Get(l.shift, l.bits) == a.second.from;
             });
         }
         std::set<size_t> vs, fs;
