@@ -75,6 +75,43 @@ TEST_F(RuntimeTest, DemoSceneShowsEveryShippedMaterial) {
     EXPECT_GT(Covered(image), image.rgba.size() / 4 / 2);
 }
 
+// A loaded scene has an id: its buffers and material instances are uploaded and resolved on the
+// first frame only, and later frames draw the same pixels from what was kept. A scene without an
+// id (built in code) is uploaded again each frame; giving an edited scene a new id does the same.
+TEST_F(RuntimeTest, LoadedScenesKeepTheirBuffersAndMaterialsBetweenFrames) {
+    runtime::Scene scene;
+    DiagnosticList warnings;
+    ASSERT_TRUE(LoadInto(std::string(KILN_SOURCE_DIR) + "/scenes/demo/demo.gltf", scene, warnings));
+    ASSERT_NE(scene.id, 0u);
+    runtime::FrameSettings settings;
+    settings.width = 96;
+    settings.height = 64;
+    runtime::FrameStats first, second, third;
+    const runtime::LinearImage a = Render(scene, settings, &first);
+    const runtime::LinearImage b = Render(scene, settings, &second);
+    EXPECT_GT(first.buffers_uploaded, 0u);
+    EXPECT_EQ(first.materials_resolved,
+              10u + 1u);  // ten sidecar materials and the floor's glTF one
+    EXPECT_EQ(second.buffers_uploaded, 0u);
+    EXPECT_EQ(second.materials_resolved, 0u);
+    EXPECT_EQ(second.pipelines_created, 0u);
+    EXPECT_EQ(a.rgba, b.rgba);
+
+    scene.id = runtime::NewSceneId();  // "edited": everything again
+    Render(scene, settings, &third);
+    EXPECT_EQ(third.buffers_uploaded, first.buffers_uploaded);
+    EXPECT_EQ(third.materials_resolved, first.materials_resolved);
+
+    runtime::Scene unnamed = SphereOnFloor(RuntimeData("multi_light.material"));
+    ASSERT_EQ(unnamed.id, 0u);
+    for (int frame = 0; frame < 2; ++frame) {
+        runtime::FrameStats stats;
+        Render(unnamed, settings, &stats);
+        EXPECT_EQ(stats.buffers_uploaded, 4u) << "frame " << frame;  // sphere and floor
+        EXPECT_EQ(stats.materials_resolved, 1u) << "frame " << frame;
+    }
+}
+
 runtime::Scene LoneSphere(const std::string& material, int point_lights) {
     runtime::Scene scene = SphereOnFloor(RuntimeData(material));
     scene.instances.pop_back();  // no floor

@@ -90,6 +90,7 @@ struct SceneStripFlags {
     std::vector<std::string> scenes, usage_files;
     std::string path = "forward";
     uint32_t pixel_lights = 4;
+    std::string light_mode = "auto";
     bool explain = false, explain_json = false, verify = false;
     bool active() const { return !scenes.empty() || !usage_files.empty(); }
 };

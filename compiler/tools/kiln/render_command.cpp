@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include "commands.h"
 #include "kiln/base/files.h"
@@ -117,6 +119,18 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         ->option_text("N|auto");
     cmd->add_option("--pixel-lights", a->frame.pixel_lights,
                     "Additive per-light passes per object at most (default 4)");
+    cmd->add_option("--light-mode", a->frame.light_mode,
+                    "How lights other than the main directional one light an object: auto "
+                    "(Unity's: --pixel-lights per pixel, 4 point lights per vertex, the rest "
+                    "in SH), pixel, vertex or sh (default auto)")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, runtime::LightMode>{{"auto", runtime::LightMode::kAuto},
+                                                      {"pixel", runtime::LightMode::kPixel},
+                                                      {"vertex", runtime::LightMode::kVertex},
+                                                      {"sh", runtime::LightMode::kSH}},
+            CLI::ignore_case)
+                        .description(""))
+        ->option_text("auto|pixel|vertex|sh");
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
     cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
     cmd->add_flag("--no-default-light", a->no_default_light,
@@ -242,10 +256,11 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             return fail(written.error(), a->output);
         }
         std::printf(
-            "%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes, %u "
-            "pipelines, device '%s', %s%s\n",
+            "%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes (%u with vertex "
+            "lights, %u with SH lights), %u pipelines, device '%s', %s%s\n",
             a->output.c_str(), image.width, image.height, stats.camera.c_str(), stats.objects,
-            stats.base_passes, stats.add_passes, stats.pipelines_created,
+            stats.base_passes, stats.add_passes, stats.vertex_lit, stats.sh_lit,
+            stats.pipelines_created,
             renderer.DeviceName().c_str(), color.description().c_str(),
             a->validation ? ", validation messages: 0" : "");
         return finish(int(kExitOk));

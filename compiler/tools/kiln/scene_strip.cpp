@@ -122,7 +122,9 @@ bool DryRun(const std::string& scene,
                                      "--usage",
                                      usage_path,
                                      "--pixel-lights",
-                                     std::to_string(flags.pixel_lights)};
+                                     std::to_string(flags.pixel_lights),
+                                     "--light-mode",
+                                     flags.light_mode};
     for (const std::string& p : packs) {
         args.insert(args.end(), {"--pack", p});
     }
@@ -209,6 +211,11 @@ void AddSceneStripOptions(CLI::App& cmd, SceneStripFlags& f) {
     cmd.add_option("--pixel-lights", f.pixel_lights,
                    "Additive per-light passes per object at most, as kiln render's (default 4)")
         ->option_text("N");
+    cmd.add_option("--light-mode", f.light_mode,
+                   "How lights beyond the main one light objects, as kiln render's (default "
+                   "auto)")
+        ->check(CLI::IsMember({"auto", "pixel", "vertex", "sh"}, CLI::ignore_case))
+        ->option_text("auto|pixel|vertex|sh");
     cmd.add_flag("--explain", f.explain,
                  "Print what was kept and why, what was left out, and what that saved");
     cmd.add_flag("--explain-json", f.explain_json, "The same as JSON on stdout");

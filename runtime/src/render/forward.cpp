@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <cstring>
-#include <deque>
 #include <map>
+#include <tuple>
 
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
-#include "render/draw.h"
 #include "render/forward_plan.h"
+#include "render/frame.h"
 #include "render/frame_values.h"
 #include "render/renderer_state.h"
 #include "render/textures.h"
@@ -22,50 +22,40 @@ namespace {
 using render::MaterialInstance;
 using render::Values;
 
+// What draws of one material's pass with one variant share: the pipeline for the frame's
+// targets, the texture descriptors and the <tex>_TexelSize values they imply. Resolved once a
+// frame per (material, pass, variant, additive), not per draw.
+struct Binding {
+    const vk::Pipeline* pipeline = nullptr;
+    std::vector<Draw::Write> textures;
+    Values texel_sizes;
+    std::vector<std::pair<uint32_t, uint32_t>> bound;  // (set, binding) of `textures`
+};
+
 struct DrawBuilder {
     Renderer::State& s;
+    SceneResources& resources;
     const Scene& scene;
-    const ColorPipeline& color;
-    render::FrameTextures& textures;
+    vk::TargetFormats targets;
     Values frame;
     FrameStats& stats;
     std::vector<uint8_t> uniforms;
     VkDeviceSize alignment = 256;
+    std::map<std::tuple<const MaterialInstance*, uint32_t, uint32_t, bool>, Binding> bindings;
 
     // A warning about the scene, each once a frame.
     void Warn(DiagCode code, std::string message) {
         render::WarnOnce(stats.warnings, scene, code, std::move(message));
     }
 
-    // One draw of a request's pass for its primitive (vertex and index buffers uploaded).
-    Status Build(const render::DrawRequest& request,
-                 const vk::Buffer& vb,
-                 const vk::Buffer& ib,
-                 std::vector<Draw>& draws) {
-        const MaterialInstance& m = *request.material;
-        const uint32_t pass = request.pass;
-        const bool additive = request.additive;
-        const Light* light = request.light;
-        const std::vector<const Light*>& vertex = request.vertex;
-        const glm::mat4& world = request.instance->world;
-        const uint32_t index_count = uint32_t(request.primitive->indices.size());
-        LoadedPack& lp = *s.packs[m.pack];
-        const pack::Pack& pack = lp.pack;
-        const Result<pack::VariantChoice> selected =
-            lp.selector->Select(pass, request.keywords, request.reason);
-        if (!selected) {
-            return Error{DiagCode::kMissingVariant, m.name + ": " + selected.error().message};
-        }
-        const pack::VariantChoice& choice = selected.value();
-        if (!choice.exact) {
-            Warn(DiagCode::kVariantFallback, m.name + ": " + choice.warning);
-        }
-        const std::vector<std::string> chosen =
-            pack.KeywordsOf(pass, pack::VariantKey(pack.Variant(choice.variant).value().key));
-        if (!additive && std::count(chosen.begin(), chosen.end(), pack::kKeywordVertexLight)) {
-            ++stats.vertex_lit;
-        }
-
+    // The pipeline of `m`'s pass `pass` with variant `variant` (`chosen`: its keywords).
+    Status Pipeline(const MaterialInstance& m,
+                    uint32_t pass,
+                    uint32_t variant,
+                    bool additive,
+                    const std::vector<std::string>& chosen,
+                    const vk::Pipeline*& out) {
+        const pack::Pack& pack = s.packs[m.pack]->pack;
         std::vector<pack::StateOverride> overrides;
         for (const pack::StateOverride& o : m.overrides) {
             if (!(additive && o.field == "Blend")) {
@@ -94,45 +84,30 @@ struct DrawBuilder {
             for (vk::BlendTarget& t : state.targets)
                 t.mask &= ~VkColorComponentFlags(VK_COLOR_COMPONENT_A_BIT);
         }
-        Draw d;
-        if (Status e =
-                s.GetPipeline(m.pack, choice.variant, state, d.pipeline, stats.pipelines_created);
+        if (Status e = s.GetPipeline(m.pack, variant, state, targets, out, stats.pipelines_created);
             !e.ok()) {
             return Error{e.error().code,
                          "shader '" + std::string(pack.String(pack.Shader(m.shader).value().name)) +
                              "' pass '" + pack::PassLabel(pack, pass) + "' variant '" +
                              pack::JoinKeywords(chosen) + "': " + e.error().message};
         }
-        d.vertices = &vb;
-        d.indices = &ib;
-        d.index_count = index_count;
+        return {};
+    }
 
-        const Values light_values =
-            render::LightValues(light, additive ? std::vector<const Light*>{} : vertex);
-        const Values object = render::ObjectValues(world);
-        Values material_extra;  // <tex>_TexelSize
-        const pack::VariantRec v = pack.Variant(choice.variant).value();
-        const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
-            for (const Values* table : std::initializer_list<const Values*>{
-                     &object, &light_values, &frame, &material_extra}) {
-                if (auto it = table->find(name); it != table->end()) {
-                    return &it->second;
-                }
-            }
-            auto it = m.values.find(std::string(name));
-            return it == m.values.end() ? nullptr : &it->second;
-        };
-        std::vector<std::pair<uint32_t, uint32_t>> seen;  // (set, binding) already written
+    // The texture descriptors of `m` for the variant's modules.
+    Status Textures(const MaterialInstance& m, const pack::VariantRec& v, Binding& out) {
+        const pack::Pack& pack = s.packs[m.pack]->pack;
         for (uint32_t module : {v.vertex_module, v.fragment_module}) {
             const pack::ModuleRec mod = pack.Module(module).value();
             for (uint32_t r = 0; r < mod.resource_count; ++r) {
                 const auto res = pack.Get<pack::ResourceRec>(pack::SectionTag::kResources,
                                                              mod.first_resource + r)
                                      .value();
-                if (std::count(seen.begin(), seen.end(), std::pair{res.set, res.binding})) {
+                if (std::count(out.bound.begin(), out.bound.end(),
+                               std::pair{res.set, res.binding})) {
                     continue;
                 }
-                seen.emplace_back(res.set, res.binding);
+                out.bound.emplace_back(res.set, res.binding);
                 std::string name(pack.String(res.name));
                 const auto kind = pack::ResourceKind(res.kind);
                 if (kind == pack::ResourceKind::kSeparateSampler && name.rfind("sampler", 0) == 0) {
@@ -157,7 +132,7 @@ struct DrawBuilder {
                 }
                 render::BoundTexture t;
                 auto it = m.textures.find(name);
-                if (Status e = textures.Get(
+                if (Status e = resources.textures->Get(
                         it == m.textures.end() ? render::UnsetTexture(name) : it->second, shape, t);
                     !e.ok()) {
                     return e;
@@ -165,7 +140,7 @@ struct DrawBuilder {
                 if (!t.warning.empty()) {
                     Warn(DiagCode::kTextureFallback, m.name + ": " + t.warning);
                 }
-                material_extra[name + "_TexelSize"] = {
+                out.texel_sizes[name + "_TexelSize"] = {
                     1.0f / float(t.width), 1.0f / float(t.height), float(t.width), float(t.height)};
                 Draw::Write w{res.set, res.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
                 w.image = {t.sampler, t.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -176,9 +151,76 @@ struct DrawBuilder {
                     w.type = VK_DESCRIPTOR_TYPE_SAMPLER;
                     w.image.imageView = VK_NULL_HANDLE;
                 }
-                d.writes.push_back(w);
+                out.textures.push_back(w);
             }
         }
+        return {};
+    }
+
+    // One draw of a request's pass for its primitive.
+    Status Build(const render::DrawRequest& request, std::vector<Draw>& draws) {
+        const MaterialInstance& m = *request.material;
+        const uint32_t pass = request.pass;
+        const bool additive = request.additive;
+        LoadedPack& lp = *s.packs[m.pack];
+        const pack::Pack& pack = lp.pack;
+        const Result<pack::VariantChoice> selected =
+            lp.selector->Select(pass, request.keywords, request.reason);
+        if (!selected) {
+            return Error{DiagCode::kMissingVariant, m.name + ": " + selected.error().message};
+        }
+        const pack::VariantChoice& choice = selected.value();
+        if (!choice.exact) {
+            Warn(DiagCode::kVariantFallback, m.name + ": " + choice.warning);
+        }
+        const pack::VariantRec v = pack.Variant(choice.variant).value();
+        const std::vector<std::string> chosen = pack.KeywordsOf(pass, pack::VariantKey(v.key));
+        if (!additive && std::count(chosen.begin(), chosen.end(), pack::kKeywordVertexLight)) {
+            ++stats.vertex_lit;
+        }
+        auto [it, fresh] = bindings.try_emplace({&m, pass, choice.variant, additive});
+        Binding& binding = it->second;
+        if (fresh) {
+            if (Status e = Pipeline(m, pass, choice.variant, additive, chosen, binding.pipeline);
+                !e.ok()) {
+                bindings.erase(it);
+                return e;
+            }
+            if (Status e = Textures(m, v, binding); !e.ok()) {
+                bindings.erase(it);
+                return e;
+            }
+        }
+        Draw d;
+        d.pipeline = binding.pipeline;
+        d.writes = binding.textures;
+        const uint32_t mesh = request.instance->mesh;
+        const uint32_t primitive =
+            uint32_t(request.primitive - scene.meshes[mesh].primitives.data());
+        if (Status e = resources.Buffers(scene, mesh, primitive, d.vertices, d.indices); !e.ok()) {
+            return e;
+        }
+        d.index_count = uint32_t(request.primitive->indices.size());
+
+        Values light_values = render::LightValues(
+            request.light, additive ? std::vector<const Light*>{} : request.vertex);
+        if (!additive && !request.sh.empty()) {
+            // Read before the frame's probe: this object's ambient plus its SH lights.
+            light_values.merge(render::ProbeValues(scene.ambient, request.sh, request.center));
+            ++stats.sh_lit;
+        }
+        const Values object = render::ObjectValues(request.instance->world);
+        const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
+            for (const Values* table : std::initializer_list<const Values*>{
+                     &object, &light_values, &frame, &binding.texel_sizes}) {
+                if (auto found = table->find(name); found != table->end()) {
+                    return &found->second;
+                }
+            }
+            auto found = m.values.find(std::string(name));
+            return found == m.values.end() ? nullptr : &found->second;
+        };
+        std::vector<std::pair<uint32_t, uint32_t>> seen = binding.bound;
         for (uint32_t module : {v.vertex_module, v.fragment_module}) {
             const pack::ModuleRec mod = pack.Module(module).value();
             for (uint32_t b = 0; b < mod.block_count; ++b) {
@@ -212,17 +254,6 @@ struct DrawBuilder {
 
 }  // namespace
 
-// Frees a frame's buffers on every path out of RenderForward.
-struct FrameBuffers {
-    const vk::Context& context;
-    std::deque<vk::Buffer> buffers;
-    ~FrameBuffers() {
-        for (vk::Buffer& b : buffers) {
-            vk::DestroyBuffer(context, b);
-        }
-    }
-};
-
 Status RenderForward(Renderer::State& s,
                      const Scene& scene,
                      const FrameSettings& settings,
@@ -241,71 +272,82 @@ Status RenderForward(Renderer::State& s,
                      (scene.path.empty() ? std::string("the scene") : scene.path) +
                          ": nothing to draw (no node of the scene has a mesh)"};
     }
+    SceneResources& resources = s.ResourcesFor(scene, color);
+    const bool automatic = scene.cameras.empty() || settings.camera == FrameSettings::kCameraAuto;
+    if (!resources.bounds && automatic) {  // the automatic camera frames them
+        resources.bounds = SceneBounds(scene);
+    }
     render::CameraSetup camera;
-    if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok()) {
+    if (Status e = render::ChooseCamera(scene, settings, camera,
+                                        resources.bounds ? &*resources.bounds : nullptr);
+        !e.ok()) {
         return e;
     }
     stats.camera = camera.name;
 
+    const uint32_t uploads = resources.uploads;
+    const size_t materials = resources.materials.size();
     render::ForwardPlan plan;
-    if (Status e = render::PlanForward(s.PackList(), scene, settings, camera.position, color, plan,
-                                       stats.warnings);
+    if (Status e = render::PlanForward(s.PackList(), scene, settings, camera.position, color,
+                                       resources.materials, plan, stats.warnings);
         !e.ok()) {
         return e;
     }
-    for (const MaterialInstance& m : plan.materials) {
+    for (const MaterialInstance* m : plan.list.materials) {
+        const pack::Pack& pack = s.packs[m->pack]->pack;
         s.used_materials.insert(
-            {m.name, std::string(s.packs[m.pack]->pack.String(
-                         s.packs[m.pack]->pack.Shader(m.shader).value().name))});
+            {m->name, std::string(pack.String(pack.Shader(m->shader).value().name))});
     }
-    return DrawPlan(s, scene, settings, camera, color, plan, out, stats);
+    stats.materials_resolved = uint32_t(resources.materials.size() - materials);
+    const Status drawn = DrawPlan(s, resources, scene, settings, camera, plan, out, stats);
+    stats.buffers_uploaded = resources.uploads - uploads;
+    return drawn;
 }
 
 Status DrawPlan(Renderer::State& s,
+                SceneResources& resources,
                 const Scene& scene,
                 const FrameSettings& settings,
                 const render::CameraSetup& camera,
-                const ColorPipeline& color,
                 const render::ForwardPlan& plan,
                 LinearImage& out,
                 FrameStats& stats) {
-    FrameBuffers gpu{s.context, {}};
-    render::FrameTextures textures(s, scene);
-    DrawBuilder builder{s,     scene, color, textures, render::FrameValues(scene, settings, camera),
-                        stats, {},    256};
+    // The forward path's frame: one pass into the colour target and the depth buffer.
+    Frame frame;
+    frame.width = settings.width;
+    frame.height = settings.height;
+    FrameTarget color_target{"color", s.color_format, false, {}};
+    // Alpha 0: not covered (the frame's alpha is coverage).
+    color_target.clear.color = {
+        {settings.background.r, settings.background.g, settings.background.b, 0}};
+    FrameTarget depth_target{"depth", s.depth_format, true, {}};
+    depth_target.clear.depthStencil = {1.0f, 0};
+    frame.targets = {color_target, depth_target};
+    frame.output = 0;
+    FramePass& forward = frame.passes.emplace_back();
+    forward.name = "forward";
+    forward.colors = {0};
+    forward.depth = 1;
+
+    DrawBuilder builder{s,
+                        resources,
+                        scene,
+                        FormatsOf(frame, forward),
+                        render::FrameValues(scene, settings, camera),
+                        stats,
+                        {},
+                        256,
+                        {}};
     builder.alignment =
         std::max<VkDeviceSize>(256, s.context.properties.limits.minUniformBufferOffsetAlignment);
-    std::vector<Draw> draws;
-    std::map<const Primitive*, std::pair<const vk::Buffer*, const vk::Buffer*>> uploaded;
     for (const render::DrawRequest& r : plan.draws) {
-        auto& buffers = uploaded[r.primitive];
-        if (!buffers.first) {
-            const Primitive& p = *r.primitive;
-            vk::Buffer& vb = gpu.buffers.emplace_back();
-            if (Status e =
-                    vk::CreateBufferWithData(s.context,
-                                             {reinterpret_cast<const uint8_t*>(p.vertices.data()),
-                                              p.vertices.size() * sizeof(MeshVertex)},
-                                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vb);
-                !e.ok()) {
-                return e;
-            }
-            vk::Buffer& ib = gpu.buffers.emplace_back();
-            if (Status e = vk::CreateBufferWithData(
-                    s.context,
-                    {reinterpret_cast<const uint8_t*>(p.indices.data()), p.indices.size() * 4},
-                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT, ib);
-                !e.ok()) {
-                return e;
-            }
-            buffers = {&vb, &ib};
-        }
-        if (Status e = builder.Build(r, *buffers.first, *buffers.second, draws); !e.ok()) {
+        if (Status e = builder.Build(r, forward.draws); !e.ok()) {
             return e;
         }
     }
     stats.objects = plan.objects;
-    return RecordFrame(s, settings, draws, builder.uniforms, out);
+    frame.uniforms = std::move(builder.uniforms);
+    return RecordFrame(s, frame, out);
 }
 
 }  // namespace kiln::runtime

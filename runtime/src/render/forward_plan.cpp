@@ -1,9 +1,6 @@
 #include "render/forward_plan.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <algorithm>
-#include <limits>
 
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
@@ -23,65 +20,6 @@ std::string LightName(const Light* light) {
     return light ? std::string(TypeName(light->type)) + " light '" + light->name + "'"
                  : std::string("no light");
 }
-
-// Material instances, built on first use: a sidecar .material, else the glTF material on
-// Kiln/StandardMetallic. Slot materials.size() is glTF's default material.
-struct Materials {
-    const std::vector<const pack::Pack*>& packs;
-    const runtime::Scene& scene;
-    const runtime::ColorPipeline& color;
-    std::deque<MaterialInstance>& store;
-    std::vector<const MaterialInstance*> slots;
-
-    Status For(int index, const MaterialInstance*& m) {
-        const size_t slot = index < 0 ? scene.materials.size() : size_t(index);
-        if (slots[slot]) {
-            m = slots[slot];
-            return {};
-        }
-        runtime::SceneMaterial gltf;
-        gltf.name = "(default)";
-        if (index >= 0) {
-            gltf = scene.materials[slot];
-        }
-        MaterialInstance inst;
-        if (auto it = scene.material_files.find(gltf.name);
-            index >= 0 && it != scene.material_files.end()) {
-            if (Status e = InstanceFromMaterialFile(packs, it->second, color, inst); !e.ok()) {
-                return e;
-            }
-        } else {
-            bool found = false;
-            for (uint32_t p = 0; p < packs.size() && !found; ++p) {
-                if (auto shader = packs[p]->FindShader(pack::kShaderStandardMetallic)) {
-                    InstanceFromDefaults(*packs[p], p, *shader, color, inst);
-                    found = true;
-                }
-            }
-            if (!found) {
-                return Error{DiagCode::kRenderFailed,
-                             "glTF material '" + gltf.name + "' needs shader '" +
-                                 std::string(pack::kShaderStandardMetallic) +
-                                 "', which is in none of the loaded packs (add the shipped "
-                                 "materials.kpack)"};
-            }
-            ApplyGltfMaterial(gltf, inst);
-            if (index >= 0 && gltf.name.empty()) {
-                inst.name = "glTF material #" + std::to_string(index);  // for messages
-            }
-        }
-        m = slots[slot] = &store.emplace_back(std::move(inst));
-        return {};
-    }
-};
-
-struct Item {
-    const runtime::Instance* instance;
-    const runtime::Primitive* primitive;
-    const MaterialInstance* material;
-    glm::vec3 center;
-    float radius, depth;
-};
 
 // The keywords a draw asks for: the material's, then the light's (kiln/pack/engine_names.h).
 std::vector<std::string> DrawKeywords(const MaterialInstance& m,
@@ -126,64 +64,20 @@ ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
     return out;
 }
 
-void WarnOnce(DiagnosticList& warnings,
-              const runtime::Scene& scene,
-              DiagCode code,
-              std::string message) {
-    const auto& all = warnings.all();
-    if (std::none_of(all.begin(), all.end(),
-                     [&](const Diagnostic& d) { return d.message == message; })) {
-        warnings.Warning(code, scene.path, kNoPosition, std::move(message));
-    }
-}
-
 Status PlanForward(const std::vector<const pack::Pack*>& packs,
                    const runtime::Scene& scene,
                    const runtime::FrameSettings& settings,
                    const glm::vec3& camera_position,
                    const runtime::ColorPipeline& color,
+                   MaterialCache& materials,
                    ForwardPlan& out,
                    DiagnosticList& warnings) {
-    out.lights = scene.lights;
-    if (out.lights.empty() && settings.default_light) {
-        Light key;
-        key.name = "default light";
-        key.type = LightType::kDirectional;
-        key.direction = glm::normalize(glm::vec3(-0.35f, -0.8f, -0.5f));
-        key.intensity = 3.14159265f;  // pi lux: _LightColor0 = 1, Unity's default light
-        out.lights.push_back(key);
-        WarnOnce(warnings, scene, DiagCode::kDefaultLight,
-                 "the scene has no KHR_lights_punctual lights: lit by a default directional "
-                 "light of pi lux (Unity's intensity 1) shining along (-0.35, -0.8, -0.5)");
+    if (Status e = BuildDrawList(packs, scene, settings, camera_position, color, materials,
+                                 out.list, warnings);
+        !e.ok()) {
+        return e;
     }
-    const Light* main = MainLight(out.lights);
-
-    Materials materials{packs, scene, color, out.materials, {}};
-    materials.slots.assign(scene.materials.size() + 1, nullptr);
-    std::vector<Item> opaque, transparent;
-    for (const runtime::Instance& inst : scene.instances) {
-        for (const runtime::Primitive& prim : scene.meshes[inst.mesh].primitives) {
-            const MaterialInstance* m = nullptr;
-            if (Status e = materials.For(prim.material, m); !e.ok()) {
-                return e;
-            }
-            glm::vec3 lo(std::numeric_limits<float>::max()), hi(-lo);
-            for (const runtime::MeshVertex& v : prim.vertices) {
-                const glm::vec3 w(inst.world * glm::vec4(glm::make_vec3(v.position), 1));
-                lo = glm::min(lo, w);
-                hi = glm::max(hi, w);
-            }
-            const glm::vec3 center = (lo + hi) * 0.5f;
-            const float depth = glm::length(center - camera_position);
-            (m->transparent ? transparent : opaque)
-                .push_back({&inst, &prim, m, center, glm::length(hi - lo) * 0.5f, depth});
-        }
-    }
-    std::stable_sort(transparent.begin(), transparent.end(),
-                     [](const Item& a, const Item& b) { return a.depth > b.depth; });
-    opaque.insert(opaque.end(), transparent.begin(), transparent.end());
-
-    for (const Item& item : opaque) {
+    for (const DrawItem& item : out.list.items) {
         const MaterialInstance& m = *item.material;
         const ShaderPasses passes = PassesOf(*packs[m.pack], m.shader);
         if (passes.base.empty()) {
@@ -194,7 +88,8 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
             continue;
         }
         const ObjectLights lights =
-            LightsFor(out.lights, main, item.center, item.radius, settings.pixel_lights);
+            LightsFor(out.list.lights, out.list.main, item.center, item.radius,
+                      settings.pixel_lights, settings.light_mode);
         const std::string& mesh = scene.meshes[item.instance->mesh].name;
         const std::string who = m.name + " on " +
                                 (!item.instance->node.empty() ? "node '" + item.instance->node + "'"
@@ -202,8 +97,8 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
                                                               : std::string("an unnamed node")) +
                                 ": ";
         for (uint32_t pass : passes.base) {
-            DrawRequest r{item.instance, item.primitive, &m, pass, false,
-                          lights.main,   lights.vertex,  {}, {}};
+            DrawRequest r{item.instance, item.primitive, &m, pass, false,      lights.main,
+                          lights.vertex, lights.sh,      {}, {},   item.center};
             r.keywords = DrawKeywords(m, false, lights.main, !lights.vertex.empty());
             r.reason = who + "base pass, " +
                        (lights.main ? "main " + LightName(lights.main) : "no directional light");
@@ -211,12 +106,17 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
                 r.reason += ", " + std::to_string(lights.vertex.size()) + " vertex light" +
                             (lights.vertex.size() == 1 ? "" : "s");
             }
+            if (!lights.sh.empty()) {
+                r.reason += ", " + std::to_string(lights.sh.size()) + " SH light" +
+                            (lights.sh.size() == 1 ? "" : "s");
+            }
             out.draws.push_back(std::move(r));
         }
         if (passes.add) {
             for (const Light* light : lights.pixel) {
                 DrawRequest r{
-                    item.instance, item.primitive, &m, *passes.add, true, light, {}, {}, {}};
+                    item.instance, item.primitive, &m, *passes.add, true, light, {}, {}, {}, {},
+                    item.center};
                 r.keywords = DrawKeywords(m, true, light, false);
                 r.reason = who + "additive pass, " + LightName(light);
                 out.draws.push_back(std::move(r));

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "kiln/pack/engine_names.h"
+#include "kiln/reference/attenuation.h"
 #include "kiln/reference/sh.h"
 
 namespace kiln::render {
@@ -82,7 +83,8 @@ float Luminance(const glm::vec3& c) {
 
 Status ChooseCamera(const runtime::Scene& scene,
                     const runtime::FrameSettings& settings,
-                    CameraSetup& out) {
+                    CameraSetup& out,
+                    const std::pair<glm::vec3, glm::vec3>* bounds) {
     const float aspect = float(settings.width) / float(settings.height);
     using Settings = runtime::FrameSettings;
     if (settings.camera < Settings::kCameraAuto ||
@@ -111,7 +113,7 @@ Status ChooseCamera(const runtime::Scene& scene,
         return {};
     }
     // No camera: frame the scene's bounds from the front, above and to the right.
-    const auto [lo, hi] = runtime::SceneBounds(scene);
+    const auto [lo, hi] = bounds ? *bounds : runtime::SceneBounds(scene);
     const glm::vec3 center = (lo + hi) * 0.5f;
     const float radius = std::max(glm::length(hi - lo) * 0.5f, 1e-3f);
     const float yfov = 0.8f;
@@ -164,12 +166,44 @@ Values FrameValues(const runtime::Scene& scene,
         v[std::string(probe) + "_BoxMax"] = {1e30f, 1e30f, 1e30f, 1};
         v[std::string(probe) + "_ProbePosition"] = {0, 0, 0, 0};
     }
-    // A constant sky of radiance `ambient`: ShadeSH9 then returns E / pi = ambient.
+    v.merge(ProbeValues(scene.ambient, {}, glm::vec3(0.0f)));
+    return v;
+}
+
+std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const glm::vec3& point) {
+    const glm::vec3 lux = light.color * light.intensity;
+    if (light.type == runtime::LightType::kDirectional) {
+        return {lux, -light.direction};
+    }
+    const glm::vec3 to_light = light.position - point;
+    const float d = glm::length(to_light);
+    const glm::vec3 l = d > 0 ? to_light / d : glm::vec3(0, 1, 0);
+    double falloff = reference::DistanceAttenuation(d, light.range);
+    if (light.type == runtime::LightType::kSpot) {
+        falloff *=
+            reference::SpotCone(glm::dot(-l, light.direction), light.outer_cone, light.inner_cone);
+    }
+    return {lux * float(falloff), l};
+}
+
+Values ProbeValues(const glm::vec3& ambient,
+                   const std::vector<const runtime::Light*>& lights,
+                   const glm::vec3& center) {
+    // A constant sky of radiance `ambient`: ShadeSH9 then returns E / pi = ambient. A light of
+    // illuminance E0 from l adds E0 * Y_lm(l) (radiance times solid angle), so ShadeSH9 gives
+    // about E0 / pi * max(n . l, 0) = _LightColor0 * (n . l), what a pixel light's diffuse
+    // term would (the order-2 approximation of the clamped cosine, Ramamoorthi and Hanrahan
+    // 2001).
     reference::SH9 sh;
-    reference::AddConstantRadiance(sh, glm::dvec3(scene.ambient));
+    reference::AddConstantRadiance(sh, glm::dvec3(ambient));
+    for (const runtime::Light* light : lights) {
+        const auto [lux, l] = IlluminanceAt(*light, center);
+        reference::AddDirectionalLight(sh, glm::dvec3(l), glm::dvec3(lux));
+    }
     const reference::PackedSH packed = reference::PackSH9(sh);
     const char* names[7] = {"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr",
                             "unity_SHBg", "unity_SHBb", "unity_SHC"};
+    Values v;
     for (int i = 0; i < 7; ++i) {
         v[names[i]] = std::vector<float>(packed[size_t(i)].begin(), packed[size_t(i)].end());
     }
@@ -247,7 +281,8 @@ ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
                        const runtime::Light* main,
                        const glm::vec3& center,
                        float radius,
-                       uint32_t pixel_lights) {
+                       uint32_t pixel_lights,
+                       runtime::LightMode mode) {
     ObjectLights out;
     out.main = main;
     struct Ranked {
@@ -274,11 +309,18 @@ ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
     std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
         return a.directional != b.directional ? a.directional : a.importance > b.importance;
     });
+    using runtime::LightMode;
+    const size_t pixel = mode == LightMode::kAuto    ? pixel_lights
+                         : mode == LightMode::kPixel ? ranked.size()
+                                                     : 0;
+    const bool vertex = mode == LightMode::kAuto || mode == LightMode::kVertex;
     for (const auto& [directional, importance, light] : ranked) {
-        if (out.pixel.size() < pixel_lights) {
+        if (out.pixel.size() < pixel) {
             out.pixel.push_back(light);
-        } else if (light->type == runtime::LightType::kPoint && out.vertex.size() < 4) {
+        } else if (vertex && light->type == runtime::LightType::kPoint && out.vertex.size() < 4) {
             out.vertex.push_back(light);
+        } else {
+            out.sh.push_back(light);
         }
     }
     return out;

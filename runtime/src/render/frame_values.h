@@ -25,9 +25,12 @@ struct CameraSetup {
     float znear = 0.05f, zfar = 0;  // 0: infinite
 };
 
+// `bounds`: the scene's world bounds when the caller keeps them (runtime::SceneBounds otherwise,
+// computed only when the automatic camera needs them).
 Status ChooseCamera(const runtime::Scene& scene,
                     const runtime::FrameSettings& settings,
-                    CameraSetup& out);
+                    CameraSetup& out,
+                    const std::pair<glm::vec3, glm::vec3>* bounds = nullptr);
 
 // UnityPerCamera, UnityPerFrame and UnityProbes (the scene's ambient as constant radiance).
 Values FrameValues(const runtime::Scene& scene,
@@ -40,20 +43,37 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
 // UnityPerDraw.
 Values ObjectValues(const glm::mat4& world);
 
+// The light probe unity_SH* of an object at `center`: the scene's ambient (a constant sky of that
+// radiance, so ShadeSH9 returns it) plus each of `lights` projected as a distant light from
+// its direction at the centre, with its illuminance there (distance attenuation and spot cone
+// as the pixel path computes them), as Unity projects the lights it does not draw per pixel or
+// per vertex.
+Values ProbeValues(const glm::vec3& ambient,
+                   const std::vector<const runtime::Light*>& lights,
+                   const glm::vec3& center);
+
+// The light's illuminance (lux, times its colour) at `point`, on a surface facing it, and the unit
+// direction from `point` towards it.
+std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const glm::vec3& point);
+
 // The lights of one object: the main directional light (brightest directional) for the base
 // pass, then the rest by importance (directional lights, then point and spot lights by
 // intensity / distance^2 to the object; lights whose range ends before the object are dropped).
+// The first `pixel_lights` are per-pixel, up to four point lights after them per-vertex, and
+// all the others go into the object's spherical harmonics, as Unity's forward path does.
 struct ObjectLights {
     const runtime::Light* main = nullptr;
     std::vector<const runtime::Light*> pixel;   // additive passes, at most pixel_lights
     std::vector<const runtime::Light*> vertex;  // point lights beyond those, at most 4
+    std::vector<const runtime::Light*> sh;      // the rest
 };
 const runtime::Light* MainLight(const std::vector<runtime::Light>& lights);
 ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
                        const runtime::Light* main,
                        const glm::vec3& center,
                        float radius,
-                       uint32_t pixel_lights);
+                       uint32_t pixel_lights,
+                       runtime::LightMode mode = runtime::LightMode::kAuto);
 
 float Luminance(const glm::vec3& c);
 

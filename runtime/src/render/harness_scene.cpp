@@ -70,6 +70,10 @@ runtime::Scene HarnessScene() {
     scene.meshes.push_back({"plane", {Plane()}});
     scene.instances.push_back({0, glm::mat4(1.0f), "sphere"});
     scene.instances.push_back({1, glm::mat4(1.0f), "plane"});
+    for (runtime::Mesh& mesh : scene.meshes) {
+        ComputeBounds(mesh.primitives[0]);
+    }
+    scene.id = runtime::NewSceneId();
     runtime::Camera camera;
     camera.name = "harness";
     camera.yfov = 0.6f;

@@ -20,9 +20,10 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok()) {
         return e.error();
     }
+    render::MaterialCache materials;
     render::ForwardPlan plan;
-    if (Status e =
-            render::PlanForward(packs, scene, settings, camera.position, color, plan, warnings);
+    if (Status e = render::PlanForward(packs, scene, settings, camera.position, color, materials,
+                                       plan, warnings);
         !e.ok()) {
         return e.error();
     }
@@ -46,12 +47,12 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
         views.push_back(s.get());
     }
     out.usage.lookups = pack::UsageOf(views);
-    std::set<pack::UsageMaterial> materials;
-    for (const render::MaterialInstance& m : plan.materials) {
-        const pack::Pack& p = *packs[m.pack];
-        materials.insert({m.name, std::string(p.String(p.Shader(m.shader).value().name))});
+    std::set<pack::UsageMaterial> used;
+    for (const render::MaterialInstance* m : plan.list.materials) {
+        const pack::Pack& p = *packs[m->pack];
+        used.insert({m->name, std::string(p.String(p.Shader(m->shader).value().name))});
     }
-    out.usage.materials.assign(materials.begin(), materials.end());
+    out.usage.materials.assign(used.begin(), used.end());
     out.objects = plan.objects;
     out.draws = uint32_t(plan.draws.size());
     return out;

@@ -6,61 +6,16 @@
 
 #include "kiln/pack/engine_names.h"
 #include "render/renderer_state.h"
+#include "render/textures.h"
 #include "vk/pipeline_cache.h"
 
 namespace kiln::runtime {
-namespace {
-
-Status CreateRenderPass(Renderer::State& s) {
-    VkAttachmentDescription attachments[2]{};
-    attachments[0].format = s.color_format;
-    attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    attachments[1] = attachments[0];
-    attachments[1].format = s.depth_format;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &color;
-    subpass.pDepthStencilAttachment = &depth;
-    VkSubpassDependency done{};  // the copy to the read-back buffer waits for the colour writes
-    done.srcSubpass = 0;
-    done.dstSubpass = VK_SUBPASS_EXTERNAL;
-    done.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    done.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    done.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    done.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 2;
-    info.pAttachments = attachments;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 1;
-    info.pDependencies = &done;
-    if (VkResult r = vkCreateRenderPass(s.context.device, &info, nullptr, &s.render_pass);
-        r != VK_SUCCESS) {
-        return vk::VkError("cannot create the render pass", r);
-    }
-    return {};
-}
-
-}  // namespace
-
 Renderer::State::~State() {
     if (!context.device) {
         return;
     }
     vkDeviceWaitIdle(context.device);
+    scene_resources.reset();
     if (pipeline_cache) {
         if (!options.pipeline_cache.empty()) {
             // A destructor has no one to tell: a cache that cannot be saved is rebuilt next run.
@@ -77,8 +32,8 @@ Renderer::State::~State() {
     for (auto& [name, image] : default_textures) {
         vk::DestroyImage(context, image);
     }
-    if (render_pass) {
-        vkDestroyRenderPass(context.device, render_pass, nullptr);
+    for (auto& [key, pass] : render_passes) {
+        vkDestroyRenderPass(context.device, pass, nullptr);
     }
     vk::DestroyContext(context);
 }
@@ -91,20 +46,40 @@ std::vector<const pack::Pack*> Renderer::State::PackList() const {
     return out;
 }
 
+Status Renderer::State::RenderPass(const vk::TargetFormats& targets,
+                                   bool clear,
+                                   VkRenderPass& out) {
+    auto it = render_passes.find({targets, clear});
+    if (it == render_passes.end()) {
+        VkRenderPass pass = VK_NULL_HANDLE;
+        if (Status e = vk::CreateRenderPass(context, targets, clear, pass); !e.ok()) {
+            return e;
+        }
+        it = render_passes.emplace(std::pair{targets, clear}, pass).first;
+    }
+    out = it->second;
+    return {};
+}
+
 Status Renderer::State::GetPipeline(uint32_t pack,
                                     uint32_t variant,
                                     const vk::RenderState& state,
+                                    const vk::TargetFormats& targets,
                                     const vk::Pipeline*& out,
                                     uint32_t& created) {
     for (const PipelineEntry& p : pipelines) {
-        if (p.pack == pack && p.variant == variant && p.state == state) {
+        if (p.pack == pack && p.variant == variant && p.state == state && p.targets == targets) {
             out = &p.pipeline;
             return {};
         }
     }
-    PipelineEntry entry{pack, variant, state, {}};
-    vk::PipelineTargets targets{render_pass, 1};
-    if (Status e = vk::CreatePipeline(context, packs[pack]->pack, variant, state, targets,
+    PipelineEntry entry{pack, variant, state, targets, {}};
+    VkRenderPass compatible = VK_NULL_HANDLE;
+    if (Status e = RenderPass(targets, true, compatible); !e.ok()) {
+        return e;
+    }
+    const vk::PipelineTargets pipeline_targets{compatible, uint32_t(targets.colors.size())};
+    if (Status e = vk::CreatePipeline(context, packs[pack]->pack, variant, state, pipeline_targets,
                                       pipeline_cache, module_checker.get(), entry.pipeline);
         !e.ok()) {
         return e;
@@ -161,6 +136,64 @@ Status Renderer::State::DefaultTexture(const std::string& requested,
     return {};
 }
 
+SceneResources::SceneResources(Renderer::State& state,
+                               const Scene& scene,
+                               const ColorPipeline& color_pipeline)
+    : s(state),
+      id(scene.id),
+      color(&color_pipeline),
+      textures(std::make_unique<render::FrameTextures>(state, scene)) {}
+
+SceneResources::~SceneResources() {
+    for (auto& [key, buffers] : meshes) {
+        vk::DestroyBuffer(s.context, buffers.first);
+        vk::DestroyBuffer(s.context, buffers.second);
+    }
+}
+
+Status SceneResources::Buffers(const Scene& scene,
+                               uint32_t mesh,
+                               uint32_t primitive,
+                               const vk::Buffer*& vertices,
+                               const vk::Buffer*& indices) {
+    auto it = meshes.find({mesh, primitive});
+    if (it == meshes.end()) {
+        const Primitive& p = scene.meshes[mesh].primitives[primitive];
+        std::pair<vk::Buffer, vk::Buffer> buffers;
+        if (Status e =
+                vk::CreateBufferWithData(s.context,
+                                         {reinterpret_cast<const uint8_t*>(p.vertices.data()),
+                                          p.vertices.size() * sizeof(MeshVertex)},
+                                         VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, buffers.first);
+            !e.ok()) {
+            return e;
+        }
+        if (Status e = vk::CreateBufferWithData(
+                s.context,
+                {reinterpret_cast<const uint8_t*>(p.indices.data()), p.indices.size() * 4},
+                VK_BUFFER_USAGE_INDEX_BUFFER_BIT, buffers.second);
+            !e.ok()) {
+            vk::DestroyBuffer(s.context, buffers.first);
+            return e;
+        }
+        uploads += 2;
+        it = meshes.emplace(std::pair{mesh, primitive}, buffers).first;
+    }
+    vertices = &it->second.first;
+    indices = &it->second.second;
+    return {};
+}
+
+SceneResources& Renderer::State::ResourcesFor(const Scene& scene, const ColorPipeline& color) {
+    if (!scene_resources || scene.id == 0 || scene_resources->id != scene.id ||
+        scene_resources->color != &color) {
+        scene_resources.reset();  // frames wait for the device: nothing still uses them
+        scene_resources = std::make_unique<SceneResources>(*this, scene, color);
+    }
+    scene_resources->textures->SetScene(scene);
+    return *scene_resources;
+}
+
 Renderer::Renderer() = default;
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
@@ -189,9 +222,6 @@ Result<Renderer> Renderer::Create(const RendererOptions& options) {
         return Error{DiagCode::kRenderFailed,
                      "the device has no depth-stencil format (D32_SFLOAT_S8_UINT or "
                      "D24_UNORM_S8_UINT)"};
-    }
-    if (Status e = CreateRenderPass(*s); !e.ok()) {
-        return e.error();
     }
     std::string note;
     if (Status e =

@@ -85,8 +85,8 @@ TextureBinding UnsetTexture(std::string_view name) {
 }
 
 FrameTextures::~FrameTextures() {
-    for (auto& [key, image] : images_) {
-        vk::DestroyImage(s_.context, image);
+    for (auto& [key, uploaded] : images_) {
+        vk::DestroyImage(s_.context, uploaded.image);
     }
     for (auto& [shape, image] : ambient_) {
         vk::DestroyImage(s_.context, image);
@@ -94,10 +94,17 @@ FrameTextures::~FrameTextures() {
 }
 
 Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
+    if (scene_->ambient != ambient_value_) {  // the scene's ambient changed since the last frame
+        for (auto& [old_shape, image] : ambient_) {
+            vk::DestroyImage(s_.context, image);
+        }
+        ambient_.clear();
+        ambient_value_ = scene_->ambient;
+    }
     auto it = ambient_.find(shape);
     if (it == ambient_.end()) {
         // Linear radiance above 1 needs a float texel; RGBA16F is filterable on every device.
-        const glm::vec4 radiance(scene_.ambient, 1.0f);
+        const glm::vec4 radiance(scene_->ambient, 1.0f);
         std::array<uint16_t, 4> half{};
         for (int i = 0; i < 4; ++i) {
             // guard: beyond binary16's largest value the texel would be infinite
@@ -154,8 +161,8 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
     }
     std::string key;
     if (binding.source == TextureBinding::Source::kSceneImage) {
-        if (binding.image < 0 || size_t(binding.image) >= scene_.images.size() ||
-            scene_.images[size_t(binding.image)].rgba8.empty()) {
+        if (binding.image < 0 || size_t(binding.image) >= scene_->images.size() ||
+            scene_->images[size_t(binding.image)].rgba8.empty()) {
             return Default(binding, shape,
                            "image " + std::to_string(binding.image) +
                                " has no pixels; using the default texture",
@@ -174,7 +181,7 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
         std::vector<uint8_t> rgba;
         std::string name;
         if (binding.source == TextureBinding::Source::kSceneImage) {
-            const runtime::SceneImage& si = scene_.images[size_t(binding.image)];
+            const runtime::SceneImage& si = scene_->images[size_t(binding.image)];
             w = si.width;
             h = si.height;
             rgba = si.rgba8;
@@ -196,20 +203,22 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
         }
         const uint32_t limit = s_.context.properties.limits.maxImageDimension2D;
         const uint32_t w0 = w, h0 = h;
+        std::string warning;
         if (FitToLimit(w, h, rgba, limit)) {
-            out.warning = name + " is " + std::to_string(w0) + "x" + std::to_string(h0) +
-                          ", larger than the device's limit of " + std::to_string(limit) +
-                          "; downscaled to " + std::to_string(w) + "x" + std::to_string(h);
+            warning = name + " is " + std::to_string(w0) + "x" + std::to_string(h0) +
+                      ", larger than the device's limit of " + std::to_string(limit) +
+                      "; downscaled to " + std::to_string(w) + "x" + std::to_string(h);
         }
         vk::Image image;
         if (Status e = vk::CreateTexture(s_.context, w, h, rgba, binding.srgb, image); !e.ok()) {
             return e;
         }
-        it = images_.emplace(std::pair{key, binding.srgb}, image).first;
+        it = images_.emplace(std::pair{key, binding.srgb}, Uploaded{image, warning}).first;
     }
-    out.view = it->second.view;
-    out.width = it->second.width;
-    out.height = it->second.height;
+    out.view = it->second.image.view;
+    out.width = it->second.image.width;
+    out.height = it->second.image.height;
+    out.warning = it->second.warning;
     return {};
 }
 

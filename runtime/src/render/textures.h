@@ -1,8 +1,10 @@
-// Textures for one frame: scene images and .material files uploaded on first use (in the colour
+// Textures of a scene: scene images and .material files uploaded on first use (in the colour
 // space the property asks for), the renderer's default textures otherwise, each in the shape
-// (2D, 3D, cube, arrays) the shader declares.
+// (2D, 3D, cube, arrays) the shader declares. Kept with the scene's resources between frames.
 #ifndef KILN_RUNTIME_RENDER_TEXTURES_H_
 #define KILN_RUNTIME_RENDER_TEXTURES_H_
+
+#include <glm/vec3.hpp>
 
 #include <map>
 #include <string>
@@ -32,7 +34,7 @@ TextureBinding UnsetTexture(std::string_view name);
 class FrameTextures {
   public:
     FrameTextures(runtime::Renderer::State& s, const runtime::Scene& scene)
-        : s_(s), scene_(scene) {}
+        : s_(s), scene_(&scene) {}
     ~FrameTextures();
     FrameTextures(const FrameTextures&) = delete;
     FrameTextures& operator=(const FrameTextures&) = delete;
@@ -40,6 +42,8 @@ class FrameTextures {
     // Image files and scene images are 2D: a shader that declares another shape gets the
     // binding's default texture in its shape, with a warning.
     Status Get(const TextureBinding& binding, vk::ImageShape shape, BoundTexture& out);
+    // The scene object of this frame (a copy of the same scene is drawn with the same images).
+    void SetScene(const runtime::Scene& scene) { scene_ = &scene; }
 
   private:
     Status Default(const TextureBinding& binding,
@@ -48,10 +52,16 @@ class FrameTextures {
                    BoundTexture& out);
     Status Ambient(vk::ImageShape shape, BoundTexture& out);
     runtime::Renderer::State& s_;
-    const runtime::Scene& scene_;
-    // (source key, srgb) -> uploaded image; the key is "#<image>" or the file path.
-    std::map<std::pair<std::string, bool>, vk::Image> images_;
+    const runtime::Scene* scene_;
+    // (source key, srgb) -> uploaded image, with the warning its upload gave (downscaled); the
+    // key is "#<image>" or the file path.
+    struct Uploaded {
+        vk::Image image;
+        std::string warning;
+    };
+    std::map<std::pair<std::string, bool>, Uploaded> images_;
     std::map<vk::ImageShape, vk::Image> ambient_;  // Source::kAmbient, per shape
+    glm::vec3 ambient_value_{-1.0f};               // the radiance ambient_ holds
 };
 
 }  // namespace kiln::render

@@ -275,6 +275,7 @@ Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
         return loaded.error();
     }
     Scene scene;
+    scene.id = NewSceneId();
     scene.path = path;
     for (const tinygltf::Image& img : model.images) {
         SceneImage si;
@@ -307,6 +308,7 @@ Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
                 return read.error();
             }
             if (!prim.indices.empty()) {
+                ComputeBounds(prim);
                 mesh.primitives.push_back(std::move(prim));
             }
         }

@@ -1,7 +1,8 @@
-// GenerateTangents, and the material sidecar applied to a scene.
+// GenerateTangents, local bounds, scene ids, and the material sidecar applied to a scene.
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -11,6 +12,21 @@
 #include "kiln/material/sidecar.h"
 
 namespace kiln::runtime {
+
+void ComputeBounds(Primitive& p) {
+    p.bounds_min = glm::vec3(std::numeric_limits<float>::max());
+    p.bounds_max = -p.bounds_min;
+    for (const MeshVertex& v : p.vertices) {
+        const glm::vec3 position = glm::make_vec3(v.position);
+        p.bounds_min = glm::min(p.bounds_min, position);
+        p.bounds_max = glm::max(p.bounds_max, position);
+    }
+}
+
+uint64_t NewSceneId() {
+    static std::atomic<uint64_t> next{1};
+    return next.fetch_add(1, std::memory_order_relaxed);
+}
 
 // Lengyel, "Computing Tangent Space Basis Vectors for an Arbitrary Mesh" (2001): per triangle
 // T = (dP1 dv2 - dP2 dv1) / det, B = (dP2 du1 - dP1 du2) / det, summed per vertex, then

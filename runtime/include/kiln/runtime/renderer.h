@@ -34,13 +34,20 @@ struct RendererOptions {
     bool trust_packs = false;
 };
 
+// How the forward path lights an object with the lights other than its main directional light
+// (docs/runtime.md, "Light modes"): kAuto is Unity's ranking (the brightest pixel_lights per
+// pixel, up to four point lights per vertex, the rest in spherical harmonics); the others put
+// every such light in one mode (kVertex: four point lights per vertex, the rest in SH).
+enum class LightMode { kAuto, kPixel, kVertex, kSH };
+
 struct FrameSettings {
     uint32_t width = 960, height = 540;
     // A scene camera index; kCameraDefault: the first, or one framing the scene when it has
     // none; kCameraAuto: one framing the scene. Other negative values are an error.
     static constexpr int kCameraDefault = -1, kCameraAuto = -2;
     int camera = kCameraDefault;
-    uint32_t pixel_lights = 4;   // at most this many additive (ForwardAdd) passes per object
+    uint32_t pixel_lights = 4;  // at most this many additive (ForwardAdd) passes per object
+    LightMode light_mode = LightMode::kAuto;
     float time = 0;              // seconds, for _Time
     glm::vec3 background{0.0f};  // linear clear colour
     bool default_light = true;   // light a scene without lights by one directional light
@@ -51,7 +58,12 @@ struct FrameStats {
     uint32_t base_passes = 0;  // ForwardBase (or untagged) draws
     uint32_t add_passes = 0;   // ForwardAdd draws
     uint32_t vertex_lit = 0;   // base draws with VERTEXLIGHT_ON
+    uint32_t sh_lit = 0;       // base draws with lights in their spherical harmonics
     uint32_t pipelines_created = 0;
+    // Device uploads this frame: vertex and index buffers, and material instances resolved. A
+    // scene with an id (Scene::id) uploads them on its first frame only.
+    uint32_t buffers_uploaded = 0;
+    uint32_t materials_resolved = 0;
     std::string camera;  // which camera was used
     // What the frame did not render as asked (K0012-K0015, K0024), each once; the file is the
     // scene, or the pack or cache a warning is about.

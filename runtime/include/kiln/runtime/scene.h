@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -29,6 +30,10 @@ struct Primitive {
     int material = -1;              // -1: glTF's default material
     bool has_tangents = false;      // from the file (else generated when there are UVs)
     bool has_colors = false;
+    // Local (object-space) bounds, set once by ComputeBounds when the scene is loaded; min > max
+    // when they are not set, and the renderer then computes them from the vertices each frame.
+    glm::vec3 bounds_min{std::numeric_limits<float>::max()};
+    glm::vec3 bounds_max{-std::numeric_limits<float>::max()};
 };
 
 struct Mesh {
@@ -101,6 +106,11 @@ struct Instance {
 
 struct Scene {
     std::string path;  // the file it came from
+    // Nonzero (NewSceneId(), set by LoadGltf): the renderer keeps the scene's vertex and index
+    // buffers, images and material instances on the device between frames and re-uses them while
+    // it renders scenes with this id. A scene with an id must not change: after editing one, give
+    // it a new id. 0: everything is uploaded again for each frame.
+    uint64_t id = 0;
     std::vector<Mesh> meshes;
     std::vector<SceneImage> images;
     std::vector<SceneMaterial> materials;
@@ -125,6 +135,12 @@ Status LoadMaterialSidecar(const std::string& path, Scene& scene);
 // Fills tangents from positions, normals and UV0 (per-triangle UV derivatives accumulated per
 // vertex, Gram-Schmidt against the normal, handedness from the bitangent).
 void GenerateTangents(Primitive& primitive);
+
+// Sets a primitive's local bounds from its vertices (min > max when it has none).
+void ComputeBounds(Primitive& primitive);
+
+// A process-wide unique, nonzero scene id.
+uint64_t NewSceneId();
 
 // World-space bounds of every instance: (min, max); an empty scene gives a unit box.
 std::pair<glm::vec3, glm::vec3> SceneBounds(const Scene& scene);

@@ -1,0 +1,33 @@
+// Render passes for a frame's passes (render/frame.h): one subpass over the pass's colour targets
+// and depth buffer, cleared or loaded. Targets stay in their attachment layouts between passes;
+// the dependencies order each pass after the previous one's writes and before the next reads
+// (attachments, sampling or the read-back copy).
+#ifndef KILN_RUNTIME_VK_RENDER_PASS_H_
+#define KILN_RUNTIME_VK_RENDER_PASS_H_
+
+#include <compare>
+#include <vector>
+
+#include "vk/context.h"
+
+namespace kiln::vk {
+
+// The formats of a pass's targets: pipelines are created against them (a pipeline works in any
+// render pass with the same formats, whatever its load operations).
+struct TargetFormats {
+    std::vector<VkFormat> colors;
+    VkFormat depth = VK_FORMAT_UNDEFINED;  // none
+
+    auto operator<=>(const TargetFormats&) const = default;
+};
+
+// `clear`: the targets start undefined and are cleared; else they are loaded in their attachment
+// layouts (a previous pass of the frame wrote them).
+Status CreateRenderPass(const Context& c,
+                        const TargetFormats& formats,
+                        bool clear,
+                        VkRenderPass& out);
+
+}  // namespace kiln::vk
+
+#endif  // KILN_RUNTIME_VK_RENDER_PASS_H_
