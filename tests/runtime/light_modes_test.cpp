@@ -22,8 +22,8 @@ constexpr double kPi = 3.14159265358979323846;
 runtime::Scene FacingSphere(const std::string& material) {
     runtime::Scene scene = SphereOnFloor(RuntimeData(material));
     scene.instances.pop_back();  // no floor
-    scene.cameras[0].world = glm::inverse(
-        glm::lookAtRH(glm::vec3(0, 1, 5), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0)));
+    scene.cameras[0].world =
+        glm::inverse(glm::lookAtRH(glm::vec3(0, 1, 5), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0)));
     return scene;
 }
 
@@ -131,8 +131,7 @@ TEST_F(RuntimeTest, VertexLightsAreShade4PointLightsAtTheVertices) {
                     Punctual(T::kPoint, {-2, 1.5f, 2}, {1, 1, 1}, 30, 4),
                     Punctual(T::kPoint, {0, 4, 0.5f}, {1, 0.4f, 0.2f}, 25)};
     runtime::FrameStats stats;
-    const runtime::LinearImage image =
-        Render(scene, Settings(runtime::LightMode::kVertex), &stats);
+    const runtime::LinearImage image = Render(scene, Settings(runtime::LightMode::kVertex), &stats);
     EXPECT_EQ(stats.vertex_lit, 1u);
     EXPECT_EQ(stats.sh_lit, 0u);
     const glm::dvec3 vertex(0, 1, 1), n(0, 0, 1);
@@ -198,6 +197,27 @@ TEST_F(RuntimeTest, OneEightAndSixtyFourPointLightsInEveryMode) {
             }
         }
     }
+}
+
+// Unity's gradient ambient: the probe is the trilight's projection (the reference's closed form,
+// itself checked against numerical integration), so the sphere's centre (normal +z, on the
+// horizon) shows ShadeSH9 of it within 1e-3 relative, and the upper half sees the sky.
+TEST_F(RuntimeTest, TrilightAmbientIsTheGradientsProjection) {
+    runtime::Scene scene = FacingSphere("light_modes.material");
+    scene.ambient_mode = runtime::AmbientMode::kTrilight;
+    scene.ambient = glm::vec3(0.4f, 0.5f, 0.9f);  // sky
+    scene.ambient_equator = glm::vec3(0.2f, 0.2f, 0.15f);
+    scene.ambient_ground = glm::vec3(0.05f, 0.03f, 0.02f);
+    const runtime::LinearImage image = Render(scene, Settings(runtime::LightMode::kAuto));
+    reference::SH9 sh;
+    reference::AddTrilight(sh, glm::dvec3(scene.ambient), glm::dvec3(scene.ambient_equator),
+                           glm::dvec3(scene.ambient_ground));
+    ExpectClose(CentrePixel(image), reference::AmbientFromSH(sh, {0, 0, 1}), 1e-3);
+    // A quarter of the way up and down the image, both on the sphere: sky above, ground below.
+    auto at = [&](uint32_t y) {
+        return double(image.rgba[(size_t(y) * image.width + image.width / 2) * 4 + 2]);
+    };
+    EXPECT_GT(at(image.height / 2 - image.height / 8), at(image.height / 2 + image.height / 8));
 }
 
 }  // namespace

@@ -1,11 +1,14 @@
 // kiln render SCENE.gltf -o OUT.png: the runtime library driven from the command line.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "kiln/base/files.h"
@@ -31,6 +34,35 @@ std::string ParseCamera(const std::string& text, int& camera) {
     return "";
 }
 
+// --ambient: "R,G,B" (one linear colour) or "SKY:EQUATOR:GROUND", each R,G,B (Unity's gradient).
+std::string ParseAmbient(const std::string& text, runtime::Scene* scene) {
+    std::vector<glm::vec3> colours;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t end = std::min(text.find(':', start), text.size());
+        const std::string part = text.substr(start, end - start);
+        glm::vec3 c(0.0f);
+        char tail = 0;
+        if (std::sscanf(part.c_str(), "%f,%f,%f%c", &c.r, &c.g, &c.b, &tail) != 3 ||
+            !std::isfinite(c.r + c.g + c.b) || c.r < 0 || c.g < 0 || c.b < 0) {
+            return "expected R,G,B (linear, non-negative) or SKY:EQUATOR:GROUND of R,G,B each";
+        }
+        colours.push_back(c);
+        start = end + 1;
+    }
+    if (colours.size() != 1 && colours.size() != 3) {
+        return "expected one colour (flat) or three, SKY:EQUATOR:GROUND (a gradient)";
+    }
+    if (scene) {
+        scene->ambient_mode =
+            colours.size() == 3 ? runtime::AmbientMode::kTrilight : runtime::AmbientMode::kFlat;
+        scene->ambient = colours[0];
+        scene->ambient_equator = colours[colours.size() == 3 ? 1 : 0];
+        scene->ambient_ground = colours[colours.size() == 3 ? 2 : 0];
+    }
+    return "";
+}
+
 struct RenderArgs {
     std::string scene, output = "out.png", exr, materials, usage, pipeline_cache;
     std::vector<std::string> packs;
@@ -38,7 +70,7 @@ struct RenderArgs {
     runtime::ColorOptions color;
     bool validation = false, closest = false, no_default_light = false, trust = false;
     bool dry_run = false, allow_missing = false;
-    std::string device, camera;
+    std::string device, camera, ambient;
 };
 
 // --dry-run: the frame's lookups without a device (kiln/runtime/plan.h), written to --usage.
@@ -123,16 +155,22 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                     "How lights other than the main directional one light an object: auto "
                     "(Unity's: --pixel-lights per pixel, 4 point lights per vertex, the rest "
                     "in SH), pixel, vertex or sh (default auto)")
-        ->transform(CLI::CheckedTransformer(
-            std::map<std::string, runtime::LightMode>{{"auto", runtime::LightMode::kAuto},
-                                                      {"pixel", runtime::LightMode::kPixel},
-                                                      {"vertex", runtime::LightMode::kVertex},
-                                                      {"sh", runtime::LightMode::kSH}},
-            CLI::ignore_case)
-                        .description(""))
+        ->transform(
+            CLI::CheckedTransformer(
+                std::map<std::string, runtime::LightMode>{{"auto", runtime::LightMode::kAuto},
+                                                          {"pixel", runtime::LightMode::kPixel},
+                                                          {"vertex", runtime::LightMode::kVertex},
+                                                          {"sh", runtime::LightMode::kSH}},
+                CLI::ignore_case)
+                .description(""))
         ->option_text("auto|pixel|vertex|sh");
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
     cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
+    cmd->add_option("--ambient", a->ambient,
+                    "Ambient light, linear: one colour, or Unity's gradient SKY:EQUATOR:GROUND "
+                    "(default: the sidecar's, else 0.05,0.05,0.05)")
+        ->check(CLI::Validator([](std::string& v) { return ParseAmbient(v, nullptr); }, ""))
+        ->option_text("R,G,B|R,G,B:R,G,B:R,G,B");
     cmd->add_flag("--no-default-light", a->no_default_light,
                   "Do not add a directional light to scenes that have none");
     cmd->add_option("--ocio-config", a->color.config_path,
@@ -201,6 +239,9 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                 return fail(read.error());
             }
         }
+        if (!a->ambient.empty()) {
+            ParseAmbient(a->ambient, &scene);  // validated by the option's check
+        }
         Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create(a->color);
         if (!made_color) {
             return fail(made_color.error());
@@ -260,8 +301,7 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             "lights, %u with SH lights), %u pipelines, device '%s', %s%s\n",
             a->output.c_str(), image.width, image.height, stats.camera.c_str(), stats.objects,
             stats.base_passes, stats.add_passes, stats.vertex_lit, stats.sh_lit,
-            stats.pipelines_created,
-            renderer.DeviceName().c_str(), color.description().c_str(),
+            stats.pipelines_created, renderer.DeviceName().c_str(), color.description().c_str(),
             a->validation ? ", validation messages: 0" : "");
         return finish(int(kExitOk));
     };

@@ -1,5 +1,7 @@
 #include "kiln/material/sidecar.h"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <string>
 
@@ -15,6 +17,20 @@ using Kind = JsonValue::Kind;
 Error At(const std::string& path, TextPos pos, const std::string& message) {
     return Error{DiagCode::kBadScene, path + ":" + std::to_string(pos.line) + ":" +
                                           std::to_string(pos.column) + ": " + message};
+}
+
+// Three numbers, linear RGB.
+bool ReadColour(const JsonValue& value, std::array<float, 3>& out) {
+    if (value.kind != Kind::kArray || value.items.size() != 3) {
+        return false;
+    }
+    for (size_t c = 0; c < 3; ++c) {
+        if (value.items[c].kind != Kind::kNumber) {
+            return false;
+        }
+        out[c] = float(value.items[c].number);
+    }
+    return true;
 }
 
 }  // namespace
@@ -55,13 +71,33 @@ Result<MaterialSidecar> ReadMaterialSidecar(const std::string& path) {
                 out.materials[name] = (dir / value.items[m].string).lexically_normal().string();
             }
         } else if (key == "ambient") {
-            bool ok = value.kind == Kind::kArray && value.items.size() == 3;
-            for (size_t c = 0; ok && c < 3; ++c) {
-                ok = value.items[c].kind == Kind::kNumber;
-                out.ambient[c] = ok ? float(value.items[c].number) : 0.0f;
-            }
-            if (!ok) {
-                return At(path, value.pos, "'ambient' must be three numbers (linear RGB)");
+            if (value.kind == Kind::kObject) {
+                out.trilight = true;
+                const std::pair<const char*, std::array<float, 3>*> slots[] = {
+                    {"sky", &out.ambient}, {"equator", &out.equator}, {"ground", &out.ground}};
+                for (const auto& [name, slot] : slots) {
+                    const auto it =
+                        std::find_if(value.keys.begin(), value.keys.end(),
+                                     [&, n = name](const auto& k) { return k.first == n; });
+                    if (it == value.keys.end()) {
+                        return At(path, value.pos,
+                                  std::string("a gradient 'ambient' needs '") + name +
+                                      "' (sky, equator and ground, each three numbers)");
+                    }
+                    const JsonValue& colour = value.items[size_t(it - value.keys.begin())];
+                    if (!ReadColour(colour, *slot)) {
+                        return At(path, colour.pos,
+                                  std::string("'") + name + "' must be three numbers (linear RGB)");
+                    }
+                }
+                if (value.keys.size() != 3) {
+                    return At(path, value.pos,
+                              "a gradient 'ambient' has exactly sky, equator and ground");
+                }
+            } else if (!ReadColour(value, out.ambient)) {
+                return At(path, value.pos,
+                          "'ambient' must be three numbers (linear RGB) or {\"sky\", "
+                          "\"equator\", \"ground\"} of three numbers each");
             }
             out.has_ambient = true;
         } else if (key != "description") {

@@ -37,6 +37,32 @@ void AddConstantRadiance(SH9& sh, const glm::dvec3& color) {
     sh.L[0] += color * std::sqrt(4.0 * kPi);  // integral of Y_00 = 1 / sqrt(4 pi) over 4 pi sr
 }
 
+glm::dvec3 TrilightRadiance(const glm::dvec3& d,
+                            const glm::dvec3& sky,
+                            const glm::dvec3& equator,
+                            const glm::dvec3& ground) {
+    const double y = SafeNormalize(d).y;
+    return y >= 0 ? equator + (sky - equator) * y : equator + (ground - equator) * -y;
+}
+
+void AddTrilight(SH9& sh,
+                 const glm::dvec3& sky,
+                 const glm::dvec3& equator,
+                 const glm::dvec3& ground) {
+    // L depends on y alone, and dOmega = dy dphi: over a circle of constant y, x^2 and z^2
+    // average (1 - y^2) / 2 and the odd terms vanish. With I0 = int L dy = E + (S + G) / 2,
+    // I1 = int L y dy = (S - G) / 3 and I2 = int L (3y^2 - 1) dy = (S + G - 2E) / 4 over
+    // [-1, 1]: L_00 = 2 pi c0 I0, L_(y) = 2 pi c1 I1, and the (3z^2 - 1) and (x^2 - y^2) terms,
+    // whose circle averages are both (1 - 3y^2) / 2, get -pi c I2.
+    const glm::dvec3 i0 = equator + (sky + ground) * 0.5;
+    const glm::dvec3 i1 = (sky - ground) / 3.0;
+    const glm::dvec3 i2 = (sky + ground - 2.0 * equator) / 4.0;
+    sh.L[0] += 2.0 * kPi * 0.282095 * i0;
+    sh.L[1] += 2.0 * kPi * 0.488603 * i1;
+    sh.L[6] += -kPi * 0.315392 * i2;
+    sh.L[8] += -kPi * 0.546274 * i2;
+}
+
 glm::dvec3 Irradiance(const SH9& sh, const glm::dvec3& n) {
     const double x = n.x, y = n.y, z = n.z;
     const auto& L = sh.L;

@@ -206,7 +206,7 @@ struct DrawBuilder {
             request.light, additive ? std::vector<const Light*>{} : request.vertex);
         if (!additive && !request.sh.empty()) {
             // Read before the frame's probe: this object's ambient plus its SH lights.
-            light_values.merge(render::ProbeValues(scene.ambient, request.sh, request.center));
+            light_values.merge(render::ProbeValues(scene, request.sh, request.center));
             ++stats.sh_lit;
         }
         const Values object = render::ObjectValues(request.instance->world);

@@ -149,14 +149,16 @@ Values FrameValues(const runtime::Scene& scene,
     for (const auto& [name, value] : CameraValues(camera)) {
         v[name] = value;
     }
-    // A uniform sky: every ambient colour is the same radiance. UNITY_LIGHTMODEL_AMBIENT is
-    // glstate_lightmodel_ambient * 2, as in Unity.
-    const glm::vec4 ambient(scene.ambient, 1);
-    v["unity_AmbientSky"] = Vec(ambient);
-    v["unity_AmbientEquator"] = Vec(ambient);
-    v["unity_AmbientGround"] = Vec(ambient);
-    v["unity_IndirectSpecColor"] = Vec(ambient);
-    v["glstate_lightmodel_ambient"] = Vec(ambient * 0.5f);
+    // Flat: every ambient colour is the same radiance; trilight: the three.
+    // UNITY_LIGHTMODEL_AMBIENT is glstate_lightmodel_ambient * 2, the sky colour (Unity's
+    // RenderSettings.ambientLight); unity_IndirectSpecColor is the mean radiance over the sphere.
+    const bool trilight = scene.ambient_mode == runtime::AmbientMode::kTrilight;
+    const glm::vec4 sky(scene.ambient, 1);
+    v["unity_AmbientSky"] = Vec(sky);
+    v["unity_AmbientEquator"] = Vec(trilight ? glm::vec4(scene.ambient_equator, 1) : sky);
+    v["unity_AmbientGround"] = Vec(trilight ? glm::vec4(scene.ambient_ground, 1) : sky);
+    v["unity_IndirectSpecColor"] = Vec(glm::vec4(MeanAmbient(scene), 1));
+    v["glstate_lightmodel_ambient"] = Vec(sky * 0.5f);
     // The reflection probe is the ambient sky itself (render/textures.cpp): a linear float
     // cube (DecodeHDR multiplier 1, exponent 1), one probe (blend weight BoxMin.w = 1), no box
     // projection (ProbePosition.w = 0).
@@ -166,8 +168,16 @@ Values FrameValues(const runtime::Scene& scene,
         v[std::string(probe) + "_BoxMax"] = {1e30f, 1e30f, 1e30f, 1};
         v[std::string(probe) + "_ProbePosition"] = {0, 0, 0, 0};
     }
-    v.merge(ProbeValues(scene.ambient, {}, glm::vec3(0.0f)));
+    v.merge(ProbeValues(scene, {}, glm::vec3(0.0f)));
     return v;
+}
+
+glm::vec3 MeanAmbient(const runtime::Scene& scene) {
+    if (scene.ambient_mode == runtime::AmbientMode::kFlat) {
+        return scene.ambient;
+    }
+    // The mean of the trilight gradient over the sphere: y is uniform on [-1, 1].
+    return scene.ambient_equator * 0.5f + (scene.ambient + scene.ambient_ground) * 0.25f;
 }
 
 std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const glm::vec3& point) {
@@ -186,16 +196,22 @@ std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const
     return {lux * float(falloff), l};
 }
 
-Values ProbeValues(const glm::vec3& ambient,
+Values ProbeValues(const runtime::Scene& scene,
                    const std::vector<const runtime::Light*>& lights,
                    const glm::vec3& center) {
-    // A constant sky of radiance `ambient`: ShadeSH9 then returns E / pi = ambient. A light of
+    // A constant sky of radiance `ambient`: ShadeSH9 then returns E / pi = ambient (a trilight
+    // gradient: its projection, reference::AddTrilight). A light of
     // illuminance E0 from l adds E0 * Y_lm(l) (radiance times solid angle), so ShadeSH9 gives
     // about E0 / pi * max(n . l, 0) = _LightColor0 * (n . l), what a pixel light's diffuse
     // term would (the order-2 approximation of the clamped cosine, Ramamoorthi and Hanrahan
     // 2001).
     reference::SH9 sh;
-    reference::AddConstantRadiance(sh, glm::dvec3(ambient));
+    if (scene.ambient_mode == runtime::AmbientMode::kTrilight) {
+        reference::AddTrilight(sh, glm::dvec3(scene.ambient), glm::dvec3(scene.ambient_equator),
+                               glm::dvec3(scene.ambient_ground));
+    } else {
+        reference::AddConstantRadiance(sh, glm::dvec3(scene.ambient));
+    }
     for (const runtime::Light* light : lights) {
         const auto [lux, l] = IlluminanceAt(*light, center);
         reference::AddDirectionalLight(sh, glm::dvec3(l), glm::dvec3(lux));

@@ -43,14 +43,17 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
 // UnityPerDraw.
 Values ObjectValues(const glm::mat4& world);
 
-// The light probe unity_SH* of an object at `center`: the scene's ambient (a constant sky of that
-// radiance, so ShadeSH9 returns it) plus each of `lights` projected as a distant light from
-// its direction at the centre, with its illuminance there (distance attenuation and spot cone
-// as the pixel path computes them), as Unity projects the lights it does not draw per pixel or
-// per vertex.
-Values ProbeValues(const glm::vec3& ambient,
+// The light probe unity_SH* of an object at `center`: the scene's ambient (flat: a constant sky
+// of that radiance, so ShadeSH9 returns it; trilight: the gradient's projection) plus each of
+// `lights` projected as a distant light from its direction at the centre, with its illuminance
+// there (distance attenuation and spot cone as the pixel path computes them), as Unity projects the
+// lights it does not draw per pixel or per vertex.
+Values ProbeValues(const runtime::Scene& scene,
                    const std::vector<const runtime::Light*>& lights,
                    const glm::vec3& center);
+
+// The scene's ambient radiance averaged over the sphere (unity_IndirectSpecColor).
+glm::vec3 MeanAmbient(const runtime::Scene& scene);
 
 // The light's illuminance (lux, times its colour) at `point`, on a surface facing it, and the unit
 // direction from `point` towards it.

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <vector>
 
+#include "render/frame_values.h"
+
 namespace kiln::render {
 namespace {
 
@@ -94,27 +96,43 @@ FrameTextures::~FrameTextures() {
 }
 
 Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
-    if (scene_->ambient != ambient_value_) {  // the scene's ambient changed since the last frame
+    const AmbientKey key{scene_->ambient_mode, scene_->ambient, scene_->ambient_equator,
+                         scene_->ambient_ground};
+    if (!(key == ambient_key_)) {  // the scene's ambient changed since the last frame
         for (auto& [old_shape, image] : ambient_) {
             vk::DestroyImage(s_.context, image);
         }
         ambient_.clear();
-        ambient_value_ = scene_->ambient;
+        ambient_key_ = key;
     }
     auto it = ambient_.find(shape);
     if (it == ambient_.end()) {
         // Linear radiance above 1 needs a float texel; RGBA16F is filterable on every device.
-        const glm::vec4 radiance(scene_->ambient, 1.0f);
-        std::array<uint16_t, 4> half{};
-        for (int i = 0; i < 4; ++i) {
-            // guard: beyond binary16's largest value the texel would be infinite
-            half[size_t(i)] = glm::packHalf1x16(std::min(radiance[i], 65504.0f));
+        // A trilight cube has the sky on +Y, the ground on -Y and the equator on the sides; other
+        // shapes hold the mean radiance.
+        const bool cube = shape == vk::ImageShape::kCube || shape == vk::ImageShape::kCubeArray;
+        const bool trilight = scene_->ambient_mode == runtime::AmbientMode::kTrilight;
+        std::vector<glm::vec3> faces;
+        if (cube && trilight) {
+            const glm::vec3 e = scene_->ambient_equator;
+            faces = {e, e, scene_->ambient, scene_->ambient_ground, e, e};
+        } else {
+            faces = {MeanAmbient(*scene_)};
         }
-        std::array<uint8_t, 8> texel{};
-        std::memcpy(texel.data(), half.data(), texel.size());
+        std::vector<uint8_t> texels;
+        for (const glm::vec3& face : faces) {
+            const glm::vec4 radiance(face, 1.0f);
+            std::array<uint16_t, 4> half{};
+            for (int i = 0; i < 4; ++i) {
+                // guard: beyond binary16's largest value the texel would be infinite
+                half[size_t(i)] = glm::packHalf1x16(std::min(radiance[i], 65504.0f));
+            }
+            const auto* bytes = reinterpret_cast<const uint8_t*>(half.data());
+            texels.insert(texels.end(), bytes, bytes + 8);
+        }
         vk::Image image;
         if (Status e = vk::CreateConstantImage(s_.context, shape, VK_FORMAT_R16G16B16A16_SFLOAT,
-                                               texel, image);
+                                               texels, image);
             !e.ok()) {
             return e;
         }

@@ -61,7 +61,12 @@ class FrameTextures {
     };
     std::map<std::pair<std::string, bool>, Uploaded> images_;
     std::map<vk::ImageShape, vk::Image> ambient_;  // Source::kAmbient, per shape
-    glm::vec3 ambient_value_{-1.0f};               // the radiance ambient_ holds
+    struct AmbientKey {                            // the ambient ambient_ holds
+        runtime::AmbientMode mode = runtime::AmbientMode::kFlat;
+        glm::vec3 sky{-1.0f}, equator{-1.0f}, ground{-1.0f};
+        bool operator==(const AmbientKey&) const = default;
+    };
+    AmbientKey ambient_key_;
 };
 
 }  // namespace kiln::render

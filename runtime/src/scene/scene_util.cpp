@@ -91,9 +91,16 @@ Status LoadMaterialSidecar(const std::string& path, Scene& scene) {
     for (const auto& [name, file] : read.value().materials) {
         scene.material_files[name] = file;
     }
-    if (read.value().has_ambient) {
-        const auto& a = read.value().ambient;
-        scene.ambient = glm::vec3(a[0], a[1], a[2]);
+    const material::MaterialSidecar& sidecar = read.value();
+    if (sidecar.has_ambient) {
+        const auto vec = [](const std::array<float, 3>& a) { return glm::vec3(a[0], a[1], a[2]); };
+        scene.ambient_mode = sidecar.trilight ? AmbientMode::kTrilight : AmbientMode::kFlat;
+        scene.ambient = vec(sidecar.ambient);
+        scene.ambient_equator = vec(sidecar.equator);
+        scene.ambient_ground = vec(sidecar.ground);
+        if (!sidecar.trilight) {
+            scene.ambient_equator = scene.ambient_ground = scene.ambient;
+        }
     }
     return {};
 }

@@ -298,9 +298,19 @@ Status CreateConstantImage(const Context& c,
         !e.ok()) {
         return e;
     }
+    const uint32_t texel_size = format == VK_FORMAT_R32G32B32A32_SFLOAT   ? 16u
+                                : format == VK_FORMAT_R16G16B16A16_SFLOAT ? 8u
+                                                                          : 4u;
     std::vector<uint8_t> texels;
-    for (uint32_t i = 0; i < layers; ++i) {
-        texels.insert(texels.end(), texel.begin(), texel.end());
+    if (cube && texel.size() == size_t{6} * texel_size) {  // one per face
+        for (uint32_t i = 0; i < layers; ++i) {
+            texels.insert(texels.end(), texel.begin() + (i % 6) * texel_size,
+                          texel.begin() + (i % 6 + 1) * texel_size);
+        }
+    } else {
+        for (uint32_t i = 0; i < layers; ++i) {
+            texels.insert(texels.end(), texel.begin(), texel.begin() + texel_size);
+        }
     }
     Buffer staging;
     if (Status e = CreateBufferWithData(c, texels, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);

@@ -58,7 +58,8 @@ enum class ImageShape { k2D, k3D, kCube, k2DArray, kCubeArray };
 
 // A 1x1(x1) image of `shape` whose every texel (every face and layer) is `texel`, in
 // SHADER_READ_ONLY_OPTIMAL: the stand-in for a texture nothing supplied. `texel` holds one texel
-// of `format` (4 bytes for RGBA8, 8 for RGBA16F, 16 for RGBA32F).
+// of `format` (4 bytes for RGBA8, 8 for RGBA16F, 16 for RGBA32F), or, for a cube, one per face
+// (+X, -X, +Y, -Y, +Z, -Z).
 Status CreateConstantImage(const Context& c,
                            ImageShape shape,
                            VkFormat format,

@@ -272,5 +272,34 @@ TEST(MaterialSidecar, ReadsMaterialsAndAmbientAndPointsAtMistakes) {
     EXPECT_EQ(missing.error().code, DiagCode::kCannotReadFile);
 }
 
+TEST(MaterialSidecar, AmbientMayBeUnitysGradient) {
+    ScratchDir dir;
+    const std::string good =
+        dir.Write("g.kiln.json", R"({"kiln_materials": 1, "ambient": {"sky": [0.4, 0.5, 0.9],
+            "equator": [0.2, 0.2, 0.15], "ground": [0.05, 0.03, 0.02]}})");
+    const Result<material::MaterialSidecar> read = material::ReadMaterialSidecar(good);
+    ASSERT_TRUE(read) << read.error().message;
+    EXPECT_TRUE(read.value().has_ambient);
+    EXPECT_TRUE(read.value().trilight);
+    EXPECT_FLOAT_EQ(read.value().ambient[2], 0.9f);
+    EXPECT_FLOAT_EQ(read.value().equator[0], 0.2f);
+    EXPECT_FLOAT_EQ(read.value().ground[1], 0.03f);
+    const std::string partial =
+        dir.Write("p.kiln.json", "{\"ambient\": {\"sky\": [1, 1, 1],\n \"ground\": [0, 0, 0]}}");
+    const Result<material::MaterialSidecar> missing = material::ReadMaterialSidecar(partial);
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.error().message,
+              partial +
+                  ":1:13: a gradient 'ambient' needs 'equator' (sky, equator and ground, "
+                  "each three numbers)");
+    const std::string short_colour =
+        dir.Write("c.kiln.json", R"({"ambient": {"sky": [1, 1], "equator": [0, 0, 0],
+            "ground": [0, 0, 0]}})");
+    const Result<material::MaterialSidecar> bad = material::ReadMaterialSidecar(short_colour);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().message.find("'sky' must be three numbers (linear RGB)"),
+              std::string::npos);
+}
+
 }  // namespace
 }  // namespace kiln::test

@@ -60,5 +60,39 @@ TEST(ReferenceSH, PackedCoefficientsEvaluateToTheSameAmbient) {
     }
 }
 
+// The closed form against numerical integration of TrilightRadiance x SHBasis (midpoint rule,
+// 1024 x 128 cells of equal solid angle; the integrand is smooth within each hemisphere and the
+// cell edges meet y = 0, so the rule is accurate to about 1e-6 here).
+TEST(ReferenceSH, TrilightProjectionIsTheIntegralOfTheGradient) {
+    const glm::dvec3 sky(0.4, 0.5, 0.9), equator(0.2, 0.2, 0.15), ground(0.05, 0.03, 0.02);
+    SH9 closed;
+    AddTrilight(closed, sky, equator, ground);
+    SH9 numeric;
+    constexpr int ny = 1024, nphi = 128;
+    const double pi = 3.14159265358979323846, cell = 4.0 * pi / (double(ny) * nphi);
+    for (int i = 0; i < ny; ++i) {
+        const double y = -1.0 + (i + 0.5) * 2.0 / ny, r = std::sqrt(1.0 - y * y);
+        for (int j = 0; j < nphi; ++j) {
+            const double phi = (j + 0.5) * 2.0 * pi / nphi;
+            const glm::dvec3 d(r * std::cos(phi), y, r * std::sin(phi));
+            const auto basis = SHBasis(d);
+            for (size_t k = 0; k < 9; ++k)
+                numeric.L[k] += TrilightRadiance(d, sky, equator, ground) * cell * basis[k];
+        }
+    }
+    for (size_t k = 0; k < 9; ++k)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(closed.L[k][c], numeric.L[k][c], 1e-5) << "coefficient " << k;
+    // One colour everywhere is the flat ambient.
+    SH9 flat, same;
+    AddConstantRadiance(flat, equator);
+    AddTrilight(same, equator, equator, equator);
+    for (size_t k = 0; k < 9; ++k)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(same.L[k][c], flat.L[k][c], 1e-6) << "coefficient " << k;
+    // The sky lights an upward normal more than the ground a downward one.
+    EXPECT_GT(AmbientFromSH(closed, {0, 1, 0}).z, AmbientFromSH(closed, {0, -1, 0}).z + 0.3);
+}
+
 }  // namespace
 }  // namespace kiln::reference

@@ -1,7 +1,9 @@
 // A scene's material sidecar, "<scene>.kiln.json": which .material file each glTF material of the
-// scene uses, and the scene's ambient colour.
+// scene uses, and the scene's ambient light.
 //   {"kiln_materials": 1, "materials": {"<glTF material>": "x.material"}, "ambient": [r, g, b],
 //    "description": "..."}
+// "ambient" is one linear colour, or Unity's gradient:
+//   {"sky": [r, g, b], "equator": [r, g, b], "ground": [r, g, b]}.
 // Read by `kiln compile --materials` (to build the variants a scene's materials need) and by the
 // runtime's scene loader; here, in kiln_material, so that the compiler reads it without the
 // renderer (docs/install.md).
@@ -20,7 +22,9 @@ struct MaterialSidecar {
     // glTF material name -> .material path, relative to the sidecar's folder resolved.
     std::map<std::string, std::string> materials;
     bool has_ambient = false;
+    bool trilight = false;           // ambient is the sky colour of a gradient
     std::array<float, 3> ambient{};  // linear RGB
+    std::array<float, 3> equator{}, ground{};
 };
 
 // Reads and checks a sidecar. Errors are K0001 (cannot read it) or K0007 with

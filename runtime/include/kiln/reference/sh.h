@@ -26,6 +26,20 @@ void AddDirectionalLight(SH9& sh, const glm::dvec3& d, const glm::dvec3& color);
 // Adds a constant radiance over the whole sphere: L_00 += color * sqrt(4 pi).
 void AddConstantRadiance(SH9& sh, const glm::dvec3& color);
 
+// Unity's gradient ambient ("Trilight"): `sky` straight up, `equator` at the horizon, `ground`
+// straight down, linear in the direction's y between them.
+glm::dvec3 TrilightRadiance(const glm::dvec3& d,
+                            const glm::dvec3& sky,
+                            const glm::dvec3& equator,
+                            const glm::dvec3& ground);
+
+// Adds the projection of the trilight radiance, in closed form (L depends on y alone; a test
+// checks it against numerical integration of TrilightRadiance x SHBasis).
+void AddTrilight(SH9& sh,
+                 const glm::dvec3& sky,
+                 const glm::dvec3& equator,
+                 const glm::dvec3& ground);
+
 // Irradiance E(n) from the order-2 approximation (R&H 2001, eq. 13), unit n.
 glm::dvec3 Irradiance(const SH9& sh, const glm::dvec3& n);
 

@@ -98,6 +98,8 @@ struct Camera {
     glm::mat4 world{1.0f};          // camera to world; looks down -Z, +Y up
 };
 
+enum class AmbientMode { kFlat, kTrilight };
+
 struct Instance {
     uint32_t mesh = 0;
     glm::mat4 world{1.0f};
@@ -117,7 +119,13 @@ struct Scene {
     std::vector<Instance> instances;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
-    glm::vec3 ambient{0.05f};  // linear sky colour for unity_AmbientSky and the SH probe
+    // The ambient light as Unity's Environment Lighting gives it: kFlat, one linear colour
+    // (`ambient`); kTrilight, a gradient from `ambient` (sky, straight up) through
+    // `ambient_equator` (the horizon) to `ambient_ground` (straight down). It fills
+    // unity_AmbientSky/Equator/Ground, the SH probe (its projection) and the reflection cube.
+    AmbientMode ambient_mode = AmbientMode::kFlat;
+    glm::vec3 ambient{0.05f};
+    glm::vec3 ambient_equator{0.05f}, ambient_ground{0.05f};
     // glTF material name -> .material file (absolute or relative to the working directory).
     std::map<std::string, std::string> material_files;
 };
