@@ -6,10 +6,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <vector>
 
 #include "kiln/reference/attenuation.h"
 #include "kiln/reference/sh.h"
+#include "render/frame_values.h"
 #include "runtime/runtime_fixture.h"
 
 namespace kiln::testing {
@@ -218,6 +220,66 @@ TEST_F(RuntimeTest, TrilightAmbientIsTheGradientsProjection) {
         return double(image.rgba[(size_t(y) * image.width + image.width / 2) * 4 + 2]);
     };
     EXPECT_GT(at(image.height / 2 - image.height / 8), at(image.height / 2 + image.height / 8));
+}
+
+// Unity's per-light Render Mode: important lights are per pixel whatever the pixel-light count,
+// not-important ones never (per vertex, or SH when not a point light), auto ones are ranked into
+// what is left of the count. The fixed light modes ignore it.
+TEST(LightRanking, ImportantAndNotImportantLightsAsUnityRanksThem) {
+    using T = runtime::LightType;
+    using I = runtime::LightImportance;
+    std::vector<runtime::Light> lights = {
+        Punctual(T::kPoint, {0, 1, 3}, {1, 1, 1}, 100),  // brightest
+        Punctual(T::kPoint, {0, 1, 3}, {1, 1, 1}, 50),
+        Punctual(T::kPoint, {0, 1, 3}, {1, 1, 1}, 10),  // dimmest
+        Punctual(T::kSpot, {0, 1, 3}, {1, 1, 1}, 80)};
+    lights[0].importance = I::kNotImportant;
+    lights[2].importance = I::kImportant;
+    lights[3].importance = I::kNotImportant;
+    const glm::vec3 center(0, 1, 0);
+    const render::ObjectLights one = render::LightsFor(lights, nullptr, center, 1.0f, 1);
+    EXPECT_EQ(one.pixel, (std::vector<const runtime::Light*>{&lights[2]}));
+    EXPECT_EQ(one.vertex, (std::vector<const runtime::Light*>{&lights[0], &lights[1]}));
+    EXPECT_EQ(one.sh, (std::vector<const runtime::Light*>{&lights[3]}));  // a spot: no vertex
+    const render::ObjectLights two = render::LightsFor(lights, nullptr, center, 1.0f, 2);
+    EXPECT_EQ(two.pixel, (std::vector<const runtime::Light*>{&lights[2], &lights[1]}));
+    const render::ObjectLights none = render::LightsFor(lights, nullptr, center, 1.0f, 0);
+    EXPECT_EQ(none.pixel, (std::vector<const runtime::Light*>{&lights[2]}));  // still important
+    const render::ObjectLights pixel =
+        render::LightsFor(lights, nullptr, center, 1.0f, 0, runtime::LightMode::kPixel);
+    EXPECT_EQ(pixel.pixel.size(), 4u);  // the fixed modes ignore the Render Mode
+    // A not-important directional light is never the main light.
+    std::vector<runtime::Light> suns(2);
+    suns[0].type = suns[1].type = T::kDirectional;
+    suns[0].intensity = 10;
+    suns[0].importance = I::kNotImportant;
+    EXPECT_EQ(render::MainLight(suns), &suns[1]);
+}
+
+TEST(LightRanking, TheSidecarSetsRenderModesByLightName) {
+    const std::string dir = ::testing::TempDir();
+    const std::string path = dir + "/lights.kiln.json";
+    std::ofstream(path) << "{\"kiln_materials\": 1,\n \"lights\": {\"Lamp\": \"important\", "
+                           "\"Sun\": \"not-important\"}}";
+    runtime::Scene scene;
+    scene.lights.resize(3);
+    scene.lights[0].name = "Lamp";
+    scene.lights[1].name = "Sun";
+    scene.lights[2].name = "Fill";
+    ASSERT_TRUE(Ok(runtime::LoadMaterialSidecar(path, scene)));
+    EXPECT_EQ(scene.lights[0].importance, runtime::LightImportance::kImportant);
+    EXPECT_EQ(scene.lights[1].importance, runtime::LightImportance::kNotImportant);
+    EXPECT_EQ(scene.lights[2].importance, runtime::LightImportance::kAuto);
+    std::ofstream(path) << "{\"lights\": {\"Lmap\": \"important\"}}";
+    const Status typo = runtime::LoadMaterialSidecar(path, scene);
+    ASSERT_FALSE(typo.ok());
+    EXPECT_EQ(typo.error().message,
+              path + ":1:21: the scene has no light named 'Lmap'; did you mean 'Lamp'?");
+    std::ofstream(path) << "{\"lights\": {\"Lamp\": \"always\"}}";
+    const Status bad = runtime::LoadMaterialSidecar(path, scene);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message,
+              path + ":1:21: light 'Lamp' must be auto, important or not-important");
 }
 
 }  // namespace

@@ -100,10 +100,27 @@ Result<MaterialSidecar> ReadMaterialSidecar(const std::string& path) {
                           "\"equator\", \"ground\"} of three numbers each");
             }
             out.has_ambient = true;
+        } else if (key == "lights") {
+            if (value.kind != Kind::kObject) {
+                return At(path, value.pos,
+                          "'lights' must map light names to auto, important or not-important");
+            }
+            for (size_t l = 0; l < value.items.size(); ++l) {
+                const JsonValue& mode = value.items[l];
+                const std::string& name = value.keys[l].first;
+                if (mode.kind != Kind::kString ||
+                    (mode.string != "auto" && mode.string != "important" &&
+                     mode.string != "not-important")) {
+                    return At(path, mode.pos,
+                              "light '" + name + "' must be auto, important or not-important");
+                }
+                out.light_modes[name] = {mode.string, std::to_string(mode.pos.line) + ":" +
+                                                          std::to_string(mode.pos.column)};
+            }
         } else if (key != "description") {
             return At(path, key_pos,
                       "unknown field '" + key +
-                          "' (expected kiln_materials, materials, ambient, description)");
+                          "' (expected kiln_materials, materials, ambient, lights, description)");
         }
     }
     return out;

@@ -285,6 +285,7 @@ const runtime::Light* MainLight(const std::vector<runtime::Light>& lights) {
     const runtime::Light* main = nullptr;
     for (const runtime::Light& l : lights) {
         if (l.type == runtime::LightType::kDirectional &&
+            l.importance != runtime::LightImportance::kNotImportant &&
             (!main ||
              l.intensity * Luminance(l.color) > main->intensity * Luminance(main->color))) {
             main = &l;
@@ -330,8 +331,23 @@ ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
                          : mode == LightMode::kPixel ? ranked.size()
                                                      : 0;
     const bool vertex = mode == LightMode::kAuto || mode == LightMode::kVertex;
+    // Unity's Render Mode (auto mode only): important lights are per pixel whatever the count,
+    // not-important ones never; auto lights fill what is left of the count.
+    using runtime::LightImportance;
+    const bool by_importance = mode == LightMode::kAuto;
+    if (by_importance) {
+        for (const Ranked& r : ranked) {
+            if (r.light->importance == LightImportance::kImportant) {
+                out.pixel.push_back(r.light);
+            }
+        }
+    }
     for (const auto& [directional, importance, light] : ranked) {
-        if (out.pixel.size() < pixel) {
+        const LightImportance li = by_importance ? light->importance : LightImportance::kAuto;
+        if (li == LightImportance::kImportant) {
+            continue;  // already per pixel
+        }
+        if (li == LightImportance::kAuto && out.pixel.size() < pixel) {
             out.pixel.push_back(light);
         } else if (vertex && light->type == runtime::LightType::kPoint && out.vertex.size() < 4) {
             out.vertex.push_back(light);

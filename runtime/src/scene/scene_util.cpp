@@ -2,6 +2,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include "kiln/runtime/scene.h"
 
 #include "kiln/material/sidecar.h"
+#include "kiln/pack/names.h"
 
 namespace kiln::runtime {
 
@@ -92,6 +94,24 @@ Status LoadMaterialSidecar(const std::string& path, Scene& scene) {
         scene.material_files[name] = file;
     }
     const material::MaterialSidecar& sidecar = read.value();
+    std::vector<std::string> names;
+    for (const Light& l : scene.lights) {
+        names.push_back(l.name);
+    }
+    for (const auto& [name, mode] : sidecar.light_modes) {
+        if (std::find(names.begin(), names.end(), name) == names.end()) {
+            return Error{DiagCode::kBadScene, path + ":" + mode.second +
+                                                  ": the scene has no light named '" + name + "'" +
+                                                  pack::DidYouMean(name, names)};
+        }
+    }
+    for (Light& l : scene.lights) {
+        if (auto it = sidecar.light_modes.find(l.name); it != sidecar.light_modes.end()) {
+            l.importance = it->second.first == "important"       ? LightImportance::kImportant
+                           : it->second.first == "not-important" ? LightImportance::kNotImportant
+                                                                 : LightImportance::kAuto;
+        }
+    }
     if (sidecar.has_ambient) {
         const auto vec = [](const std::array<float, 3>& a) { return glm::vec3(a[0], a[1], a[2]); };
         scene.ambient_mode = sidecar.trilight ? AmbientMode::kTrilight : AmbientMode::kFlat;

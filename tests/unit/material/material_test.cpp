@@ -265,7 +265,7 @@ TEST(MaterialSidecar, ReadsMaterialsAndAmbientAndPointsAtMistakes) {
     EXPECT_EQ(typo.error().code, DiagCode::kBadScene);
     EXPECT_EQ(typo.error().message,
               bad + ":2:3: unknown field 'materiels' (expected kiln_materials, materials, "
-                    "ambient, description)");
+                    "ambient, lights, description)");
     const Result<material::MaterialSidecar> missing =
         material::ReadMaterialSidecar(dir.path() + "/none.kiln.json");
     ASSERT_FALSE(missing);

@@ -4,6 +4,8 @@
 //    "description": "..."}
 // "ambient" is one linear colour, or Unity's gradient:
 //   {"sky": [r, g, b], "equator": [r, g, b], "ground": [r, g, b]}.
+// "lights" sets Unity's per-light Render Mode by KHR_lights_punctual light name:
+//   {"<light>": "auto" | "important" | "not-important"}.
 // Read by `kiln compile --materials` (to build the variants a scene's materials need) and by the
 // runtime's scene loader; here, in kiln_material, so that the compiler reads it without the
 // renderer (docs/install.md).
@@ -25,6 +27,8 @@ struct MaterialSidecar {
     bool trilight = false;           // ambient is the sky colour of a gradient
     std::array<float, 3> ambient{};  // linear RGB
     std::array<float, 3> equator{}, ground{};
+    // light name -> "auto", "important" or "not-important", with the value's position.
+    std::map<std::string, std::pair<std::string, std::string>> light_modes;  // (mode, "line:col")
 };
 
 // Reads and checks a sidecar. Errors are K0001 (cannot read it) or K0007 with

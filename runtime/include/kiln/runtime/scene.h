@@ -72,6 +72,10 @@ struct SceneMaterial {
 
 enum class LightType { kDirectional, kPoint, kSpot };
 
+// Unity's per-light Render Mode: kImportant lights are always per pixel, kNotImportant ones never
+// (per vertex or in SH); kAuto lights are ranked (docs/runtime.md, "Light modes").
+enum class LightImportance { kAuto, kImportant, kNotImportant };
+
 struct Light {
     std::string name;
     LightType type = LightType::kPoint;
@@ -80,7 +84,8 @@ struct Light {
     float range = 0;                                // 0: unlimited
     float inner_cone = 0, outer_cone = 0.7853982f;  // radians from the axis
     glm::vec3 position{0.0f};
-    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // world, unit: where the light shines
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};               // world, unit: where the light shines
+    LightImportance importance = LightImportance::kAuto;  // the sidecar's "lights"
 };
 
 // The light colour Unity's shader convention expects (_LightColor0, unity_LightColor) for a light
