@@ -29,8 +29,12 @@ struct Binding {
     const vk::Pipeline* pipeline = nullptr;
     std::vector<Draw::Write> textures;
     Values texel_sizes;
-    std::vector<std::pair<uint32_t, uint32_t>> bound;  // (set, binding) of `textures`
 };
+
+bool Written(const std::vector<Draw::Write>& writes, uint32_t set, uint32_t binding) {
+    return std::any_of(writes.begin(), writes.end(),
+                       [&](const Draw::Write& w) { return w.set == set && w.binding == binding; });
+}
 
 struct DrawBuilder {
     Renderer::State& s;
@@ -103,11 +107,9 @@ struct DrawBuilder {
                 const auto res = pack.Get<pack::ResourceRec>(pack::SectionTag::kResources,
                                                              mod.first_resource + r)
                                      .value();
-                if (std::count(out.bound.begin(), out.bound.end(),
-                               std::pair{res.set, res.binding})) {
+                if (Written(out.textures, res.set, res.binding)) {
                     continue;
                 }
-                out.bound.emplace_back(res.set, res.binding);
                 std::string name(pack.String(res.name));
                 const auto kind = pack::ResourceKind(res.kind);
                 if (kind == pack::ResourceKind::kSeparateSampler && name.rfind("sampler", 0) == 0) {
@@ -220,7 +222,6 @@ struct DrawBuilder {
             auto found = m.values.find(std::string(name));
             return found == m.values.end() ? nullptr : &found->second;
         };
-        std::vector<std::pair<uint32_t, uint32_t>> seen = binding.bound;
         for (uint32_t module : {v.vertex_module, v.fragment_module}) {
             const pack::ModuleRec mod = pack.Module(module).value();
             for (uint32_t b = 0; b < mod.block_count; ++b) {
@@ -232,10 +233,9 @@ struct DrawBuilder {
                     render::WriteBlock(pack, block, lookup, d.push.data(), d.push.size());
                     continue;
                 }
-                if (std::count(seen.begin(), seen.end(), std::pair{block.set, block.binding})) {
-                    continue;
+                if (Written(d.writes, block.set, block.binding)) {
+                    continue;  // the textures' or an earlier module's
                 }
-                seen.emplace_back(block.set, block.binding);
                 const VkDeviceSize offset =
                     (uniforms.size() + alignment - 1) / alignment * alignment;
                 uniforms.resize(offset + block.size, 0);

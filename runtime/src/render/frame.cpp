@@ -159,6 +159,15 @@ void RecordDraws(VkCommandBuffer cmd,
 
 }  // namespace
 
+// A pass's targets in attachment order: the colours, then the depth buffer.
+std::vector<uint32_t> Attachments(const FramePass& pass) {
+    std::vector<uint32_t> out = pass.colors;
+    if (pass.depth) {
+        out.push_back(*pass.depth);
+    }
+    return out;
+}
+
 vk::TargetFormats FormatsOf(const Frame& frame, const FramePass& pass) {
     vk::TargetFormats out;
     for (uint32_t t : pass.colors) {
@@ -194,11 +203,8 @@ Status RecordFrame(Renderer::State& s, const Frame& frame, LinearImage& out) {
         }
         render_passes.push_back(rp);
         std::vector<VkImageView> views;
-        for (uint32_t t : pass.colors) {
+        for (uint32_t t : Attachments(pass)) {
             views.push_back(f.targets[t].view);
-        }
-        if (pass.depth) {
-            views.push_back(f.targets[*pass.depth].view);
         }
         VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
         fb.renderPass = rp;
@@ -244,11 +250,8 @@ Status RecordFrame(Renderer::State& s, const Frame& frame, LinearImage& out) {
     for (size_t p = 0; p < frame.passes.size(); ++p) {
         const FramePass& pass = frame.passes[p];
         std::vector<VkClearValue> clear;
-        for (uint32_t t : pass.colors) {
+        for (uint32_t t : Attachments(pass)) {
             clear.push_back(frame.targets[t].clear);
-        }
-        if (pass.depth) {
-            clear.push_back(frame.targets[*pass.depth].clear);
         }
         VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         begin.renderPass = render_passes[p];

@@ -2,42 +2,43 @@
 
 namespace kiln::vk {
 
+namespace {
+
+// One attachment of `format`, cleared (from undefined) or loaded (in `layout`), left in `layout`.
+// Depth-stencil attachments keep their stencil too.
+VkAttachmentDescription Attachment(VkFormat format, bool clear, VkImageLayout layout, bool depth) {
+    const VkAttachmentLoadOp load =
+        clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    VkAttachmentDescription a{};
+    a.format = format;
+    a.samples = VK_SAMPLE_COUNT_1_BIT;
+    a.loadOp = load;
+    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    a.stencilLoadOp = depth ? load : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    a.stencilStoreOp = depth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    a.initialLayout = clear ? VK_IMAGE_LAYOUT_UNDEFINED : layout;
+    a.finalLayout = layout;
+    return a;
+}
+
+}  // namespace
+
 Status CreateRenderPass(const Context& c,
                         const TargetFormats& formats,
                         bool clear,
                         VkRenderPass& out) {
     std::vector<VkAttachmentDescription> attachments;
     std::vector<VkAttachmentReference> colors;
-    const VkAttachmentLoadOp load =
-        clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
     for (VkFormat f : formats.colors) {
-        VkAttachmentDescription a{};
-        a.format = f;
-        a.samples = VK_SAMPLE_COUNT_1_BIT;
-        a.loadOp = load;
-        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-        a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-        a.initialLayout =
-            clear ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        a.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         colors.push_back({uint32_t(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
-        attachments.push_back(a);
+        attachments.push_back(
+            Attachment(f, clear, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false));
     }
     VkAttachmentReference depth{uint32_t(attachments.size()),
                                 VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     if (formats.depth != VK_FORMAT_UNDEFINED) {
-        VkAttachmentDescription a{};
-        a.format = formats.depth;
-        a.samples = VK_SAMPLE_COUNT_1_BIT;
-        a.loadOp = load;
-        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        a.stencilLoadOp = load;
-        a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_STORE;
-        a.initialLayout =
-            clear ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-        a.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-        attachments.push_back(a);
+        attachments.push_back(Attachment(formats.depth, clear,
+                                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, true));
     }
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
