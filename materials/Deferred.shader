@@ -1,7 +1,9 @@
 // Deferred: the lecture's deferred shader. The Deferred pass writes the G-buffer with four
 // render targets (UnityGBuffer.cginc / KilnGBuffer.cginc layout): RT0 diffuse colour and
 // occlusion, RT1 specular colour and smoothness, RT2 world normal, RT3 emission + ambient (HDR).
-// A ForwardBase pass shades the same surface when the renderer runs the forward path.
+// ForwardBase and ForwardAdd passes shade the same surface when the renderer runs the forward
+// path (or draws the object forward); the deferred path's light pass
+// (materials/internal/DeferredShading.shader) lights the G-buffer with the same BRDF.
 Shader "Kiln/Deferred"
 {
     Properties
@@ -58,6 +60,18 @@ Shader "Kiln/Deferred"
         return o;
     }
 
+    float4 AddFragment(Interpolators i) : SV_Target {
+        Surface s = ReadSurface(i);
+        float3 n = SafeNormalize(i.normal);
+        UnityIndirect none;
+        none.diffuse = 0;
+        none.specular = 0;
+        float4 c = UNITY_BRDF_PBS(s.diffuse, _SpecularColor.rgb, s.oneMinusReflectivity,
+                                  _Smoothness, n, ViewDirection(i.worldPos),
+                                  PixelLight(i.worldPos, n), none);
+        return float4(c.rgb, s.alpha);
+    }
+
     float4 ForwardFragment(Interpolators i) : SV_Target {
         Surface s = ReadSurface(i);
         float3 n = SafeNormalize(i.normal);
@@ -88,12 +102,27 @@ Shader "Kiln/Deferred"
 
         Pass
         {
+            Name "FORWARD_DELTA"
+            Tags { "LightMode" = "ForwardAdd" }
+            Blend One One
+            ZWrite Off
+            CGPROGRAM
+            #pragma vertex ForwardVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
+            #pragma fragment AddFragment
+            #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
+            ENDCG
+        }
+
+        Pass
+        {
             Name "DEFERRED"
             Tags { "LightMode" = "Deferred" }
             CGPROGRAM
             #pragma vertex ForwardVertex
             #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment GBufferFragment
+            #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             ENDCG
         }
     }

@@ -7,7 +7,9 @@
 //   _OCCLUSIONMAP      glTF occlusionTexture: R = ambient occlusion (indirect light only)
 //   _EMISSION          emissive colour x emission map
 //   _ALPHATEST_ON      glTF alphaMode MASK: fragments with base alpha below _Cutoff are discarded
-// ForwardBase: the main light, SH ambient and emission; ForwardAdd: one more light per pass.
+// ForwardBase: the main light, SH ambient and emission; ForwardAdd: one more light per pass;
+// Deferred: the G-buffer (UnityGBuffer.cginc) with SH ambient and emission in RT3, lit by the
+// deferred path's light pass (materials/internal/DeferredShading.shader) with the same BRDF.
 Shader "Kiln/StandardMetallic"
 {
     Properties
@@ -29,6 +31,7 @@ Shader "Kiln/StandardMetallic"
     CGINCLUDE
     #include "UnityPBSLighting.cginc"
     #include "AutoLight.cginc"
+    #include "UnityGBuffer.cginc"
 
     float4 _Color;
     sampler2D _MainTex;
@@ -146,6 +149,39 @@ Shader "Kiln/StandardMetallic"
         return float4(ClampToHalfRange(c.rgb), c.a);
     }
 
+    struct GBufferOutput {
+        float4 gBuffer0 : SV_Target0;
+        float4 gBuffer1 : SV_Target1;
+        float4 gBuffer2 : SV_Target2;
+        float4 gBuffer3 : SV_Target3;
+    };
+
+    // The surface into the G-buffer; RT3 gets what BaseFragment adds besides the main light:
+    // the SH ambient through the diffuse colour (UNITY_BRDF_PBS's indirect diffuse term) and the
+    // emission.
+    GBufferOutput DeferredFragment(Interpolators i) {
+        MetallicSurface s = ReadSurface(i);
+        float3 n = SurfaceNormal(i);
+        float occlusion = 1.0;
+    #if defined(_OCCLUSIONMAP)
+        occlusion = lerp(1.0, tex2D(_OcclusionMap, i.uv).r, _OcclusionStrength);
+    #endif
+        UnityStandardData data;
+        data.diffuseColor = s.diffuse;
+        data.occlusion = occlusion;
+        data.specularColor = s.specular;
+        data.smoothness = s.smoothness;
+        data.normalWorld = n;
+        GBufferOutput o;
+        UnityStandardDataToGbuffer(data, o.gBuffer0, o.gBuffer1, o.gBuffer2);
+        float3 emission = s.diffuse * ShadeSH9(float4(n, 1.0)) * occlusion;
+    #if defined(_EMISSION)
+        emission += _EmissionColor.rgb * tex2D(_EmissionMap, i.uv).rgb;
+    #endif
+        o.gBuffer3 = GBuffer_EncodeEmission(emission);
+        return o;
+    }
+
     float4 AddFragment(Interpolators i) : SV_TARGET {
         UnityIndirect none;
         none.diffuse = 0;
@@ -189,6 +225,24 @@ Shader "Kiln/StandardMetallic"
             #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
             #pragma shader_feature_local _NORMALMAP
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
+            #pragma shader_feature_local_fragment _ALPHATEST_ON
+            ENDCG
+        }
+
+        Pass
+        {
+            Name "DEFERRED"
+            Tags { "LightMode" = "Deferred" }
+
+            CGPROGRAM
+            #pragma vertex MetallicVertex
+            #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
+            #pragma fragment DeferredFragment
+            #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
+            #pragma shader_feature_local _NORMALMAP
+            #pragma shader_feature_local_fragment _METALLICGLOSSMAP
+            #pragma shader_feature_local_fragment _OCCLUSIONMAP
+            #pragma shader_feature_local_fragment _EMISSION
             #pragma shader_feature_local_fragment _ALPHATEST_ON
             ENDCG
         }

@@ -16,6 +16,8 @@ PACKAGES=(
     nlohmann-json3-dev libcli11-dev libxxhash-dev
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
+    # the frame debugger's page, opened headless by its test
+    chromium
 )
 
 missing=()

@@ -261,9 +261,7 @@ TEST(SceneStrip, DiffCountsVariantsAndBytesPerPassWithABudget) {
 TEST(SceneStrip, FlagsThatDoNotApplyAreRefused) {
     ScratchDir dir;
     const std::string out = dir.path() + "/x.kpack";
-    for (const char* more : {"--all-features", "--keywords A", "--path deferred",
-                             "--materials "
-                             "x.material"}) {
+    for (const char* more : {"--all-features", "--keywords A", "--materials x.material"}) {
         const RunResult r = CompileStripLight(out, "sun.gltf", more);
         EXPECT_EQ(r.exit_code, 2) << more << ": " << r.err;
         EXPECT_NE(r.err.find("[K0003]"), std::string::npos) << r.err;

@@ -198,9 +198,6 @@ std::string CheckStripFlags(const SceneStripFlags& strip, const CompilerFlags& f
             return "--explain, --explain-json and --verify-scene need --scene or --usage";
         return "";
     }
-    if (strip.path == "deferred")
-        return "--path deferred: Kiln's renderer draws the forward path only (the deferred path "
-               "is not built yet), so no lookups of it can be planned; use --path forward";
     if (flags.all_features || !flags.keywords.empty())
         return "--all-features and --keywords do not apply with --scene or --usage: the scene's "
                "lookups decide every variant";

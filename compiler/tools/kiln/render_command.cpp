@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/runtime/color.h"
+#include "kiln/runtime/frame_debug.h"
 #include "kiln/runtime/plan.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
@@ -70,7 +71,7 @@ struct RenderArgs {
     runtime::ColorOptions color;
     bool validation = false, closest = false, no_default_light = false, trust = false;
     bool dry_run = false, allow_missing = false;
-    std::string device, camera, ambient;
+    std::string device, camera, ambient, frame_debug;
 };
 
 // --dry-run: the frame's lookups without a device (kiln/runtime/plan.h), written to --usage.
@@ -164,6 +165,31 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                 CLI::ignore_case)
                 .description(""))
         ->option_text("auto|pixel|vertex|sh");
+    cmd->add_option("--path", a->frame.path,
+                    "Render path: forward, or deferred (a G-buffer from the objects' Deferred "
+                    "passes lit per light in screen space; the rest drawn forward after it) "
+                    "(default forward)")
+        ->transform(CLI::CheckedTransformer(
+                        std::map<std::string, runtime::RenderPath>{
+                            {"forward", runtime::RenderPath::kForward},
+                            {"deferred", runtime::RenderPath::kDeferred}},
+                        CLI::ignore_case)
+                        .description(""))
+        ->option_text("forward|deferred");
+    cmd->add_option("--gbuffer-normals", a->frame.gbuffer.normals,
+                    "Deferred path: the G-buffer normal target's format (default rgb10a2, "
+                    "Unity's)")
+        ->transform(CLI::CheckedTransformer(
+                        std::map<std::string, runtime::GBufferSettings::Normals>{
+                            {"rgb10a2", runtime::GBufferSettings::Normals::kRGB10A2},
+                            {"rgba8", runtime::GBufferSettings::Normals::kRGBA8},
+                            {"rgba16f", runtime::GBufferSettings::Normals::kRGBA16F}},
+                        CLI::ignore_case)
+                        .description(""))
+        ->option_text("rgb10a2|rgba8|rgba16f");
+    cmd->add_flag("--gbuffer-octahedral", a->frame.gbuffer.octahedral,
+                  "Deferred path: store normals octahedrally encoded (keyword "
+                  "_GBUFFER_NORMALS_OCT)");
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
     cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
     cmd->add_option("--ambient", a->ambient,
@@ -191,6 +217,11 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
     cmd->add_flag("--allow-missing", a->allow_missing,
                   "With --dry-run: record lookups of variants the packs lack without failing "
                   "(planning against packs not built yet, as kiln compile --scene does)");
+    cmd->add_option("--frame-debug", a->frame_debug,
+                    "Draw the frame one step at a time and write each pass's and draw's record "
+                    "and an image of every target it writes after each step, with an index.html "
+                    "to step through in a browser, into this folder")
+        ->option_text("DIR");
     cmd->add_option("--pipeline-cache", a->pipeline_cache, "Persist the VkPipelineCache here");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
     cmd->add_flag("--trust-packs", a->trust,
@@ -272,7 +303,9 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         }
         runtime::LinearImage image;
         runtime::FrameStats stats;
-        const Status rendered = renderer.Render(scene, a->frame, color, image, stats);
+        runtime::FrameCapture capture;
+        const Status rendered = renderer.Render(scene, a->frame, color, image, stats,
+                                                a->frame_debug.empty() ? nullptr : &capture);
         diags.Append(stats.warnings);
         if (!a->usage.empty()) {
             if (Status written = renderer.WriteUsage(a->usage); !written.ok()) {
@@ -296,11 +329,22 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         if (Status written = runtime::WriteDisplayPng(a->output, image, color); !written.ok()) {
             return fail(written.error(), a->output);
         }
+        if (!a->frame_debug.empty()) {
+            if (Status written = runtime::WriteFrameDebug(a->frame_debug, capture); !written.ok()) {
+                return fail(written.error(), a->frame_debug);
+            }
+            std::printf("%s/index.html: %zu steps\n", a->frame_debug.c_str(), capture.steps.size());
+        }
+        std::string deferred;
+        if (a->frame.path == runtime::RenderPath::kDeferred) {
+            deferred = std::to_string(stats.gbuffer_draws) + " G-buffer draws, " +
+                       std::to_string(stats.light_passes) + " light passes, ";
+        }
         std::printf(
-            "%s: %ux%u, camera '%s', %u objects, %u base + %u additive passes (%u with vertex "
+            "%s: %ux%u, camera '%s', %u objects, %s%u base + %u additive passes (%u with vertex "
             "lights, %u with SH lights), %u pipelines, device '%s', %s%s\n",
             a->output.c_str(), image.width, image.height, stats.camera.c_str(), stats.objects,
-            stats.base_passes, stats.add_passes, stats.vertex_lit, stats.sh_lit,
+            deferred.c_str(), stats.base_passes, stats.add_passes, stats.vertex_lit, stats.sh_lit,
             stats.pipelines_created, renderer.DeviceName().c_str(), color.description().c_str(),
             a->validation ? ", validation messages: 0" : "");
         return finish(int(kExitOk));

@@ -124,7 +124,9 @@ bool DryRun(const std::string& scene,
                                      "--pixel-lights",
                                      std::to_string(flags.pixel_lights),
                                      "--light-mode",
-                                     flags.light_mode};
+                                     flags.light_mode,
+                                     "--path",
+                                     flags.path};
     for (const std::string& p : packs) {
         args.insert(args.end(), {"--pack", p});
     }
@@ -205,7 +207,8 @@ void AddSceneStripOptions(CLI::App& cmd, SceneStripFlags& f) {
                    "Build only the variants this usage file (kiln render --usage, or an "
                    "engine's) looks up; with --scene, those of both")
         ->option_text("USAGE.json");
-    cmd.add_option("--path", f.path, "The render path the scene is drawn with: forward")
+    cmd.add_option("--path", f.path,
+                   "The render path the scene is drawn with, as kiln render's (default forward)")
         ->check(CLI::IsMember({"forward", "deferred"}))
         ->option_text("forward|deferred");
     cmd.add_option("--pixel-lights", f.pixel_lights,

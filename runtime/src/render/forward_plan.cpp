@@ -16,11 +16,6 @@ const char* TypeName(LightType type) {
     return type == LightType::kPoint ? "point" : type == LightType::kSpot ? "spot" : "directional";
 }
 
-std::string LightName(const Light* light) {
-    return light ? std::string(TypeName(light->type)) + " light '" + light->name + "'"
-                 : std::string("no light");
-}
-
 // The keywords a draw asks for: the material's, then the light's (kiln/pack/engine_names.h).
 std::vector<std::string> DrawKeywords(const MaterialInstance& m,
                                       bool additive,
@@ -59,9 +54,73 @@ ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
             out.base.push_back(p);
         } else if (mode == pack::kLightModeForwardAdd && !out.add) {
             out.add = p;
+        } else if (mode == pack::kLightModeDeferred && !out.deferred) {
+            out.deferred = p;
         }
     }
     return out;
+}
+
+std::string LightName(const Light* light) {
+    return light ? std::string(TypeName(light->type)) + " light '" + light->name + "'"
+                 : std::string("no light");
+}
+
+std::string Requester(const runtime::Scene& scene, const DrawItem& item) {
+    const std::string& mesh = scene.meshes[item.instance->mesh].name;
+    return item.material->name + " on " +
+           (!item.instance->node.empty() ? "node '" + item.instance->node + "'"
+            : !mesh.empty()              ? "mesh '" + mesh + "'"
+                                         : std::string("an unnamed node")) +
+           ": ";
+}
+
+bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
+                        const runtime::Scene& scene,
+                        const runtime::FrameSettings& settings,
+                        const DrawList& list,
+                        const DrawItem& item,
+                        std::vector<DrawRequest>& out,
+                        DiagnosticList& warnings) {
+    const MaterialInstance& m = *item.material;
+    const ShaderPasses passes = PassesOf(*packs[m.pack], m.shader);
+    if (passes.base.empty()) {
+        WarnOnce(warnings, scene, DiagCode::kPassNotDrawn,
+                 m.name +
+                     ": the shader has no ForwardBase or untagged pass; objects using it "
+                     "are not drawn by the forward path");
+        return false;
+    }
+    const ObjectLights lights = LightsFor(list.lights, list.main, item.center, item.radius,
+                                          settings.pixel_lights, settings.light_mode);
+    const std::string who = Requester(scene, item);
+    for (uint32_t pass : passes.base) {
+        DrawRequest r{item.instance, item.primitive, &m, pass, false,      lights.main,
+                      lights.vertex, lights.sh,      {}, {},   item.center};
+        r.keywords = DrawKeywords(m, false, lights.main, !lights.vertex.empty());
+        r.reason = who + "base pass, " +
+                   (lights.main ? "main " + LightName(lights.main) : "no directional light");
+        if (!lights.vertex.empty()) {
+            r.reason += ", " + std::to_string(lights.vertex.size()) + " vertex light" +
+                        (lights.vertex.size() == 1 ? "" : "s");
+        }
+        if (!lights.sh.empty()) {
+            r.reason += ", " + std::to_string(lights.sh.size()) + " SH light" +
+                        (lights.sh.size() == 1 ? "" : "s");
+        }
+        out.push_back(std::move(r));
+    }
+    if (passes.add) {
+        for (const Light* light : lights.pixel) {
+            DrawRequest r{
+                item.instance, item.primitive, &m, *passes.add, true, light, {}, {}, {}, {},
+                item.center};
+            r.keywords = DrawKeywords(m, true, light, false);
+            r.reason = who + "additive pass, " + LightName(light);
+            out.push_back(std::move(r));
+        }
+    }
+    return true;
 }
 
 Status PlanForward(const std::vector<const pack::Pack*>& packs,
@@ -78,51 +137,9 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
         return e;
     }
     for (const DrawItem& item : out.list.items) {
-        const MaterialInstance& m = *item.material;
-        const ShaderPasses passes = PassesOf(*packs[m.pack], m.shader);
-        if (passes.base.empty()) {
-            WarnOnce(warnings, scene, DiagCode::kPassNotDrawn,
-                     m.name +
-                         ": the shader has no ForwardBase or untagged pass; objects using it "
-                         "are not drawn by the forward path");
-            continue;
+        if (AddForwardRequests(packs, scene, settings, out.list, item, out.draws, warnings)) {
+            ++out.objects;
         }
-        const ObjectLights lights =
-            LightsFor(out.list.lights, out.list.main, item.center, item.radius,
-                      settings.pixel_lights, settings.light_mode);
-        const std::string& mesh = scene.meshes[item.instance->mesh].name;
-        const std::string who = m.name + " on " +
-                                (!item.instance->node.empty() ? "node '" + item.instance->node + "'"
-                                 : !mesh.empty()              ? "mesh '" + mesh + "'"
-                                                              : std::string("an unnamed node")) +
-                                ": ";
-        for (uint32_t pass : passes.base) {
-            DrawRequest r{item.instance, item.primitive, &m, pass, false,      lights.main,
-                          lights.vertex, lights.sh,      {}, {},   item.center};
-            r.keywords = DrawKeywords(m, false, lights.main, !lights.vertex.empty());
-            r.reason = who + "base pass, " +
-                       (lights.main ? "main " + LightName(lights.main) : "no directional light");
-            if (!lights.vertex.empty()) {
-                r.reason += ", " + std::to_string(lights.vertex.size()) + " vertex light" +
-                            (lights.vertex.size() == 1 ? "" : "s");
-            }
-            if (!lights.sh.empty()) {
-                r.reason += ", " + std::to_string(lights.sh.size()) + " SH light" +
-                            (lights.sh.size() == 1 ? "" : "s");
-            }
-            out.draws.push_back(std::move(r));
-        }
-        if (passes.add) {
-            for (const Light* light : lights.pixel) {
-                DrawRequest r{
-                    item.instance, item.primitive, &m, *passes.add, true, light, {}, {}, {}, {},
-                    item.center};
-                r.keywords = DrawKeywords(m, true, light, false);
-                r.reason = who + "additive pass, " + LightName(light);
-                out.draws.push_back(std::move(r));
-            }
-        }
-        ++out.objects;
     }
     return {};
 }

@@ -2,7 +2,7 @@
 // list (render/draw_list.h): the shader's ForwardBase (or untagged / Always) passes lit by the
 // main directional light with ambient, vertex lights and the rest of the lights in its spherical
 // harmonics, then one ForwardAdd draw per further pixel light; each with the keywords it asks the
-// variant selector for and who asked. RenderForward draws these requests; PlanScene
+// variant selector for and who asked. RenderFrame draws these requests; PlanScene
 // (kiln/runtime/plan.h) makes their lookups without drawing, for stripping: both read the same
 // list, so a stripped pack holds what a render asks for.
 #ifndef KILN_RUNTIME_RENDER_FORWARD_PLAN_H_
@@ -24,11 +24,12 @@
 
 namespace kiln::render {
 
-// The passes of a shader the forward path draws: of its first SubShader, every ForwardBase,
-// Always or untagged pass in order, and the first ForwardAdd pass.
+// The passes of a shader the paths draw: of its first SubShader, every ForwardBase, Always or
+// untagged pass in order, the first ForwardAdd pass, and the first Deferred pass.
 struct ShaderPasses {
     std::vector<uint32_t> base;
     std::optional<uint32_t> add;
+    std::optional<uint32_t> deferred;
 };
 ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader);
 
@@ -51,6 +52,23 @@ struct ForwardPlan {
     std::vector<DrawRequest> draws;  // in drawing order
     uint32_t objects = 0;            // primitives drawn
 };
+
+// The forward requests of one item of `list`, appended to `out`: its base passes, then one
+// additive pass per pixel light. False (and a warning, once) when its shader has no pass the
+// forward path draws.
+bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
+                        const runtime::Scene& scene,
+                        const runtime::FrameSettings& settings,
+                        const DrawList& list,
+                        const DrawItem& item,
+                        std::vector<DrawRequest>& out,
+                        DiagnosticList& warnings);
+
+// "material on node 'n': " (what a request's reason starts with).
+std::string Requester(const runtime::Scene& scene, const DrawItem& item);
+
+// "point light 'l'", or "no light".
+std::string LightName(const runtime::Light* light);
 
 // Plans a frame: the draw list (materials from `materials`), then its requests. Warnings (the
 // default light, a shader the path cannot draw) go to `warnings` once each, against the scene's

@@ -1,59 +1,17 @@
 #include "render/frame.h"
 
 #include <cstring>
-#include <deque>
 #include <map>
+
+#include "render/frame_internal.h"
 
 namespace kiln::runtime {
 namespace {
 
-float HalfToFloat(uint16_t h) {
-    const uint32_t sign = uint32_t(h & 0x8000) << 16;
-    const uint32_t exp = (h >> 10) & 0x1F;
-    const uint32_t mant = h & 0x3FF;
-    uint32_t bits;
-    if (exp == 0) {
-        if (mant == 0) {
-            bits = sign;
-        } else {  // subnormal: normalize
-            uint32_t m = mant;
-            int e = -1;
-            do {
-                ++e;
-                m <<= 1;
-            } while ((m & 0x400) == 0);
-            bits = sign | uint32_t(127 - 15 - e) << 23 | (m & 0x3FF) << 13;
-        }
-    } else if (exp == 31) {
-        bits = sign | 0x7F800000u | mant << 13;
-    } else {
-        bits = sign | (exp + 127 - 15) << 23 | mant << 13;
-    }
-    float f;
-    std::memcpy(&f, &bits, 4);
-    return f;
+bool HasStencil(VkFormat f) {
+    return f == VK_FORMAT_D32_SFLOAT_S8_UINT || f == VK_FORMAT_D24_UNORM_S8_UINT ||
+           f == VK_FORMAT_D16_UNORM_S8_UINT || f == VK_FORMAT_S8_UINT;
 }
-
-// The frame's device objects, freed on every path out of RecordFrame.
-struct FrameObjects {
-    const vk::Context& c;
-    std::vector<vk::Image> targets;
-    std::vector<VkFramebuffer> framebuffers;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    vk::Buffer uniforms;
-    ~FrameObjects() {
-        if (pool) {
-            vkDestroyDescriptorPool(c.device, pool, nullptr);
-        }
-        for (VkFramebuffer f : framebuffers) {
-            vkDestroyFramebuffer(c.device, f, nullptr);
-        }
-        vk::DestroyBuffer(c, uniforms);
-        for (vk::Image& image : targets) {
-            vk::DestroyImage(c, image);
-        }
-    }
-};
 
 // One descriptor pool sized for every set of every draw of the frame; null when no draw has a set.
 Status CreatePool(const vk::Context& c, const Frame& frame, VkDescriptorPool& out) {
@@ -93,6 +51,9 @@ Status CreatePool(const vk::Context& c, const Frame& frame, VkDescriptorPool& ou
 Status WriteSets(const vk::Context& c,
                  VkDescriptorPool pool,
                  const vk::Buffer& uniforms,
+                 const Frame& frame,
+                 const FramePass& pass,
+                 const std::vector<VkImageView>& sampled_views,
                  const Draw& draw,
                  std::vector<VkDescriptorSet>& out) {
     const vk::VariantLayout& layout = draw.pipeline->layout;
@@ -108,6 +69,7 @@ Status WriteSets(const vk::Context& c,
         return vk::VkError("cannot allocate descriptor sets", r);
     }
     std::vector<VkDescriptorBufferInfo> buffer_infos(draw.writes.size());
+    std::vector<VkDescriptorImageInfo> image_infos(draw.writes.size());
     std::vector<VkWriteDescriptorSet> writes;
     for (size_t k = 0; k < draw.writes.size(); ++k) {
         const Draw::Write& dw = draw.writes[k];
@@ -122,6 +84,11 @@ Status WriteSets(const vk::Context& c,
         if (dw.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
             buffer_infos[k] = {uniforms.buffer, dw.offset, dw.range};
             wr.pBufferInfo = &buffer_infos[k];
+        } else if (dw.target >= 0 && size_t(dw.target) < sampled_views.size()) {
+            image_infos[k] = dw.image;
+            image_infos[k].imageView = sampled_views[size_t(dw.target)];
+            image_infos[k].imageLayout = SampledLayout(frame, pass, uint32_t(dw.target));
+            wr.pImageInfo = &image_infos[k];
         } else {
             wr.pImageInfo = &dw.image;
         }
@@ -131,12 +98,262 @@ Status WriteSets(const vk::Context& c,
     return {};
 }
 
+}  // namespace
+
+float HalfToFloat(uint16_t h) {
+    const uint32_t sign = uint32_t(h & 0x8000) << 16;
+    const uint32_t exp = (h >> 10) & 0x1F;
+    const uint32_t mant = h & 0x3FF;
+    uint32_t bits;
+    if (exp == 0) {
+        if (mant == 0) {
+            bits = sign;
+        } else {  // subnormal: normalize
+            uint32_t m = mant;
+            int e = -1;
+            do {
+                ++e;
+                m <<= 1;
+            } while ((m & 0x400) == 0);
+            bits = sign | uint32_t(127 - 15 - e) << 23 | (m & 0x3FF) << 13;
+        }
+    } else if (exp == 31) {
+        bits = sign | 0x7F800000u | mant << 13;
+    } else {
+        bits = sign | (exp + 127 - 15) << 23 | mant << 13;
+    }
+    float f;
+    std::memcpy(&f, &bits, 4);
+    return f;
+}
+
+// The layout a target is sampled in.
+VkImageLayout ReadOnlyDepthLayout() {
+    return VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL;
+}
+
+VkImageLayout SampledLayout(const Frame& frame, const FramePass& pass, uint32_t t) {
+    if (pass.depth_read_only && pass.depth == t) {
+        return ReadOnlyDepthLayout();  // sampled while it is the pass's read-only depth buffer
+    }
+    return frame.targets[t].depth ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
+                                  : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
+
+// Every aspect of a target's format: its attachment view and its layout transitions cover them.
+VkImageAspectFlags AspectsOf(const FrameTarget& t) {
+    if (!t.depth) {
+        return VK_IMAGE_ASPECT_COLOR_BIT;
+    }
+    return VK_IMAGE_ASPECT_DEPTH_BIT | (HasStencil(t.format) ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
+}
+
+std::vector<uint32_t> Attachments(const FramePass& pass) {
+    std::vector<uint32_t> out = pass.colors;
+    if (pass.depth) {
+        out.push_back(*pass.depth);
+    }
+    return out;
+}
+
+vk::TargetFormats FormatsOf(const Frame& frame, const FramePass& pass) {
+    vk::TargetFormats out;
+    for (uint32_t t : pass.colors) {
+        out.colors.push_back(frame.targets[t].format);
+    }
+    if (pass.depth) {
+        out.depth = frame.targets[*pass.depth].format;
+    }
+    return out;
+}
+
+FrameObjects::~FrameObjects() {
+    if (pool) {
+        vkDestroyDescriptorPool(c.device, pool, nullptr);
+    }
+    for (VkFramebuffer fb : framebuffers) {
+        vkDestroyFramebuffer(c.device, fb, nullptr);
+    }
+    vk::DestroyBuffer(c, uniforms);
+    for (VkImageView v : own_views) {
+        vkDestroyImageView(c.device, v, nullptr);
+    }
+    for (vk::Image& image : targets) {
+        vk::DestroyImage(c, image);
+    }
+}
+
+void Layouts::To(VkCommandBuffer cmd, uint32_t t, VkImageLayout want) {
+    if (current[t] == want) {
+        return;
+    }
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask =
+        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
+                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    b.oldLayout = current[t];
+    b.newLayout = want;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = images[t].image;
+    b.subresourceRange = {AspectsOf(frame.targets[t]), 0, 1, 0, 1};
+    const VkPipelineStageFlags stages =
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+        VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    vkCmdPipelineBarrier(cmd, stages, stages, 0, 0, nullptr, 0, nullptr, 1, &b);
+    current[t] = want;
+}
+
+void Layouts::Before(VkCommandBuffer cmd, const FramePass& pass) {
+    for (uint32_t t : pass.sampled) {
+        if (!(pass.depth_read_only && pass.depth == t)) {  // else the attachment's layout below
+            To(cmd, t, SampledLayout(frame, pass, t));
+        }
+    }
+    for (uint32_t t : pass.colors) {
+        if (pass.clear) {
+            current[t] = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        } else {
+            To(cmd, t, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        }
+    }
+    if (pass.depth) {
+        const VkImageLayout want = pass.depth_read_only
+                                       ? ReadOnlyDepthLayout()
+                                       : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        if (pass.clear && !pass.depth_read_only) {
+            current[*pass.depth] = want;
+        } else {
+            To(cmd, *pass.depth, want);
+        }
+    }
+}
+
+Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
+    const vk::Context& c = s.context;
+    for (const FrameTarget& t : frame.targets) {
+        vk::Image& image = f.targets.emplace_back();
+        // Every target may be sampled by a later pass and read back (the frame debugger).
+        const VkImageUsageFlags usage = (t.depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                                 : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
+                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                        VK_IMAGE_USAGE_SAMPLED_BIT;
+        if (Status e =
+                vk::CreateImage(c, frame.width, frame.height, t.format, usage, AspectsOf(t), image);
+            !e.ok()) {
+            return e;
+        }
+        f.sampled_views.push_back(image.view);
+        if (AspectsOf(t) != (t.depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT)) {
+            VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+            view.image = image.image;
+            view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+            view.format = t.format;
+            view.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+            VkImageView depth_only = VK_NULL_HANDLE;
+            if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &depth_only);
+                r != VK_SUCCESS) {
+                return vk::VkError("cannot create a depth view", r);
+            }
+            f.own_views.push_back(depth_only);
+            f.sampled_views.back() = depth_only;
+        }
+    }
+    for (const FramePass& pass : frame.passes) {
+        VkRenderPass rp = VK_NULL_HANDLE;
+        if (Status e = s.RenderPass(FormatsOf(frame, pass), pass.clear, pass.depth_read_only, rp);
+            !e.ok()) {
+            return e;
+        }
+        f.render_passes.push_back(rp);
+        std::vector<VkImageView> views;
+        for (uint32_t t : Attachments(pass)) {
+            views.push_back(f.targets[t].view);
+        }
+        VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        fb.renderPass = rp;
+        fb.attachmentCount = uint32_t(views.size());
+        fb.pAttachments = views.data();
+        fb.width = frame.width;
+        fb.height = frame.height;
+        fb.layers = 1;
+        VkFramebuffer framebuffer = VK_NULL_HANDLE;
+        if (VkResult r = vkCreateFramebuffer(c.device, &fb, nullptr, &framebuffer);
+            r != VK_SUCCESS) {
+            return vk::VkError("cannot create a framebuffer", r);
+        }
+        f.framebuffers.push_back(framebuffer);
+    }
+    if (Status e = vk::CreateBufferWithData(c, frame.uniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                            f.uniforms);
+        !e.ok()) {
+        return e;
+    }
+    if (Status e = CreatePool(c, frame, f.pool); !e.ok()) {
+        return e;
+    }
+    // Descriptor sets per draw, written before recording.
+    f.sets.resize(frame.passes.size());
+    for (size_t p = 0; p < frame.passes.size(); ++p) {
+        f.sets[p].resize(frame.passes[p].draws.size());
+        for (size_t i = 0; i < frame.passes[p].draws.size(); ++i) {
+            if (Status e = WriteSets(c, f.pool, f.uniforms, frame, frame.passes[p], f.sampled_views,
+                                     frame.passes[p].draws[i], f.sets[p][i]);
+                !e.ok()) {
+                return e;
+            }
+        }
+    }
+    return {};
+}
+
+void BeginPass(VkCommandBuffer cmd,
+               const Frame& frame,
+               const FrameObjects& f,
+               size_t p,
+               VkRenderPass render_pass) {
+    const FramePass& pass = frame.passes[p];
+    std::vector<VkClearValue> clear;
+    for (uint32_t t : Attachments(pass)) {
+        clear.push_back(frame.targets[t].clear);
+    }
+    const uint32_t w = frame.width, h = frame.height;
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = render_pass;
+    begin.framebuffer = f.framebuffers[p];
+    begin.renderArea = {{0, 0}, {w, h}};
+    begin.clearValueCount = uint32_t(clear.size());  // ignored by a loading render pass
+    begin.pClearValues = clear.data();
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    // Negative height: clip-space +y points up the image, as in GL and glTF.
+    const VkViewport viewport{0, float(h), float(w), -float(h), 0, 1};
+    const VkRect2D scissor{{0, 0}, {w, h}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
 void RecordDraws(VkCommandBuffer cmd,
-                 const std::vector<Draw>& draws,
-                 const std::vector<std::vector<VkDescriptorSet>>& sets) {
+                 std::span<const Draw> draws,
+                 std::span<const std::vector<VkDescriptorSet>> sets,
+                 const VkRect2D& full) {
     const vk::Pipeline* bound = nullptr;
+    VkRect2D scissor = full;
+    std::optional<float> depth;  // the viewport BeginPass set: depth range 0..1
     for (size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
+        const VkRect2D want = d.scissor.value_or(full);
+        if (std::memcmp(&want, &scissor, sizeof want) != 0) {
+            vkCmdSetScissor(cmd, 0, 1, &want);
+            scissor = want;
+        }
+        if (d.depth != depth) {
+            const float w = float(full.extent.width), h = float(full.extent.height);
+            const VkViewport viewport{0, h, w, -h, d.depth.value_or(0.0f), d.depth.value_or(1.0f)};
+            vkCmdSetViewport(cmd, 0, 1, &viewport);
+            depth = d.depth;
+        }
         if (d.pipeline != bound) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline->pipeline);
             bound = d.pipeline;
@@ -157,149 +374,35 @@ void RecordDraws(VkCommandBuffer cmd,
     }
 }
 
-}  // namespace
-
-// A pass's targets in attachment order: the colours, then the depth buffer.
-std::vector<uint32_t> Attachments(const FramePass& pass) {
-    std::vector<uint32_t> out = pass.colors;
-    if (pass.depth) {
-        out.push_back(*pass.depth);
+Status RecordFrame(Renderer::State& s,
+                   const Frame& frame,
+                   LinearImage& out,
+                   const StepObserver* observer) {
+    if (observer) {
+        return RecordFrameSteps(s, frame, out, *observer);
     }
-    return out;
-}
-
-vk::TargetFormats FormatsOf(const Frame& frame, const FramePass& pass) {
-    vk::TargetFormats out;
-    for (uint32_t t : pass.colors) {
-        out.colors.push_back(frame.targets[t].format);
-    }
-    if (pass.depth) {
-        out.depth = frame.targets[*pass.depth].format;
-    }
-    return out;
-}
-
-Status RecordFrame(Renderer::State& s, const Frame& frame, LinearImage& out) {
     const vk::Context& c = s.context;
-    const uint32_t w = frame.width, h = frame.height;
-    FrameObjects f{c, {}, {}, VK_NULL_HANDLE, {}};
-    for (const FrameTarget& t : frame.targets) {
-        vk::Image& image = f.targets.emplace_back();
-        const VkImageUsageFlags usage =
-            t.depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
-                    : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        if (Status e = vk::CreateImage(
-                c, w, h, t.format, usage,
-                t.depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT, image);
-            !e.ok()) {
-            return e;
-        }
-    }
-    std::vector<VkRenderPass> render_passes;
-    for (const FramePass& pass : frame.passes) {
-        VkRenderPass rp = VK_NULL_HANDLE;
-        if (Status e = s.RenderPass(FormatsOf(frame, pass), pass.clear, rp); !e.ok()) {
-            return e;
-        }
-        render_passes.push_back(rp);
-        std::vector<VkImageView> views;
-        for (uint32_t t : Attachments(pass)) {
-            views.push_back(f.targets[t].view);
-        }
-        VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        fb.renderPass = rp;
-        fb.attachmentCount = uint32_t(views.size());
-        fb.pAttachments = views.data();
-        fb.width = w;
-        fb.height = h;
-        fb.layers = 1;
-        VkFramebuffer framebuffer = VK_NULL_HANDLE;
-        if (VkResult r = vkCreateFramebuffer(c.device, &fb, nullptr, &framebuffer);
-            r != VK_SUCCESS) {
-            return vk::VkError("cannot create a framebuffer", r);
-        }
-        f.framebuffers.push_back(framebuffer);
-    }
-    if (Status e = vk::CreateBufferWithData(c, frame.uniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                            f.uniforms);
-        !e.ok()) {
+    FrameObjects f(c);
+    if (Status e = PrepareFrame(s, frame, f); !e.ok()) {
         return e;
     }
-    if (Status e = CreatePool(c, frame, f.pool); !e.ok()) {
-        return e;
-    }
-    // Descriptor sets per draw, written before recording.
-    std::vector<std::vector<std::vector<VkDescriptorSet>>> sets(frame.passes.size());
-    for (size_t p = 0; p < frame.passes.size(); ++p) {
-        sets[p].resize(frame.passes[p].draws.size());
-        for (size_t i = 0; i < frame.passes[p].draws.size(); ++i) {
-            if (Status e = WriteSets(c, f.pool, f.uniforms, frame.passes[p].draws[i], sets[p][i]);
-                !e.ok()) {
-                return e;
-            }
-        }
-    }
-
     VkCommandBuffer cmd = vk::BeginOneShot(c);
     if (cmd == VK_NULL_HANDLE) {
         return Error{DiagCode::kRenderFailed, "cannot allocate a command buffer"};
     }
-    // Negative height: clip-space +y points up the image, as in GL and glTF.
-    const VkViewport viewport{0, float(h), float(w), -float(h), 0, 1};
-    const VkRect2D scissor{{0, 0}, {w, h}};
+    const VkRect2D full{{0, 0}, {frame.width, frame.height}};
+    Layouts layouts{frame, f.targets,
+                    std::vector<VkImageLayout>(frame.targets.size(), VK_IMAGE_LAYOUT_UNDEFINED)};
     for (size_t p = 0; p < frame.passes.size(); ++p) {
-        const FramePass& pass = frame.passes[p];
-        std::vector<VkClearValue> clear;
-        for (uint32_t t : Attachments(pass)) {
-            clear.push_back(frame.targets[t].clear);
-        }
-        VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-        begin.renderPass = render_passes[p];
-        begin.framebuffer = f.framebuffers[p];
-        begin.renderArea = {{0, 0}, {w, h}};
-        begin.clearValueCount = pass.clear ? uint32_t(clear.size()) : 0;
-        begin.pClearValues = pass.clear ? clear.data() : nullptr;
-        vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &scissor);
-        RecordDraws(cmd, pass.draws, sets[p]);
+        layouts.Before(cmd, frame.passes[p]);
+        BeginPass(cmd, frame, f, p, f.render_passes[p]);
+        RecordDraws(cmd, frame.passes[p].draws, f.sets[p], full);
         vkCmdEndRenderPass(cmd);
     }
-    // The output leaves its attachment layout for the read-back copy (the render pass's
-    // dependency made its writes available to transfers).
-    VkImageMemoryBarrier to_copy{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    to_copy.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    to_copy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    to_copy.oldLayout =
-        frame.passes.empty() ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    to_copy.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    to_copy.srcQueueFamilyIndex = to_copy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    to_copy.image = f.targets[frame.output].image;
-    to_copy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &to_copy);
     if (Status e = vk::SubmitAndWait(c, cmd); !e.ok()) {
         return e;
     }
-
-    const bool f32 = frame.targets[frame.output].format == VK_FORMAT_R32G32B32A32_SFLOAT;
-    std::vector<uint8_t> bytes;
-    if (Status e = vk::ReadBack(c, f.targets[frame.output], f32 ? 16 : 8, bytes); !e.ok()) {
-        return e;
-    }
-    out.width = w;
-    out.height = h;
-    out.rgba.resize(size_t{w} * h * 4);
-    if (f32) {
-        std::memcpy(out.rgba.data(), bytes.data(), out.rgba.size() * 4);
-    } else {
-        for (size_t i = 0; i < out.rgba.size(); ++i) {
-            uint16_t half;
-            std::memcpy(&half, bytes.data() + i * 2, 2);
-            out.rgba[i] = HalfToFloat(half);
-        }
-    }
-    return {};
+    return ReadOutput(c, frame, f, layouts.current[frame.output], out);
 }
 
 }  // namespace kiln::runtime

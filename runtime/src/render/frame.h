@@ -2,7 +2,8 @@
 // attachments and a depth buffer, named, with their formats) that later passes may load or sample.
 // Everything is decided on the CPU first (draws with their pipelines, uniform bytes and
 // descriptors); RecordFrame then creates the targets, records every pass into one command buffer
-// and reads the output target back.
+// (moving each target into the layout the pass uses it in: attachment, read-only depth, or
+// sampled) and reads the output target back.
 #ifndef KILN_RUNTIME_RENDER_FRAME_H_
 #define KILN_RUNTIME_RENDER_FRAME_H_
 
@@ -25,8 +26,23 @@ struct Draw {
         VkDescriptorType type;
         VkDeviceSize offset = 0, range = 0;  // uniform buffers: into the frame's buffer
         VkDescriptorImageInfo image{};
+        // A target of the frame (index into Frame::targets) sampled by the draw: its view and
+        // read-only layout replace image's when the frame is recorded. -1: none.
+        int target = -1;
     };
     std::vector<Write> writes;
+    std::optional<VkRect2D> scissor;  // none: the whole frame
+    // Every fragment at this depth (the viewport's depth range collapsed to it), for depth tests
+    // against a fixed depth: the deferred light pass's bounds. None: the vertices' depth.
+    std::optional<float> depth;
+    // Recorded in the same frame-debugger step as the next draw (a light's stencil mask and the
+    // light it bounds).
+    bool joins_next = false;
+    // What the frame debugger records about the draw.
+    struct Info {
+        std::string shader, pass, light_mode, keywords, state, light, object;
+    };
+    Info info;
 };
 
 // An image of the frame: a colour target or the depth-stencil buffer.
@@ -35,6 +51,9 @@ struct FrameTarget {
     VkFormat format = VK_FORMAT_UNDEFINED;
     bool depth = false;
     VkClearValue clear{};  // what a pass that clears it writes
+    // How the frame debugger shows it: through the display transform (light), or as stored
+    // (G-buffer data). Depth targets are linearised.
+    bool display = true;
 };
 
 struct FramePass {
@@ -42,6 +61,10 @@ struct FramePass {
     std::vector<uint32_t> colors;   // indices into Frame::targets, in attachment order
     std::optional<uint32_t> depth;  // index into Frame::targets
     bool clear = true;              // clear the targets first; false: keep what they hold
+    // The depth buffer is read-only in this pass (depth tests, no writes), so the pass may also
+    // sample it; its stencil is cleared at the start and writable (the light pass's masks).
+    bool depth_read_only = false;
+    std::vector<uint32_t> sampled;  // targets the draws sample (Draw::Write::target)
     std::vector<Draw> draws;
 };
 
@@ -56,7 +79,21 @@ struct Frame {
 // The formats of a pass's targets: what its pipelines are created against.
 vk::TargetFormats FormatsOf(const Frame& frame, const FramePass& pass);
 
-Status RecordFrame(Renderer::State& s, const Frame& frame, LinearImage& out);
+// A target read back after a step: its index into Frame::targets and its texels (a depth
+// target's depth aspect, 4 bytes each).
+struct CapturedTarget {
+    uint32_t target = 0;
+    std::vector<uint8_t> bytes;
+};
+
+// Records and submits the frame and reads the output back. With `observer` (the frame debugger)
+// each pass's clear and each draw is submitted on its own, and after each the targets the pass
+// writes are read back and handed to the observer with the draw's GPU time (timestamp queries;
+// negative where the queue has none) — the image is the same.
+Status RecordFrame(Renderer::State& s,
+                   const Frame& frame,
+                   LinearImage& out,
+                   const StepObserver* observer = nullptr);
 
 }  // namespace kiln::runtime
 

@@ -3,6 +3,7 @@
 #include <memory>
 #include <set>
 
+#include "render/deferred_plan.h"
 #include "render/forward_plan.h"
 #include "render/frame_values.h"
 
@@ -21,12 +22,37 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
         return e.error();
     }
     render::MaterialCache materials;
-    render::ForwardPlan plan;
-    if (Status e = render::PlanForward(packs, scene, settings, camera.position, color, materials,
-                                       plan, warnings);
-        !e.ok()) {
-        return e.error();
+    // The path's requests, in drawing order, and the list they came from.
+    render::ForwardPlan forward;
+    render::DeferredPlan deferred;
+    std::vector<const render::DrawRequest*> requests;
+    const bool is_deferred = settings.path == RenderPath::kDeferred;
+    if (is_deferred) {
+        if (Status e = render::PlanDeferred(packs, scene, settings, camera.position, color,
+                                            materials, deferred, warnings);
+            !e.ok()) {
+            return e.error();
+        }
+        for (const render::DrawRequest& r : deferred.gbuffer) {
+            requests.push_back(&r);
+        }
+        for (const render::LightDraw& l : deferred.lights) {
+            requests.push_back(&l.request);
+        }
+        for (const render::DrawRequest& r : deferred.forward) {
+            requests.push_back(&r);
+        }
+    } else {
+        if (Status e = render::PlanForward(packs, scene, settings, camera.position, color,
+                                           materials, forward, warnings);
+            !e.ok()) {
+            return e.error();
+        }
+        for (const render::DrawRequest& r : forward.draws) {
+            requests.push_back(&r);
+        }
     }
+    const render::DrawList& list = is_deferred ? deferred.list : forward.list;
     ScenePlan out;
     std::vector<std::unique_ptr<pack::VariantSelector>> selectors;
     for (const pack::Pack* p : packs) {
@@ -34,12 +60,12 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
             std::make_unique<pack::VariantSelector>(*p, pack::MissingVariantPolicy::kError));
     }
     std::set<std::string> reported;
-    for (const render::DrawRequest& r : plan.draws) {
+    for (const render::DrawRequest* r : requests) {
         const Result<pack::VariantChoice> chosen =
-            selectors[r.material->pack]->Select(r.pass, r.keywords, r.reason);
+            selectors[r->material->pack]->Select(r->pass, r->keywords, r->reason);
         if (!chosen && reported.insert(chosen.error().message).second) {
             out.missing.Error(chosen.error().code, scene.path, kNoPosition,
-                              chosen.error().message + "; needed by " + r.reason);
+                              chosen.error().message + "; needed by " + r->reason);
         }
     }
     std::vector<const pack::VariantSelector*> views;
@@ -48,13 +74,17 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     }
     out.usage.lookups = pack::UsageOf(views);
     std::set<pack::UsageMaterial> used;
-    for (const render::MaterialInstance* m : plan.list.materials) {
+    std::vector<const render::MaterialInstance*> used_instances = list.materials;
+    if (deferred.light_material) {
+        used_instances.push_back(&*deferred.light_material);
+    }
+    for (const render::MaterialInstance* m : used_instances) {
         const pack::Pack& p = *packs[m->pack];
         used.insert({m->name, std::string(p.String(p.Shader(m->shader).value().name))});
     }
     out.usage.materials.assign(used.begin(), used.end());
-    out.objects = plan.objects;
-    out.draws = uint32_t(plan.draws.size());
+    out.objects = is_deferred ? deferred.objects : forward.objects;
+    out.draws = uint32_t(requests.size());
     return out;
 }
 

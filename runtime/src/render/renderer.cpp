@@ -32,6 +32,8 @@ Renderer::State::~State() {
     for (auto& [name, image] : default_textures) {
         vk::DestroyImage(context, image);
     }
+    vk::DestroyBuffer(context, screen_vertices);
+    vk::DestroyBuffer(context, screen_indices);
     for (auto& [key, pass] : render_passes) {
         vkDestroyRenderPass(context.device, pass, nullptr);
     }
@@ -46,16 +48,60 @@ std::vector<const pack::Pack*> Renderer::State::PackList() const {
     return out;
 }
 
-Status Renderer::State::RenderPass(const vk::TargetFormats& targets,
-                                   bool clear,
-                                   VkRenderPass& out) {
-    auto it = render_passes.find({targets, clear});
-    if (it == render_passes.end()) {
-        VkRenderPass pass = VK_NULL_HANDLE;
-        if (Status e = vk::CreateRenderPass(context, targets, clear, pass); !e.ok()) {
+void Renderer::State::NoteMaterials(const render::DrawList& list) {
+    for (const render::MaterialInstance* m : list.materials) {
+        const pack::Pack& pack = packs[m->pack]->pack;
+        used_materials.insert(
+            {m->name, std::string(pack.String(pack.Shader(m->shader).value().name))});
+    }
+}
+
+Status Renderer::State::ScreenTriangle(const vk::Buffer*& vertices, const vk::Buffer*& indices) {
+    if (!screen_vertices.buffer) {
+        MeshVertex corners[3]{};
+        const float xy[3][2] = {{-1, -1}, {3, -1}, {-1, 3}};
+        for (int i = 0; i < 3; ++i) {
+            corners[i].position[0] = xy[i][0];
+            corners[i].position[1] = xy[i][1];
+            corners[i].normal[2] = 1;
+            corners[i].tangent[0] = corners[i].tangent[3] = 1;
+            for (float& c : corners[i].color) {
+                c = 1;
+            }
+        }
+        const uint32_t order[3] = {0, 1, 2};
+        if (Status e = vk::CreateBufferWithData(
+                context, {reinterpret_cast<const uint8_t*>(corners), sizeof corners},
+                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, screen_vertices);
+            !e.ok()) {
             return e;
         }
-        it = render_passes.emplace(std::pair{targets, clear}, pass).first;
+        if (Status e = vk::CreateBufferWithData(
+                context, {reinterpret_cast<const uint8_t*>(order), sizeof order},
+                VK_BUFFER_USAGE_INDEX_BUFFER_BIT, screen_indices);
+            !e.ok()) {
+            vk::DestroyBuffer(context, screen_vertices);
+            return e;
+        }
+    }
+    vertices = &screen_vertices;
+    indices = &screen_indices;
+    return {};
+}
+
+Status Renderer::State::RenderPass(const vk::TargetFormats& targets,
+                                   bool clear,
+                                   bool depth_read_only,
+                                   VkRenderPass& out) {
+    const auto key = std::tuple{targets, clear, depth_read_only};
+    auto it = render_passes.find(key);
+    if (it == render_passes.end()) {
+        VkRenderPass pass = VK_NULL_HANDLE;
+        if (Status e = vk::CreateRenderPass(context, targets, clear, depth_read_only, pass);
+            !e.ok()) {
+            return e;
+        }
+        it = render_passes.emplace(key, pass).first;
     }
     out = it->second;
     return {};
@@ -75,7 +121,7 @@ Status Renderer::State::GetPipeline(uint32_t pack,
     }
     PipelineEntry entry{pack, variant, state, targets, {}};
     VkRenderPass compatible = VK_NULL_HANDLE;
-    if (Status e = RenderPass(targets, true, compatible); !e.ok()) {
+    if (Status e = RenderPass(targets, true, false, compatible); !e.ok()) {
         return e;
     }
     const vk::PipelineTargets pipeline_targets{compatible, uint32_t(targets.colors.size())};
@@ -90,8 +136,9 @@ Status Renderer::State::GetPipeline(uint32_t pack,
     return {};
 }
 
-Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out) {
-    auto it = samplers.find({repeat, nearest});
+Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out, bool nearest_mips) {
+    const auto key = std::tuple{repeat, nearest, nearest_mips};
+    auto it = samplers.find(key);
     if (it != samplers.end()) {
         out = it->second;
         return {};
@@ -99,7 +146,7 @@ Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out) {
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
     info.minFilter = nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
-    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    info.mipmapMode = nearest_mips ? VK_SAMPLER_MIPMAP_MODE_NEAREST : VK_SAMPLER_MIPMAP_MODE_LINEAR;
     const VkSamplerAddressMode mode =
         repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.addressModeU = info.addressModeV = info.addressModeW = mode;
@@ -108,7 +155,7 @@ Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out) {
     if (VkResult r = vkCreateSampler(context.device, &info, nullptr, &sampler); r != VK_SUCCESS) {
         return vk::VkError("cannot create a sampler", r);
     }
-    samplers[{repeat, nearest}] = sampler;
+    samplers[key] = sampler;
     out = sampler;
     return {};
 }
@@ -264,10 +311,11 @@ Status Renderer::Render(const Scene& scene,
                         const FrameSettings& settings,
                         const ColorPipeline& color,
                         LinearImage& out,
-                        FrameStats& stats) {
+                        FrameStats& stats,
+                        FrameCapture* capture) {
     stats = FrameStats{};
     stats.warnings = std::exchange(state_->notes, DiagnosticList());
-    return RenderForward(*state_, scene, settings, color, out, stats);
+    return RenderFrame(*state_, scene, settings, color, out, stats, capture);
 }
 
 std::string Renderer::DeviceName() const {

@@ -4,11 +4,13 @@
 #define KILN_RUNTIME_RENDER_RENDERER_STATE_H_
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "kiln/runtime/renderer.h"
@@ -21,11 +23,21 @@
 
 namespace kiln::render {
 struct CameraSetup;
+struct DeferredPlan;
 struct ForwardPlan;
 class FrameTextures;
 }  // namespace kiln::render
 
 namespace kiln::runtime {
+
+struct Frame;
+struct CapturedTarget;
+// Called after each step of a frame recorded step by step (render/frame.h, RecordFrame).
+using StepObserver = std::function<Status(const Frame& frame,
+                                          size_t pass,
+                                          int draw,
+                                          std::vector<CapturedTarget> targets,
+                                          double gpu_ms)>;
 
 struct LoadedPack {
     std::string path;
@@ -74,15 +86,17 @@ struct Renderer::State {
     VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
     VkFormat color_format = VK_FORMAT_R16G16B16A16_SFLOAT;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
-    // (target formats, clear) -> render pass; pipelines use the clearing one (compatible).
-    std::map<std::pair<vk::TargetFormats, bool>, VkRenderPass> render_passes;
+    // (target formats, clear, read-only depth) -> render pass; pipelines use the clearing one
+    // (render passes that differ only in load operations and layouts are compatible).
+    std::map<std::tuple<vk::TargetFormats, bool, bool>, VkRenderPass> render_passes;
     std::deque<PipelineEntry> pipelines;  // deque: entries are handed out by pointer
-    std::map<std::pair<bool, bool>, VkSampler> samplers;  // (repeat, nearest)
+    std::map<std::tuple<bool, bool, bool>, VkSampler> samplers;  // (repeat, nearest, nearest mips)
     std::map<std::pair<std::string, vk::ImageShape>, vk::Image> default_textures;
     DiagnosticList notes;  // pipeline-cache warnings etc., reported with the next frame
     std::set<pack::UsageMaterial> used_materials;       // every frame's, for the usage file
     std::unique_ptr<vk::ModuleChecker> module_checker;  // null when the packs are trusted
     std::unique_ptr<SceneResources> scene_resources;    // of the last scene drawn
+    vk::Buffer screen_vertices, screen_indices;         // ScreenTriangle's, made on first use
 
     ~State();
     Status GetPipeline(uint32_t pack,
@@ -91,27 +105,38 @@ struct Renderer::State {
                        const vk::TargetFormats& targets,
                        const vk::Pipeline*& out,
                        uint32_t& created);
-    Status RenderPass(const vk::TargetFormats& targets, bool clear, VkRenderPass& out);
+    Status RenderPass(const vk::TargetFormats& targets,
+                      bool clear,
+                      bool depth_read_only,
+                      VkRenderPass& out);
     // The resources of `scene`: the kept ones when the last frame drew the same scene id with
     // the same colour pipeline, else new ones (the old are released).
     SceneResources& ResourcesFor(const Scene& scene, const ColorPipeline& color);
-    Status Sampler(bool repeat, bool nearest, VkSampler& out);
+    // `nearest_mips`: no filtering between mip levels either (what a depth target, which has no
+    // linear filtering, must be sampled with).
+    Status Sampler(bool repeat, bool nearest, VkSampler& out, bool nearest_mips = false);
     // Unity's named defaults ("white", "black", "gray", "bump", "red"; others are "gray") in
     // the shape the shader declares.
     Status DefaultTexture(const std::string& name, vk::ImageShape shape, const vk::Image*& out);
     std::vector<const pack::Pack*> PackList() const;
+    // Records the list's materials (with their shaders) for the usage file.
+    void NoteMaterials(const render::DrawList& list);
+    // A triangle covering the whole frame in clip space (x, y in -1..3), in the mesh vertex
+    // layout: what the deferred light pass draws.
+    Status ScreenTriangle(const vk::Buffer*& vertices, const vk::Buffer*& indices);
 };
 
-// Renders a frame with the state's caches (render/forward.cpp): plans it (render/forward_plan.h),
-// then draws the plan.
-Status RenderForward(Renderer::State& state,
-                     const Scene& scene,
-                     const FrameSettings& settings,
-                     const ColorPipeline& color,
-                     LinearImage& out,
-                     FrameStats& stats);
+// Renders a frame with the state's caches (render/forward.cpp): plans it for the settings' path
+// (render/forward_plan.h, render/deferred_plan.h), then draws the plan.
+Status RenderFrame(Renderer::State& state,
+                   const Scene& scene,
+                   const FrameSettings& settings,
+                   const ColorPipeline& color,
+                   LinearImage& out,
+                   FrameStats& stats,
+                   FrameCapture* capture = nullptr);
 // Draws a planned frame: each request's variant, pipeline, uniforms and descriptors, then one
-// command buffer (what RenderForward does after planning; kiln test plans its own frames). The
+// command buffer (what RenderFrame does after planning; kiln test plans its own frames). The
 // meshes and textures come from `resources`.
 Status DrawPlan(Renderer::State& state,
                 SceneResources& resources,
@@ -120,7 +145,20 @@ Status DrawPlan(Renderer::State& state,
                 const render::CameraSetup& camera,
                 const render::ForwardPlan& plan,
                 LinearImage& out,
-                FrameStats& stats);
+                FrameStats& stats,
+                const StepObserver* observer = nullptr);
+
+// Draws a deferred plan (render/deferred.cpp): the G-buffer pass, one light pass per light into
+// the light buffer, then the objects the deferred path cannot draw with the forward path.
+Status DrawDeferred(Renderer::State& state,
+                    SceneResources& resources,
+                    const Scene& scene,
+                    const FrameSettings& settings,
+                    const render::CameraSetup& camera,
+                    const render::DeferredPlan& plan,
+                    LinearImage& out,
+                    FrameStats& stats,
+                    const StepObserver* observer = nullptr);
 
 }  // namespace kiln::runtime
 

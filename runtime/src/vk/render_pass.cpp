@@ -26,7 +26,11 @@ VkAttachmentDescription Attachment(VkFormat format, bool clear, VkImageLayout la
 Status CreateRenderPass(const Context& c,
                         const TargetFormats& formats,
                         bool clear,
+                        bool depth_read_only,
                         VkRenderPass& out) {
+    const VkImageLayout depth_layout =
+        depth_read_only ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL
+                        : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     std::vector<VkAttachmentDescription> attachments;
     std::vector<VkAttachmentReference> colors;
     for (VkFormat f : formats.colors) {
@@ -34,11 +38,16 @@ Status CreateRenderPass(const Context& c,
         attachments.push_back(
             Attachment(f, clear, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false));
     }
-    VkAttachmentReference depth{uint32_t(attachments.size()),
-                                VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkAttachmentReference depth{uint32_t(attachments.size()), depth_layout};
     if (formats.depth != VK_FORMAT_UNDEFINED) {
-        attachments.push_back(Attachment(formats.depth, clear,
-                                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, true));
+        VkAttachmentDescription a =
+            Attachment(formats.depth, clear && !depth_read_only, depth_layout, true);
+        if (depth_read_only) {
+            // The depth is kept; the stencil starts cleared, for the pass's own masks.
+            a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        }
+        attachments.push_back(a);
     }
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;

@@ -22,10 +22,14 @@ struct TargetFormats {
 };
 
 // `clear`: the targets start undefined and are cleared; else they are loaded in their attachment
-// layouts (a previous pass of the frame wrote them).
+// layouts (a previous pass of the frame wrote them). `depth_read_only`: the depth buffer is loaded
+// and stays in DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, so the pass may sample its depth while
+// it depth-tests against it; its stencil is cleared and writable (the deferred light pass's
+// masks).
 Status CreateRenderPass(const Context& c,
                         const TargetFormats& formats,
                         bool clear,
+                        bool depth_read_only,
                         VkRenderPass& out);
 
 }  // namespace kiln::vk

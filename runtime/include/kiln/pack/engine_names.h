@@ -37,9 +37,24 @@ inline constexpr const char* kKeywordPointCookie = "POINT_COOKIE";
 inline constexpr const char* kKeywordDirectionalCookie = "DIRECTIONAL_COOKIE";
 inline constexpr const char* kKeywordLightProbeSH = "LIGHTPROBE_SH";
 inline constexpr const char* kKeywordVertexLight = "VERTEXLIGHT_ON";
+// The deferred path's G-buffer normals in the octahedral encoding (URP's name; UnityGBuffer.cginc).
+inline constexpr const char* kKeywordGBufferNormalsOct = "_GBUFFER_NORMALS_OCT";
 
 // The shader the renderer maps a glTF metallic-roughness material onto (no sidecar .material).
 inline constexpr const char* kShaderStandardMetallic = "Kiln/StandardMetallic";
+// The deferred path's light pass (materials/internal/DeferredShading.shader; Unity's name for its
+// own): the first loaded pack that has a shader of this name provides it.
+inline constexpr const char* kShaderDeferredShading = "Hidden/Internal-DeferredShading";
+// Its passes, by Name: a ranged light's stencil mask and the light bounded by it. A replacement
+// shader without them has every light drawn by its first pass.
+inline constexpr const char* kPassDeferredLightMask = "LIGHT_MASK";
+inline constexpr const char* kPassDeferredLightBounded = "LIGHT_BOUNDED";
+
+// The deferred path's targets as the light pass samples them (Unity's names).
+inline constexpr const char* kTextureGBuffer0 = "_CameraGBufferTexture0";
+inline constexpr const char* kTextureGBuffer1 = "_CameraGBufferTexture1";
+inline constexpr const char* kTextureGBuffer2 = "_CameraGBufferTexture2";
+inline constexpr const char* kTextureCameraDepth = "_CameraDepthTexture";
 
 // Built-in globals the renderer fills per frame, light or draw that are not named unity_* or
 // UNITY_* (every such name is the engine's too: IsEngineGlobal). docs/shader-library.md.
@@ -73,6 +88,10 @@ inline constexpr const char* kEngineGlobals[] = {
     kGlobalLightMatrix0,
     kGlobalLightShadowData,
     kGlobalSpecColor,
+    kTextureGBuffer0,
+    kTextureGBuffer1,
+    kTextureGBuffer2,
+    kTextureCameraDepth,
 };
 
 // Whether the engine, not a material, sets the global `name`.

@@ -1,7 +1,10 @@
 // The renderer an engine (or `kiln render`) drives: it owns a headless Vulkan device, the
-// mapped variant packs, their pipelines and default textures, and renders a Scene with the
-// forward path of the lecture: per object a ForwardBase pass (main directional light, ambient,
-// optional vertex lights) and one additively blended ForwardAdd pass per further pixel light.
+// mapped variant packs, their pipelines and default textures, and renders a Scene with one of the
+// lecture's two paths: forward (per object a ForwardBase pass with the main directional light,
+// ambient, vertex and SH lights, and one additively blended ForwardAdd pass per further pixel
+// light) or deferred (the objects' Deferred passes write a G-buffer, then one light pass per light
+// shades it in screen space; objects without a Deferred pass and transparent ones are drawn
+// forward afterwards). docs/runtime.md.
 #ifndef KILN_RUNTIME_RENDERER_H_
 #define KILN_RUNTIME_RENDERER_H_
 
@@ -40,6 +43,17 @@ struct RendererOptions {
 // every such light in one mode (kVertex: four point lights per vertex, the rest in SH).
 enum class LightMode { kAuto, kPixel, kVertex, kSH };
 
+enum class RenderPath { kForward, kDeferred };
+
+// The deferred path's G-buffer normals (RT2): the target's format, and the encoding (xyz * 0.5 +
+// 0.5, or octahedral in two channels with the _GBUFFER_NORMALS_OCT keyword). Unity's is RGB10A2
+// with xyz.
+struct GBufferSettings {
+    enum class Normals { kRGB10A2, kRGBA8, kRGBA16F };
+    Normals normals = Normals::kRGB10A2;
+    bool octahedral = false;
+};
+
 struct FrameSettings {
     uint32_t width = 960, height = 540;
     // A scene camera index; kCameraDefault: the first, or one framing the scene when it has
@@ -48,17 +62,21 @@ struct FrameSettings {
     int camera = kCameraDefault;
     uint32_t pixel_lights = 4;  // at most this many additive (ForwardAdd) passes per object
     LightMode light_mode = LightMode::kAuto;
+    RenderPath path = RenderPath::kForward;
+    GBufferSettings gbuffer;
     float time = 0;              // seconds, for _Time
     glm::vec3 background{0.0f};  // linear clear colour
     bool default_light = true;   // light a scene without lights by one directional light
 };
 
 struct FrameStats {
-    uint32_t objects = 0;      // primitives drawn
-    uint32_t base_passes = 0;  // ForwardBase (or untagged) draws
-    uint32_t add_passes = 0;   // ForwardAdd draws
-    uint32_t vertex_lit = 0;   // base draws with VERTEXLIGHT_ON
-    uint32_t sh_lit = 0;       // base draws with lights in their spherical harmonics
+    uint32_t objects = 0;        // primitives drawn
+    uint32_t base_passes = 0;    // ForwardBase (or untagged) draws
+    uint32_t add_passes = 0;     // ForwardAdd draws
+    uint32_t vertex_lit = 0;     // base draws with VERTEXLIGHT_ON
+    uint32_t sh_lit = 0;         // base draws with lights in their spherical harmonics
+    uint32_t gbuffer_draws = 0;  // deferred path: Deferred passes into the G-buffer
+    uint32_t light_passes = 0;   // deferred path: light passes over the G-buffer
     uint32_t pipelines_created = 0;
     // Device uploads this frame: vertex and index buffers, and material instances resolved. A
     // scene with an id (Scene::id) uploads them on its first frame only.
@@ -70,6 +88,7 @@ struct FrameStats {
     DiagnosticList warnings;
 };
 
+struct FrameCapture;
 struct VariantTestOptions;
 struct VariantTestReport;
 
@@ -86,12 +105,14 @@ class Renderer {
     Status AddPack(const std::string& path);
 
     // Renders one frame into a linear (scene-referred) image. Colour properties are decoded
-    // from sRGB through `color`.
+    // from sRGB through `color`. With `capture` the frame is drawn one step at a time and every
+    // step recorded (kiln/runtime/frame_debug.h); the image is the same.
     Status Render(const Scene& scene,
                   const FrameSettings& settings,
                   const ColorPipeline& color,
                   LinearImage& out,
-                  FrameStats& stats);
+                  FrameStats& stats,
+                  FrameCapture* capture = nullptr);
 
     std::string DeviceName() const;
     std::vector<std::string> ValidationMessages() const;

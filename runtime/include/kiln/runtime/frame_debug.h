@@ -1,0 +1,49 @@
+// The frame debugger (kiln render --frame-debug DIR), as Unity's Frame Debugger: a frame drawn one
+// step at a time, recording for each pass and draw what was drawn (pass, LightMode, shader,
+// variant keywords, render state, light, object, GPU time where the queue has timestamps) and an
+// image of each target the pass writes after the step. WriteFrameDebug writes them as PNGs, a
+// JSON record and an index.html to step through in a browser.
+#ifndef KILN_RUNTIME_FRAME_DEBUG_H_
+#define KILN_RUNTIME_FRAME_DEBUG_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kiln/result.h"
+
+namespace kiln::runtime {
+
+// A target after a step, as a person can look at it (8-bit RGBA, opaque): light and colour
+// targets through the display transform, sRGB colour targets as stored, normals as stored
+// (n * 0.5 + 0.5), depth linearised (near white, far dark, nothing black).
+struct DebugImage {
+    std::string target;  // the frame target's name: "color", "gbuffer2 (normal)", "depth", ...
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;
+};
+
+struct DebugStep {
+    std::string pass;  // the frame pass: "forward", "gbuffer", "lighting"
+    int draw = -1;     // index of the draw within the pass; -1: the pass's clear
+    // What was drawn (empty for a clear).
+    std::string shader, shader_pass, light_mode, keywords, state, light, object;
+    double gpu_ms = -1;  // timestamp queries around the draw; negative: not supported
+    std::vector<DebugImage> images;
+};
+
+struct FrameCapture {
+    std::string scene;  // for the page's title
+    std::string path;   // "forward" or "deferred"
+    uint32_t width = 0, height = 0;
+    std::vector<DebugStep> steps;
+};
+
+// Writes `capture` into `dir` (created if missing): steps/NNNN-<target>.png for every image,
+// frame.json with every step's record, and index.html listing the passes and their steps with
+// their images. The PNGs are written first and the page last.
+Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture);
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_FRAME_DEBUG_H_

@@ -1,0 +1,146 @@
+#include "render/capture.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "render/frame_internal.h"
+
+namespace kiln::runtime {
+namespace {
+
+uint8_t Byte(double v) {
+    return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+// Linear floats of a float target (RGBA16F or RGBA32F).
+std::vector<float> Floats(const FrameTarget& t, const std::vector<uint8_t>& bytes) {
+    const bool f32 = t.format == VK_FORMAT_R32G32B32A32_SFLOAT;
+    std::vector<float> out(bytes.size() / (f32 ? 4 : 2));
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (f32) {
+            std::memcpy(&out[i], bytes.data() + i * 4, 4);
+        } else {
+            uint16_t half;
+            std::memcpy(&half, bytes.data() + i * 2, 2);
+            out[i] = HalfToFloat(half);
+        }
+    }
+    return out;
+}
+
+// Depth as distance from the camera, shown near white to far dark grey; nothing drawn is black.
+std::vector<uint8_t> DepthImage(const FrameTarget& t,
+                                const std::vector<uint8_t>& bytes,
+                                const glm::mat4& inverse_projection) {
+    const size_t n = bytes.size() / 4;
+    std::vector<double> distance(n, -1.0);
+    double lo = 1e300, hi = -1e300;
+    for (size_t i = 0; i < n; ++i) {
+        uint32_t bits;
+        std::memcpy(&bits, bytes.data() + i * 4, 4);
+        float z;
+        if (t.format == VK_FORMAT_D24_UNORM_S8_UINT) {
+            z = float(bits & 0xFFFFFFu) / 16777215.0f;
+        } else {
+            std::memcpy(&z, &bits, 4);
+        }
+        if (!(z < 1.0f)) {
+            continue;  // the clear value: nothing drawn
+        }
+        const glm::vec4 v = inverse_projection * glm::vec4(0, 0, z, 1);
+        const double d = std::abs(double(v.w)) > 0 ? -double(v.z) / double(v.w) : 0.0;
+        distance[i] = d;
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+    }
+    std::vector<uint8_t> out(n * 4, 0);
+    for (size_t i = 0; i < n; ++i) {
+        const double k = distance[i] < 0 ? 0.0
+                         : hi > lo       ? 1.0 - 0.8 * (distance[i] - lo) / (hi - lo)
+                                         : 1.0;
+        out[i * 4] = out[i * 4 + 1] = out[i * 4 + 2] = Byte(k);
+        out[i * 4 + 3] = 255;
+    }
+    return out;
+}
+
+// A colour target as stored: UNORM and sRGB bytes as they are, 10-bit and float channels scaled
+// to bytes; alpha opaque.
+std::vector<uint8_t> StoredImage(const FrameTarget& t, const std::vector<uint8_t>& bytes) {
+    std::vector<uint8_t> out;
+    if (t.format == VK_FORMAT_A2B10G10R10_UNORM_PACK32) {
+        for (size_t i = 0; i + 4 <= bytes.size(); i += 4) {
+            uint32_t v;
+            std::memcpy(&v, bytes.data() + i, 4);
+            out.insert(out.end(), {Byte((v & 0x3FF) / 1023.0), Byte(((v >> 10) & 0x3FF) / 1023.0),
+                                   Byte(((v >> 20) & 0x3FF) / 1023.0), 255});
+        }
+    } else if (t.format == VK_FORMAT_R16G16B16A16_SFLOAT ||
+               t.format == VK_FORMAT_R32G32B32A32_SFLOAT) {
+        const std::vector<float> f = Floats(t, bytes);
+        for (size_t i = 0; i + 4 <= f.size(); i += 4) {
+            out.insert(out.end(), {Byte(f[i]), Byte(f[i + 1]), Byte(f[i + 2]), 255});
+        }
+    } else {  // 8-bit RGBA, sRGB or UNORM
+        out = bytes;
+        for (size_t i = 3; i < out.size(); i += 4) {
+            out[i] = 255;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+StepObserver CaptureObserver(const glm::mat4& projection,
+                             const ColorPipeline& color,
+                             FrameCapture& out) {
+    const glm::mat4 inverse = glm::inverse(projection);
+    return [inverse, &color, &out](const Frame& frame, size_t p, int draw,
+                                   std::vector<CapturedTarget> targets, double gpu_ms) -> Status {
+        out.width = frame.width;
+        out.height = frame.height;
+        const FramePass& pass = frame.passes[p];
+        DebugStep& step = out.steps.emplace_back();
+        step.pass = pass.name;
+        step.draw = draw;
+        step.gpu_ms = gpu_ms;
+        if (draw >= 0) {
+            const Draw::Info& info = pass.draws[size_t(draw)].info;
+            step.shader = info.shader;
+            step.shader_pass = info.pass;
+            step.light_mode = info.light_mode;
+            step.keywords = info.keywords;
+            step.state = info.state;
+            step.light = info.light;
+            step.object = info.object;
+        }
+        for (const CapturedTarget& ct : targets) {
+            const FrameTarget& t = frame.targets[ct.target];
+            DebugImage& image = step.images.emplace_back();
+            image.target = t.name;
+            image.width = frame.width;
+            image.height = frame.height;
+            if (t.depth) {
+                image.rgba8 = DepthImage(t, ct.bytes, inverse);
+            } else if (t.display && (t.format == VK_FORMAT_R16G16B16A16_SFLOAT ||
+                                     t.format == VK_FORMAT_R32G32B32A32_SFLOAT)) {
+                std::vector<float> linear = Floats(t, ct.bytes);
+                color.ApplyDisplay(linear);
+                image.rgba8 = ColorPipeline::Quantize(linear);
+                for (size_t i = 3; i < image.rgba8.size(); i += 4) {
+                    image.rgba8[i] = 255;
+                }
+            } else {
+                image.rgba8 = StoredImage(t, ct.bytes);
+            }
+        }
+        return {};
+    };
+}
+
+}  // namespace kiln::runtime

@@ -1,0 +1,323 @@
+#include "render/draw_builder.h"
+
+#include <algorithm>
+
+#include "kiln/pack/engine_names.h"
+#include "kiln/pack/pass_id.h"
+#include "kiln/pack/render_state.h"
+#include "render/textures.h"
+
+namespace kiln::runtime {
+namespace {
+
+using render::MaterialInstance;
+using render::Values;
+
+bool Written(const std::vector<Draw::Write>& writes, uint32_t set, uint32_t binding) {
+    return std::any_of(writes.begin(), writes.end(),
+                       [&](const Draw::Write& w) { return w.set == set && w.binding == binding; });
+}
+
+// "Cull Back, ZTest LEqual, ZWrite On, Blend One One, ColorMask RGB" (target 0), with the names
+// of kiln/pack/render_state.h.
+std::string Describe(const pack::PassState& st, bool additive) {
+    auto name = [](pack::StateValues set, uint32_t value) {
+        const auto names = pack::StateValueNames(set);
+        return value < names.size() ? std::string(names[value]) : std::to_string(value);
+    };
+    std::string out = "Cull " + name(pack::StateValues::kCull, uint32_t(st.cull)) + ", ZTest " +
+                      (st.ztest == pack::CompareFunction::kDisabled
+                           ? std::string("Off")
+                           : name(pack::StateValues::kCompare, uint32_t(st.ztest))) +
+                      ", ZWrite " + (st.zwrite ? "On" : "Off");
+    const pack::BlendTargetState& t = st.targets[0];
+    out += t.enable ? ", Blend " + name(pack::StateValues::kBlendFactor, uint32_t(t.src)) + " " +
+                          name(pack::StateValues::kBlendFactor, uint32_t(t.dst))
+                    : std::string(", Blend Off");
+    // Additive passes never write the frame's alpha (coverage).
+    const uint32_t mask = additive ? t.color_mask & ~uint32_t(pack::kColorWriteA) : t.color_mask;
+    out += ", ColorMask " + pack::ColorMaskName(mask);
+    if (st.stencil) {
+        out += ", Stencil";
+    }
+    return out;
+}
+
+}  // namespace
+
+DrawBuilder::DrawBuilder(Renderer::State& s,
+                         SceneResources& resources,
+                         const Scene& scene,
+                         Values frame,
+                         FrameStats& stats)
+    : s_(s), resources_(resources), scene_(scene), frame_values_(std::move(frame)), stats_(stats) {
+    alignment_ =
+        std::max<VkDeviceSize>(256, s.context.properties.limits.minUniformBufferOffsetAlignment);
+}
+
+void DrawBuilder::BeginPass(const Frame& frame,
+                            const FramePass& pass,
+                            std::map<std::string, uint32_t, std::less<>> target_textures) {
+    frame_ = &frame;
+    targets_ = FormatsOf(frame, pass);
+    target_textures_ = std::move(target_textures);
+    bindings_.clear();  // pipelines and sampled targets differ between passes
+}
+
+void DrawBuilder::Warn(DiagCode code, std::string message) {
+    render::WarnOnce(stats_.warnings, scene_, code, std::move(message));
+}
+
+Status DrawBuilder::Pipeline(const MaterialInstance& m,
+                             uint32_t pass,
+                             uint32_t variant,
+                             bool additive,
+                             const std::vector<std::string>& chosen,
+                             Binding& out) {
+    const pack::Pack& pack = s_.packs[m.pack]->pack;
+    std::vector<pack::StateOverride> overrides;
+    for (const pack::StateOverride& o : m.overrides) {
+        if (!(additive && o.field == "Blend")) {
+            overrides.push_back(o);
+        }
+    }
+    if (additive) {
+        overrides.insert(overrides.end(), m.add_overrides.begin(), m.add_overrides.end());
+    }
+    auto number = [&](std::string_view name) -> std::optional<float> {
+        auto it = m.values.find(std::string(name));
+        if (it == m.values.end() || it->second.empty()) {
+            return std::nullopt;
+        }
+        return it->second[0];
+    };
+    vk::RenderState state;
+    if (Status e = vk::ResolveRenderState(pack, pass, number, overrides, state); !e.ok()) {
+        return Error{DiagCode::kRenderFailed,
+                     m.name + ": pass '" + pack::PassLabel(pack, pass) + "': " + e.error().message};
+    }
+    if (additive) {
+        // The frame's alpha is coverage (docs/runtime.md): an additive pass adds light, and
+        // its Blend One One would add 1 to the alpha per light.
+        for (vk::BlendTarget& t : state.targets)
+            t.mask &= ~VkColorComponentFlags(VK_COLOR_COMPONENT_A_BIT);
+    }
+    if (Result<pack::PassState> resolved = pack::ResolvePassState(pack, pass, number, overrides)) {
+        out.state = Describe(resolved.value(), additive);
+    }
+    if (Status e = s_.GetPipeline(m.pack, variant, state, targets_, out.pipeline,
+                                  stats_.pipelines_created);
+        !e.ok()) {
+        return Error{e.error().code,
+                     "shader '" + std::string(pack.String(pack.Shader(m.shader).value().name)) +
+                         "' pass '" + pack::PassLabel(pack, pass) + "' variant '" +
+                         pack::JoinKeywords(chosen) + "': " + e.error().message};
+    }
+    return {};
+}
+
+// A frame target sampled by name (the light pass's G-buffer and depth): nearest texels, clamped.
+Status DrawBuilder::TargetTexture(uint32_t target, pack::ResourceKind kind, Draw::Write& out) {
+    VkSampler sampler = VK_NULL_HANDLE;
+    if (Status e = s_.Sampler(false, true, sampler, true); !e.ok()) {
+        return e;
+    }
+    out.type = kind == pack::ResourceKind::kSeparateImage ? VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE
+               : kind == pack::ResourceKind::kSeparateSampler
+                   ? VK_DESCRIPTOR_TYPE_SAMPLER
+                   : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    out.image.sampler = kind == pack::ResourceKind::kSeparateImage ? VK_NULL_HANDLE : sampler;
+    if (kind != pack::ResourceKind::kSeparateSampler) {
+        out.target = int(target);  // RecordFrame fills in the view and layout
+    }
+    return {};
+}
+
+Status DrawBuilder::Textures(const MaterialInstance& m, const pack::VariantRec& v, Binding& out) {
+    const pack::Pack& pack = s_.packs[m.pack]->pack;
+    for (uint32_t module : {v.vertex_module, v.fragment_module}) {
+        const pack::ModuleRec mod = pack.Module(module).value();
+        for (uint32_t r = 0; r < mod.resource_count; ++r) {
+            const auto res =
+                pack.Get<pack::ResourceRec>(pack::SectionTag::kResources, mod.first_resource + r)
+                    .value();
+            if (Written(out.textures, res.set, res.binding)) {
+                continue;
+            }
+            std::string name(pack.String(res.name));
+            const auto kind = pack::ResourceKind(res.kind);
+            if (kind == pack::ResourceKind::kSeparateSampler && name.rfind("sampler", 0) == 0) {
+                name = name.substr(7);  // sampler_MainTex -> _MainTex
+            }
+            if (kind == pack::ResourceKind::kStorageImage ||
+                kind == pack::ResourceKind::kStorageBuffer) {
+                return Error{DiagCode::kRenderFailed,
+                             m.name + ": resource '" + name +
+                                 "' is a storage resource, which forward passes cannot bind"};
+            }
+            if (auto t = target_textures_.find(name); t != target_textures_.end()) {
+                Draw::Write w{res.set, res.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+                if (Status e = TargetTexture(t->second, kind, w); !e.ok()) {
+                    return e;
+                }
+                const float fw = float(frame_->width), fh = float(frame_->height);
+                out.texel_sizes[name + "_TexelSize"] = {1.0f / fw, 1.0f / fh, fw, fh};
+                out.textures.push_back(w);
+                continue;
+            }
+            vk::ImageShape shape = vk::ImageShape::k2D;  // a lone sampler has none
+            if (kind != pack::ResourceKind::kSeparateSampler) {
+                const std::optional<vk::ImageShape> declared = render::ShapeOf(res);
+                if (!declared) {
+                    return Error{DiagCode::kRenderFailed,
+                                 m.name + ": texture '" + name +
+                                     "' is 1D or a texel buffer, which the runtime cannot bind"};
+                }
+                shape = *declared;
+            }
+            render::BoundTexture t;
+            auto it = m.textures.find(name);
+            if (Status e = resources_.textures->Get(
+                    it == m.textures.end() ? render::UnsetTexture(name) : it->second, shape, t);
+                !e.ok()) {
+                return e;
+            }
+            if (!t.warning.empty()) {
+                Warn(DiagCode::kTextureFallback, m.name + ": " + t.warning);
+            }
+            out.texel_sizes[name + "_TexelSize"] = {1.0f / float(t.width), 1.0f / float(t.height),
+                                                    float(t.width), float(t.height)};
+            Draw::Write w{res.set, res.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+            w.image = {t.sampler, t.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            if (kind == pack::ResourceKind::kSeparateImage) {
+                w.type = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+                w.image.sampler = VK_NULL_HANDLE;
+            } else if (kind == pack::ResourceKind::kSeparateSampler) {
+                w.type = VK_DESCRIPTOR_TYPE_SAMPLER;
+                w.image.imageView = VK_NULL_HANDLE;
+            }
+            out.textures.push_back(w);
+        }
+    }
+    return {};
+}
+
+// The variant's uniform and push-constant blocks, written from `lookup`.
+void DrawBuilder::Uniforms(const pack::Pack& pack,
+                           const pack::VariantRec& v,
+                           const render::ValueLookup& lookup,
+                           Draw& d) {
+    for (uint32_t module : {v.vertex_module, v.fragment_module}) {
+        const pack::ModuleRec mod = pack.Module(module).value();
+        for (uint32_t b = 0; b < mod.block_count; ++b) {
+            const auto block =
+                pack.Get<pack::BlockRec>(pack::SectionTag::kBlocks, mod.first_block + b).value();
+            if (pack::BlockKind(block.kind) == pack::BlockKind::kPushConstant) {
+                d.push.assign(d.pipeline->layout.push_constant_size, 0);
+                render::WriteBlock(pack, block, lookup, d.push.data(), d.push.size());
+                continue;
+            }
+            if (Written(d.writes, block.set, block.binding)) {
+                continue;  // the textures' or an earlier module's
+            }
+            const VkDeviceSize offset =
+                (uniforms_.size() + alignment_ - 1) / alignment_ * alignment_;
+            uniforms_.resize(offset + block.size, 0);
+            render::WriteBlock(pack, block, lookup, uniforms_.data() + offset, block.size);
+            Draw::Write w{block.set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+            w.offset = offset;
+            w.range = block.size;
+            d.writes.push_back(w);
+        }
+    }
+}
+
+Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>& draws) {
+    const MaterialInstance& m = *request.material;
+    const uint32_t pass = request.pass;
+    const bool additive = request.additive;
+    LoadedPack& lp = *s_.packs[m.pack];
+    const pack::Pack& pack = lp.pack;
+    const Result<pack::VariantChoice> selected =
+        lp.selector->Select(pass, request.keywords, request.reason);
+    if (!selected) {
+        return Error{DiagCode::kMissingVariant, m.name + ": " + selected.error().message};
+    }
+    const pack::VariantChoice& choice = selected.value();
+    if (!choice.exact) {
+        Warn(DiagCode::kVariantFallback, m.name + ": " + choice.warning);
+    }
+    const pack::VariantRec v = pack.Variant(choice.variant).value();
+    const std::vector<std::string> chosen = pack.KeywordsOf(pass, pack::VariantKey(v.key));
+    if (!additive && std::count(chosen.begin(), chosen.end(), pack::kKeywordVertexLight)) {
+        ++stats_.vertex_lit;
+    }
+    auto [it, fresh] = bindings_.try_emplace({&m, pass, choice.variant, additive});
+    Binding& binding = it->second;
+    if (fresh) {
+        if (Status e = Pipeline(m, pass, choice.variant, additive, chosen, binding); !e.ok()) {
+            bindings_.erase(it);
+            return e;
+        }
+        if (Status e = Textures(m, v, binding); !e.ok()) {
+            bindings_.erase(it);
+            return e;
+        }
+    }
+    Draw d;
+    d.pipeline = binding.pipeline;
+    d.writes = binding.textures;
+    d.info.shader = std::string(pack.String(pack.Shader(m.shader).value().name));
+    d.info.pass = pack::PassLabel(pack, pass);
+    d.info.light_mode = std::string(pack::LightModeOf(pack, pass));
+    d.info.keywords = pack::JoinKeywords(chosen);
+    d.info.state = binding.state;
+    d.info.light = request.light ? render::LightName(request.light) : std::string();
+    if (request.instance) {
+        const std::string& mesh = scene_.meshes[request.instance->mesh].name;
+        d.info.object = m.name + " on " +
+                        (!request.instance->node.empty() ? "node '" + request.instance->node + "'"
+                         : !mesh.empty()                 ? "mesh '" + mesh + "'"
+                                                         : std::string("an unnamed node"));
+    }
+    if (request.instance) {
+        const uint32_t mesh = request.instance->mesh;
+        const uint32_t primitive =
+            uint32_t(request.primitive - scene_.meshes[mesh].primitives.data());
+        if (Status e = resources_.Buffers(scene_, mesh, primitive, d.vertices, d.indices);
+            !e.ok()) {
+            return e;
+        }
+        d.index_count = uint32_t(request.primitive->indices.size());
+    } else {
+        if (Status e = s_.ScreenTriangle(d.vertices, d.indices); !e.ok()) {
+            return e;
+        }
+        d.index_count = 3;
+    }
+
+    Values light_values =
+        render::LightValues(request.light, additive ? std::vector<const Light*>{} : request.vertex);
+    if (!additive && !request.sh.empty()) {
+        // Read before the frame's probe: this object's ambient plus its SH lights.
+        light_values.merge(render::ProbeValues(scene_, request.sh, request.center));
+        ++stats_.sh_lit;
+    }
+    const Values object =
+        render::ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f));
+    const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
+        for (const Values* table : std::initializer_list<const Values*>{
+                 &object, &light_values, &frame_values_, &binding.texel_sizes}) {
+            if (auto found = table->find(name); found != table->end()) {
+                return &found->second;
+            }
+        }
+        auto found = m.values.find(std::string(name));
+        return found == m.values.end() ? nullptr : &found->second;
+    };
+    Uniforms(pack, v, lookup, d);
+    draws.push_back(std::move(d));
+    return {};
+}
+
+}  // namespace kiln::runtime

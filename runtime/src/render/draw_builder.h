@@ -1,0 +1,82 @@
+// DrawBuilder: a planned request (render/forward_plan.h) becomes a Draw of a frame pass
+// (render/frame.h): the variant the selector picks, its pipeline for the pass's targets, its
+// texture descriptors and its uniform bytes, decided on the CPU. Both paths build their draws
+// with it: the forward path's base and additive passes, and the deferred path's G-buffer, light
+// and forward passes. A request without an instance draws the full-screen triangle (the deferred
+// light pass).
+#ifndef KILN_RUNTIME_RENDER_DRAW_BUILDER_H_
+#define KILN_RUNTIME_RENDER_DRAW_BUILDER_H_
+
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "render/forward_plan.h"
+#include "render/frame.h"
+#include "render/frame_values.h"
+#include "render/renderer_state.h"
+
+namespace kiln::runtime {
+
+class DrawBuilder {
+  public:
+    DrawBuilder(Renderer::State& s,
+                SceneResources& resources,
+                const Scene& scene,
+                render::Values frame,
+                FrameStats& stats);
+
+    // The pass the next draws go into: its targets (what pipelines are created against) and
+    // the frame targets it samples by texture name (the light pass's G-buffer).
+    void BeginPass(const Frame& frame,
+                   const FramePass& pass,
+                   std::map<std::string, uint32_t, std::less<>> target_textures = {});
+
+    // One draw of a request's pass for its primitive, appended to `draws`.
+    Status Build(const render::DrawRequest& request, std::vector<Draw>& draws);
+
+    // Every draw's uniform blocks, at the offsets their writes name.
+    std::vector<uint8_t> TakeUniforms() { return std::move(uniforms_); }
+
+  private:
+    // What draws of one material's pass with one variant share in a pass: the pipeline, the
+    // texture descriptors and the <tex>_TexelSize values they imply.
+    struct Binding {
+        const vk::Pipeline* pipeline = nullptr;
+        std::vector<Draw::Write> textures;
+        render::Values texel_sizes;
+        std::string state;  // the render state as ShaderLab spells it, for the frame debugger
+    };
+
+    void Warn(DiagCode code, std::string message);
+    Status Pipeline(const render::MaterialInstance& m,
+                    uint32_t pass,
+                    uint32_t variant,
+                    bool additive,
+                    const std::vector<std::string>& chosen,
+                    Binding& out);
+    Status Textures(const render::MaterialInstance& m, const pack::VariantRec& v, Binding& out);
+    Status TargetTexture(uint32_t target, pack::ResourceKind kind, Draw::Write& out);
+    void Uniforms(const pack::Pack& pack,
+                  const pack::VariantRec& v,
+                  const render::ValueLookup& lookup,
+                  Draw& d);
+
+    Renderer::State& s_;
+    SceneResources& resources_;
+    const Scene& scene_;
+    render::Values frame_values_;
+    FrameStats& stats_;
+    const Frame* frame_ = nullptr;
+    vk::TargetFormats targets_;
+    std::map<std::string, uint32_t, std::less<>> target_textures_;
+    std::vector<uint8_t> uniforms_;
+    VkDeviceSize alignment_ = 256;
+    std::map<std::tuple<const render::MaterialInstance*, uint32_t, uint32_t, bool>, Binding>
+        bindings_;
+};
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_RENDER_DRAW_BUILDER_H_

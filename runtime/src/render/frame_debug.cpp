@@ -1,0 +1,229 @@
+// WriteFrameDebug: a captured frame (kiln/runtime/frame_debug.h) as files a person opens in a
+// browser. The page lists every pass with its steps and every step's images in static HTML, so
+// it reads without script too; its script shows one step at a time (the list, the buttons, or
+// the arrow keys) and, once the page has loaded, counts the images that loaded into
+// <body data-images-loaded>, which the headless-browser test reads.
+#include "kiln/runtime/frame_debug.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "kiln/base/files.h"
+#include "kiln/runtime/color.h"
+
+namespace kiln::runtime {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Escape(const std::string& s) {
+    std::string out;
+    for (char ch : s) {
+        switch (ch) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += ch;
+        }
+    }
+    return out;
+}
+
+// "gbuffer2 (normal)" -> "gbuffer2-normal": a file-name part.
+std::string Slug(const std::string& s) {
+    std::string out;
+    for (char ch : s) {
+        const bool alnum = (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9');
+        if (alnum || (ch >= 'A' && ch <= 'Z')) {
+            out += char(alnum ? ch : ch - 'A' + 'a');
+        } else if (!out.empty() && out.back() != '-') {
+            out += '-';
+        }
+    }
+    while (!out.empty() && out.back() == '-') {
+        out.pop_back();
+    }
+    return out.empty() ? "target" : out;
+}
+
+std::string ImageFile(size_t step, const DebugImage& image) {
+    char number[16];
+    std::snprintf(number, sizeof number, "%04zu", step);
+    return std::string("steps/") + number + "-" + Slug(image.target) + ".png";
+}
+
+std::string StepTitle(size_t n, const DebugStep& s) {
+    if (s.draw < 0) {
+        return "#" + std::to_string(n) + " clear";
+    }
+    std::string t = "#" + std::to_string(n) + " draw " + std::to_string(s.draw) + ": " + s.shader +
+                    " / " + s.shader_pass;
+    if (!s.object.empty()) {
+        t += " on " + s.object;
+    }
+    if (!s.light.empty()) {
+        t += ", " + s.light;
+    }
+    return t;
+}
+
+nlohmann::json Record(size_t n, const DebugStep& s) {
+    nlohmann::json j = {{"step", n},
+                        {"pass", s.pass},
+                        {"draw", s.draw},
+                        {"shader", s.shader},
+                        {"shader_pass", s.shader_pass},
+                        {"light_mode", s.light_mode},
+                        {"keywords", s.keywords},
+                        {"state", s.state},
+                        {"light", s.light},
+                        {"object", s.object}};
+    j["gpu_ms"] = s.gpu_ms >= 0 ? nlohmann::json(s.gpu_ms) : nlohmann::json(nullptr);
+    nlohmann::json images = nlohmann::json::array();
+    for (const DebugImage& image : s.images) {
+        images.push_back({{"target", image.target}, {"file", ImageFile(n, image)}});
+    }
+    j["images"] = images;
+    return j;
+}
+
+constexpr const char* kStyle = R"(body{font:14px system-ui,sans-serif;margin:0;display:flex}
+nav{width:28em;height:100vh;overflow:auto;padding:.5em 1em;border-right:1px solid #ccc}
+main{flex:1;padding:.5em 1em}h2{font-size:1em;margin:.8em 0 .2em}
+nav ol{margin:0;padding-left:1.2em}nav a{color:#036;text-decoration:none}
+nav a.current{font-weight:bold}table{border-collapse:collapse;margin:.4em 0}
+td{padding:1px 8px;vertical-align:top}td:first-child{color:#666}
+figure{display:inline-block;margin:0 1em 1em 0}img{border:1px solid #999;max-width:48vw}
+.hidden{display:none})";
+
+constexpr const char* kScript = R"(const steps=[...document.querySelectorAll('section.step')];
+const links=[...document.querySelectorAll('nav a[data-step]')];let current=0;
+function show(i){current=Math.max(0,Math.min(steps.length-1,i));
+steps.forEach((s,k)=>s.classList.toggle('hidden',k!==current));
+links.forEach((a,k)=>a.classList.toggle('current',k===current));
+document.getElementById('position').textContent=(current+1)+' / '+steps.length;}
+links.forEach((a,k)=>a.addEventListener('click',e=>{e.preventDefault();show(k);}));
+document.getElementById('prev').onclick=()=>show(current-1);
+document.getElementById('next').onclick=()=>show(current+1);
+document.addEventListener('keydown',e=>{if(e.key==='ArrowDown'||e.key==='ArrowRight')show(current+1);
+if(e.key==='ArrowUp'||e.key==='ArrowLeft')show(current-1);});
+window.addEventListener('load',()=>{const imgs=[...document.images];
+const ok=imgs.filter(i=>i.complete&&i.naturalWidth>0).length;
+document.body.dataset.imagesLoaded=ok;
+document.getElementById('status').textContent=ok+' of '+imgs.length+' images loaded';});
+show(steps.length-1);)";
+
+std::string Page(const FrameCapture& capture) {
+    size_t image_count = 0;
+    for (const DebugStep& s : capture.steps) {
+        image_count += s.images.size();
+    }
+    std::string h = "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" +
+                    Escape("Kiln frame debugger: " + capture.scene) + "</title>\n<style>" + kStyle +
+                    "</style></head>\n";
+    h += "<body data-steps=\"" + std::to_string(capture.steps.size()) + "\" data-images=\"" +
+         std::to_string(image_count) + "\">\n<nav>\n<h1>" + Escape(capture.scene) + "</h1>\n<p>" +
+         Escape(capture.path) + " path, " + std::to_string(capture.width) + "x" +
+         std::to_string(capture.height) + ", " + std::to_string(capture.steps.size()) +
+         " steps</p>\n<p><button id=\"prev\">previous</button> <span id=\"position\"></span> "
+         "<button id=\"next\">next</button></p>\n<p id=\"status\"></p>\n";
+    std::string open_pass;
+    for (size_t n = 0; n < capture.steps.size(); ++n) {
+        const DebugStep& s = capture.steps[n];
+        if (n == 0 || s.pass != capture.steps[n - 1].pass) {
+            if (n > 0) {
+                h += "</ol></div>\n";
+            }
+            h += "<div class=\"pass\" data-pass=\"" + Escape(s.pass) + "\"><h2>Pass " +
+                 Escape(s.pass) + "</h2><ol start=\"" + std::to_string(n) + "\">\n";
+        }
+        h += "<li><a href=\"#step-" + std::to_string(n) + "\" data-step=\"" + std::to_string(n) +
+             "\">" + Escape(StepTitle(n, s)) + "</a></li>\n";
+    }
+    if (!capture.steps.empty()) {
+        h += "</ol></div>\n";
+    }
+    h += "</nav>\n<main>\n";
+    for (size_t n = 0; n < capture.steps.size(); ++n) {
+        const DebugStep& s = capture.steps[n];
+        h += "<section class=\"step\" id=\"step-" + std::to_string(n) + "\" data-pass=\"" +
+             Escape(s.pass) + "\">\n<h2>Pass " + Escape(s.pass) + ", " + Escape(StepTitle(n, s)) +
+             "</h2>\n<table>\n";
+        auto row = [&](const char* label, const std::string& value) {
+            if (!value.empty()) {
+                h += "<tr><td>" + std::string(label) + "</td><td>" + Escape(value) + "</td></tr>\n";
+            }
+        };
+        row("shader", s.shader);
+        row("pass", s.shader_pass);
+        row("LightMode", s.light_mode);
+        row("keywords", s.draw >= 0 && s.keywords.empty() ? "(none)" : s.keywords);
+        row("render state", s.state);
+        row("light", s.light);
+        row("object", s.object);
+        if (s.draw >= 0) {
+            char ms[32];
+            std::snprintf(ms, sizeof ms, "%.3f ms", s.gpu_ms);
+            row("GPU time", s.gpu_ms >= 0 ? std::string(ms) : "not measured (no timestamps)");
+        }
+        h += "</table>\n<div class=\"images\">\n";
+        for (const DebugImage& image : s.images) {
+            const std::string alt = image.target + " after step " + std::to_string(n);
+            h += "<figure><img src=\"" + ImageFile(n, image) + "\" alt=\"" + Escape(alt) +
+                 "\" width=\"" + std::to_string(image.width) + "\" height=\"" +
+                 std::to_string(image.height) + "\"><figcaption>" + Escape(image.target) +
+                 "</figcaption></figure>\n";
+        }
+        h += "</div>\n</section>\n";
+    }
+    h += "</main>\n<script>\n" + std::string(kScript) + "\n</script>\n</body></html>\n";
+    return h;
+}
+
+}  // namespace
+
+Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
+    std::error_code ec;
+    fs::create_directories(fs::path(dir) / "steps", ec);
+    if (ec) {
+        return Error{DiagCode::kCannotWriteFile,
+                     dir + ": cannot create the frame-debug folder: " + ec.message()};
+    }
+    nlohmann::json steps = nlohmann::json::array();
+    for (size_t n = 0; n < capture.steps.size(); ++n) {
+        for (const DebugImage& image : capture.steps[n].images) {
+            if (Status e = WritePng((fs::path(dir) / ImageFile(n, image)).string(), image.width,
+                                    image.height, image.rgba8);
+                !e.ok()) {
+                return e;
+            }
+        }
+        steps.push_back(Record(n, capture.steps[n]));
+    }
+    const nlohmann::json frame = {{"scene", capture.scene},
+                                  {"path", capture.path},
+                                  {"width", capture.width},
+                                  {"height", capture.height},
+                                  {"steps", steps}};
+    if (Status e = base::WriteFileAtomically((fs::path(dir) / "frame.json").string(),
+                                             frame.dump(1) + "\n");
+        !e.ok()) {
+        return e;
+    }
+    return base::WriteFileAtomically((fs::path(dir) / "index.html").string(), Page(capture));
+}
+
+}  // namespace kiln::runtime

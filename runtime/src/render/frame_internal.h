@@ -1,0 +1,101 @@
+// What RecordFrame (render/frame.cpp) and the frame debugger's step-by-step recording
+// (render/frame_capture.cpp) share: the frame's device objects, the layout tracking of its
+// targets, and the recording of a pass's draws.
+#ifndef KILN_RUNTIME_RENDER_FRAME_INTERNAL_H_
+#define KILN_RUNTIME_RENDER_FRAME_INTERNAL_H_
+
+#include <span>
+#include <vector>
+
+#include "render/frame.h"
+
+namespace kiln::runtime {
+
+float HalfToFloat(uint16_t h);
+
+// A pass's targets in attachment order: the colours, then the depth buffer.
+std::vector<uint32_t> Attachments(const FramePass& pass);
+// Every aspect of a target's format: its attachment view and its layout transitions cover them.
+VkImageAspectFlags AspectsOf(const FrameTarget& t);
+// The layout target `t` is sampled in during `pass`.
+VkImageLayout SampledLayout(const Frame& frame, const FramePass& pass, uint32_t t);
+// A pass's read-only depth buffer: depth tested and sampled, stencil written.
+VkImageLayout ReadOnlyDepthLayout();
+
+// The frame's device objects, freed on every path out of a recording.
+struct FrameObjects {
+    explicit FrameObjects(const vk::Context& context) : c(context) {}
+    ~FrameObjects();
+    FrameObjects(const FrameObjects&) = delete;
+    FrameObjects& operator=(const FrameObjects&) = delete;
+
+    const vk::Context& c;
+    std::vector<vk::Image> targets;
+    // What draws sample each target through: its view, or for a depth-stencil target a view of
+    // the depth aspect alone (a sampled view has one aspect).
+    std::vector<VkImageView> sampled_views;
+    std::vector<VkImageView> own_views;       // the depth-only views, destroyed with the frame
+    std::vector<VkRenderPass> render_passes;  // per pass, as it clears or loads (the state's)
+    std::vector<VkFramebuffer> framebuffers;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    vk::Buffer uniforms;
+    std::vector<std::vector<std::vector<VkDescriptorSet>>> sets;  // per pass, per draw
+};
+
+// Creates the targets, render passes, framebuffers and uniform buffer, and writes every draw's
+// descriptor sets.
+Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f);
+
+// Moves the frame's targets into the layouts each pass uses them in, after whatever wrote them.
+struct Layouts {
+    const Frame& frame;
+    const std::vector<vk::Image>& images;
+    std::vector<VkImageLayout> current;
+
+    void To(VkCommandBuffer cmd, uint32_t t, VkImageLayout want);
+    // Before `pass`: its sampled targets readable, its attachments in attachment layout (a
+    // clearing pass's render pass starts them from undefined itself).
+    void Before(VkCommandBuffer cmd, const FramePass& pass);
+};
+
+// Begins pass `p` in `render_pass` (clearing or loading), with the frame's viewport and scissor.
+void BeginPass(VkCommandBuffer cmd,
+               const Frame& frame,
+               const FrameObjects& f,
+               size_t p,
+               VkRenderPass render_pass);
+
+void RecordDraws(VkCommandBuffer cmd,
+                 std::span<const Draw> draws,
+                 std::span<const std::vector<VkDescriptorSet>> sets,
+                 const VkRect2D& full);
+
+// Copies target `t` (in `layout`, where it is left) to host memory: colour texels, or the depth
+// aspect of a depth target (4 bytes a texel).
+Status ReadTarget(const vk::Context& c,
+                  const Frame& frame,
+                  const FrameObjects& f,
+                  uint32_t t,
+                  VkImageLayout layout,
+                  std::vector<uint8_t>& out);
+
+// RecordFrame with an observer: each pass's clear and each draw submitted on its own, the
+// targets the pass writes read back after each (render/frame_capture.cpp).
+Status RecordFrameSteps(Renderer::State& s,
+                        const Frame& frame,
+                        LinearImage& out,
+                        const StepObserver& observer);
+
+// Bytes per texel of a target's format as ReadTarget returns them.
+uint32_t TexelBytes(const FrameTarget& t);
+
+// The output target (in `layout`) as linear floats.
+Status ReadOutput(const vk::Context& c,
+                  const Frame& frame,
+                  const FrameObjects& f,
+                  VkImageLayout layout,
+                  LinearImage& out);
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_RENDER_FRAME_INTERNAL_H_

@@ -1,0 +1,100 @@
+// Reading a frame's targets back to the host: the output image, and every target after each step
+// for the frame debugger.
+#include <cstring>
+
+#include "render/frame_internal.h"
+
+namespace kiln::runtime {
+
+uint32_t TexelBytes(const FrameTarget& t) {
+    switch (t.format) {
+        case VK_FORMAT_R32G32B32A32_SFLOAT:
+            return 16;
+        case VK_FORMAT_R16G16B16A16_SFLOAT:
+            return 8;
+        default:
+            return 4;  // RGBA8, A2B10G10R10, and a depth aspect (D32 float or D24 in 32 bits)
+    }
+}
+
+Status ReadTarget(const vk::Context& c,
+                  const Frame& frame,
+                  const FrameObjects& f,
+                  uint32_t t,
+                  VkImageLayout layout,
+                  std::vector<uint8_t>& out) {
+    const FrameTarget& target = frame.targets[t];
+    const VkDeviceSize size = VkDeviceSize{frame.width} * frame.height * TexelBytes(target);
+    vk::Buffer staging;
+    if (Status e = vk::CreateBuffer(c, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging); !e.ok()) {
+        return e;
+    }
+    const VkImage image = f.targets[t].image;
+    auto e = vk::SubmitOnce(c, [&](VkCommandBuffer cmd) {
+        VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        b.srcAccessMask =
+            VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        b.oldLayout = layout;
+        b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = image;
+        b.subresourceRange = {AspectsOf(target), 0, 1, 0, 1};
+        const VkPipelineStageFlags before = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+        vkCmdPipelineBarrier(cmd, before, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
+                             1, &b);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {
+            target.depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.imageExtent = {frame.width, frame.height, 1};
+        vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1,
+                               &copy);
+        // Back where the frame left it, for the steps after this one.
+        b.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        b.dstAccessMask = 0;
+        b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        b.newLayout = layout;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                             0, nullptr, 0, nullptr, 1, &b);
+        VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                             &to_host, 0, nullptr, 0, nullptr);
+    });
+    if (e.ok()) {
+        const auto* p = static_cast<const uint8_t*>(staging.mapped);
+        out.assign(p, p + size);
+    }
+    vk::DestroyBuffer(c, staging);
+    return e;
+}
+
+Status ReadOutput(const vk::Context& c,
+                  const Frame& frame,
+                  const FrameObjects& f,
+                  VkImageLayout layout,
+                  LinearImage& out) {
+    std::vector<uint8_t> bytes;
+    if (Status e = ReadTarget(c, frame, f, frame.output, layout, bytes); !e.ok()) {
+        return e;
+    }
+    const bool f32 = frame.targets[frame.output].format == VK_FORMAT_R32G32B32A32_SFLOAT;
+    out.width = frame.width;
+    out.height = frame.height;
+    out.rgba.resize(size_t{frame.width} * frame.height * 4);
+    if (f32) {
+        std::memcpy(out.rgba.data(), bytes.data(), out.rgba.size() * 4);
+    } else {
+        for (size_t i = 0; i < out.rgba.size(); ++i) {
+            uint16_t half;
+            std::memcpy(&half, bytes.data() + i * 2, 2);
+            out.rgba[i] = HalfToFloat(half);
+        }
+    }
+    return {};
+}
+
+}  // namespace kiln::runtime
