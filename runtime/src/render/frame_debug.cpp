@@ -101,6 +101,7 @@ nlohmann::json Record(size_t n, const DebugStep& s) {
 }
 
 constexpr const char* kStyle = R"(body{font:14px system-ui,sans-serif;margin:0;display:flex}
+h1{font-size:1.2em;word-break:break-all}
 nav{width:28em;height:100vh;overflow:auto;padding:.5em 1em;border-right:1px solid #ccc}
 main{flex:1;padding:.5em 1em}h2{font-size:1em;margin:.8em 0 .2em}
 nav ol{margin:0;padding-left:1.2em}nav a{color:#036;text-decoration:none}

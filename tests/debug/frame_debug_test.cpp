@@ -1,0 +1,135 @@
+// The frame debugger as a person uses it: `kiln render --frame-debug DIR` on the demo scene, on
+// both paths, writes a page that headless Chromium (Debian's chromium, installed by
+// scripts/setup.sh) opens. The page lists every pass of the frame with its steps, every step's
+// images load in the browser, and the records say what each step drew.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <regex>
+#include <set>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "support/compile_support.h"
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The DOM of `page` after its load event, as headless Chromium serializes it; empty when Chromium
+// is missing or fails.
+std::string DumpDom(const std::string& page) {
+    const std::string command =
+        "chromium --headless --no-sandbox --disable-gpu --dump-dom 'file://" +
+        fs::absolute(page).string() + "' 2>/dev/null";
+    std::string out;
+    if (FILE* p = popen(command.c_str(), "r")) {
+        char buffer[4096];
+        size_t n;
+        while ((n = fread(buffer, 1, sizeof buffer, p)) > 0) {
+            out.append(buffer, n);
+        }
+        if (pclose(p) != 0) {
+            out.clear();
+        }
+    }
+    return out;
+}
+
+bool HaveChromium() {
+    return std::system("command -v chromium >/dev/null 2>&1") == 0;
+}
+
+long Attribute(const std::string& dom, const std::string& name) {
+    std::smatch m;
+    if (std::regex_search(dom, m, std::regex(name + "=\"([0-9]+)\""))) {
+        return std::stol(m[1]);
+    }
+    return -1;
+}
+
+struct Path {
+    const char* name;
+    std::vector<std::string> passes;  // the frame's passes, in order
+};
+
+class FrameDebugTest : public ::testing::TestWithParam<Path> {};
+
+TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
+    ASSERT_TRUE(HaveChromium())
+        << "chromium is not installed (scripts/setup.sh installs Debian's chromium package)";
+    const Path& path = GetParam();
+    ScratchDir dir;
+    const std::string out = dir.path() + "/debug";
+    const RunResult r = RunKiln("render " + DataPath("../scenes/demo/demo.gltf") +
+                                " --width 240 --height 135 --validation --path " + path.name +
+                                " -o " + dir.path() + "/frame.png --frame-debug " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find(out + "/index.html: "), std::string::npos) << r.out;
+
+    // The records: every pass in order, each step's images on disk.
+    const nlohmann::json frame = nlohmann::json::parse(ReadFile(out + "/frame.json"));
+    std::vector<std::string> passes;
+    size_t images = 0;
+    bool additive = false, light_pass = false;
+    for (const auto& step : frame["steps"]) {
+        const std::string pass = step["pass"];
+        if (passes.empty() || passes.back() != pass) {
+            passes.push_back(pass);
+        }
+        EXPECT_FALSE(step["images"].empty()) << step.dump();
+        for (const auto& image : step["images"]) {
+            EXPECT_TRUE(fs::is_regular_file(out + "/" + image["file"].get<std::string>()))
+                << image.dump();
+            ++images;
+        }
+        if (step["draw"].get<int>() >= 0) {
+            EXPECT_FALSE(step["shader"].get<std::string>().empty()) << step.dump();
+            EXPECT_FALSE(step["state"].get<std::string>().empty()) << step.dump();
+            EXPECT_TRUE(step["gpu_ms"].is_number()) << "lavapipe has timestamps: " << step.dump();
+        }
+        additive |= step["light_mode"] == "ForwardAdd" &&
+                    step["light"].get<std::string>().find("point light") == 0;
+        light_pass |= step["shader"] == "Hidden/Internal-DeferredShading";
+    }
+    EXPECT_EQ(passes, path.passes);
+    EXPECT_TRUE(additive) << "no additive pass of a point light recorded";
+    EXPECT_EQ(light_pass, std::string(path.name) == "deferred");
+
+    // The page in the browser: every pass listed with every step's images, all of them loaded.
+    const std::string dom = DumpDom(out + "/index.html");
+    ASSERT_FALSE(dom.empty()) << "headless chromium produced no DOM for " << out << "/index.html";
+    EXPECT_EQ(Attribute(dom, "data-images"), long(images));
+    EXPECT_EQ(Attribute(dom, "data-images-loaded"), long(images))
+        << "images that did not load in the browser";
+    for (const std::string& pass : path.passes) {
+        EXPECT_NE(dom.find("data-pass=\"" + pass + "\"><h2>Pass " + pass + "</h2>"),
+                  std::string::npos)
+            << "pass " << pass << " not listed";
+    }
+    size_t n = 0;
+    for (const auto& step : frame["steps"]) {
+        const std::string id = "id=\"step-" + std::to_string(n++) + "\"";
+        const size_t section = dom.find(id);
+        ASSERT_NE(section, std::string::npos) << id;
+        const size_t end = dom.find("</section>", section);
+        for (const auto& image : step["images"]) {
+            const size_t img =
+                dom.find("src=\"" + image["file"].get<std::string>() + "\"", section);
+            EXPECT_LT(img, end) << image["file"] << " is not shown in " << id;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths,
+                         FrameDebugTest,
+                         ::testing::Values(Path{"forward", {"forward"}},
+                                           Path{"deferred", {"gbuffer", "lighting", "forward"}}),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+}  // namespace
+}  // namespace kiln::test
