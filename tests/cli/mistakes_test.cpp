@@ -91,6 +91,13 @@ const Mistake kMistakes[] = {
      "camera 3 does not exist (the scene has 1"},
     {"OCIO view typo", "render {D}/triangle.gltf --view Standrad -o {T}/out.png", 1, "K0009", "",
      "did you mean 'Standard'? (views: Standard, Raw)"},
+    {"missing sky image", "render {D}/triangle.gltf --sky {T}/none.hdr -o {T}/out.png", 1, "K0007",
+     "none.hdr", "no such sky image"},
+    {"sky and ambient",
+     "render {D}/triangle.gltf --sky {T}/none.hdr --ambient 1,1,1 -o {T}/out.png", 1, "K0007", "",
+     "--ambient and --sky both set the ambient light; give one"},
+    {"procedural sky colours", "render {D}/triangle.gltf --ambient sky:1,1,1 -o {T}/out.png", 2,
+     "K0003", "", "expected sky or sky:ZENITH:HORIZON:GROUND of R,G,B each"},
     // The command line.
     {"subcommand typo", "compil {D}/base.shader", 2, "K0003", "", "did you mean 'compile'?"},
     {"optimization level", "compile {D}/base.shader -O4 -o {T}/out.kpack", 2, "K0003", "",

@@ -36,7 +36,35 @@ std::string ParseCamera(const std::string& text, int& camera) {
 }
 
 // --ambient: "R,G,B" (one linear colour) or "SKY:EQUATOR:GROUND", each R,G,B (Unity's gradient).
+// The procedural sky's default colours (linear radiance): a clear day, bright enough beside the
+// default light's pi lux to read as daylight ambient.
+constexpr glm::vec3 kSkyZenith{0.10f, 0.18f, 0.38f};
+constexpr glm::vec3 kSkyHorizon{0.32f, 0.35f, 0.40f};
+constexpr glm::vec3 kSkyGround{0.08f, 0.07f, 0.06f};
+
 std::string ParseAmbient(const std::string& text, runtime::Scene* scene) {
+    // Kiln's procedural sky, with its default clear-day colours or ZENITH:HORIZON:GROUND.
+    if (text == "sky" || text.rfind("sky:", 0) == 0) {
+        runtime::Scene colours;
+        if (text != "sky") {
+            if (std::string e = ParseAmbient(text.substr(4), &colours); !e.empty()) {
+                return "expected sky or sky:ZENITH:HORIZON:GROUND of R,G,B each";
+            }
+            if (colours.ambient_mode != runtime::AmbientMode::kTrilight) {
+                return "expected sky or sky:ZENITH:HORIZON:GROUND of R,G,B each";
+            }
+        } else {
+            colours.ambient = kSkyZenith;
+            colours.ambient_equator = kSkyHorizon;
+            colours.ambient_ground = kSkyGround;
+        }
+        if (scene) {
+            scene->ambient_mode = runtime::AmbientMode::kSky;
+            scene->sky = runtime::ProceduralSky(colours.ambient, colours.ambient_equator,
+                                                colours.ambient_ground);
+        }
+        return "";
+    }
     std::vector<glm::vec3> colours;
     size_t start = 0;
     while (start <= text.size()) {
@@ -46,7 +74,8 @@ std::string ParseAmbient(const std::string& text, runtime::Scene* scene) {
         char tail = 0;
         if (std::sscanf(part.c_str(), "%f,%f,%f%c", &c.r, &c.g, &c.b, &tail) != 3 ||
             !std::isfinite(c.r + c.g + c.b) || c.r < 0 || c.g < 0 || c.b < 0) {
-            return "expected R,G,B (linear, non-negative) or SKY:EQUATOR:GROUND of R,G,B each";
+            return "expected R,G,B (linear, non-negative), SKY:EQUATOR:GROUND of R,G,B each, or "
+                   "sky[:ZENITH:HORIZON:GROUND]";
         }
         colours.push_back(c);
         start = end + 1;
@@ -71,7 +100,8 @@ struct RenderArgs {
     runtime::ColorOptions color;
     bool validation = false, closest = false, no_default_light = false, trust = false;
     bool dry_run = false, allow_missing = false;
-    std::string device, camera, ambient, frame_debug;
+    std::string device, camera, ambient, frame_debug, sky;
+    float sky_intensity = 1;
 };
 
 // --dry-run: the frame's lookups without a device (kiln/runtime/plan.h), written to --usage.
@@ -196,7 +226,15 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                     "Ambient light, linear: one colour, or Unity's gradient SKY:EQUATOR:GROUND "
                     "(default: the sidecar's, else 0.05,0.05,0.05)")
         ->check(CLI::Validator([](std::string& v) { return ParseAmbient(v, nullptr); }, ""))
-        ->option_text("R,G,B|R,G,B:R,G,B:R,G,B");
+        ->option_text("R,G,B|R,G,B:R,G,B:R,G,B|sky[:R,G,B:R,G,B:R,G,B]");
+    cmd->add_option("--sky", a->sky,
+                    "Ambient light from an equirectangular HDR image (Radiance .hdr; row 0 "
+                    "straight up, the centre looking down -Z), projected to SH")
+        ->option_text("IMAGE.hdr");
+    cmd->add_option("--sky-intensity", a->sky_intensity,
+                    "Scale of the --sky image's radiance (default 1)")
+        ->check(CLI::Range(0.0f, 1e6f).description(""))
+        ->option_text("S");
     cmd->add_flag("--no-default-light", a->no_default_light,
                   "Do not add a directional light to scenes that have none");
     cmd->add_option("--ocio-config", a->color.config_path,
@@ -240,6 +278,8 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             if (file.empty() && message.rfind(prefix, 0) == 0) {
                 file = a->scene;  // "scene.gltf: what" -> a diagnostic in scene.gltf
                 message.erase(0, prefix.size());
+            } else if (!file.empty() && message.rfind(file + ": ", 0) == 0) {
+                message.erase(0, file.size() + 2);  // the file is the diagnostic's already
             }
             diags.Error(e.code, file, kNoPosition, message);
             return finish(int(kExitInputError));
@@ -270,8 +310,22 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                 return fail(read.error());
             }
         }
+        if (!a->ambient.empty() && !a->sky.empty()) {
+            diags.Error(DiagCode::kBadScene, "", kNoPosition,
+                        "--ambient and --sky both set the ambient light; give one");
+            return finish(int(kExitInputError));
+        }
         if (!a->ambient.empty()) {
             ParseAmbient(a->ambient, &scene);  // validated by the option's check
+        }
+        if (!a->sky.empty()) {
+            Result<std::shared_ptr<const runtime::Sky>> sky =
+                runtime::LoadSky(a->sky, a->sky_intensity);
+            if (!sky) {
+                return fail(sky.error(), a->sky);
+            }
+            scene.ambient_mode = runtime::AmbientMode::kSky;
+            scene.sky = std::move(sky).value();
         }
         Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create(a->color);
         if (!made_color) {

@@ -63,6 +63,32 @@ void AddTrilight(SH9& sh,
     sh.L[8] += -kPi * 0.546274 * i2;
 }
 
+glm::dvec3 EquirectDirection(uint32_t u, uint32_t v, uint32_t width, uint32_t height) {
+    const double theta = kPi * (double(v) + 0.5) / double(height);
+    const double phi = 2.0 * kPi * (double(u) + 0.5) / double(width) - kPi;
+    return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+}
+
+double EquirectSolidAngle(uint32_t v, uint32_t width, uint32_t height) {
+    const double top = kPi * double(v) / double(height);
+    const double bottom = kPi * double(v + 1) / double(height);
+    return 2.0 * kPi / double(width) * (std::cos(top) - std::cos(bottom));
+}
+
+void AddEquirect(SH9& sh, uint32_t width, uint32_t height, const float* rgb) {
+    for (uint32_t v = 0; v < height; ++v) {
+        const double omega = EquirectSolidAngle(v, width, height);
+        for (uint32_t u = 0; u < width; ++u) {
+            const float* t = rgb + (size_t(v) * width + u) * 3;
+            const glm::dvec3 radiance(t[0], t[1], t[2]);
+            const std::array<double, 9> y = SHBasis(EquirectDirection(u, v, width, height));
+            for (size_t k = 0; k < 9; ++k) {
+                sh.L[k] += radiance * (y[k] * omega);
+            }
+        }
+    }
+}
+
 glm::dvec3 Irradiance(const SH9& sh, const glm::dvec3& n) {
     const double x = n.x, y = n.y, z = n.z;
     const auto& L = sh.L;

@@ -152,11 +152,17 @@ Values FrameValues(const runtime::Scene& scene,
     // Flat: every ambient colour is the same radiance; trilight: the three.
     // UNITY_LIGHTMODEL_AMBIENT is glstate_lightmodel_ambient * 2, the sky colour (Unity's
     // RenderSettings.ambientLight); unity_IndirectSpecColor is the mean radiance over the sphere.
+    // A sky: its mean radiance over the upper cap, the horizon band and the lower cap.
     const bool trilight = scene.ambient_mode == runtime::AmbientMode::kTrilight;
-    const glm::vec4 sky(scene.ambient, 1);
+    const runtime::Sky* image = SkyOf(scene);
+    const glm::vec4 sky(image ? image->up : scene.ambient, 1);
     v["unity_AmbientSky"] = Vec(sky);
-    v["unity_AmbientEquator"] = Vec(trilight ? glm::vec4(scene.ambient_equator, 1) : sky);
-    v["unity_AmbientGround"] = Vec(trilight ? glm::vec4(scene.ambient_ground, 1) : sky);
+    v["unity_AmbientEquator"] = Vec(image      ? glm::vec4(image->horizon, 1)
+                                    : trilight ? glm::vec4(scene.ambient_equator, 1)
+                                               : sky);
+    v["unity_AmbientGround"] = Vec(image      ? glm::vec4(image->down, 1)
+                                   : trilight ? glm::vec4(scene.ambient_ground, 1)
+                                              : sky);
     v["unity_IndirectSpecColor"] = Vec(glm::vec4(MeanAmbient(scene), 1));
     v["glstate_lightmodel_ambient"] = Vec(sky * 0.5f);
     // The reflection probe is the ambient sky itself (render/textures.cpp): a linear float
@@ -172,8 +178,15 @@ Values FrameValues(const runtime::Scene& scene,
     return v;
 }
 
+const runtime::Sky* SkyOf(const runtime::Scene& scene) {
+    return scene.ambient_mode == runtime::AmbientMode::kSky ? scene.sky.get() : nullptr;
+}
+
 glm::vec3 MeanAmbient(const runtime::Scene& scene) {
-    if (scene.ambient_mode == runtime::AmbientMode::kFlat) {
+    if (const runtime::Sky* sky = SkyOf(scene)) {
+        return sky->mean;
+    }
+    if (scene.ambient_mode != runtime::AmbientMode::kTrilight) {
         return scene.ambient;
     }
     // The mean of the trilight gradient over the sphere: y is uniform on [-1, 1].
@@ -206,7 +219,9 @@ Values ProbeValues(const runtime::Scene& scene,
     // term would (the order-2 approximation of the clamped cosine, Ramamoorthi and Hanrahan
     // 2001).
     reference::SH9 sh;
-    if (scene.ambient_mode == runtime::AmbientMode::kTrilight) {
+    if (const runtime::Sky* sky = SkyOf(scene)) {
+        sh.L = sky->sh;  // projected once, when the sky was made
+    } else if (scene.ambient_mode == runtime::AmbientMode::kTrilight) {
         reference::AddTrilight(sh, glm::dvec3(scene.ambient), glm::dvec3(scene.ambient_equator),
                                glm::dvec3(scene.ambient_ground));
     } else {

@@ -55,6 +55,10 @@ Values ProbeValues(const runtime::Scene& scene,
 // The scene's ambient radiance averaged over the sphere (unity_IndirectSpecColor).
 glm::vec3 MeanAmbient(const runtime::Scene& scene);
 
+// The scene's sky when its ambient is one (AmbientMode::kSky with a sky set), else null: a kSky
+// scene without a sky falls back to the flat `ambient`.
+const runtime::Sky* SkyOf(const runtime::Scene& scene);
+
 // The light's illuminance (lux, times its colour) at `point`, on a surface facing it, and the unit
 // direction from `point` towards it.
 std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const glm::vec3& point);

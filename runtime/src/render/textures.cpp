@@ -97,7 +97,7 @@ FrameTextures::~FrameTextures() {
 
 Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
     const AmbientKey key{scene_->ambient_mode, scene_->ambient, scene_->ambient_equator,
-                         scene_->ambient_ground};
+                         scene_->ambient_ground, SkyOf(*scene_)};
     if (!(key == ambient_key_)) {  // the scene's ambient changed since the last frame
         for (auto& [old_shape, image] : ambient_) {
             vk::DestroyImage(s_.context, image);
@@ -108,12 +108,14 @@ Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
     auto it = ambient_.find(shape);
     if (it == ambient_.end()) {
         // Linear radiance above 1 needs a float texel; RGBA16F is filterable on every device.
-        // A trilight cube has the sky on +Y, the ground on -Y and the equator on the sides; other
-        // shapes hold the mean radiance.
+        // A trilight cube has the sky on +Y, the ground on -Y and the equator on the sides; a
+        // sky's cube each face's mean radiance; other shapes hold the mean radiance.
         const bool cube = shape == vk::ImageShape::kCube || shape == vk::ImageShape::kCubeArray;
         const bool trilight = scene_->ambient_mode == runtime::AmbientMode::kTrilight;
         std::vector<glm::vec3> faces;
-        if (cube && trilight) {
+        if (const runtime::Sky* sky = SkyOf(*scene_); cube && sky) {
+            faces.assign(sky->faces.begin(), sky->faces.end());
+        } else if (cube && trilight) {
             const glm::vec3 e = scene_->ambient_equator;
             faces = {e, e, scene_->ambient, scene_->ambient_ground, e, e};
         } else {

@@ -64,6 +64,7 @@ class FrameTextures {
     struct AmbientKey {                            // the ambient ambient_ holds
         runtime::AmbientMode mode = runtime::AmbientMode::kFlat;
         glm::vec3 sky{-1.0f}, equator{-1.0f}, ground{-1.0f};
+        const runtime::Sky* image = nullptr;
         bool operator==(const AmbientKey&) const = default;
     };
     AmbientKey ambient_key_;

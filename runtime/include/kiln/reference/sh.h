@@ -5,6 +5,7 @@
 #define KILN_REFERENCE_SH_H_
 
 #include <array>
+#include <cstdint>
 
 #include <glm/vec3.hpp>
 
@@ -39,6 +40,20 @@ void AddTrilight(SH9& sh,
                  const glm::dvec3& sky,
                  const glm::dvec3& equator,
                  const glm::dvec3& ground);
+
+// The unit direction at the centre of texel (u, v) of a width x height equirectangular image: row 0
+// straight up (+y), the centre column looking down -z, +x three quarters of the way across:
+// theta = pi (v + 0.5) / height from +y, phi = 2 pi (u + 0.5) / width - pi,
+// d = (sin theta sin phi, cos theta, -sin theta cos phi).
+glm::dvec3 EquirectDirection(uint32_t u, uint32_t v, uint32_t width, uint32_t height);
+
+// The solid angle of a texel of row v: (2 pi / width) (cos theta_top - cos theta_bottom), exact;
+// the rows of an image sum to 4 pi.
+double EquirectSolidAngle(uint32_t v, uint32_t width, uint32_t height);
+
+// Adds the projection of an equirectangular radiance image (linear RGB floats, row-major from
+// the top): each texel's radiance x Y_lm at its centre x its solid angle.
+void AddEquirect(SH9& sh, uint32_t width, uint32_t height, const float* rgb);
 
 // Irradiance E(n) from the order-2 approximation (R&H 2001, eq. 13), unit n.
 glm::dvec3 Irradiance(const SH9& sh, const glm::dvec3& n);

@@ -8,9 +8,11 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -103,7 +105,36 @@ struct Camera {
     glm::mat4 world{1.0f};          // camera to world; looks down -Z, +Y up
 };
 
-enum class AmbientMode { kFlat, kTrilight };
+enum class AmbientMode { kFlat, kTrilight, kSky };
+
+// A sky for the ambient light: an equirectangular image of linear radiance (row 0 straight up,
+// the centre column looking down -z, +x three quarters across; reference::EquirectDirection),
+// and what the renderer reads of it, derived once when it is made: its SH projection, its mean
+// radiance, and its mean over the upper cap, the horizon band and the lower cap (y > 0.5,
+// |y| <= 0.5, y < -0.5) and over each cube face (+x, -x, +y, -y, +z, -z).
+struct Sky {
+    std::string name;  // the image file, or "procedural"
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgb;
+    std::array<glm::dvec3, 9> sh{};  // reference::SH9 coefficients
+    glm::vec3 mean{0.0f}, up{0.0f}, horizon{0.0f}, down{0.0f};
+    std::array<glm::vec3, 6> faces{};
+};
+
+// Kiln's procedural sky: `zenith` straight up, blending into `horizon` as the direction nears
+// the horizon (weight y^(1/2) above it) and into `ground` just below it (weight (-y)^(1/2)),
+// rendered into a 256 x 128 image. No sun disc: the sun is the scene's directional light.
+std::shared_ptr<const Sky> ProceduralSky(const glm::vec3& zenith,
+                                         const glm::vec3& horizon,
+                                         const glm::vec3& ground);
+// An equirectangular HDR image (Radiance .hdr, or any format stb_image reads; 8-bit images are
+// decoded from sRGB) as a sky, radiance x `scale`. Errors name the file.
+Result<std::shared_ptr<const Sky>> LoadSky(const std::string& path, float scale = 1.0f);
+// A sky of an image already in memory (width x height linear RGB), with its derived values.
+std::shared_ptr<const Sky> MakeSky(std::string name,
+                                   uint32_t width,
+                                   uint32_t height,
+                                   std::vector<float> rgb);
 
 struct Instance {
     uint32_t mesh = 0;
@@ -126,11 +157,13 @@ struct Scene {
     std::vector<Camera> cameras;
     // The ambient light as Unity's Environment Lighting gives it: kFlat, one linear colour
     // (`ambient`); kTrilight, a gradient from `ambient` (sky, straight up) through
-    // `ambient_equator` (the horizon) to `ambient_ground` (straight down). It fills
-    // unity_AmbientSky/Equator/Ground, the SH probe (its projection) and the reflection cube.
+    // `ambient_equator` (the horizon) to `ambient_ground` (straight down); kSky, `sky` (a
+    // procedural sky or an HDR image). It fills unity_AmbientSky/Equator/Ground, the SH probe
+    // (its projection) and the reflection cube.
     AmbientMode ambient_mode = AmbientMode::kFlat;
     glm::vec3 ambient{0.05f};
     glm::vec3 ambient_equator{0.05f}, ambient_ground{0.05f};
+    std::shared_ptr<const Sky> sky;  // kSky
     // glTF material name -> .material file (absolute or relative to the working directory).
     std::map<std::string, std::string> material_files;
 };
