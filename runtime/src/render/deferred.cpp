@@ -199,11 +199,8 @@ Status DrawDeferred(Renderer::State& s,
         forward.depth = kDepth;
         forward.clear = false;
         builder.BeginPass(frame, forward);
-        for (const render::DrawRequest& r : plan.forward) {
-            if (Status e = builder.Build(r, forward.draws); !e.ok()) {
-                return e;
-            }
-            (r.additive ? stats.add_passes : stats.base_passes)++;
+        if (Status e = builder.BuildForward(plan.forward, forward.draws); !e.ok()) {
+            return e;
         }
     }
     stats.objects = plan.objects;

@@ -232,6 +232,17 @@ void DrawBuilder::Uniforms(const pack::Pack& pack,
     }
 }
 
+Status DrawBuilder::BuildForward(const std::vector<render::DrawRequest>& requests,
+                                 std::vector<Draw>& draws) {
+    for (const render::DrawRequest& r : requests) {
+        if (Status e = Build(r, draws); !e.ok()) {
+            return e;
+        }
+        (r.additive ? stats_.add_passes : stats_.base_passes)++;
+    }
+    return {};
+}
+
 Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>& draws) {
     const MaterialInstance& m = *request.material;
     const uint32_t pass = request.pass;

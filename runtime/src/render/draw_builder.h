@@ -35,6 +35,8 @@ class DrawBuilder {
 
     // One draw of a request's pass for its primitive, appended to `draws`.
     Status Build(const render::DrawRequest& request, std::vector<Draw>& draws);
+    // The forward path's requests in order, counted as base and additive passes in the stats.
+    Status BuildForward(const std::vector<render::DrawRequest>& requests, std::vector<Draw>& draws);
 
     // Every draw's uniform blocks, at the offsets their writes name.
     std::vector<uint8_t> TakeUniforms() { return std::move(uniforms_); }

@@ -112,11 +112,8 @@ Status DrawPlan(Renderer::State& s,
 
     DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats);
     builder.BeginPass(frame, forward);
-    for (const render::DrawRequest& r : plan.draws) {
-        if (Status e = builder.Build(r, forward.draws); !e.ok()) {
-            return e;
-        }
-        (r.additive ? stats.add_passes : stats.base_passes)++;
+    if (Status e = builder.BuildForward(plan.draws, forward.draws); !e.ok()) {
+        return e;
     }
     stats.objects = plan.objects;
     frame.uniforms = builder.TakeUniforms();

@@ -342,33 +342,4 @@ Status CreateConstantImage(const Context& c,
     return {};
 }
 
-Status ReadBack(const Context& c,
-                const Image& image,
-                uint32_t bytes_per_pixel,
-                std::vector<uint8_t>& out) {
-    const VkDeviceSize size = VkDeviceSize{image.width} * image.height * bytes_per_pixel;
-    Buffer staging;
-    if (Status e = CreateBuffer(c, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging); !e.ok()) {
-        return e;
-    }
-    auto e = SubmitOnce(c, [&](VkCommandBuffer cmd) {
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {image.width, image.height, 1};
-        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               staging.buffer, 1, &copy);
-        VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                             &to_host, 0, nullptr, 0, nullptr);
-    });
-    if (e.ok()) {
-        const auto* p = static_cast<const uint8_t*>(staging.mapped);
-        out.assign(p, p + size);
-    }
-    DestroyBuffer(c, staging);
-    return e;
-}
-
 }  // namespace kiln::vk

@@ -66,12 +66,6 @@ Status CreateConstantImage(const Context& c,
                            std::span<const uint8_t> texel,
                            Image& out);
 
-// Copies a colour image (in TRANSFER_SRC_OPTIMAL) into a host buffer.
-Status ReadBack(const Context& c,
-                const Image& image,
-                uint32_t bytes_per_pixel,
-                std::vector<uint8_t>& out);
-
 // A layout transition of mip levels [base_mip, base_mip + mip_count) of every array layer.
 void ImageBarrier(VkCommandBuffer cmd,
                   VkImage image,
