@@ -258,6 +258,39 @@ TEST(SceneStrip, DiffCountsVariantsAndBytesPerPassWithABudget) {
     EXPECT_EQ(RunKiln("diff --max-added-bytes 1000 " + sun + " " + full).exit_code, 1);
 }
 
+// --path deferred plans the deferred path's lookups: the G-buffer passes of the objects that have
+// one, the light pass's variants per light (a mask and a bounded draw for ranged lights), and the
+// forward passes of the rest; the stripped pack then renders the demo scene deferred (and not
+// forward, whose variants it left out).
+TEST(SceneStrip, TheDeferredPathStripsToItsOwnLookups) {
+    ScratchDir dir;
+    const std::string out = dir.path() + "/deferred.kpack";
+    std::string shaders;
+    for (const char* s : {"Unlit", "Lambert", "LambertAmbient", "BlinnPhong", "BlinnPhongTextured",
+                          "EnergyConserving", "Standard", "StandardMetallic", "MultiLight",
+                          "Deferred", "internal/DeferredShading"}) {
+        shaders += DataPath(std::string("../materials/") + s + ".shader") + " ";
+    }
+    const std::string demo = DataPath("../scenes/demo/demo.gltf");
+    const RunResult r = RunKiln("compile " + shaders + "--no-cache -o " + out + " --scene " + demo +
+                                " --path deferred --verify-scene");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto kept = VariantsByPass(out);
+    EXPECT_EQ(kept.at("DEFERRED").size(),
+              3u);  // Kiln/Deferred; StandardMetallic with and without _EMISSION
+    EXPECT_EQ(kept.at("LIGHT"), (std::vector<std::string>{"DIRECTIONAL"}));  // the sun
+    EXPECT_EQ(kept.at("LIGHT_MASK").size(), 1u);
+    EXPECT_EQ(kept.at("LIGHT_BOUNDED"), (std::vector<std::string>{"POINT", "SPOT"}));
+    const RunResult deferred = RunKiln("render " + demo + " --pack " + out +
+                                       " --path deferred --width 96 --height 54 --validation -o " +
+                                       dir.path() + "/deferred.png");
+    EXPECT_EQ(deferred.exit_code, 0) << deferred.err;
+    const RunResult forward = RunKiln("render " + demo + " --pack " + out +
+                                      " --width 96 --height 54 -o " + dir.path() + "/forward.png");
+    EXPECT_EQ(forward.exit_code, 1);
+    EXPECT_NE(forward.err.find("[K0006]"), std::string::npos) << forward.err;
+}
+
 TEST(SceneStrip, FlagsThatDoNotApplyAreRefused) {
     ScratchDir dir;
     const std::string out = dir.path() + "/x.kpack";
