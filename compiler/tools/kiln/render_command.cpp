@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands.h"
@@ -42,7 +43,16 @@ constexpr glm::vec3 kSkyZenith{0.10f, 0.18f, 0.38f};
 constexpr glm::vec3 kSkyHorizon{0.32f, 0.35f, 0.40f};
 constexpr glm::vec3 kSkyGround{0.08f, 0.07f, 0.06f};
 
+// `--ambient IMAGE.hdr`: the same as --sky IMAGE.hdr.
+bool IsSkyImage(const std::string& text) {
+    return text.size() > 4 && (text.compare(text.size() - 4, 4, ".hdr") == 0 ||
+                               text.compare(text.size() - 4, 4, ".HDR") == 0);
+}
+
 std::string ParseAmbient(const std::string& text, runtime::Scene* scene) {
+    if (IsSkyImage(text)) {
+        return "";  // read when the scene is (LoadSky)
+    }
     // Kiln's procedural sky, with its default clear-day colours or ZENITH:HORIZON:GROUND.
     if (text == "sky" || text.rfind("sky:", 0) == 0) {
         runtime::Scene colours;
@@ -223,10 +233,11 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
     cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
     cmd->add_option("--ambient", a->ambient,
-                    "Ambient light, linear: one colour, or Unity's gradient SKY:EQUATOR:GROUND "
-                    "(default: the sidecar's, else 0.05,0.05,0.05)")
+                    "Ambient light, linear: one colour, Unity's gradient SKY:EQUATOR:GROUND, "
+                    "Kiln's procedural sky, or a sky image as --sky (default: the sidecar's, "
+                    "else 0.05,0.05,0.05)")
         ->check(CLI::Validator([](std::string& v) { return ParseAmbient(v, nullptr); }, ""))
-        ->option_text("R,G,B|R,G,B:R,G,B:R,G,B|sky[:R,G,B:R,G,B:R,G,B]");
+        ->option_text("R,G,B|R,G,B:R,G,B:R,G,B|sky[:R,G,B:R,G,B:R,G,B]|IMAGE.hdr");
     cmd->add_option("--sky", a->sky,
                     "Ambient light from an equirectangular HDR image (Radiance .hdr; row 0 "
                     "straight up, the centre looking down -Z), projected to SH")
@@ -309,6 +320,9 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             if (Status read = runtime::LoadMaterialSidecar(a->materials, scene); !read.ok()) {
                 return fail(read.error());
             }
+        }
+        if (IsSkyImage(a->ambient) && a->sky.empty()) {
+            a->sky = std::exchange(a->ambient, "");  // --ambient IMAGE.hdr is --sky IMAGE.hdr
         }
         if (!a->ambient.empty() && !a->sky.empty()) {
             diags.Error(DiagCode::kBadScene, "", kNoPosition,
