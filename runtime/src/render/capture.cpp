@@ -16,22 +16,6 @@ uint8_t Byte(double v) {
     return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
-// Linear floats of a float target (RGBA16F or RGBA32F).
-std::vector<float> Floats(const FrameTarget& t, const std::vector<uint8_t>& bytes) {
-    const bool f32 = t.format == VK_FORMAT_R32G32B32A32_SFLOAT;
-    std::vector<float> out(bytes.size() / (f32 ? 4 : 2));
-    for (size_t i = 0; i < out.size(); ++i) {
-        if (f32) {
-            std::memcpy(&out[i], bytes.data() + i * 4, 4);
-        } else {
-            uint16_t half;
-            std::memcpy(&half, bytes.data() + i * 2, 2);
-            out[i] = HalfToFloat(half);
-        }
-    }
-    return out;
-}
-
 // Depth as distance from the camera, shown near white to far dark grey; nothing drawn is black.
 std::vector<uint8_t> DepthImage(const FrameTarget& t,
                                 const std::vector<uint8_t>& bytes,
@@ -81,7 +65,7 @@ std::vector<uint8_t> StoredImage(const FrameTarget& t, const std::vector<uint8_t
         }
     } else if (t.format == VK_FORMAT_R16G16B16A16_SFLOAT ||
                t.format == VK_FORMAT_R32G32B32A32_SFLOAT) {
-        const std::vector<float> f = Floats(t, bytes);
+        const std::vector<float> f = TargetFloats(t, bytes);
         for (size_t i = 0; i + 4 <= f.size(); i += 4) {
             out.insert(out.end(), {Byte(f[i]), Byte(f[i + 1]), Byte(f[i + 2]), 255});
         }
@@ -129,7 +113,7 @@ StepObserver CaptureObserver(const glm::mat4& projection,
                 image.rgba8 = DepthImage(t, ct.bytes, inverse);
             } else if (t.display && (t.format == VK_FORMAT_R16G16B16A16_SFLOAT ||
                                      t.format == VK_FORMAT_R32G32B32A32_SFLOAT)) {
-                std::vector<float> linear = Floats(t, ct.bytes);
+                std::vector<float> linear = TargetFloats(t, ct.bytes);
                 color.ApplyDisplay(linear);
                 image.rgba8 = ColorPipeline::Quantize(linear);
                 for (size_t i = 3; i < image.rgba8.size(); i += 4) {

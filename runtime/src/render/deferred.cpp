@@ -138,7 +138,8 @@ Status DrawDeferred(Renderer::State& s,
     frame.targets[kDepth].clear.depthStencil = {1.0f, 0};
     frame.output = kRT3;
 
-    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats);
+    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats,
+                        observer != nullptr);
     frame.passes.reserve(3);
     FramePass& gbuffer = frame.passes.emplace_back();
     gbuffer.name = "gbuffer";

@@ -49,8 +49,14 @@ DrawBuilder::DrawBuilder(Renderer::State& s,
                          SceneResources& resources,
                          const Scene& scene,
                          Values frame,
-                         FrameStats& stats)
-    : s_(s), resources_(resources), scene_(scene), frame_values_(std::move(frame)), stats_(stats) {
+                         FrameStats& stats,
+                         bool record_info)
+    : s_(s),
+      resources_(resources),
+      scene_(scene),
+      frame_values_(std::move(frame)),
+      stats_(stats),
+      record_info_(record_info) {
     alignment_ =
         std::max<VkDeviceSize>(256, s.context.properties.limits.minUniformBufferOffsetAlignment);
 }
@@ -102,8 +108,11 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
         for (vk::BlendTarget& t : state.targets)
             t.mask &= ~VkColorComponentFlags(VK_COLOR_COMPONENT_A_BIT);
     }
-    if (Result<pack::PassState> resolved = pack::ResolvePassState(pack, pass, number, overrides)) {
-        out.state = Describe(resolved.value(), additive);
+    if (record_info_) {
+        if (Result<pack::PassState> resolved =
+                pack::ResolvePassState(pack, pass, number, overrides)) {
+            out.state = Describe(resolved.value(), additive);
+        }
     }
     if (Status e = s_.GetPipeline(m.pack, variant, state, targets_, out.pipeline,
                                   stats_.pipelines_created);
@@ -278,18 +287,16 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
     Draw d;
     d.pipeline = binding.pipeline;
     d.writes = binding.textures;
-    d.info.shader = std::string(pack.String(pack.Shader(m.shader).value().name));
-    d.info.pass = pack::PassLabel(pack, pass);
-    d.info.light_mode = std::string(pack::LightModeOf(pack, pass));
-    d.info.keywords = pack::JoinKeywords(chosen);
-    d.info.state = binding.state;
-    d.info.light = request.light ? render::LightName(request.light) : std::string();
-    if (request.instance) {
-        const std::string& mesh = scene_.meshes[request.instance->mesh].name;
-        d.info.object = m.name + " on " +
-                        (!request.instance->node.empty() ? "node '" + request.instance->node + "'"
-                         : !mesh.empty()                 ? "mesh '" + mesh + "'"
-                                                         : std::string("an unnamed node"));
+    if (record_info_) {  // for the frame debugger only: strings per draw
+        d.info.shader = std::string(pack.String(pack.Shader(m.shader).value().name));
+        d.info.pass = pack::PassLabel(pack, pass);
+        d.info.light_mode = std::string(pack::LightModeOf(pack, pass));
+        d.info.keywords = pack::JoinKeywords(chosen);
+        d.info.state = binding.state;
+        d.info.light = request.light ? render::LightName(request.light) : std::string();
+        if (request.instance) {
+            d.info.object = render::ObjectLabel(scene_, *request.instance, m);
+        }
     }
     if (request.instance) {
         const uint32_t mesh = request.instance->mesh;

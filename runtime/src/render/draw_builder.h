@@ -21,11 +21,13 @@ namespace kiln::runtime {
 
 class DrawBuilder {
   public:
+    // `record_info`: fill each Draw::Info (the frame debugger's record of the draw).
     DrawBuilder(Renderer::State& s,
                 SceneResources& resources,
                 const Scene& scene,
                 render::Values frame,
-                FrameStats& stats);
+                FrameStats& stats,
+                bool record_info = false);
 
     // The pass the next draws go into: its targets (what pipelines are created against) and
     // the frame targets it samples by texture name (the light pass's G-buffer).
@@ -48,7 +50,7 @@ class DrawBuilder {
         const vk::Pipeline* pipeline = nullptr;
         std::vector<Draw::Write> textures;
         render::Values texel_sizes;
-        std::string state;  // the render state as ShaderLab spells it, for the frame debugger
+        std::string state;  // the render state as ShaderLab spells it (when recording info)
     };
 
     void Warn(DiagCode code, std::string message);
@@ -70,6 +72,7 @@ class DrawBuilder {
     const Scene& scene_;
     render::Values frame_values_;
     FrameStats& stats_;
+    bool record_info_ = false;
     const Frame* frame_ = nullptr;
     vk::TargetFormats targets_;
     std::map<std::string, uint32_t, std::less<>> target_textures_;

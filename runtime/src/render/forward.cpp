@@ -57,6 +57,14 @@ Status RenderFrame(Renderer::State& s,
         observer = CaptureObserver(camera.projection, color, *capture);
     }
     const StepObserver* step = capture ? &observer : nullptr;
+    // After planning: the materials for the usage file and what the frame resolved and uploaded.
+    auto draw = [&](const render::DrawList& list, auto&& record) -> Status {
+        s.NoteMaterials(list);
+        stats.materials_resolved = uint32_t(resources.materials.size() - materials);
+        const Status drawn = record();
+        stats.buffers_uploaded = resources.uploads - uploads;
+        return drawn;
+    };
     if (settings.path == RenderPath::kDeferred) {
         render::DeferredPlan plan;
         if (Status e = render::PlanDeferred(s.PackList(), scene, settings, camera.position, color,
@@ -64,12 +72,9 @@ Status RenderFrame(Renderer::State& s,
             !e.ok()) {
             return e;
         }
-        s.NoteMaterials(plan.list);
-        stats.materials_resolved = uint32_t(resources.materials.size() - materials);
-        const Status drawn =
-            DrawDeferred(s, resources, scene, settings, camera, plan, out, stats, step);
-        stats.buffers_uploaded = resources.uploads - uploads;
-        return drawn;
+        return draw(plan.list, [&] {
+            return DrawDeferred(s, resources, scene, settings, camera, plan, out, stats, step);
+        });
     }
     render::ForwardPlan plan;
     if (Status e = render::PlanForward(s.PackList(), scene, settings, camera.position, color,
@@ -77,11 +82,9 @@ Status RenderFrame(Renderer::State& s,
         !e.ok()) {
         return e;
     }
-    s.NoteMaterials(plan.list);
-    stats.materials_resolved = uint32_t(resources.materials.size() - materials);
-    const Status drawn = DrawPlan(s, resources, scene, settings, camera, plan, out, stats, step);
-    stats.buffers_uploaded = resources.uploads - uploads;
-    return drawn;
+    return draw(plan.list, [&] {
+        return DrawPlan(s, resources, scene, settings, camera, plan, out, stats, step);
+    });
 }
 
 Status DrawPlan(Renderer::State& s,
@@ -110,7 +113,8 @@ Status DrawPlan(Renderer::State& s,
     forward.colors = {0};
     forward.depth = 1;
 
-    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats);
+    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats,
+                        observer != nullptr);
     builder.BeginPass(frame, forward);
     if (Status e = builder.BuildForward(plan.draws, forward.draws); !e.ok()) {
         return e;

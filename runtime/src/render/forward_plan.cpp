@@ -66,13 +66,18 @@ std::string LightName(const Light* light) {
                  : std::string("no light");
 }
 
+std::string ObjectLabel(const runtime::Scene& scene,
+                        const runtime::Instance& instance,
+                        const MaterialInstance& material) {
+    const std::string& mesh = scene.meshes[instance.mesh].name;
+    return material.name + " on " +
+           (!instance.node.empty() ? "node '" + instance.node + "'"
+            : !mesh.empty()        ? "mesh '" + mesh + "'"
+                                   : std::string("an unnamed node"));
+}
+
 std::string Requester(const runtime::Scene& scene, const DrawItem& item) {
-    const std::string& mesh = scene.meshes[item.instance->mesh].name;
-    return item.material->name + " on " +
-           (!item.instance->node.empty() ? "node '" + item.instance->node + "'"
-            : !mesh.empty()              ? "mesh '" + mesh + "'"
-                                         : std::string("an unnamed node")) +
-           ": ";
+    return ObjectLabel(scene, *item.instance, *item.material) + ": ";
 }
 
 bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,

@@ -64,7 +64,11 @@ bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
                         std::vector<DrawRequest>& out,
                         DiagnosticList& warnings);
 
-// "material on node 'n': " (what a request's reason starts with).
+// "material on node 'n'" (or on mesh 'm', or on an unnamed node): who a draw is for.
+std::string ObjectLabel(const runtime::Scene& scene,
+                        const runtime::Instance& instance,
+                        const MaterialInstance& material);
+// ObjectLabel + ": ", what a request's reason starts with.
 std::string Requester(const runtime::Scene& scene, const DrawItem& item);
 
 // "point light 'l'", or "no light".

@@ -12,6 +12,8 @@
 namespace kiln::runtime {
 
 float HalfToFloat(uint16_t h);
+// The texels of a float target (RGBA16F or RGBA32F) as read back, as floats.
+std::vector<float> TargetFloats(const FrameTarget& t, const std::vector<uint8_t>& bytes);
 
 // A pass's targets in attachment order: the colours, then the depth buffer.
 std::vector<uint32_t> Attachments(const FramePass& pass);

@@ -6,6 +6,21 @@
 
 namespace kiln::runtime {
 
+std::vector<float> TargetFloats(const FrameTarget& t, const std::vector<uint8_t>& bytes) {
+    const bool f32 = t.format == VK_FORMAT_R32G32B32A32_SFLOAT;
+    std::vector<float> out(bytes.size() / (f32 ? 4 : 2));
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (f32) {
+            std::memcpy(&out[i], bytes.data() + i * 4, 4);
+        } else {
+            uint16_t half;
+            std::memcpy(&half, bytes.data() + i * 2, 2);
+            out[i] = HalfToFloat(half);
+        }
+    }
+    return out;
+}
+
 uint32_t TexelBytes(const FrameTarget& t) {
     switch (t.format) {
         case VK_FORMAT_R32G32B32A32_SFLOAT:
@@ -81,19 +96,9 @@ Status ReadOutput(const vk::Context& c,
     if (Status e = ReadTarget(c, frame, f, frame.output, layout, bytes); !e.ok()) {
         return e;
     }
-    const bool f32 = frame.targets[frame.output].format == VK_FORMAT_R32G32B32A32_SFLOAT;
     out.width = frame.width;
     out.height = frame.height;
-    out.rgba.resize(size_t{frame.width} * frame.height * 4);
-    if (f32) {
-        std::memcpy(out.rgba.data(), bytes.data(), out.rgba.size() * 4);
-    } else {
-        for (size_t i = 0; i < out.rgba.size(); ++i) {
-            uint16_t half;
-            std::memcpy(&half, bytes.data() + i * 2, 2);
-            out.rgba[i] = HalfToFloat(half);
-        }
-    }
+    out.rgba = TargetFloats(frame.targets[frame.output], bytes);
     return {};
 }
 
