@@ -206,7 +206,7 @@ Status DrawDeferred(Renderer::State& s,
     }
     stats.objects = plan.objects;
     frame.uniforms = builder.TakeUniforms();
-    return RecordFrame(s, frame, out, observer);
+    return RecordFrame(s, frame, out, stats, observer);
 }
 
 }  // namespace kiln::runtime

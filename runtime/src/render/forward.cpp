@@ -121,7 +121,7 @@ Status DrawPlan(Renderer::State& s,
     }
     stats.objects = plan.objects;
     frame.uniforms = builder.TakeUniforms();
-    return RecordFrame(s, frame, out, observer);
+    return RecordFrame(s, frame, out, stats, observer);
 }
 
 }  // namespace kiln::runtime

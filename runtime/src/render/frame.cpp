@@ -4,6 +4,7 @@
 #include <map>
 
 #include "render/frame_internal.h"
+#include "vk/timestamps.h"
 
 namespace kiln::runtime {
 namespace {
@@ -377,6 +378,7 @@ void RecordDraws(VkCommandBuffer cmd,
 Status RecordFrame(Renderer::State& s,
                    const Frame& frame,
                    LinearImage& out,
+                   FrameStats& stats,
                    const StepObserver* observer) {
     if (observer) {
         return RecordFrameSteps(s, frame, out, *observer);
@@ -393,14 +395,27 @@ Status RecordFrame(Renderer::State& s,
     const VkRect2D full{{0, 0}, {frame.width, frame.height}};
     Layouts layouts{frame, f.targets,
                     std::vector<VkImageLayout>(frame.targets.size(), VK_IMAGE_LAYOUT_UNDEFINED)};
-    for (size_t p = 0; p < frame.passes.size(); ++p) {
+    // A mark before each pass and one after the last: the intervals are the passes' times.
+    const uint32_t passes = uint32_t(frame.passes.size());
+    vk::Timestamps timer(c, passes + 1);
+    timer.Reset(cmd);
+    for (uint32_t p = 0; p < passes; ++p) {
         layouts.Before(cmd, frame.passes[p]);
+        timer.Mark(cmd, p, p > 0);
         BeginPass(cmd, frame, f, p, f.render_passes[p]);
         RecordDraws(cmd, frame.passes[p].draws, f.sets[p], full);
         vkCmdEndRenderPass(cmd);
     }
+    timer.Mark(cmd, passes, true);
     if (Status e = vk::SubmitAndWait(c, cmd); !e.ok()) {
         return e;
+    }
+    const std::vector<double> ms = timer.Intervals();
+    stats.pass_times.clear();
+    stats.gpu_ms = ms.empty() ? -1.0 : 0.0;
+    for (size_t p = 0; p < ms.size(); ++p) {
+        stats.pass_times.push_back({frame.passes[p].name, ms[p]});
+        stats.gpu_ms += ms[p];
     }
     return ReadOutput(c, frame, f, layouts.current[frame.output], out);
 }

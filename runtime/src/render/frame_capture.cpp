@@ -3,71 +3,17 @@
 // a render pass that loads what the steps before it wrote — with the targets the pass writes read
 // back after each step and the draw timed with timestamp queries where the queue has them.
 #include "render/frame_internal.h"
+#include "vk/timestamps.h"
 
 namespace kiln::runtime {
+
 namespace {
 
-// Two timestamps around a draw; inactive when the queue has no timestamp bits.
-class DrawTimer {
-  public:
-    explicit DrawTimer(const vk::Context& c) : c_(c) {
-        uint32_t n = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(c.physical, &n, nullptr);
-        std::vector<VkQueueFamilyProperties> families(n);
-        vkGetPhysicalDeviceQueueFamilyProperties(c.physical, &n, families.data());
-        const uint32_t bits = c.queue_family < n ? families[c.queue_family].timestampValidBits : 0;
-        if (bits == 0) {
-            return;
-        }
-        mask_ = bits >= 64 ? ~uint64_t{0} : (uint64_t{1} << bits) - 1;
-        VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-        info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        info.queryCount = 2;
-        if (vkCreateQueryPool(c.device, &info, nullptr, &pool_) != VK_SUCCESS) {
-            pool_ = VK_NULL_HANDLE;
-        }
-    }
-    ~DrawTimer() {
-        if (pool_) {
-            vkDestroyQueryPool(c_.device, pool_, nullptr);
-        }
-    }
-    DrawTimer(const DrawTimer&) = delete;
-    DrawTimer& operator=(const DrawTimer&) = delete;
-
-    void Reset(VkCommandBuffer cmd) {  // outside a render pass
-        if (pool_) {
-            vkCmdResetQueryPool(cmd, pool_, 0, 2);
-        }
-    }
-    void Mark(VkCommandBuffer cmd, uint32_t query) {
-        if (pool_) {
-            vkCmdWriteTimestamp(cmd,
-                                query == 0 ? VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT
-                                           : VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT,
-                                pool_, query);
-        }
-    }
-    // Milliseconds between the marks of the last submitted step; negative when not timed.
-    double Milliseconds() const {
-        if (!pool_) {
-            return -1;
-        }
-        uint64_t t[2] = {};
-        if (vkGetQueryPoolResults(c_.device, pool_, 0, 2, sizeof t, t, sizeof t[0],
-                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) !=
-            VK_SUCCESS) {
-            return -1;
-        }
-        const uint64_t ticks = ((t[1] & mask_) - (t[0] & mask_)) & mask_;
-        return double(ticks) * double(c_.properties.limits.timestampPeriod) * 1e-6;
-    }
-
-  private:
-    const vk::Context& c_;
-    VkQueryPool pool_ = VK_NULL_HANDLE;
-    uint64_t mask_ = 0;
-};
+// The GPU time of the last submitted step; negative when not timed.
+double StepMilliseconds(const vk::Timestamps& timer) {
+    const std::vector<double> ms = timer.Intervals();
+    return ms.empty() ? -1.0 : ms[0];
+}
 
 }  // namespace
 
@@ -80,7 +26,7 @@ Status RecordFrameSteps(Renderer::State& s,
     if (Status e = PrepareFrame(s, frame, f); !e.ok()) {
         return e;
     }
-    DrawTimer timer(c);
+    vk::Timestamps timer(c, 2);  // around each step's draws
     Layouts layouts{frame, f.targets,
                     std::vector<VkImageLayout>(frame.targets.size(), VK_IMAGE_LAYOUT_UNDEFINED)};
     const VkRect2D full{{0, 0}, {frame.width, frame.height}};
@@ -137,15 +83,15 @@ Status RecordFrameSteps(Renderer::State& s,
             }
             timer.Reset(cmd);
             BeginPass(cmd, frame, f, p, load);
-            timer.Mark(cmd, 0);
+            timer.Mark(cmd, 0, false);
             RecordDraws(cmd, std::span(pass.draws).subspan(first, i + 1 - first),
                         std::span(f.sets[p]).subspan(first, i + 1 - first), full);
-            timer.Mark(cmd, 1);
+            timer.Mark(cmd, 1, true);
             vkCmdEndRenderPass(cmd);
             if (Status e = vk::SubmitAndWait(c, cmd); !e.ok()) {
                 return e;
             }
-            if (Status e = capture(p, int(i), timer.Milliseconds()); !e.ok()) {
+            if (Status e = capture(p, int(i), StepMilliseconds(timer)); !e.ok()) {
                 return e;
             }
         }

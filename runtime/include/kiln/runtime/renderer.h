@@ -83,6 +83,16 @@ struct FrameStats {
     uint32_t buffers_uploaded = 0;
     uint32_t materials_resolved = 0;
     std::string camera;  // which camera was used
+    // GPU time from timestamp queries, in milliseconds: the whole frame and each pass (in frame
+    // order: "forward", or "gbuffer", "lighting", "forward"). Negative and empty where the
+    // queue has no timestamps, and for a captured frame (whose draws are timed one at a time,
+    // kiln/runtime/frame_debug.h).
+    double gpu_ms = -1;
+    struct PassTime {
+        std::string pass;
+        double gpu_ms = 0;
+    };
+    std::vector<PassTime> pass_times;
     // What the frame did not render as asked (K0012-K0015, K0024), each once; the file is the
     // scene, or the pack or cache a warning is about.
     DiagnosticList warnings;
