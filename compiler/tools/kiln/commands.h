@@ -83,6 +83,9 @@ std::vector<const SourceFile*> Views(const CompileOutput& out,
 // installed, ../materials/materials.kpack in the build tree).
 std::string RenderToolPath();
 std::string ShippedPackPath();
+// The demo scene (scenes/demo/demo.gltf) of the source tree kiln was built from; empty when it
+// is not there (an installed kiln).
+std::string DemoScenePath();
 
 // Scene-driven stripping for kiln compile (scene_strip.cpp): --scene, --usage, --path,
 // --pixel-lights, --explain, --verify-scene.
@@ -127,6 +130,7 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
 std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace kiln::cli
 

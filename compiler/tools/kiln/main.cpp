@@ -176,13 +176,14 @@ int main(int argc, char** argv) {
     try {
 #ifndef KILN_RENDER_TOOL
         const std::string first = FirstWord(std::vector<std::string>(argv + 1, argv + argc));
-        if (first == "render" || first == "test") {
+        if (first == "render" || first == "test" || first == "report") {
             return RunRenderTool(argc, argv);
         }
 #endif
         CLI::App app{"kiln: shader-variant compiler for Vulkan", "kiln"};
         app.require_subcommand(0, 1);
-        app.set_version_flag("-V,--version", VersionText, "Print kiln's version and those of "
+        app.set_version_flag("-V,--version", VersionText,
+                             "Print kiln's version and those of "
                              "glslang and SPIRV-Tools it compiles with (packs record them)");
         GlobalOptions global;
         const std::map<std::string, DiagFormat> formats{{"text", DiagFormat::kText},
@@ -203,7 +204,8 @@ int main(int argc, char** argv) {
 #ifdef KILN_RENDER_TOOL
         const std::map<std::string, std::function<int()>> commands{
             {"render", AddRenderCommand(app, global)},
-            {"test", AddTestCommand(app, global)}};
+            {"test", AddTestCommand(app, global)},
+            {"report", AddReportCommand(app, global)}};
 #else
         const std::map<std::string, std::function<int()>> commands{
             {"parse", AddParseCommand(app, global)},
@@ -216,15 +218,23 @@ int main(int argc, char** argv) {
             {"validate", AddValidateCommand(app, global)},
             {"new", AddNewCommand(app, global)},
             // Listed for --help and "did you mean"; main() hands them to kiln-render first.
-            {"render", [&] {
-                 app.add_subcommand("render",
-                                    "Render a glTF scene with packs (runs kiln-render, beside kiln)");
+            {"render",
+             [&] {
+                 app.add_subcommand(
+                     "render", "Render a glTF scene with packs (runs kiln-render, beside kiln)");
                  return [] { return int(kExitUsageError); };
              }()},
-            {"test", [&] {
+            {"test",
+             [&] {
                  app.add_subcommand("test",
                                     "Draw every variant of packs in a test harness and check it "
                                     "(runs kiln-render, beside kiln)");
+                 return [] { return int(kExitUsageError); };
+             }()},
+            {"report", [&] {
+                 app.add_subcommand("report",
+                                    "Report error against run time of the renderer's "
+                                    "approximations (runs kiln-render, beside kiln)");
                  return [] { return int(kExitUsageError); };
              }()}};
 #endif

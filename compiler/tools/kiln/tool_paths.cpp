@@ -39,4 +39,14 @@ std::string ShippedPackPath() {
     return (prefix / "share/kiln/materials.kpack").string();  // named in the error
 }
 
+std::string DemoScenePath() {
+#ifdef KILN_DEMO_SCENE
+    std::error_code ec;
+    if (fs::exists(KILN_DEMO_SCENE, ec)) {
+        return KILN_DEMO_SCENE;
+    }
+#endif
+    return "";
+}
+
 }  // namespace kiln::cli

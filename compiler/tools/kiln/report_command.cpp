@@ -1,0 +1,216 @@
+// kiln report [SCENE.gltf] -o DIR: error against run time of the renderer's approximations
+// (kiln/runtime/accuracy_report.h, docs/accuracy.md).
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "kiln/runtime/accuracy_report.h"
+#include "kiln/runtime/color.h"
+#include "kiln/runtime/renderer.h"
+#include "kiln/runtime/scene.h"
+
+namespace kiln::cli {
+namespace {
+
+struct ReportArgs {
+    std::string scene, output, materials, device;
+    std::vector<std::string> packs, compare, only;
+    runtime::AccuracyOptions options;
+    runtime::ColorOptions color;
+    bool validation = false, no_default_light = false;
+};
+
+// "LABEL=PACK" -> {LABEL, PACK}; an empty label when there is no '='.
+std::pair<std::string, std::string> SplitCompare(const std::string& text) {
+    const size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) {
+        return {"", text};
+    }
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+// The configurations asked for: the defaults (or those --only names), then the automatic
+// light mode once per --compare pack set.
+Result<std::vector<runtime::AccuracyConfig>> Configs(const ReportArgs& a) {
+    std::vector<runtime::AccuracyConfig> all = runtime::DefaultAccuracyConfigs(), out;
+    std::vector<std::string> names;
+    for (const runtime::AccuracyConfig& c : all) {
+        names.push_back(c.name);
+    }
+    for (const std::string& want : a.only) {
+        bool found = false;
+        for (const runtime::AccuracyConfig& c : all) {
+            found = found || c.name == want;
+        }
+        if (!found) {
+            std::string list;
+            for (const std::string& n : names) {
+                list += (list.empty() ? "" : ", ") + n;
+            }
+            return Error{DiagCode::kBadCommandLine,
+                         "--only: unknown configuration '" + want + "' (one of " + list + ")"};
+        }
+    }
+    for (const runtime::AccuracyConfig& c : all) {
+        if (a.only.empty() || std::find(a.only.begin(), a.only.end(), c.name) != a.only.end()) {
+            out.push_back(c);
+        }
+    }
+    for (size_t i = 0; i < a.compare.size(); ++i) {
+        runtime::AccuracyConfig c = all[1];  // auto-4: Unity's default
+        c.group = "packs";
+        c.renderer = i + 1;
+        c.name += "-" + SplitCompare(a.compare[i]).first;
+        out.push_back(c);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global) {
+    auto* cmd = app.add_subcommand(
+        "report",
+        "Render a scene as a reference and in each approximation (light modes, deferred "
+        "G-buffer formats, other packs) and report error against run time");
+    auto a = std::make_shared<ReportArgs>();
+    cmd->add_option("scene", a->scene,
+                    ".gltf or .glb file (default: the demo scene of the build tree)");
+    cmd->add_option("-o,--output", a->output, "Folder for the tables, plot and images")->required();
+    cmd->add_option("--pack", a->packs,
+                    "Variant packs the reference and the configurations use, searched in order "
+                    "(default: the shipped materials.kpack)");
+    cmd->add_option("--compare", a->compare,
+                    "Also render the automatic light mode with these packs instead, as LABEL="
+                    "PACK (repeatable; e.g. O0=materials-O0.kpack)")
+        ->option_text("LABEL=PACK");
+    cmd->add_option("--only", a->only, "Only these of the default configurations (repeatable)");
+    cmd->add_option("--width", a->options.width, "Image width (default 640)")
+        ->check(CLI::Range(1, 4096).description(""));
+    cmd->add_option("--height", a->options.height, "Image height (default 360)")
+        ->check(CLI::Range(1, 4096).description(""));
+    cmd->add_option("--supersample", a->options.supersample,
+                    "The reference's samples per pixel along each axis (default 4)")
+        ->check(CLI::Range(1, 8).description(""));
+    cmd->add_option("--frames", a->options.frames, "Timed frames per configuration (default 10)")
+        ->check(CLI::Range(1, 1000).description(""));
+    cmd->add_option("--warmup", a->options.warmup, "Frames before the timed ones (default 2)")
+        ->check(CLI::Range(1, 100).description(""));
+    cmd->add_option("--materials", a->materials,
+                    "Material sidecar (default: <scene>.kiln.json when present)");
+    cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
+    cmd->add_flag("--no-default-light", a->no_default_light,
+                  "Do not add a directional light to scenes that have none");
+    cmd->add_flag("--validation", a->validation,
+                  "Enable VK_LAYER_KHRONOS_validation; any message fails the report");
+    cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
+    return [a, &global] {
+        DiagnosticList diags;
+        auto finish = [&](int code) {
+            PrintDiagnostics(diags, {}, global);
+            return code;
+        };
+        auto fail = [&](const kiln::Error& e, const std::string& file = "") {
+            diags.Error(e.code, file, kNoPosition, e.message);
+            return finish(int(kExitInputError));
+        };
+        if (a->scene.empty()) {
+            a->scene = DemoScenePath();
+            if (a->scene.empty()) {
+                return fail(Error{DiagCode::kBadCommandLine,
+                                  "no scene given, and the demo scene is not beside this kiln "
+                                  "(give a .gltf or .glb file)"});
+            }
+        }
+        Result<std::vector<runtime::AccuracyConfig>> configs = Configs(*a);
+        if (!configs) {
+            return fail(configs.error());
+        }
+        a->options.configs = std::move(configs).value();
+        a->options.default_light = !a->no_default_light;
+        Result<runtime::Scene> loaded = runtime::LoadGltf(a->scene, diags);
+        if (!loaded) {
+            return fail(loaded.error());
+        }
+        runtime::Scene scene = std::move(loaded).value();
+        if (!a->materials.empty()) {
+            if (Status read = runtime::LoadMaterialSidecar(a->materials, scene); !read.ok()) {
+                return fail(read.error());
+            }
+        }
+        Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create(a->color);
+        if (!made_color) {
+            return fail(made_color.error());
+        }
+        const runtime::ColorPipeline color = std::move(made_color).value();
+        if (a->packs.empty()) {
+            a->packs.push_back(ShippedPackPath());
+        }
+        // The reference's renderer (fp32 targets), then one per pack set.
+        std::vector<std::vector<std::string>> pack_sets{a->packs, a->packs};
+        std::vector<std::string> labels{"default"};
+        for (const std::string& c : a->compare) {
+            const auto [label, path] = SplitCompare(c);
+            if (label.empty() || path.empty()) {
+                return fail(
+                    Error{DiagCode::kBadCommandLine, "--compare '" + c + "': expected LABEL=PACK"});
+            }
+            pack_sets.push_back({path});
+            labels.push_back(label);
+        }
+        std::vector<runtime::Renderer> renderers;
+        for (size_t i = 0; i < pack_sets.size(); ++i) {
+            runtime::RendererOptions options;
+            options.validation = a->validation;
+            options.device_filter = a->device;
+            options.float32_target = i == 0;
+            Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+            if (!made) {
+                return fail(made.error());
+            }
+            renderers.push_back(std::move(made).value());
+            for (const std::string& p : pack_sets[i]) {
+                if (Status added = renderers.back().AddPack(p); !added.ok()) {
+                    return fail(added.error());
+                }
+            }
+        }
+        std::vector<runtime::Renderer*> drawing;
+        for (size_t i = 1; i < renderers.size(); ++i) {
+            drawing.push_back(&renderers[i]);
+        }
+        Result<runtime::AccuracyReport> report =
+            runtime::RunAccuracyReport(renderers[0], drawing, labels, scene, color, a->options);
+        if (!report) {
+            return fail(report.error());
+        }
+        diags.Append(report.value().warnings);
+        for (runtime::Renderer& r : renderers) {
+            for (const std::string& m : r.ValidationMessages()) {
+                diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);
+            }
+        }
+        if (diags.has_errors()) {
+            return finish(int(kExitInputError));
+        }
+        if (Status written = runtime::WriteAccuracyReport(report.value(), color, a->output);
+            !written.ok()) {
+            return fail(written.error(), a->output);
+        }
+        std::printf("%-24s %-8s %10s %10s %12s %12s\n", "configuration", "packs", "FLIP", "RMSE",
+                    "GPU ms", "CPU ms");
+        for (const runtime::AccuracyRow& row : report.value().rows) {
+            std::printf("%-24s %-8s %10.4f %10.3g %12.3f %12.3f%s\n", row.config.name.c_str(),
+                        row.config.label.c_str(), row.flip, row.error.rmse, row.gpu_ms.median,
+                        row.cpu_ms.median, row.pareto ? "  pareto" : "");
+        }
+        std::printf("%s/report.md: %zu configurations against the reference, device '%s'\n",
+                    a->output.c_str(), report.value().rows.size(), report.value().device.c_str());
+        return finish(int(kExitOk));
+    };
+}
+
+}  // namespace kiln::cli

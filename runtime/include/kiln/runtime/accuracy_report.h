@@ -1,0 +1,99 @@
+// `kiln report`: what an approximation costs in accuracy and buys in time (docs/accuracy.md). A
+// scene is rendered as a reference (every light per pixel, fp32 targets, supersampled) and in
+// each configuration (light modes, paths and G-buffer formats, other packs such as other
+// optimizer levels); each is compared with the reference (kiln/runtime/image_error.h, FLIP) and
+// timed (GPU timestamps per pass and frame, CPU time per frame, the first frame apart).
+#ifndef KILN_RUNTIME_ACCURACY_REPORT_H_
+#define KILN_RUNTIME_ACCURACY_REPORT_H_
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "kiln/result.h"
+#include "kiln/runtime/color.h"
+#include "kiln/runtime/flip.h"
+#include "kiln/runtime/image_error.h"
+#include "kiln/runtime/renderer.h"
+#include "kiln/runtime/scene.h"
+
+namespace kiln::runtime {
+
+struct AccuracyConfig {
+    std::string name;        // "auto-4", "deferred-rgba8-oct", ... (also a file name)
+    std::string group;       // what it varies: "light mode", "path", "pack"
+    FrameSettings settings;  // its size and camera are the report's
+    size_t renderer = 0;     // which of the renderers draws it
+    std::string label;       // which packs, for the tables: the renderer's label
+};
+
+// The configurations a report compares by default, drawn by renderer 0: the light modes (every
+// light per pixel; Unity's automatic ranking with 4, 2, 1 and 0 pixel lights; per vertex; in
+// spherical harmonics) and the deferred path with each G-buffer normal format and encoding.
+std::vector<AccuracyConfig> DefaultAccuracyConfigs();
+
+struct AccuracyOptions {
+    uint32_t width = 640, height = 360;
+    uint32_t supersample = 4;  // the reference's samples per pixel along each axis
+    uint32_t warmup = 2;       // frames before the timed ones (the first is timed apart)
+    uint32_t frames = 10;      // timed frames per configuration
+    int camera = FrameSettings::kCameraDefault;
+    bool default_light = true;
+    std::vector<AccuracyConfig> configs;  // empty: DefaultAccuracyConfigs()
+    FlipOptions flip;
+};
+
+struct Spread {
+    double median = -1, min = -1, max = -1;  // negative: not measured
+};
+
+struct AccuracyRow {
+    AccuracyConfig config;
+    ImageError error;                           // linear, against the reference
+    double flip = 0;                            // mean FLIP on the display-transformed images
+    Spread gpu_ms;                              // timestamps around the frame's passes
+    std::vector<FrameStats::PassTime> pass_ms;  // each pass's median
+    Spread cpu_ms;  // Renderer::Render's wall time: planning, recording, waiting, read-back
+    double first_frame_ms = 0;     // the first frame's CPU time, pipelines included
+    uint32_t first_pipelines = 0;  // pipelines the first frame created (new to its renderer)
+    bool pareto = false;           // no other configuration is both faster and more accurate
+    LinearImage image;
+    std::vector<float> flip_map;  // per pixel, for the heat map
+};
+
+struct AccuracyReport {
+    std::string scene, device;
+    uint32_t width = 0, height = 0, supersample = 1, frames = 0;
+    LinearImage reference;  // downsampled to width x height
+    double reference_ms = 0;
+    std::vector<std::string> renderer_labels;
+    std::vector<AccuracyRow> rows;
+    DiagnosticList warnings;  // what the frames did not render as asked, each once
+};
+
+// `reference` draws the reference (create it with float32_target); `renderers` the
+// configurations (AccuracyConfig::renderer indexes them; `labels` names them).
+Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
+                                         std::span<Renderer* const> renderers,
+                                         std::span<const std::string> labels,
+                                         const Scene& scene,
+                                         const ColorPipeline& color,
+                                         const AccuracyOptions& options);
+
+// Writes into `dir` (created): report.md, report.csv, report.json, plot.svg and plot.png (error
+// against time, the Pareto front marked), reference.png, and per configuration render/NAME.png
+// and heat/NAME.png (its FLIP map).
+Status WriteAccuracyReport(const AccuracyReport& report,
+                           const ColorPipeline& color,
+                           const std::string& dir);
+
+// The plot alone: FLIP mean against time (GPU where measured, else CPU), as SVG text and as an
+// RGBA8 image of width x height.
+std::string AccuracyPlotSvg(const AccuracyReport& report);
+std::vector<uint8_t> AccuracyPlotImage(const AccuracyReport& report,
+                                       uint32_t width,
+                                       uint32_t height);
+
+}  // namespace kiln::runtime
+
+#endif  // KILN_RUNTIME_ACCURACY_REPORT_H_

@@ -1,0 +1,68 @@
+// kiln report through the CLI on lavapipe with the validation layer: the demo scene's tables,
+// plot and images for a few configurations, and the mistakes a user can make on its command line.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string TempDir(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    return dir.string();
+}
+
+TEST(ReportCli, WritesTheTablesPlotAndHeatMapsOfTheDemoScene) {
+    const std::string dir = TempDir("kiln_report_cli");
+    const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " + dir +
+                                " --only pixel --only vertex --only deferred-rgba8-oct"
+                                " --width 192 --height 108 --supersample 2 --frames 2"
+                                " --validation");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("deferred-rgba8-oct"), std::string::npos) << r.out;
+    for (const char* f :
+         {"report.md", "report.csv", "report.json", "plot.svg", "plot.png", "reference.png",
+          "heat/pixel.png", "heat/vertex.png", "heat/deferred-rgba8-oct.png", "render/pixel.png"}) {
+        EXPECT_TRUE(fs::exists(fs::path(dir) / f)) << f;
+    }
+    const nlohmann::json j = nlohmann::json::parse(ReadFile(dir + "/report.json"));
+    ASSERT_EQ(j["configurations"].size(), 3u);
+    for (const nlohmann::json& c : j["configurations"]) {
+        const double flip = c["flip_mean"].get<double>();
+        EXPECT_GE(flip, 0.0);
+        EXPECT_LT(flip, 0.5) << c["configuration"];  // approximations, not different scenes
+        EXPECT_FALSE(c["gpu_ms"].is_null()) << "lavapipe has timestamps";
+    }
+    EXPECT_TRUE(j["configurations"][2]["gpu_ms_per_pass"].contains("lighting"));
+    const std::string svg = ReadFile(dir + "/plot.svg");
+    EXPECT_NE(svg.find("Pareto"), std::string::npos);
+    EXPECT_NE(ReadFile(dir + "/report.md").find("| 3 | deferred-rgba8-oct |"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(ReportCli, AnUnknownConfigurationIsNamedWithTheValidOnes) {
+    const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " +
+                                TempDir("kiln_report_bad") + " --only vertx");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("unknown configuration 'vertx'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("vertex"), std::string::npos) << r.err;
+}
+
+TEST(ReportCli, ACompareWithoutALabelIsRefused) {
+    const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " +
+                                TempDir("kiln_report_bad") + " --compare other.kpack");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("expected LABEL=PACK"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace kiln::test
