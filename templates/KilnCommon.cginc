@@ -24,8 +24,10 @@ float3 SafeNormalize(float3 v) {
 // x^y for x >= 0 and y >= 0 with the limits pow(0, 0) = 1 and pow(0, y > 0) = 0.
 float SafePow(float x, float y) {
     // guard: SPIR-V's Pow is undefined for x < 0 and for x = 0 with y <= 0 (e.g. the Blinn-Phong
-    // exponent _Smoothness * 100 at smoothness 0); max(x, 1e-30) keeps the x -> 0 limits
-    return pow(max(x, 1e-30), max(y, 0.0));
+    // exponent _Smoothness * 100 at smoothness 0); max(x, 1e-30) keeps it defined, and the select
+    // gives the exact 0 for x <= 0 < y (1e-30^y is near 1 for tiny y; kiln stability)
+    float p = pow(max(x, 1e-30), max(y, 0.0));
+    return x <= 0.0 && y > 0.0 ? 0.0 : p;
 }
 
 // x^5 by multiplication (Schlick's approximation needs it); no pow, so no undefined cases.

@@ -211,8 +211,10 @@ float3 Shade4PointLights(float4 lightPosX, float4 lightPosY, float4 lightPosZ, f
     atten.z = Attenuation_Distance(lengthSq.z, lightAttenSq.z);
     atten.w = Attenuation_Distance(lengthSq.w, lightAttenSq.w);
     float4 diff = ndotl * atten;
-    return lightColor0 * diff.x + lightColor1 * diff.y + lightColor2 * diff.z +
-           lightColor3 * diff.w;
+    // guard: a colour near the float limit times an attenuation above 1 is +Inf at the vertex,
+    // and interpolating Inf gives NaN across the triangle (kiln stability); clamp to binary16
+    return ClampToHalfRange(lightColor0 * diff.x + lightColor1 * diff.y + lightColor2 * diff.z +
+                            lightColor3 * diff.w);
 }
 
 // The legacy "Vertex" pass lights (view space, unity_LightPosition and unity_LightAtten) on a
