@@ -4,6 +4,11 @@
 #ifndef HLSL_SUPPORT_INCLUDED
 #define HLSL_SUPPORT_INCLUDED
 
+// kiln stability --strict: undefined operations as NaN, before any other code (KilnStrictMath)
+#if defined(KILN_STRICT_POW) || defined(KILN_STRICT_NORMALIZE)
+#include "KilnStrictMath.cginc"
+#endif
+
 #define UNITY_COMPILER_HLSL
 #define UNITY_COMPILER_HLSLCC
 

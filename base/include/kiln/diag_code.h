@@ -46,6 +46,8 @@ enum class DiagCode : uint16_t {
     kRendererUnavailable = 25,   // kiln render: kiln-render could not be found or run
     kPackGrowthOverBudget = 26,  // kiln diff: the new pack grew past --max-added-variants/bytes
     kVariantTestFailed = 27,     // kiln test: a variant failed a check of the harness
+    kNotFinite = 28,             // kiln stability: a non-finite value on an extreme input
+    kOutsideBounds = 29,         // kiln stability: an error past the documented bound
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,

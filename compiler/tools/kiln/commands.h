@@ -131,6 +131,7 @@ std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace kiln::cli
 

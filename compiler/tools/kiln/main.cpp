@@ -176,7 +176,8 @@ int main(int argc, char** argv) {
     try {
 #ifndef KILN_RENDER_TOOL
         const std::string first = FirstWord(std::vector<std::string>(argv + 1, argv + argc));
-        if (first == "render" || first == "test" || first == "report") {
+        if (first == "render" || first == "test" || first == "report" ||
+            first == "stability") {
             return RunRenderTool(argc, argv);
         }
 #endif
@@ -205,7 +206,8 @@ int main(int argc, char** argv) {
         const std::map<std::string, std::function<int()>> commands{
             {"render", AddRenderCommand(app, global)},
             {"test", AddTestCommand(app, global)},
-            {"report", AddReportCommand(app, global)}};
+            {"report", AddReportCommand(app, global)},
+            {"stability", AddStabilityCommand(app, global)}};
 #else
         const std::map<std::string, std::function<int()>> commands{
             {"parse", AddParseCommand(app, global)},
@@ -235,6 +237,12 @@ int main(int argc, char** argv) {
                  app.add_subcommand("report",
                                     "Report error against run time of the renderer's "
                                     "approximations (runs kiln-render, beside kiln)");
+                 return [] { return int(kExitUsageError); };
+             }()},
+            {"stability", [&] {
+                 app.add_subcommand("stability",
+                                    "Check lighting on stiff and extreme inputs for NaN and "
+                                    "infinity (runs kiln-render, beside kiln)");
                  return [] { return int(kExitUsageError); };
              }()}};
 #endif

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "render/forward_plan.h"
+
 namespace kiln::render {
 namespace {
 
@@ -27,7 +29,7 @@ runtime::MeshVertex Vertex(glm::vec3 p, glm::vec3 n, glm::vec2 uv, glm::vec3 t) 
     return v;
 }
 
-runtime::Primitive Sphere(uint32_t segments, uint32_t rings) {
+runtime::Primitive Sphere(uint32_t segments, uint32_t rings, glm::vec3 centre, float radius) {
     runtime::Primitive p;
     const float pi = 3.14159265f;
     for (uint32_t r = 0; r <= rings; ++r) {
@@ -37,7 +39,7 @@ runtime::Primitive Sphere(uint32_t segments, uint32_t rings) {
             const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
                               -std::sin(theta) * std::sin(phi));
             const glm::vec3 t(-std::sin(phi), 0.0f, -std::cos(phi));  // d position / d u
-            p.vertices.push_back(Vertex(kTarget + 0.5f * n, n,
+            p.vertices.push_back(Vertex(centre + radius * n, n,
                                         {float(s) / float(segments), float(r) / float(rings)}, t));
         }
     }
@@ -61,12 +63,81 @@ runtime::Primitive Plane() {
     return p;
 }
 
+// The plane z = 0, |x|, |y| <= 2, as eight triangles around the origin, facing +z.
+runtime::Primitive FacingPlane() {
+    runtime::Primitive p;
+    const glm::vec3 n(0, 0, 1), t(1, 0, 0);
+    p.vertices.push_back(Vertex({0, 0, 0}, n, {0.5f, 0.5f}, t));
+    const float ring[8][2] = {{2, 0}, {2, 2}, {0, 2}, {-2, 2}, {-2, 0}, {-2, -2}, {0, -2}, {2, -2}};
+    for (const auto& c : ring) {
+        p.vertices.push_back(Vertex({c[0], c[1], 0}, n, {c[0] / 4 + 0.5f, c[1] / 4 + 0.5f}, t));
+    }
+    for (uint32_t i = 0; i < 8; ++i) {
+        p.indices.insert(p.indices.end(), {0, 1 + i, 1 + (i + 1) % 8});
+    }
+    p.has_tangents = true;
+    return p;
+}
+
 }  // namespace
+
+runtime::Scene StabilityScene() {
+    runtime::Scene scene;
+    scene.path = "<kiln stability scene>";
+    scene.meshes.push_back({"plane", {FacingPlane()}});
+    scene.meshes.push_back({"sphere", {Sphere(32, 16, glm::vec3(0.55f, 0.45f, 0.25f), 0.25f)}});
+    scene.instances.push_back({0, glm::mat4(1.0f), "plane"});
+    scene.instances.push_back({1, glm::mat4(1.0f), "sphere"});
+    for (runtime::Mesh& mesh : scene.meshes) {
+        ComputeBounds(mesh.primitives[0]);
+    }
+    scene.id = runtime::NewSceneId();
+    runtime::Camera camera;
+    camera.name = "stability";
+    camera.yfov = 0.9f;
+    camera.world = glm::inverse(
+        glm::lookAt(glm::vec3(0, 0, kStabilityEyeZ), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0)));
+    scene.cameras.push_back(camera);
+    return scene;
+}
+
+Status DrawHarnessPass(runtime::Renderer::State& s,
+                       const runtime::ColorPipeline& color,
+                       const runtime::Scene& scene,
+                       const runtime::FrameSettings& settings,
+                       const CameraSetup& camera,
+                       const HarnessPass& draw,
+                       runtime::LinearImage& out) {
+    ForwardPlan plan;
+    plan.list.lights = draw.lights;  // the requests point into it: not resized after this
+    const runtime::Light* light =
+        draw.pixel_light && !plan.list.lights.empty() ? &plan.list.lights[0] : nullptr;
+    std::vector<const runtime::Light*> vertex;
+    if (draw.vertex_light && plan.list.lights.size() > 1) {
+        vertex.push_back(&plan.list.lights[1]);
+    }
+    for (const runtime::Instance& inst : scene.instances) {
+        plan.draws.push_back({&inst,
+                              &scene.meshes[inst.mesh].primitives[0],
+                              draw.material,
+                              draw.pass,
+                              draw.additive,
+                              light,
+                              vertex,
+                              {},
+                              draw.keywords,
+                              "kiln test"});
+    }
+    plan.objects = uint32_t(scene.instances.size());
+    plan.list.materials.push_back(draw.material);
+    runtime::FrameStats stats;
+    return DrawPlan(s, s.ResourcesFor(scene, color), scene, settings, camera, plan, out, stats);
+}
 
 runtime::Scene HarnessScene() {
     runtime::Scene scene;
     scene.path = "<kiln test harness>";
-    scene.meshes.push_back({"sphere", {Sphere(32, 16)}});
+    scene.meshes.push_back({"sphere", {Sphere(32, 16, kTarget, 0.5f)}});
     scene.meshes.push_back({"plane", {Plane()}});
     scene.instances.push_back({0, glm::mat4(1.0f), "sphere"});
     scene.instances.push_back({1, glm::mat4(1.0f), "plane"});

@@ -4,7 +4,13 @@
 #ifndef KILN_RUNTIME_RENDER_HARNESS_SCENE_H_
 #define KILN_RUNTIME_RENDER_HARNESS_SCENE_H_
 
+#include <string>
+#include <vector>
+
 #include "kiln/runtime/scene.h"
+#include "render/frame_values.h"
+#include "render/material_binding.h"
+#include "render/renderer_state.h"
 
 namespace kiln::render {
 
@@ -15,6 +21,33 @@ runtime::Scene HarnessScene();
 // A light of `type` at the harness camera, shining along its view; `intensity` in lux (directional)
 // or candela (point, spot).
 runtime::Light HarnessLight(runtime::LightType type, float intensity);
+
+// kiln stability's scene (kiln/runtime/stability.h): a plane in z = 0 facing +z, made of
+// triangles around a vertex at the origin, and a sphere beside it; camera 0 at (0, 0,
+// kStabilityEyeZ) looks down -z at the origin, so in an odd-sized image the centre pixel sees
+// exactly the origin with normal +z (a vertex: its interpolated values are exact). A light
+// mirrored through the origin is then exactly opposite the view there (l = -v).
+inline constexpr float kStabilityEyeZ = 2.0f;
+runtime::Scene StabilityScene();
+
+// A harness draw: one pass of `material` with the variant of `keywords` on every object of the
+// scene, lit per pixel by lights[0] (unless `pixel_light` is false) and per vertex by lights[1]
+// (when `vertex_light`), drawn as one forward frame.
+struct HarnessPass {
+    const MaterialInstance* material = nullptr;
+    uint32_t pass = 0;
+    bool additive = false;
+    std::vector<std::string> keywords;
+    std::vector<runtime::Light> lights;
+    bool pixel_light = true, vertex_light = false;
+};
+Status DrawHarnessPass(runtime::Renderer::State& s,
+                       const runtime::ColorPipeline& color,
+                       const runtime::Scene& scene,
+                       const runtime::FrameSettings& settings,
+                       const CameraSetup& camera,
+                       const HarnessPass& draw,
+                       runtime::LinearImage& out);
 
 }  // namespace kiln::render
 

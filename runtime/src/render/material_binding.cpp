@@ -6,6 +6,7 @@
 
 #include "kiln/base/files.h"
 #include "kiln/pack/engine_names.h"
+#include "kiln/pack/names.h"
 #include "scene/gltf_input.h"
 
 namespace kiln::render {
@@ -169,9 +170,16 @@ Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
         out = std::move(m);
         return {};
     }
+    std::vector<std::string> shaders;
+    for (const pack::Pack* pack : packs) {
+        for (uint32_t i = 0; i < pack->Count(pack::SectionTag::kShaders); ++i) {
+            shaders.emplace_back(pack->String(pack->Shader(i).value().name));
+        }
+    }
     return Error{DiagCode::kRenderFailed, path + ":" + std::to_string(mat.shader_pos.line) + ":" +
                                               std::to_string(mat.shader_pos.column) + ": shader '" +
-                                              mat.shader + "' is in none of the loaded packs"};
+                                              mat.shader + "' is in none of the loaded packs" +
+                                              pack::DidYouMean(mat.shader, shaders)};
 }
 
 void ApplyGltfMaterial(const runtime::SceneMaterial& g, MaterialInstance& m) {

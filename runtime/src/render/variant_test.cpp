@@ -97,46 +97,28 @@ struct Harness {
                 const Setup& setup,
                 LinearImage& out) {
         const pack::Pack& pk = s.packs[c.pack]->pack;
-        render::ForwardPlan plan;
-        std::vector<Light>& lights = plan.list.lights;
-        lights.reserve(2);  // requests point into it
         const bool point = std::count(keywords.begin(), keywords.end(), pack::kKeywordPoint) > 0;
         const bool spot = std::count(keywords.begin(), keywords.end(), pack::kKeywordSpot) > 0;
         const LightType type = !additive ? LightType::kDirectional
                                : point   ? LightType::kPoint
                                : spot    ? LightType::kSpot
                                          : LightType::kDirectional;
-        lights.push_back(render::HarnessLight(type, setup.intensity * 4.0f));
-        lights.push_back(render::HarnessLight(LightType::kPoint, setup.intensity * 4.0f));
-        const Light* light = setup.no_light ? nullptr : &lights[0];
-        std::vector<const Light*> vertex;
-        if (!additive && !setup.no_light &&
-            std::count(keywords.begin(), keywords.end(), pack::kKeywordVertexLight)) {
-            vertex.push_back(&lights[1]);
-        }
         render::MaterialInstance m;  // the draw plan's material: lives for this frame
         render::InstanceFromDefaults(pk, c.pack, c.shader, color, m);
         for (const auto& [name, v] : setup.values) {
             m.values[name] = v;
         }
-        for (size_t i = 0; i < scene.instances.size(); ++i) {
-            const Instance& inst = scene.instances[i];
-            plan.draws.push_back({&inst,
-                                  &scene.meshes[inst.mesh].primitives[0],
-                                  &m,
-                                  c.pass,
-                                  additive,
-                                  light,
-                                  vertex,
-                                  {},
-                                  keywords,
-                                  "kiln test"});
-        }
-        plan.objects = uint32_t(scene.instances.size());
-        plan.list.materials.push_back(&m);
-        FrameStats stats;
-        return DrawPlan(s, s.ResourcesFor(scene, color), scene, Settings(additive), camera, plan,
-                        out, stats);
+        render::HarnessPass draw;
+        draw.material = &m;
+        draw.pass = c.pass;
+        draw.additive = additive;
+        draw.keywords = keywords;
+        draw.lights = {render::HarnessLight(type, setup.intensity * 4.0f),
+                       render::HarnessLight(LightType::kPoint, setup.intensity * 4.0f)};
+        draw.pixel_light = !setup.no_light;
+        draw.vertex_light = !additive && !setup.no_light &&
+                            std::count(keywords.begin(), keywords.end(), pack::kKeywordVertexLight);
+        return render::DrawHarnessPass(s, color, scene, Settings(additive), camera, draw, out);
     }
 
     void Fail(const Case& c,

@@ -45,6 +45,10 @@ inline constexpr const char* kShaderStandardMetallic = "Kiln/StandardMetallic";
 // The deferred path's light pass (materials/internal/DeferredShading.shader; Unity's name for its
 // own): the first loaded pack that has a shader of this name provides it.
 inline constexpr const char* kShaderDeferredShading = "Hidden/Internal-DeferredShading";
+// kiln stability's grid harness (templates/stability/KilnStabilityGrid.shader), compiled when the
+// command runs; kiln/runtime/template_stability.h fills its properties.
+inline constexpr const char* kShaderStabilityGrid = "Hidden/Kiln/StabilityGrid";
+inline constexpr const char* kStabilityGridFile = "stability/KilnStabilityGrid.shader";
 // Its passes, by Name: a ranged light's stencil mask and the light bounded by it. A replacement
 // shader without them has every light drawn by its first pass.
 inline constexpr const char* kPassDeferredLightMask = "LIGHT_MASK";

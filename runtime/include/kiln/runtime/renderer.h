@@ -101,6 +101,9 @@ struct FrameStats {
 struct FrameCapture;
 struct VariantTestOptions;
 struct VariantTestReport;
+struct MaterialStabilityOptions;
+struct MaterialStabilityReport;
+struct TemplateStabilityReport;
 
 class Renderer {
   public:
@@ -138,6 +141,13 @@ class Renderer {
     friend Result<VariantTestReport> TestVariants(Renderer& renderer,
                                                   const ColorPipeline& color,
                                                   const VariantTestOptions& options);
+    friend Result<MaterialStabilityReport> TestMaterialStability(
+        Renderer& renderer,
+        const ColorPipeline& color,
+        const std::string& material,
+        const MaterialStabilityOptions& options);
+    friend Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
+                                                                 const ColorPipeline& color);
     std::unique_ptr<State> state_;
 };
 

@@ -1,0 +1,283 @@
+// kiln stability: numerical stability on stiff and extreme inputs (kiln/runtime/stability.h,
+// docs/accuracy.md). With --material, each material's fragment variants under extreme light
+// set-ups and at the ends of their Ranges; without, the templates' lighting functions on
+// adversarial grids against the CPU reference. Any non-finite value is a K0028 error.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "kiln/base/files.h"
+#include "kiln/compile.h"
+#include "kiln/pack/engine_names.h"
+#include "kiln/pack/variant_selector.h"
+#include "kiln/runtime/color.h"
+#include "kiln/runtime/renderer.h"
+#include "kiln/runtime/stability.h"
+#include "kiln/runtime/template_stability.h"
+
+namespace kiln::cli {
+namespace {
+
+struct StabilityArgs {
+    std::vector<std::string> materials, packs, include_dirs, sources;
+    runtime::MaterialStabilityOptions options;
+    std::string device, templates;
+};
+
+// Compiles `sources` with the templates under test and `defines` into a temporary pack and
+// adds it to the renderer.
+bool AddCompiledPack(const StabilityArgs& a,
+                     const std::vector<std::string>& sources,
+                     const std::vector<std::pair<std::string, std::string>>& defines,
+                     runtime::Renderer& renderer,
+                     DiagnosticList& diags,
+                     const GlobalOptions& global) {
+    CompileOptions options;
+    options.include_dirs = a.include_dirs;
+    options.defines = defines;
+    options.all_features = true;  // every material's shader_feature combination
+    options.templates_dir = a.templates.empty() ? DefaultTemplatesDir() : a.templates;
+    DiagnosticList compiled;  // its own list: `diags` may hold earlier runs' findings
+    CompileOutput out = CompileShaders(sources, options, compiled);
+    std::vector<const SourceFile*> views;
+    for (const auto& f : out.files) {
+        views.push_back(f.get());
+    }
+    if (!compiled.all().empty()) {
+        PrintDiagnostics(compiled, views, global);
+    }
+    if (!out.ok) {
+        PrintDiagnostics(diags, {}, global);
+        return false;
+    }
+    const std::string path = (std::filesystem::temp_directory_path() /
+                              ("kiln-stability-" + std::to_string(getpid()) + ".kpack"))
+                                 .string();
+    Status added = base::WriteFileAtomically(path, out.pack, {.inputs = {}, .durable = false});
+    if (added.ok()) {
+        added = renderer.AddPack(path);  // mapped: the name can go now
+    }
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+    if (!added.ok()) {
+        diags.Error(added.error().code, path, kNoPosition, added.error().message);
+        PrintDiagnostics(diags, {}, global);
+        return false;
+    }
+    return true;
+}
+
+std::string GridHarness(const StabilityArgs& a) {
+    const std::string mine = (a.templates.empty() ? DefaultTemplatesDir() : a.templates) + "/" +
+                             pack::kStabilityGridFile;
+    return std::filesystem::exists(mine) ? mine
+                                         : DefaultTemplatesDir() + "/" + pack::kStabilityGridFile;
+}
+
+// A strict build (templates/KilnStrictMath.cginc): the define, and what its NaN means.
+struct StrictMode {
+    const char* define;
+    const char* cause;
+};
+constexpr StrictMode kStrictModes[] = {
+    {"KILN_STRICT_NORMALIZE", "normalize of a zero (or within-rounding-of-zero) vector"},
+    {"KILN_STRICT_POW", "pow(x, y) with x < 0, or x = 0 and y <= 0 (undefined in SPIR-V)"},
+};
+
+struct Totals {
+    size_t variants = 0, renders = 0, findings = 0;
+    std::set<std::string> seen;  // findings already reported (by an earlier strict mode)
+};
+
+// Runs every material; `cause` names what a strict build's NaN means ("" for a plain build).
+void RunMaterials(runtime::Renderer& renderer,
+                  const runtime::ColorPipeline& color,
+                  const StabilityArgs& a,
+                  const std::string& cause,
+                  Totals& totals,
+                  DiagnosticList& diags) {
+    for (const std::string& material : a.materials) {
+        Result<runtime::MaterialStabilityReport> ran =
+            runtime::TestMaterialStability(renderer, color, material, a.options);
+        if (!ran) {
+            // Errors from the material file carry its path and position already.
+            const bool placed = ran.error().message.rfind(material + ":", 0) == 0;
+            diags.Error(ran.error().code, placed ? "" : material, kNoPosition, ran.error().message);
+            continue;
+        }
+        const runtime::MaterialStabilityReport& r = ran.value();
+        std::vector<const runtime::StabilityFinding*> fresh;
+        for (const runtime::StabilityFinding& f : r.findings) {
+            const std::string key = material + "|" + f.pass + "|" + pack::JoinKeywords(f.keywords) +
+                                    "|" + f.properties + "|" + f.light + "|" + std::to_string(f.x) +
+                                    "," + std::to_string(f.y);
+            if (totals.seen.insert(key).second)
+                fresh.push_back(&f);
+        }
+        totals.variants += r.variants;
+        totals.renders += r.renders;
+        totals.findings += fresh.size();
+        std::printf(
+            "%s (shader \"%s\"%s%s): %zu variants, %zu renders, %zu with non-finite "
+            "values\n",
+            material.c_str(), r.shader.c_str(), cause.empty() ? "" : ", strict: ", cause.c_str(),
+            r.variants, r.renders, fresh.size());
+        for (const runtime::StabilityFinding* f : fresh) {
+            std::printf("  %-14s %-20s %-32s %-56s %zu/%zu at (%u, %u): %s\n", f->pass.c_str(),
+                        pack::JoinKeywords(f->keywords).c_str(), f->properties.c_str(),
+                        f->light.c_str(), f->bad, f->values, f->x, f->y, f->inputs.c_str());
+            diags.Error(DiagCode::kNotFinite, material, kNoPosition,
+                        (cause.empty() ? std::string() : cause + ": ") + "pass '" + f->pass +
+                            "' variant '" + pack::JoinKeywords(f->keywords) + "' with " +
+                            f->properties + ", " + f->light + ": " + std::to_string(f->bad) +
+                            " non-finite values, the first at pixel (" + std::to_string(f->x) +
+                            ", " + std::to_string(f->y) + ") where " + f->inputs);
+        }
+    }
+}
+
+// The grid table; returns the number of failing cases.
+size_t PrintGrid(const runtime::TemplateStabilityReport& r, DiagnosticList& diags) {
+    size_t failed = 0;
+    std::printf("%-22s %7s %7s %11s %11s %11s %9s  %s\n", "case", "values", "NaN/Inf", "max abs",
+                "max rel", "bound", "max ULP", "worst input");
+    for (const runtime::GridCaseReport& c : r.cases) {
+        std::printf("%-22s %7zu %7zu %11.3g %11.3g %11.3g %9llu  %s\n", c.name.c_str(), c.values,
+                    c.non_finite, c.max_abs, c.max_rel, c.bound,
+                    static_cast<unsigned long long>(c.max_ulp), c.worst.c_str());
+        if (c.non_finite > 0) {
+            diags.Error(DiagCode::kNotFinite, "", kNoPosition,
+                        c.name + ": " + std::to_string(c.non_finite) + " of " +
+                            std::to_string(c.values) + " values are not finite, the first at " +
+                            c.first_non_finite);
+        }
+        if (c.max_rel > c.bound) {
+            diags.Error(DiagCode::kOutsideBounds, "", kNoPosition,
+                        c.name + ": relative error " + std::to_string(c.max_rel) +
+                            " is above its bound " + std::to_string(c.bound) + " at " + c.worst);
+        }
+        failed += c.ok() ? 0 : 1;
+    }
+    std::printf("\n%-36s %12s  %s\n", "white furnace (directional albedo)", "max", "at");
+    for (const runtime::EnergyReport& e : r.energy) {
+        std::printf("%-36s %12.6f  %s\n", e.brdf.c_str(), e.max_albedo, e.where.c_str());
+        if (!e.ok()) {
+            diags.Error(DiagCode::kOutsideBounds, "", kNoPosition,
+                        e.brdf + ": directional albedo " + std::to_string(e.max_albedo) +
+                            " exceeds 1 + 1e-3 at " + e.where + " (it creates energy)");
+            ++failed;
+        }
+    }
+    return failed;
+}
+
+}  // namespace
+
+std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& global) {
+    auto* cmd = app.add_subcommand(
+        "stability",
+        "Check lighting on stiff and extreme inputs: the templates' functions on adversarial "
+        "grids against the CPU reference, or materials' variants under extreme lights and "
+        "property values (--material); no NaN or infinity may appear");
+    auto a = std::make_shared<StabilityArgs>();
+    cmd->add_option("--material", a->materials,
+                    ".material files to check (repeatable); without it the templates are checked");
+    cmd->add_option("--templates", a->templates,
+                    "The include library to check (default: the shipped templates/)");
+    cmd->add_option("-I,--include-dir", a->include_dirs,
+                    "Folders searched before the templates (a planted include overrides its "
+                    "namesake)");
+    cmd->add_option("--pack", a->packs,
+                    "Variant packs holding the materials' shaders (default: the shipped "
+                    "materials.kpack)");
+    cmd->add_option("--source", a->sources,
+                    "The materials' .shader files: check strict builds of them (normalize of a "
+                    "zero vector and undefined pow made NaN on every driver) instead of a pack's");
+    cmd->add_option("--size", a->options.size,
+                    "The square image's side in pixels, odd (default 33)")
+        ->check(CLI::Range(9, 1025).description(""));
+    cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
+    return [a, &global] {
+        DiagnosticList diags;
+        auto finish = [&](int code) {
+            PrintDiagnostics(diags, {}, global);
+            return code;
+        };
+        auto fail = [&](const kiln::Error& e, const std::string& file) {
+            diags.Error(e.code, file, kNoPosition, e.message);
+            return finish(int(kExitInputError));
+        };
+        Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create({});
+        if (!made_color)
+            return fail(made_color.error(), "");
+        const runtime::ColorPipeline color = std::move(made_color).value();
+        runtime::RendererOptions options;
+        options.validation = true;
+        options.device_filter = a->device;
+        options.float32_target = true;  // fp16 targets would turn large finite values into Inf
+        auto validation = [&](const runtime::Renderer& renderer) {
+            for (const std::string& m : renderer.ValidationMessages())
+                diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);
+        };
+        if (a->materials.empty()) {
+            Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+            if (!made)
+                return fail(made.error(), "");
+            runtime::Renderer renderer = std::move(made).value();
+            if (!AddCompiledPack(*a, {GridHarness(*a)}, {}, renderer, diags, global))
+                return int(kExitInputError);
+            Result<runtime::TemplateStabilityReport> ran =
+                runtime::TestTemplateStability(renderer, color);
+            if (!ran)
+                return fail(ran.error(), "");
+            const size_t failed = PrintGrid(ran.value(), diags);
+            validation(renderer);
+            std::printf(
+                "kiln stability: %zu grid cases and %zu white-furnace checks on '%s': "
+                "%zu failed\n",
+                ran.value().cases.size(), ran.value().energy.size(), renderer.DeviceName().c_str(),
+                failed);
+            return finish(ExitCodeFor(diags));
+        }
+        if (a->packs.empty() && a->sources.empty())
+            a->packs.push_back(ShippedPackPath());
+        Totals totals;
+        std::string device;
+        // A plain run over the packs; with --source, one run per strict build of the sources
+        // (their shaders found first), each finding reported by the first build that shows it.
+        const size_t runs = a->sources.empty() ? 1 : std::size(kStrictModes);
+        for (size_t run = 0; run < runs; ++run) {
+            Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+            if (!made)
+                return fail(made.error(), "");
+            runtime::Renderer renderer = std::move(made).value();
+            std::string cause;
+            if (!a->sources.empty()) {
+                cause = kStrictModes[run].cause;
+                if (!AddCompiledPack(*a, a->sources, {{kStrictModes[run].define, "1"}}, renderer,
+                                     diags, global))
+                    return int(kExitInputError);
+            }
+            for (const std::string& p : a->packs) {
+                if (Status added = renderer.AddPack(p); !added.ok())
+                    return fail(added.error(), p);
+            }
+            RunMaterials(renderer, color, *a, cause, totals, diags);
+            validation(renderer);
+            device = renderer.DeviceName();
+        }
+        std::printf(
+            "kiln stability: %zu materials, %zu variants, %zu renders on '%s': %zu "
+            "findings\n",
+            a->materials.size(), totals.variants, totals.renders, device.c_str(), totals.findings);
+        return finish(ExitCodeFor(diags));
+    };
+}
+
+}  // namespace kiln::cli
