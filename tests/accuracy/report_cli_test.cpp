@@ -2,8 +2,6 @@
 // plot and images for a few configurations, and the mistakes a user can make on its command line.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -15,14 +13,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string TempDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    return dir.string();
-}
-
 TEST(ReportCli, WritesTheTablesPlotAndHeatMapsOfTheDemoScene) {
-    const std::string dir = TempDir("kiln_report_cli");
+    const std::string dir = FreshTempDir("kiln_report_cli");
     const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " + dir +
                                 " --only pixel --only vertex --only deferred-rgba8-oct"
                                 " --width 192 --height 108 --supersample 2 --frames 2"
@@ -51,7 +43,7 @@ TEST(ReportCli, WritesTheTablesPlotAndHeatMapsOfTheDemoScene) {
 
 TEST(ReportCli, AnUnknownConfigurationIsNamedWithTheValidOnes) {
     const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " +
-                                TempDir("kiln_report_bad") + " --only vertx");
+                                FreshTempDir("kiln_report_bad") + " --only vertx");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("unknown configuration 'vertx'"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("vertex"), std::string::npos) << r.err;
@@ -59,7 +51,7 @@ TEST(ReportCli, AnUnknownConfigurationIsNamedWithTheValidOnes) {
 
 TEST(ReportCli, ACompareWithoutALabelIsRefused) {
     const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " +
-                                TempDir("kiln_report_bad") + " --compare other.kpack");
+                                FreshTempDir("kiln_report_bad") + " --compare other.kpack");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("expected LABEL=PACK"), std::string::npos) << r.err;
 }

@@ -4,10 +4,7 @@
 // the inputs that break them.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
 
 #include "support/test_support.h"
 
@@ -15,17 +12,6 @@ namespace kiln::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string TempDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir.string();
-}
-
-void Write(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
 
 // Replaces `from` (which must be there) by `to` in `text`.
 void Plant(std::string& text, const std::string& from, const std::string& to) {
@@ -47,12 +33,12 @@ TEST(StabilityCli, TheShippedTemplatesPassEveryGrid) {
 }
 
 TEST(StabilityCli, AnUnclampedGgxPlantedBeforeTheTemplatesIsCaughtWithItsInput) {
-    const std::string dir = TempDir("kiln_stability_planted");
+    const std::string dir = FreshTempDir("kiln_stability_planted");
     std::string brdf = ReadFile(DataPath("../templates/KilnBRDF.cginc"));
     Plant(brdf, "clamp(perceptualRoughness, KILN_MIN_PERCEPTUAL_ROUGHNESS, 1.0)",
           "perceptualRoughness");
     Plant(brdf, "max(d * d, 1e-20)", "(d * d)");
-    Write(dir + "/KilnBRDF.cginc", brdf);
+    WriteFile(dir + "/KilnBRDF.cginc", brdf);
     const RunResult r = RunKiln("stability -I " + dir);
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
     // D = 0 / 0 at n . h = 1 and roughness 0: NaN, named with the grid point.
@@ -90,9 +76,9 @@ TEST(StabilityCli, TheShippedMaterialsStayFiniteInPlainAndStrictBuilds) {
 }
 
 TEST(StabilityCli, TheLecturesTwoTrapsAreNamedWithTheirInputs) {
-    const std::string dir = TempDir("kiln_stability_lecture");
-    Write(dir + "/ec.material",
-          R"({"kiln_material": 1, "shader": "Lecture/EnergyConservation", "properties": {}})");
+    const std::string dir = FreshTempDir("kiln_stability_lecture");
+    WriteFile(dir + "/ec.material",
+              R"({"kiln_material": 1, "shader": "Lecture/EnergyConservation", "properties": {}})");
     const RunResult r =
         RunKiln("stability --source " + DataPath("lecture/06_EnergyConservation.shader") +
                 " --material " + dir + "/ec.material");
@@ -119,9 +105,9 @@ TEST(StabilityCli, TheLecturesTwoTrapsAreNamedWithTheirInputs) {
 }
 
 TEST(StabilityCli, AMaterialWhoseShaderIsNotLoadedIsAClearError) {
-    const std::string dir = TempDir("kiln_stability_bad");
-    Write(dir + "/x.material",
-          R"({"kiln_material": 1, "shader": "Kiln/BlinPhong", "properties": {}})");
+    const std::string dir = FreshTempDir("kiln_stability_bad");
+    WriteFile(dir + "/x.material",
+              R"({"kiln_material": 1, "shader": "Kiln/BlinPhong", "properties": {}})");
     const RunResult r = RunKiln("stability --material " + dir + "/x.material");
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
     EXPECT_NE(r.err.find("shader 'Kiln/BlinPhong' is in none of the loaded packs"),

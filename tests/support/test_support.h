@@ -22,6 +22,8 @@ namespace kiln::test {
 std::string ReadFile(const std::string& path);
 void WriteFile(const std::string& path, const std::string& text);
 std::string DataPath(const std::string& relative);  // under tests/
+// An empty folder `name`_<pid> in the system's temporary folder (emptied if it was there).
+std::string FreshTempDir(const std::string& name);
 
 // The kiln binary run with `args` (a shell command line), its output captured.
 struct RunResult {

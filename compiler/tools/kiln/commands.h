@@ -37,6 +37,23 @@ void PrintDiagnostics(const DiagnosticList& diags,
                       const std::vector<const SourceFile*>& sources,
                       const GlobalOptions& global);
 int ExitCodeFor(const DiagnosticList& diags);
+// A command's diagnostics, printed once when it ends (kiln test, report, stability).
+struct CommandDiagnostics {
+    explicit CommandDiagnostics(const GlobalOptions& g) : global(g) {}
+    const GlobalOptions& global;
+    DiagnosticList diags;
+    // Prints them; returns `code`.
+    int Finish(int code) {
+        PrintDiagnostics(diags, {}, global);
+        return code;
+    }
+    // Adds `e` (at `file`) and finishes as an input error.
+    int Fail(const kiln::Error& e, const std::string& file = "") {
+        diags.Error(e.code, file, kNoPosition, e.message);
+        return Finish(int(kExitInputError));
+    }
+};
+
 // One error without a source position (a command-line value, a pack, a scene), printed in the
 // chosen format; returns its exit code.
 int ReportError(const GlobalOptions& global,

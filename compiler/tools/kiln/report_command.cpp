@@ -108,42 +108,35 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
                   "Enable VK_LAYER_KHRONOS_validation; any message fails the report");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
     return [a, &global] {
-        DiagnosticList diags;
-        auto finish = [&](int code) {
-            PrintDiagnostics(diags, {}, global);
-            return code;
-        };
-        auto fail = [&](const kiln::Error& e, const std::string& file = "") {
-            diags.Error(e.code, file, kNoPosition, e.message);
-            return finish(int(kExitInputError));
-        };
+        CommandDiagnostics run(global);
+        DiagnosticList& diags = run.diags;
         if (a->scene.empty()) {
             a->scene = DemoScenePath();
             if (a->scene.empty()) {
-                return fail(Error{DiagCode::kBadCommandLine,
-                                  "no scene given, and the demo scene is not beside this kiln "
-                                  "(give a .gltf or .glb file)"});
+                return run.Fail(Error{DiagCode::kBadCommandLine,
+                                      "no scene given, and the demo scene is not beside this kiln "
+                                      "(give a .gltf or .glb file)"});
             }
         }
         Result<std::vector<runtime::AccuracyConfig>> configs = Configs(*a);
         if (!configs) {
-            return fail(configs.error());
+            return run.Fail(configs.error());
         }
         a->options.configs = std::move(configs).value();
         a->options.default_light = !a->no_default_light;
         Result<runtime::Scene> loaded = runtime::LoadGltf(a->scene, diags);
         if (!loaded) {
-            return fail(loaded.error());
+            return run.Fail(loaded.error());
         }
         runtime::Scene scene = std::move(loaded).value();
         if (!a->materials.empty()) {
             if (Status read = runtime::LoadMaterialSidecar(a->materials, scene); !read.ok()) {
-                return fail(read.error());
+                return run.Fail(read.error());
             }
         }
         Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create(a->color);
         if (!made_color) {
-            return fail(made_color.error());
+            return run.Fail(made_color.error());
         }
         const runtime::ColorPipeline color = std::move(made_color).value();
         if (a->packs.empty()) {
@@ -155,7 +148,7 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
         for (const std::string& c : a->compare) {
             const auto [label, path] = SplitCompare(c);
             if (label.empty() || path.empty()) {
-                return fail(
+                return run.Fail(
                     Error{DiagCode::kBadCommandLine, "--compare '" + c + "': expected LABEL=PACK"});
             }
             pack_sets.push_back({path});
@@ -169,12 +162,12 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
             options.float32_target = i == 0;
             Result<runtime::Renderer> made = runtime::Renderer::Create(options);
             if (!made) {
-                return fail(made.error());
+                return run.Fail(made.error());
             }
             renderers.push_back(std::move(made).value());
             for (const std::string& p : pack_sets[i]) {
                 if (Status added = renderers.back().AddPack(p); !added.ok()) {
-                    return fail(added.error());
+                    return run.Fail(added.error());
                 }
             }
         }
@@ -185,7 +178,7 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
         Result<runtime::AccuracyReport> report =
             runtime::RunAccuracyReport(renderers[0], drawing, labels, scene, color, a->options);
         if (!report) {
-            return fail(report.error());
+            return run.Fail(report.error());
         }
         diags.Append(report.value().warnings);
         for (runtime::Renderer& r : renderers) {
@@ -194,11 +187,11 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
             }
         }
         if (diags.has_errors()) {
-            return finish(int(kExitInputError));
+            return run.Finish(int(kExitInputError));
         }
         if (Status written = runtime::WriteAccuracyReport(report.value(), color, a->output);
             !written.ok()) {
-            return fail(written.error(), a->output);
+            return run.Fail(written.error(), a->output);
         }
         std::printf("%-24s %-8s %10s %10s %12s %12s\n", "configuration", "packs", "FLIP", "RMSE",
                     "GPU ms", "CPU ms");
@@ -209,7 +202,7 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
         }
         std::printf("%s/report.md: %zu configurations against the reference, device '%s'\n",
                     a->output.c_str(), report.value().rows.size(), report.value().device.c_str());
-        return finish(int(kExitOk));
+        return run.Finish(int(kExitOk));
     };
 }
 

@@ -204,18 +204,11 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
         ->check(CLI::Range(9, 1025).description(""));
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
     return [a, &global] {
-        DiagnosticList diags;
-        auto finish = [&](int code) {
-            PrintDiagnostics(diags, {}, global);
-            return code;
-        };
-        auto fail = [&](const kiln::Error& e, const std::string& file) {
-            diags.Error(e.code, file, kNoPosition, e.message);
-            return finish(int(kExitInputError));
-        };
+        CommandDiagnostics run(global);
+        DiagnosticList& diags = run.diags;
         Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create({});
         if (!made_color)
-            return fail(made_color.error(), "");
+            return run.Fail(made_color.error(), "");
         const runtime::ColorPipeline color = std::move(made_color).value();
         runtime::RendererOptions options;
         options.validation = true;
@@ -228,14 +221,14 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
         if (a->materials.empty()) {
             Result<runtime::Renderer> made = runtime::Renderer::Create(options);
             if (!made)
-                return fail(made.error(), "");
+                return run.Fail(made.error(), "");
             runtime::Renderer renderer = std::move(made).value();
             if (!AddCompiledPack(*a, {GridHarness(*a)}, {}, renderer, diags, global))
                 return int(kExitInputError);
             Result<runtime::TemplateStabilityReport> ran =
                 runtime::TestTemplateStability(renderer, color);
             if (!ran)
-                return fail(ran.error(), "");
+                return run.Fail(ran.error(), "");
             const size_t failed = PrintGrid(ran.value(), diags);
             validation(renderer);
             std::printf(
@@ -243,7 +236,7 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
                 "%zu failed\n",
                 ran.value().cases.size(), ran.value().energy.size(), renderer.DeviceName().c_str(),
                 failed);
-            return finish(ExitCodeFor(diags));
+            return run.Finish(ExitCodeFor(diags));
         }
         if (a->packs.empty() && a->sources.empty())
             a->packs.push_back(ShippedPackPath());
@@ -252,21 +245,21 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
         // A plain run over the packs; with --source, one run per strict build of the sources
         // (their shaders found first), each finding reported by the first build that shows it.
         const size_t runs = a->sources.empty() ? 1 : std::size(kStrictModes);
-        for (size_t run = 0; run < runs; ++run) {
+        for (size_t mode = 0; mode < runs; ++mode) {
             Result<runtime::Renderer> made = runtime::Renderer::Create(options);
             if (!made)
-                return fail(made.error(), "");
+                return run.Fail(made.error(), "");
             runtime::Renderer renderer = std::move(made).value();
             std::string cause;
             if (!a->sources.empty()) {
-                cause = kStrictModes[run].cause;
-                if (!AddCompiledPack(*a, a->sources, {{kStrictModes[run].define, "1"}}, renderer,
+                cause = kStrictModes[mode].cause;
+                if (!AddCompiledPack(*a, a->sources, {{kStrictModes[mode].define, "1"}}, renderer,
                                      diags, global))
                     return int(kExitInputError);
             }
             for (const std::string& p : a->packs) {
                 if (Status added = renderer.AddPack(p); !added.ok())
-                    return fail(added.error(), p);
+                    return run.Fail(added.error(), p);
             }
             RunMaterials(renderer, color, *a, cause, totals, diags);
             validation(renderer);
@@ -276,7 +269,7 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
             "kiln stability: %zu materials, %zu variants, %zu renders on '%s': %zu "
             "findings\n",
             a->materials.size(), totals.variants, totals.renders, device.c_str(), totals.findings);
-        return finish(ExitCodeFor(diags));
+        return run.Finish(ExitCodeFor(diags));
     };
 }
 

@@ -59,18 +59,11 @@ std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global) 
                   "Do not enable VK_LAYER_KHRONOS_validation (its messages fail a variant)");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
     return [a, &global] {
-        DiagnosticList diags;
-        auto finish = [&](int code) {
-            PrintDiagnostics(diags, {}, global);
-            return code;
-        };
-        auto fail = [&](const kiln::Error& e, const std::string& file) {
-            diags.Error(e.code, file, kNoPosition, e.message);
-            return finish(int(kExitInputError));
-        };
+        CommandDiagnostics run(global);
+        DiagnosticList& diags = run.diags;
         Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create({});
         if (!made_color)
-            return fail(made_color.error(), "");
+            return run.Fail(made_color.error(), "");
         const runtime::ColorPipeline color = std::move(made_color).value();
         runtime::RendererOptions options;
         options.validation = !a->no_validation;
@@ -78,18 +71,18 @@ std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global) 
         options.float32_target = true;  // the checks compare linear values
         Result<runtime::Renderer> made = runtime::Renderer::Create(options);
         if (!made)
-            return fail(made.error(), "");
+            return run.Fail(made.error(), "");
         runtime::Renderer renderer = std::move(made).value();
         for (const std::string& p : a->packs) {
             if (Status added = renderer.AddPack(p); !added.ok())
-                return fail(added.error(), p);
+                return run.Fail(added.error(), p);
         }
         a->options.shaders = a->shaders;
         if (a->sample > 0)
             a->options.sample = a->sample;
         Result<runtime::VariantTestReport> ran = runtime::TestVariants(renderer, color, a->options);
         if (!ran)
-            return fail(ran.error(), "");
+            return run.Fail(ran.error(), "");
         const runtime::VariantTestReport& report = ran.value();
         nlohmann::ordered_json failures = nlohmann::ordered_json::array();
         for (size_t i = 0; i < report.failures.size(); ++i) {
@@ -133,7 +126,7 @@ std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global) 
                 report.variants, report.renders, renderer.DeviceName().c_str(),
                 report.skipped.size(), report.failures.size());
         }
-        return finish(ExitCodeFor(diags));
+        return run.Finish(ExitCodeFor(diags));
     };
 }
 
