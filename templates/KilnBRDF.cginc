@@ -69,12 +69,79 @@ float Fd_Lambert() {
     return 1.0;
 }
 
+// ---- alternatives, chosen per build by the dispatch below ----
+
+// Normalized Blinn-Phong distribution with the exponent matched to GGX's roughness,
+// n = 2 / a^2 - 2 (Walter et al. 2007, section 5.2): D = (n + 2) / (2 pi) (n . h)^n.
+float D_BlinnPhong(float NoH, float a) {
+    // guard: a >= 0.045^2 from PerceptualRoughnessToRoughness keeps n finite; SafePow takes
+    // n . h = 0 and n = 0
+    float n = max(2.0 / max(a * a, 1e-12) - 2.0, 0.0);
+    float D = (n + 2.0) * (0.5 * KILN_INV_PI) * SafePow(saturate(NoH), n);
+    return NoH > 0.0 ? D : 0.0;  // chi+, as D_GGX (n = 0 would light n . h = 0 with 1 / pi)
+}
+
+// Hammon's approximation of the height-correlated Smith visibility (GDC 2017, "PBR Diffuse
+// Lighting for GGX+Smith Microsurfaces", slide 82; Filament eq. 16):
+// V = 0.5 / lerp(2 (n.l)(n.v), n.l + n.v, a).
+float V_SmithGGXCorrelatedFast(float NoV, float NoL, float a) {
+    // guard: the denominator is 0 only when n . l = n . v = 0; bounded as the exact form is
+    return 0.5 / max(lerp(2.0 * NoL * NoV, NoL + NoV, a), 1e-12);
+}
+
+// The exact Fresnel reflectance of an unpolarized dielectric (Cook and Torrance 1982, eq. in
+// section 4.1; Walter et al. 2007, eq. 22), with the index of refraction from f0:
+// eta = (1 + sqrt(f0)) / (1 - sqrt(f0)), g = sqrt(eta^2 - 1 + c^2),
+// F = (g - c)^2 / (2 (g + c)^2) (1 + ((c (g + c) - 1) / (c (g - c) + 1))^2), c = v . h.
+float F_ExactChannel(float f0, float c) {
+    // guard: f0 -> 1 (metals) makes eta infinite; sqrt(f0) <= 0.9999 keeps it finite (F ~ 1)
+    float s = sqrt(clamp(f0, 0.0, 0.9998));
+    float eta = (1.0 + s) / (1.0 - s);
+    c = saturate(c);
+    float g = sqrt(eta * eta - 1.0 + c * c);  // eta >= 1: the root's argument is >= c^2
+    float a = (g - c) / (g + c);
+    float b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);  // c (g - c) + 1 >= 1 > 0
+    return 0.5 * a * a * (1.0 + b * b);
+}
+float3 F_Exact(float3 f0, float VoH) {
+    return float3(F_ExactChannel(f0.r, VoH), F_ExactChannel(f0.g, VoH),
+                  F_ExactChannel(f0.b, VoH));
+}
+
+// ---- the BRDF choices (Filament surface_brdf.fs's distribution / visibility / fresnel) ----
+// One build uses one of each, chosen by defining a macro (kiln compile -D, or before including):
+//   distribution: GGX (default) or KILN_BRDF_D_BLINN_PHONG
+//   visibility:   height-correlated Smith (default) or KILN_BRDF_V_SMITH_FAST (Hammon)
+//   fresnel:      Schlick (default) or KILN_BRDF_F_EXACT
+// kiln report compares packs built with each (docs/accuracy.md, "BRDF choices").
+float Distribution(float NoH, float a) {
+#if defined(KILN_BRDF_D_BLINN_PHONG)
+    return D_BlinnPhong(NoH, a);
+#else
+    return D_GGX(NoH, a);
+#endif
+}
+float Visibility(float NoV, float NoL, float a) {
+#if defined(KILN_BRDF_V_SMITH_FAST)
+    return V_SmithGGXCorrelatedFast(NoV, NoL, a);
+#else
+    return V_SmithGGXCorrelated(NoV, NoL, a);
+#endif
+}
+float3 Fresnel(float3 f0, float VoH) {
+#if defined(KILN_BRDF_F_EXACT)
+    return F_Exact(f0, VoH);
+#else
+    return F_Schlick(f0, VoH);
+#endif
+}
+
 // The specular term of the rendering equation for one light, with the convention's pi:
 // pi * D * V * F * (n . l).
 float3 BRDF_Specular(float3 f0, float NoV, float NoL, float NoH, float LoH, float a) {
-    float D = D_GGX(NoH, a);
-    float V = V_SmithGGXCorrelated(NoV, NoL, a);
-    float3 F = F_Schlick(f0, LoH);
+    float D = Distribution(NoH, a);
+    float V = Visibility(NoV, NoL, a);
+    float3 F = Fresnel(f0, LoH);
     return (KILN_PI * D * V * NoL) * F;
 }
 

@@ -96,7 +96,12 @@ Shader "Hidden/Kiln/StabilityGrid"
                     return float4(D_GGX(a, r), V_SmithGGXCorrelated(max(a, 1e-5), b, r),
                                   F_Schlick(float3(0.04, 0.04, 0.04), a).r, 1.0);
                 }
-                if (kase == 2) {  // Blinn-Phong: a = n . v, b = light, c = exponent, d = C
+                if (kase == 2) {  // BRDF choices: as case 1, through the alternatives
+                    float r = PerceptualRoughnessToRoughness(c);
+                    return float4(D_BlinnPhong(a, r), V_SmithGGXCorrelatedFast(max(a, 1e-5), b, r),
+                                  F_Exact(float3(0.04, 0.04, 0.04), a).r, 1.0);
+                }
+                if (kase == 3) {  // Blinn-Phong: a = n . v, b = light, c = exponent, d = C
                     float3 v = WithCosine(a, 0.0);
                     float3 l = LightDirection(b, v);
                     float3 color = float3(d, d, d);
@@ -104,12 +109,12 @@ Shader "Hidden/Kiln/StabilityGrid"
                     return float4(BlinnPhong_Specular(float3(1, 1, 1), color, n, h, c).r,
                                   Lambert_Diffuse(float3(1, 1, 1), color, n, l).g, 0.0, 1.0);
                 }
-                if (kase == 3) {  // distance: a = distance, b = 1 / range^2
+                if (kase == 4) {  // distance: a = distance, b = 1 / range^2
                     float d2 = a * a;
                     return float4(Attenuation_Distance(d2, b), Attenuation_InverseSquare(d2),
                                   Attenuation_RangeWindow(d2, b), 1.0);
                 }
-                if (kase == 4) {  // spot: a = cosine to the axis, b = cos outer, c = cos inner
+                if (kase == 5) {  // spot: a = cosine to the axis, b = cos outer, c = cos inner
                     float3 l = -WithCosine(a, 1.0);
                     return float4(Attenuation_SpotCone(l, float3(0.0, 0.0, 1.0), b, c), 0.0, 0.0,
                                   1.0);

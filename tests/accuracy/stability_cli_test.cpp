@@ -24,11 +24,11 @@ TEST(StabilityCli, TheShippedTemplatesPassEveryGrid) {
     const RunResult r = RunKiln("stability");
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
     for (const char* name :
-         {"BRDF1_Unity_PBS", "GGX terms", "Blinn-Phong", "Attenuation ", "Attenuation_SpotCone",
-          "SH_Irradiance", "Lambert (Fd_Lambert)", "GGX, Smith, F = 1"}) {
+         {"BRDF1_Unity_PBS", "GGX terms", "BRDF choices", "Blinn-Phong", "Attenuation ",
+          "Attenuation_SpotCone", "SH_Irradiance", "Lambert (Fd_Lambert)", "GGX, Smith, F = 1"}) {
         EXPECT_NE(r.out.find(name), std::string::npos) << name << "\n" << r.out;
     }
-    EXPECT_NE(r.out.find("6 grid cases and 2 white-furnace checks"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("7 grid cases and 2 white-furnace checks"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find(": 0 failed"), std::string::npos) << r.out;
 }
 

@@ -84,8 +84,9 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
                     "Variant packs the reference and the configurations use, searched in order "
                     "(default: the shipped materials.kpack)");
     cmd->add_option("--compare", a->compare,
-                    "Also render the automatic light mode with these packs instead, as LABEL="
-                    "PACK (repeatable; e.g. O0=materials-O0.kpack)")
+                    "Also render the automatic light mode with PACK searched before the --pack "
+                    "packs, as LABEL=PACK (repeatable; e.g. O0=materials-O0.kpack, or a pack of "
+                    "one shader built with -D KILN_BRDF_F_EXACT)")
         ->option_text("LABEL=PACK");
     cmd->add_option("--only", a->only, "Only these of the default configurations (repeatable)");
     cmd->add_option("--width", a->options.width, "Image width (default 640)")
@@ -151,7 +152,8 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
                 return run.Fail(
                     Error{DiagCode::kBadCommandLine, "--compare '" + c + "': expected LABEL=PACK"});
             }
-            pack_sets.push_back({path});
+            pack_sets.push_back({path});  // its shaders first; the others from --pack
+            pack_sets.back().insert(pack_sets.back().end(), a->packs.begin(), a->packs.end());
             labels.push_back(label);
         }
         std::vector<runtime::Renderer> renderers;

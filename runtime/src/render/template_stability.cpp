@@ -13,6 +13,7 @@
 #include "kiln/pack/engine_names.h"
 #include "kiln/reference/attenuation.h"
 #include "kiln/reference/brdf.h"
+#include "kiln/reference/brdf_choices.h"
 #include "kiln/reference/classic_lighting.h"
 #include "kiln/reference/guards.h"
 #include "kiln/reference/sh.h"
@@ -125,6 +126,16 @@ std::vector<GridCase> Cases() {
              return dvec3(reference::D_GGX(in[0], alpha),
                           reference::V_SmithGGXCorrelated(std::max(in[0], 1e-5), in[1], alpha),
                           reference::F_Schlick(dvec3(0.04), in[0]).x);
+         }});
+    cases.push_back(
+        {"BRDF choices",
+         "r: D_BlinnPhong(a); g: V_SmithGGXCorrelatedFast(max(a, 1e-5), b); b: "
+         "F_Exact(0.04, a)",
+         cases.back().axes, 1e-3, [](const double in[4], bool) {
+             const double alpha = reference::RoughnessFromSmoothness(1.0 - in[2]);
+             return dvec3(reference::D_BlinnPhong(in[0], alpha),
+                          reference::V_SmithGGXCorrelatedFast(std::max(in[0], 1e-5), in[1], alpha),
+                          reference::F_Exact(0.04, in[0]));
          }});
     cases.push_back(
         {"Blinn-Phong",
