@@ -1,4 +1,4 @@
-// KilnStrictMath.cginc: what SPIR-V leaves undefined, made NaN (kiln stability --strict-source).
+// KilnStrictMath.cginc: what SPIR-V leaves undefined, made NaN (kiln stability --source).
 //
 // GLSL.std.450 Pow is undefined for x < 0 and for x = 0 with y <= 0, Normalize of the zero
 // vector divides 0 by 0 (and of a vector within rounding of zero returns noise), and FClamp of

@@ -28,8 +28,7 @@ glm::dvec3 ViewAt(double no_v) {
 
 }  // namespace
 
-double LambertAlbedo(double no_v, uint32_t samples) {
-    (void)no_v;  // Lambert does not depend on the view
+double LambertAlbedo(uint32_t samples) {
     // Midpoint rule in (cos theta, phi), where d omega = d(cos theta) d phi.
     double sum = 0.0;
     for (uint32_t i = 0; i < samples; ++i) {

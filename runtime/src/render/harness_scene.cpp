@@ -79,25 +79,34 @@ runtime::Primitive FacingPlane() {
     return p;
 }
 
+// Bounds, a new id and one camera at `eye` looking at `target`.
+void FinishScene(runtime::Scene& scene,
+                 const char* camera_name,
+                 float yfov,
+                 glm::vec3 eye,
+                 glm::vec3 target) {
+    for (runtime::Mesh& mesh : scene.meshes) {
+        ComputeBounds(mesh.primitives[0]);
+    }
+    scene.id = runtime::NewSceneId();
+    runtime::Camera camera;
+    camera.name = camera_name;
+    camera.yfov = yfov;
+    camera.world = glm::inverse(glm::lookAt(eye, target, glm::vec3(0, 1, 0)));
+    scene.cameras.push_back(camera);
+}
+
 }  // namespace
 
 runtime::Scene StabilityScene() {
     runtime::Scene scene;
     scene.path = "<kiln stability scene>";
     scene.meshes.push_back({"plane", {FacingPlane()}});
-    scene.meshes.push_back({"sphere", {Sphere(32, 16, glm::vec3(0.55f, 0.45f, 0.25f), 0.25f)}});
+    scene.meshes.push_back(
+        {"sphere", {Sphere(32, 16, kStabilitySphereCentre, kStabilitySphereRadius)}});
     scene.instances.push_back({0, glm::mat4(1.0f), "plane"});
     scene.instances.push_back({1, glm::mat4(1.0f), "sphere"});
-    for (runtime::Mesh& mesh : scene.meshes) {
-        ComputeBounds(mesh.primitives[0]);
-    }
-    scene.id = runtime::NewSceneId();
-    runtime::Camera camera;
-    camera.name = "stability";
-    camera.yfov = 0.9f;
-    camera.world = glm::inverse(
-        glm::lookAt(glm::vec3(0, 0, kStabilityEyeZ), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0)));
-    scene.cameras.push_back(camera);
+    FinishScene(scene, "stability", kStabilityYFov, glm::vec3(0, 0, kStabilityEyeZ), glm::vec3(0));
     return scene;
 }
 
@@ -141,15 +150,7 @@ runtime::Scene HarnessScene() {
     scene.meshes.push_back({"plane", {Plane()}});
     scene.instances.push_back({0, glm::mat4(1.0f), "sphere"});
     scene.instances.push_back({1, glm::mat4(1.0f), "plane"});
-    for (runtime::Mesh& mesh : scene.meshes) {
-        ComputeBounds(mesh.primitives[0]);
-    }
-    scene.id = runtime::NewSceneId();
-    runtime::Camera camera;
-    camera.name = "harness";
-    camera.yfov = 0.6f;
-    camera.world = glm::inverse(glm::lookAt(kEye, kTarget, glm::vec3(0, 1, 0)));
-    scene.cameras.push_back(camera);
+    FinishScene(scene, "harness", 0.6f, kEye, kTarget);
     return scene;
 }
 

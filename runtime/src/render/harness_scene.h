@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "kiln/runtime/scene.h"
 #include "render/frame_values.h"
 #include "render/material_binding.h"
@@ -28,6 +30,9 @@ runtime::Light HarnessLight(runtime::LightType type, float intensity);
 // exactly the origin with normal +z (a vertex: its interpolated values are exact). A light
 // mirrored through the origin is then exactly opposite the view there (l = -v).
 inline constexpr float kStabilityEyeZ = 2.0f;
+inline constexpr float kStabilityYFov = 0.9f;
+inline constexpr glm::vec3 kStabilitySphereCentre{0.55f, 0.45f, 0.25f};
+inline constexpr float kStabilitySphereRadius = 0.25f;
 runtime::Scene StabilityScene();
 
 // A harness draw: one pass of `material` with the variant of `keywords` on every object of the

@@ -1,14 +1,16 @@
 // TestMaterialStability (kiln/runtime/stability.h): a material's fragment variants under extreme
 // light set-ups and at the ends of its Ranges, in the stability scene (render/harness_scene.h).
+#include "kiln/runtime/stability.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include <glm/geometric.hpp>
 
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
-#include "kiln/runtime/stability.h"
 #include "render/harness_scene.h"
 
 namespace kiln::runtime {
@@ -44,6 +46,13 @@ std::vector<LightSetup> Setups(LightType type) {
         out.push_back(
             {std::move(name), Make(type, pos, dir, intensity), point(vertex_pos, intensity)});
     };
+    // The first set-up (the light at the camera) changed by `change`.
+    auto at_camera = [&](std::string name, const std::function<void(LightSetup&)>& change) {
+        LightSetup l = out[0];
+        l.name = std::move(name);
+        change(l);
+        out.push_back(std::move(l));
+    };
     const bool directional = type == LightType::kDirectional;
     add(directional ? "directional light from the camera (l = v at the centre)"
                     : "light at the camera (l = v)",
@@ -57,21 +66,18 @@ std::vector<LightSetup> Setups(LightType type) {
         add("light on the surface (distance 0 at the centre)", vec3(0), toward, 1, vec3(0));
         add("light 1e-6 from the surface", vec3(0, 0, 1e-6f), toward, 1, vec3(0, 0, 1e-6f));
         add("light 1e6 away", vec3(0, 0, 1e6f), toward, 1, vec3(0, 0, 1e6f));
-        out.push_back(out[0]);
-        out.back().name = "light at the camera with range 1e-6";
-        out.back().light.range = out.back().vertex.range = 1e-6f;
-        out.push_back(out[0]);
-        out.back().name = "light at the camera with range -1 (none)";
-        out.back().light.range = out.back().vertex.range = -1.0f;
+        at_camera("light at the camera with range 1e-6",
+                  [](LightSetup& l) { l.light.range = l.vertex.range = 1e-6f; });
+        at_camera("light at the camera with range -1 (none)",
+                  [](LightSetup& l) { l.light.range = l.vertex.range = -1.0f; });
     }
     if (type == LightType::kSpot) {
-        out.push_back(out[0]);
-        out.back().name = "spot light with inner cone = outer cone";
-        out.back().light.inner_cone = out.back().light.outer_cone = 0.5f;
-        out.push_back(out[0]);
-        out.back().name = "spot light with inner cone > outer cone";
-        out.back().light.inner_cone = 0.6f;
-        out.back().light.outer_cone = 0.3f;
+        at_camera("spot light with inner cone = outer cone",
+                  [](LightSetup& l) { l.light.inner_cone = l.light.outer_cone = 0.5f; });
+        at_camera("spot light with inner cone > outer cone", [](LightSetup& l) {
+            l.light.inner_cone = 0.6f;
+            l.light.outer_cone = 0.3f;
+        });
     }
     for (float intensity : {6.6e4f, 1e9f, 3.4e38f}) {
         char name[64];
@@ -83,13 +89,14 @@ std::vector<LightSetup> Setups(LightType type) {
 
 // What the pixel (x, y) of the stability scene sees: the point, its normal, and the set-up's l.
 std::string Inputs(const LightSetup& setup, uint32_t x, uint32_t y, uint32_t size) {
-    const float t = std::tan(0.45f);  // the stability camera's yfov is 0.9
+    const float t = std::tan(render::kStabilityYFov / 2);
     const vec3 eye(0, 0, render::kStabilityEyeZ);
     const vec3 d = glm::normalize(vec3((2 * (float(x) + 0.5f) / float(size) - 1) * t,
                                        (1 - 2 * (float(y) + 0.5f) / float(size)) * t, -1));
     vec3 p, n(0, 0, 1);
-    const vec3 c(0.55f, 0.45f, 0.25f);  // the sphere (render/harness_scene.cpp)
-    const float b = glm::dot(d, eye - c), q = glm::dot(eye - c, eye - c) - 0.25f * 0.25f;
+    const vec3 c = render::kStabilitySphereCentre;
+    const float r = render::kStabilitySphereRadius;
+    const float b = glm::dot(d, eye - c), q = glm::dot(eye - c, eye - c) - r * r;
     if (b * b - q >= 0 && -b - std::sqrt(b * b - q) > 0) {
         p = eye + d * (-b - std::sqrt(b * b - q));
         n = glm::normalize(p - c);

@@ -9,9 +9,7 @@ namespace kiln::reference {
 namespace {
 
 TEST(WhiteFurnace, LambertReflectsAllTheLight) {
-    for (double nv : {1e-3, 0.5, 1.0}) {
-        EXPECT_NEAR(LambertAlbedo(nv), 1.0, 1e-9) << nv;
-    }
+    EXPECT_NEAR(LambertAlbedo(), 1.0, 1e-9);
 }
 
 TEST(WhiteFurnace, GgxSmithNeverCreatesEnergy) {

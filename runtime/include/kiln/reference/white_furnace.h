@@ -8,9 +8,9 @@
 
 namespace kiln::reference {
 
-// Lambert, f = albedo / pi with albedo 1: rho = 1 for every n . v, by the midpoint rule over
+// Lambert, f = albedo / pi with albedo 1: rho = 1 (for every view), by the midpoint rule over
 // `samples`^2 cells uniform in (cos theta, phi).
-double LambertAlbedo(double no_v, uint32_t samples = 256);
+double LambertAlbedo(uint32_t samples = 256);
 
 // GGX with height-correlated Smith visibility (brdf.h) and F = 1, importance-sampled by the
 // distribution of visible normals (Heitz 2018) over a Hammersley set of `samples` points: each
