@@ -12,18 +12,33 @@
 #define UNITY_COMPILER_HLSL
 #define UNITY_COMPILER_HLSLCC
 
-// ---- precision: desktop Vulkan, as Unity defines it there: fixed and half are 32-bit ----
+// ---- precision (kiln compile --precision, docs/unity-compat.md) ----
+// full (the default): desktop Vulkan as Unity defines it there, fixed and half are 32-bit.
+// relaxed and half: fixed and half are min16float, RelaxedPrecision in SPIR-V, as Unity's Vulkan
+// back end emits them for mobile; with half, that arithmetic is then binary16 on the device.
+// glslang has no min16float matrices, so half and fixed matrices stay 32-bit.
+#if defined(KILN_PRECISION_RELAXED)
+#define fixed min16float
+#define fixed2 min16float2
+#define fixed3 min16float3
+#define fixed4 min16float4
+#define half min16float
+#define half2 min16float2
+#define half3 min16float3
+#define half4 min16float4
+#else
 #define fixed float
 #define fixed2 float2
 #define fixed3 float3
 #define fixed4 float4
-#define fixed4x4 float4x4
-#define fixed3x3 float3x3
-#define fixed2x2 float2x2
 #define half float
 #define half2 float2
 #define half3 float3
 #define half4 float4
+#endif
+#define fixed4x4 float4x4
+#define fixed3x3 float3x3
+#define fixed2x2 float2x2
 #define half2x2 float2x2
 #define half3x3 float3x3
 #define half4x4 float4x4

@@ -11,6 +11,9 @@
 // Largest finite IEEE 754 binary16 value: HDR results are clamped to it before they reach a
 // 16-bit float render target, where anything larger becomes +Inf.
 #define KILN_HALF_MAX 65504.0
+// Smallest normal binary16 value (2^-14): 1 / KILN_HALF_MIN is finite in binary16, and unlike a
+// subnormal it is not flushed to 0.
+#define KILN_HALF_MIN 6.103515625e-5
 // Squared length below which a vector counts as zero for normalization.
 #define KILN_MIN_LENGTH_SQ 1e-12
 

@@ -11,9 +11,11 @@
 fixed4 _SpecColor;
 
 // One direct light at the shaded point: colour (attenuation applied), unit direction towards
-// the light, and n . l (deprecated in Unity: the BRDFs recompute it).
+// the light, and n . l (deprecated in Unity: the BRDFs recompute it). The colour is 32-bit where
+// Unity's is half3: a light in physical units (a 1e5 lux sun) is beyond binary16's 65504, and
+// with --precision half a half3 colour would be infinite (docs/accuracy.md, "fp16").
 struct UnityLight {
-    half3 color;
+    float3 color;
     half3 dir;
     half ndotl;
 };

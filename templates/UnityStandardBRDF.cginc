@@ -63,12 +63,14 @@ half DisneyDiffuse(half NdotV, half NdotL, half LdotH, half perceptualRoughness)
     half viewScatter = 1.0 + (fd90 - 1.0) * Pow5(1.0 - saturate(NdotV));
     return lightScatter * viewScatter;
 }
-// Separable Smith with Schlick's k: 1 / (4 (n.l (1-k) + k)(n.v (1-k) + k)).
+// Separable Smith with Schlick's k: 1 / ((n.l (1-k) + k)(n.v (1-k) + k)); the caller applies the
+// 1/4 of the microfacet denominator (as SmithBeckmannVisibilityTerm does).
 inline half SmithVisibilityTerm(half NdotL, half NdotV, half k) {
     half gL = NdotL * (1 - k) + k;
     half gV = NdotV * (1 - k) + k;
-    // guard: k = 0 at grazing angles
-    return 1.0 / max(gL * gV + 1e-5f, 1e-5f);
+    // guard: k = 0 at grazing angles gives 1 / 0; the bound is binary16's smallest normal value,
+    // so the quotient stays finite in a --precision half build (Unity's 1e-5 gives 1e5 > 65504)
+    return 1.0 / max(gL * gV, KILN_HALF_MIN);
 }
 // Beckmann's k = a sqrt(2/pi) (Schlick 1994).
 inline half SmithBeckmannVisibilityTerm(half NdotL, half NdotV, half roughness) {

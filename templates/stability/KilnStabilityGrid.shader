@@ -119,6 +119,12 @@ Shader "Hidden/Kiln/StabilityGrid"
                     return float4(Attenuation_SpotCone(l, float3(0.0, 0.0, 1.0), b, c), 0.0, 0.0,
                                   1.0);
                 }
+                if (kase == 7) {  // Unity's half terms: a = n . v, b = n . l, c = perceptual r.,
+                                  // d = l . h; binary16 arithmetic in a --precision half build
+                    half r = PerceptualRoughnessToRoughness(c);
+                    return float4(DisneyDiffuse(a, b, d, c), SmithBeckmannVisibilityTerm(b, a, r),
+                                  FresnelTerm(half3(0.04, 0.04, 0.04), d).r, 1.0);
+                }
                 // SH: a = normal, b = its azimuth, c = scale of the coefficients
                 float3 e = SH_Irradiance(_SHr * c, _SHg * c, _SHb * c, _SHBr * c, _SHBg * c,
                                          _SHBb * c, _SHCc * c, NormalFor(a, b));

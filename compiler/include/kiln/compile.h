@@ -28,6 +28,8 @@ struct MaterialRequest {
     std::map<std::string, double> values;  // its scalar property values
 };
 
+using pack::Precision;  // --precision full|relaxed|half
+
 enum class OptimizationLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
 
 // Where glslang and SPIRV-Tools run: in `kiln-worker` processes (the default: a crash, a hang or
@@ -48,7 +50,8 @@ struct CompileOptions {
     int unity_version = kDefaultUnityVersion;  // UNITY_VERSION (--unity-version 2022.3)
     std::string templates_dir;  // the built-in include library; empty: DefaultTemplatesDir()
     OptimizationLevel opt_level = OptimizationLevel::kPerformance;
-    bool debug_info = false;  // -g: keep names and debug info in the SPIR-V
+    bool debug_info = false;                 // -g: keep names and debug info in the SPIR-V
+    Precision precision = Precision::kFull;  // --precision: what half and fixed are
     // Store a keyword whose variants duplicate another keyword's as an alias of it (pack format
     // 1.1); false (--no-keyword-aliases) stores every variant, for readers of format 1.0.
     bool keyword_aliases = true;

@@ -70,8 +70,11 @@ void PreprocessAndDedup(CompileState& st) {
         [&](size_t done) { driver::Progress(st.options, "preprocessing", done, st.tasks.size()); });
 
     const std::string versions = ProducerVersion();
-    const std::string options =
-        "O" + std::to_string(int(st.options.opt_level)) + (st.options.debug_info ? "g" : "");
+    const std::string options = "O" + std::to_string(int(st.options.opt_level)) +
+                                (st.options.debug_info ? "g" : "") +
+                                (st.options.precision == Precision::kRelaxed ? "r"
+                                 : st.options.precision == Precision::kHalf  ? "h"
+                                                                             : "");
     std::map<std::string, size_t> by_key;
     for (size_t i = 0; i < st.tasks.size(); ++i) {
         driver::StageTask& t = st.tasks[i];

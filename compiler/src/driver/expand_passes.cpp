@@ -124,6 +124,7 @@ void CreateTasks(CompileState& st) {
                 in.stage = stage;
                 in.shader_target = pu.pragmas.shader_target;
                 in.unity_version = st.options.unity_version;
+                in.precision = st.options.precision;
                 in.defines = st.options.defines;
                 in.undefines = st.options.undefines;
                 in.forced_includes = st.options.forced_includes;

@@ -40,7 +40,8 @@ std::string StageOfPass(const CompileState& st, const StageTask& task) {
     const PassUnit& pu = st.passes[task.pass];
     const ShaderUnit& unit = st.shaders[pu.shader];
     return std::string(task.stage == pack::Stage::kVertex ? "the vertex" : "the fragment") +
-           " stage of shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label + "\"";
+           " stage of shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label +
+           "\"";
 }
 
 }  // namespace
@@ -85,6 +86,7 @@ worker::Request StageRequest(const CompileState& st,
     r.include_dirs = paths.dirs;
     r.templates_dir = paths.templates_dir;
     r.debug_info = st.options.debug_info;
+    r.half_arithmetic = st.options.precision == Precision::kHalf;
     switch (st.options.opt_level) {
         case OptimizationLevel::kNone:
             r.opt_level = 0;

@@ -402,7 +402,9 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
     meta.opt_level = st.options.opt_level == OptimizationLevel::kNone   ? 0
                      : st.options.opt_level == OptimizationLevel::kSize ? 2
                                                                         : 1;
-    meta.flags = st.options.debug_info ? 1u : 0u;
+    meta.flags = (st.options.debug_info ? pack::kMetaDebugInfo : 0u) |
+                 (st.options.precision == Precision::kRelaxed ? pack::kMetaRelaxedPrecision : 0u) |
+                 (st.options.precision == Precision::kHalf ? pack::kMetaHalfPrecision : 0u);
     stats.modules = b.module_count();
 
     return b.Finish(meta);

@@ -76,6 +76,12 @@ Macros PredefinedMacros(const AssembleInput& in) {
     };
     if (const std::string pass = PassMacro(in.light_mode); !pass.empty())
         m.emplace_back(pass, "1");
+    // --precision: HLSLSupport.cginc makes half and fixed min16float (RelaxedPrecision); with
+    // half, SPIRV-Tools then computes that arithmetic in binary16.
+    if (in.precision != pack::Precision::kFull)
+        m.emplace_back("KILN_PRECISION_RELAXED", "1");
+    if (in.precision == pack::Precision::kHalf)
+        m.emplace_back("KILN_PRECISION_HALF", "1");
     // Precision-suffixed type names that Unity's HLSLcc back end understands for Vulkan (and that
     // its HLSLSupport.cginc therefore leaves undefined there); for glslang they are the plain
     // types (half is 32-bit, see docs/unity-compat.md).

@@ -27,8 +27,9 @@ struct AssembleInput {
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program
     pack::Stage stage = pack::Stage::kVertex;
     int shader_target = 25;
-    int unity_version = 202230;  // UNITY_VERSION
-    std::string light_mode;      // the pass's LightMode tag: UNITY_PASS_FORWARDBASE and so on
+    int unity_version = 202230;                          // UNITY_VERSION
+    pack::Precision precision = pack::Precision::kFull;  // KILN_PRECISION_RELAXED / _HALF
+    std::string light_mode;  // the pass's LightMode tag: UNITY_PASS_FORWARDBASE and so on
     std::vector<std::string> keywords;                         // enabled in this variant and stage
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME=VALUE
     std::vector<std::string> undefines;                        // -U NAME

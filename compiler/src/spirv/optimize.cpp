@@ -5,6 +5,8 @@
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
+#include "spirv/hlsl_precision.h"
+
 namespace kiln::spirv {
 namespace {
 
@@ -40,16 +42,31 @@ std::string SpirvToolsVersion() {
     return spvSoftwareVersionString();
 }
 
-bool Optimize(std::vector<uint32_t>& words, OptLevel level, std::string& messages) {
+bool Optimize(std::vector<uint32_t>& words,
+              OptLevel level,
+              bool half_arithmetic,
+              std::string& messages) {
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);  // validated once at the end, after every change
+    // RelaxedPrecision as HLSL promotes it, on glslang's own output: there a half variable or
+    // parameter is still a load, so assigning a float to it narrows, as in HLSL.
+    if (half_arithmetic)
+        MatchHlslPromotion(words);
     spvtools::Optimizer opt(kEnv);
     opt.SetMessageConsumer(Collect(messages));
     opt.RegisterLegalizationPasses();
+    if (half_arithmetic) {
+        // After legalization has inlined and removed function-scope loads and stores, as the
+        // pass asks; the clean-up folds the conversions it inserts.
+        opt.RegisterPass(spvtools::CreateConvertRelaxedToHalfPass())
+            .RegisterPass(spvtools::CreateSimplificationPass())
+            .RegisterPass(spvtools::CreateRedundancyEliminationPass())
+            .RegisterPass(spvtools::CreateAggressiveDCEPass());
+    }
     if (level == OptLevel::kPerformance)
         opt.RegisterPerformancePasses();
     if (level == OptLevel::kSize && !RegisterSizePassesKeepingBlockLayouts(opt))
         return false;
-    spvtools::OptimizerOptions options;
-    options.set_run_validator(false);  // validated once at the end, after every change
     std::vector<uint32_t> out;
     if (!opt.Run(words.data(), words.size(), &out, options))
         return false;

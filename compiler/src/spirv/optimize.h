@@ -14,9 +14,14 @@ enum class OptLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
 // "v2023.1".
 std::string SpirvToolsVersion();
 
-// Legalizes (always: glslang's HLSL output needs it) and optimizes in place. Returns false with
-// the optimizer's messages on failure.
-bool Optimize(std::vector<uint32_t>& words, OptLevel level, std::string& messages);
+// Legalizes (always: glslang's HLSL output needs it) and optimizes in place; with
+// `half_arithmetic`, RelaxedPrecision arithmetic becomes binary16 after legalization (inputs,
+// outputs, uniforms and images stay 32-bit, so no 16-bit storage feature is needed). Returns
+// false with the optimizer's messages on failure.
+bool Optimize(std::vector<uint32_t>& words,
+              OptLevel level,
+              bool half_arithmetic,
+              std::string& messages);
 
 // Removes debug names and HLSL semantic decorations (after reflection has read them).
 bool StripReflectionInfo(std::vector<uint32_t>& words, bool keep_debug_info, std::string& messages);

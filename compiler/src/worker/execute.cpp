@@ -50,7 +50,8 @@ Response Compile(const Request& r, ExecuteContext& context, hlsl::Includer& incl
     if (!r.optimize)
         return resp;
     Enter(context, Component::kSpirvOpt);
-    if (!spirv::Optimize(resp.words, static_cast<spirv::OptLevel>(r.opt_level), resp.messages)) {
+    if (!spirv::Optimize(resp.words, static_cast<spirv::OptLevel>(r.opt_level), r.half_arithmetic,
+                         resp.messages)) {
         resp.ok = false;
         resp.failed_in = Component::kSpirvOpt;
         resp.words.clear();

@@ -33,6 +33,7 @@ enum Tag : uint8_t {
     kDetail,
     kRewritten,
     kFunction,
+    kHalfArithmetic,
 };
 
 // Builds a whole frame: the length is patched in when it is taken.
@@ -166,6 +167,7 @@ std::string EncodeRequest(const Request& r) {
     w.U8(kDebugInfo, r.debug_info);
     w.U8(kOptLevel, r.opt_level);
     w.U8(kOptimize, r.optimize);
+    w.U8(kHalfArithmetic, r.half_arithmetic);
     w.Words(kWords, r.words);
     return w.Take();
 }
@@ -244,6 +246,8 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
                 return ToU8(b, r.opt_level) && r.opt_level <= 2;
             case kOptimize:
                 return ToBool(b, r.optimize);
+            case kHalfArithmetic:
+                return ToBool(b, r.half_arithmetic);
             case kWords:
                 return ToWords(b, r.words);
             default:

@@ -3,8 +3,8 @@
 // executor, the worker processes (worker/pool.h) and, later, distributed compilation.
 //
 // A frame on the wire is u32 length (little-endian) + payload; Encode* return whole frames. A
-// payload is a u32 frame type then fields: u8 tag, u32 size, bytes. Unknown tags are skipped; every read is bounds-checked, since a
-// worker that went wrong may send anything.
+// payload is a u32 frame type then fields: u8 tag, u32 size, bytes. Unknown tags are skipped; every
+// read is bounds-checked, since a worker that went wrong may send anything.
 #ifndef KILN_WORKER_PROTOCOL_H_
 #define KILN_WORKER_PROTOCOL_H_
 
@@ -57,6 +57,7 @@ struct Request {
     bool debug_info = false;                // kCompile/kFinish: keep debug info (-g)
     uint8_t opt_level = 1;                  // kCompile: spirv::OptLevel
     bool optimize = true;                   // kCompile: run SPIRV-Tools after glslang
+    bool half_arithmetic = false;           // kCompile: RelaxedPrecision arithmetic as binary16
     std::vector<uint32_t> words;            // kFinish/kValidate
 };
 

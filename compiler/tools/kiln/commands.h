@@ -74,6 +74,7 @@ struct CompilerFlags {
     std::vector<std::string> undefines;
     std::vector<std::string> forced_includes;
     std::string unity_version;
+    std::string precision = "full";  // --precision
     std::vector<std::string> keywords;
     std::vector<std::string> materials;  // .material files and <scene>.kiln.json sidecars
     bool all_features = false;
@@ -96,10 +97,13 @@ std::optional<int> ParseUnityVersion(const std::string& text);
 std::vector<const SourceFile*> Views(const CompileOutput& out,
                                      const std::vector<std::unique_ptr<SourceFile>>& more = {});
 
-// kiln-render beside this program; the shipped pack (../share/kiln/materials.kpack when
-// installed, ../materials/materials.kpack in the build tree).
+// kiln-render beside this program; a shipped pack (../share/kiln/NAME when installed,
+// ../materials/NAME in the build tree): materials.kpack, or materials-half.kpack (the same shaders
+// compiled with --precision half).
 std::string RenderToolPath();
-std::string ShippedPackPath();
+inline constexpr const char* kShippedPack = "materials.kpack";
+inline constexpr const char* kShippedHalfPack = "materials-half.kpack";
+std::string ShippedPackPath(const std::string& name = kShippedPack);
 // The demo scene (scenes/demo/demo.gltf) of the source tree kiln was built from; empty when it
 // is not there (an installed kiln).
 std::string DemoScenePath();

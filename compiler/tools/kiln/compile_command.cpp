@@ -48,6 +48,12 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
             },
             ""))
         ->option_text("VERSION");
+    cmd.add_option("--precision", f.precision,
+                   "What half and fixed are: full (32-bit, the default, as Unity on desktop), "
+                   "relaxed (min16float, RelaxedPrecision: the driver may use 16 bits) or half "
+                   "(binary16 arithmetic; the device needs shaderFloat16)")
+        ->check(CLI::IsMember({"full", "relaxed", "half"}))
+        ->option_text("full|relaxed|half");
     cmd.add_option("--materials", f.materials,
                    ".material files or <scene>.kiln.json sidecars: build the shader_feature "
                    "combinations they enable");
@@ -154,6 +160,9 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
     }
     if (auto v = ParseUnityVersion(f.unity_version))
         o.unity_version = *v;
+    o.precision = f.precision == "half"      ? Precision::kHalf
+                  : f.precision == "relaxed" ? Precision::kRelaxed
+                                             : Precision::kFull;
     if (!f.keywords.empty())
         o.keywords = std::set<std::string>(f.keywords.begin(), f.keywords.end());
     o.all_features = f.all_features;

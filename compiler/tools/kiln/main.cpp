@@ -176,8 +176,7 @@ int main(int argc, char** argv) {
     try {
 #ifndef KILN_RENDER_TOOL
         const std::string first = FirstWord(std::vector<std::string>(argv + 1, argv + argc));
-        if (first == "render" || first == "test" || first == "report" ||
-            first == "stability") {
+        if (first == "render" || first == "test" || first == "report" || first == "stability") {
             return RunRenderTool(argc, argv);
         }
 #endif
@@ -233,7 +232,8 @@ int main(int argc, char** argv) {
                                     "(runs kiln-render, beside kiln)");
                  return [] { return int(kExitUsageError); };
              }()},
-            {"report", [&] {
+            {"report",
+             [&] {
                  app.add_subcommand("report",
                                     "Report error against run time of the renderer's "
                                     "approximations (runs kiln-render, beside kiln)");

@@ -153,6 +153,7 @@ nlohmann::json InfoJson(const Pack& p) {
     return {{"format", std::to_string(kFormatMajor) + "." + std::to_string(p.format_minor())},
             {"producer", p.String(meta.producer)},
             {"variants", meta.variant_count},
+            {"precision", PrecisionName(PrecisionOf(meta.flags))},
             {"modules", modules},
             {"shaders", shaders}};
 }
@@ -184,8 +185,9 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) 
         std::printf("%s: kiln pack %s, %zu bytes, by %s\n", o->file.c_str(),
                     j["format"].get<std::string>().c_str(), file.bytes().size(),
                     j["producer"].get<std::string>().c_str());
-        std::printf("%u variants, %zu unique modules (%zu bytes of SPIR-V)\n",
-                    j["variants"].get<unsigned>(), j["modules"].size(), spirv);
+        std::printf("%u variants, %zu unique modules (%zu bytes of SPIR-V), precision %s\n",
+                    j["variants"].get<unsigned>(), j["modules"].size(), spirv,
+                    j["precision"].get<std::string>().c_str());
         for (const auto& s : j["shaders"]) {
             std::printf("Shader \"%s\": %zu properties\n", s["name"].get<std::string>().c_str(),
                         s["properties"].size());

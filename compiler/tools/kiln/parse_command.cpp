@@ -28,8 +28,7 @@ std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global)
         for (const std::string& path : opts->files) {
             Result<SourceFile> file = ReadSourceFile(path);
             if (!file) {
-                diags.Error(DiagCode::kCannotReadFile, path, kNoPosition,
-                            file.error().message);
+                diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, file.error().message);
                 continue;
             }
             sources.push_back(std::make_unique<SourceFile>(std::move(file).value()));

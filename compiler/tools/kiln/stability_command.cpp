@@ -26,19 +26,38 @@ namespace {
 
 struct StabilityArgs {
     std::vector<std::string> materials, packs, include_dirs, sources;
+    std::vector<std::string> precisions;  // --precision: full, half (binary16), relaxed
     runtime::MaterialStabilityOptions options;
     std::string device, templates;
 };
+
+pack::Precision ToPrecision(const std::string& name) {
+    return name == "half"      ? pack::Precision::kHalf
+           : name == "relaxed" ? pack::Precision::kRelaxed
+                               : pack::Precision::kFull;
+}
+
+// A half build needs shaderFloat16; without it the build is skipped with a warning.
+bool CanRun(pack::Precision p, const runtime::Renderer& renderer, DiagnosticList& diags) {
+    if (p != pack::Precision::kHalf || renderer.HasFloat16())
+        return true;
+    diags.Warning(DiagCode::kRenderFailed, "", kNoPosition,
+                  "the binary16 (--precision half) checks are skipped: device '" +
+                      renderer.DeviceName() + "' has no shaderFloat16");
+    return false;
+}
 
 // Compiles `sources` with the templates under test and `defines` into a temporary pack and
 // adds it to the renderer.
 bool AddCompiledPack(const StabilityArgs& a,
                      const std::vector<std::string>& sources,
                      const std::vector<std::pair<std::string, std::string>>& defines,
+                     pack::Precision precision,
                      runtime::Renderer& renderer,
                      DiagnosticList& diags,
                      const GlobalOptions& global) {
     CompileOptions options;
+    options.precision = precision;
     options.include_dirs = a.include_dirs;
     options.defines = defines;
     options.all_features = true;  // every material's shader_feature combination
@@ -95,7 +114,8 @@ struct Totals {
     std::set<std::string> seen;  // findings already reported (by an earlier strict mode)
 };
 
-// Runs every material; `cause` names what a strict build's NaN means ("" for a plain build).
+// Runs every material; `cause` names what a strict build's NaN means and its precision ("" for
+// a plain build of the packs).
 void RunMaterials(runtime::Renderer& renderer,
                   const runtime::ColorPipeline& color,
                   const StabilityArgs& a,
@@ -143,7 +163,10 @@ void RunMaterials(runtime::Renderer& renderer,
 }
 
 // The grid table; returns the number of failing cases.
-size_t PrintGrid(const runtime::TemplateStabilityReport& r, DiagnosticList& diags) {
+size_t PrintGrid(const runtime::TemplateStabilityReport& r,
+                 DiagnosticList& diags,
+                 const std::string& precision) {
+    const std::string build = "--precision " + precision + ": ";
     size_t failed = 0;
     std::printf("%-22s %7s %7s %11s %11s %11s %9s  %s\n", "case", "values", "NaN/Inf", "max abs",
                 "max rel", "bound", "max ULP", "worst input");
@@ -153,23 +176,25 @@ size_t PrintGrid(const runtime::TemplateStabilityReport& r, DiagnosticList& diag
                     static_cast<unsigned long long>(c.max_ulp), c.worst.c_str());
         if (c.non_finite > 0) {
             diags.Error(DiagCode::kNotFinite, "", kNoPosition,
-                        c.name + ": " + std::to_string(c.non_finite) + " of " +
+                        build + c.name + ": " + std::to_string(c.non_finite) + " of " +
                             std::to_string(c.values) + " values are not finite, the first at " +
                             c.first_non_finite);
         }
         if (c.max_rel > c.bound) {
             diags.Error(DiagCode::kOutsideBounds, "", kNoPosition,
-                        c.name + ": relative error " + std::to_string(c.max_rel) +
+                        build + c.name + ": relative error " + std::to_string(c.max_rel) +
                             " is above its bound " + std::to_string(c.bound) + " at " + c.worst);
         }
         failed += c.ok() ? 0 : 1;
     }
+    if (r.energy.empty())
+        return failed;
     std::printf("\n%-36s %12s  %s\n", "white furnace (directional albedo)", "max", "at");
     for (const runtime::EnergyReport& e : r.energy) {
         std::printf("%-36s %12.6f  %s\n", e.brdf.c_str(), e.max_albedo, e.where.c_str());
         if (!e.ok()) {
             diags.Error(DiagCode::kOutsideBounds, "", kNoPosition,
-                        e.brdf + ": directional albedo " + std::to_string(e.max_albedo) +
+                        build + e.brdf + ": directional albedo " + std::to_string(e.max_albedo) +
                             " exceeds 1 + 1e-3 at " + e.where + " (it creates energy)");
             ++failed;
         }
@@ -199,6 +224,12 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
     cmd->add_option("--source", a->sources,
                     "The materials' .shader files: check strict builds of them (normalize of a "
                     "zero vector and undefined pow made NaN on every driver) instead of a pack's");
+    cmd->add_option("--precision", a->precisions,
+                    "Builds to check: full (32-bit half), half (binary16 arithmetic; skipped "
+                    "with a warning where the device has no shaderFloat16) or relaxed; the "
+                    "grids and --source builds (default: full,half)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"full", "half", "relaxed"}));
     cmd->add_option("--size", a->options.size,
                     "The square image's side in pixels, odd (default 33)")
         ->check(CLI::Range(9, 1025).description(""));
@@ -218,43 +249,65 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
             for (const std::string& m : renderer.ValidationMessages())
                 diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);
         };
+        if (a->precisions.empty())
+            a->precisions = {"full", "half"};
         if (a->materials.empty()) {
-            Result<runtime::Renderer> made = runtime::Renderer::Create(options);
-            if (!made)
-                return run.Fail(made.error(), "");
-            runtime::Renderer renderer = std::move(made).value();
-            if (!AddCompiledPack(*a, {GridHarness(*a)}, {}, renderer, diags, global))
-                return int(kExitInputError);
-            Result<runtime::TemplateStabilityReport> ran =
-                runtime::TestTemplateStability(renderer, color);
-            if (!ran)
-                return run.Fail(ran.error(), "");
-            const size_t failed = PrintGrid(ran.value(), diags);
-            validation(renderer);
+            size_t cases = 0, checks = 0, failed = 0;
+            std::string device;
+            for (const std::string& precision : a->precisions) {
+                Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+                if (!made)
+                    return run.Fail(made.error(), "");
+                runtime::Renderer renderer = std::move(made).value();
+                device = renderer.DeviceName();
+                const pack::Precision p = ToPrecision(precision);
+                if (!CanRun(p, renderer, diags))
+                    continue;
+                if (!AddCompiledPack(*a, {GridHarness(*a)}, {}, p, renderer, diags, global))
+                    return int(kExitInputError);
+                Result<runtime::TemplateStabilityReport> ran =
+                    runtime::TestTemplateStability(renderer, color, {.precision = p});
+                if (!ran)
+                    return run.Fail(ran.error(), "");
+                if (checks > 0)
+                    ran.value().energy.clear();  // CPU integrals: the same in every build
+                std::printf("%s-precision build (--precision %s):\n",
+                            p == pack::Precision::kHalf ? "binary16" : "32-bit", precision.c_str());
+                failed += PrintGrid(ran.value(), diags, precision);
+                std::printf("\n");
+                cases += ran.value().cases.size();
+                checks += ran.value().energy.size();
+                validation(renderer);
+            }
             std::printf(
-                "kiln stability: %zu grid cases and %zu white-furnace checks on '%s': "
-                "%zu failed\n",
-                ran.value().cases.size(), ran.value().energy.size(), renderer.DeviceName().c_str(),
-                failed);
+                "kiln stability: %zu grid cases and %zu white-furnace checks in %zu builds on "
+                "'%s': %zu failed\n",
+                cases, checks, a->precisions.size(), device.c_str(), failed);
             return run.Finish(ExitCodeFor(diags));
         }
         if (a->packs.empty() && a->sources.empty())
             a->packs.push_back(ShippedPackPath());
         Totals totals;
         std::string device;
-        // A plain run over the packs; with --source, one run per strict build of the sources
-        // (their shaders found first), each finding reported by the first build that shows it.
-        const size_t runs = a->sources.empty() ? 1 : std::size(kStrictModes);
-        for (size_t mode = 0; mode < runs; ++mode) {
+        // A plain run over the packs; with --source, one run per precision and strict build of
+        // the sources (their shaders found first), each finding reported by the first build that
+        // shows it.
+        const size_t runs = a->sources.empty() ? 1 : std::size(kStrictModes) * a->precisions.size();
+        for (size_t i = 0; i < runs; ++i) {
             Result<runtime::Renderer> made = runtime::Renderer::Create(options);
             if (!made)
                 return run.Fail(made.error(), "");
             runtime::Renderer renderer = std::move(made).value();
             std::string cause;
             if (!a->sources.empty()) {
-                cause = kStrictModes[mode].cause;
-                if (!AddCompiledPack(*a, a->sources, {{kStrictModes[mode].define, "1"}}, renderer,
-                                     diags, global))
+                const StrictMode& mode = kStrictModes[i % std::size(kStrictModes)];
+                const std::string& precision = a->precisions[i / std::size(kStrictModes)];
+                const pack::Precision p = ToPrecision(precision);
+                if (!CanRun(p, renderer, diags))
+                    continue;
+                cause = std::string(mode.cause) + " (--precision " + precision + ")";
+                if (!AddCompiledPack(*a, a->sources, {{mode.define, "1"}}, p, renderer, diags,
+                                     global))
                     return int(kExitInputError);
             }
             for (const std::string& p : a->packs) {

@@ -23,20 +23,19 @@ std::string RenderToolPath() {
                         : (self.parent_path() / "kiln-render").string();
 }
 
-std::string ShippedPackPath() {
+std::string ShippedPackPath(const std::string& name) {
     const fs::path self = SelfPath();
     if (self.empty()) {
-        return "materials.kpack";
+        return name;
     }
     const fs::path prefix = self.parent_path().parent_path();
     std::error_code ec;
-    for (const fs::path& p :
-         {prefix / "share/kiln/materials.kpack", prefix / "materials/materials.kpack"}) {
+    for (const fs::path& p : {prefix / "share/kiln" / name, prefix / "materials" / name}) {
         if (fs::exists(p, ec)) {
             return p.string();
         }
     }
-    return (prefix / "share/kiln/materials.kpack").string();  // named in the error
+    return (prefix / "share/kiln" / name).string();  // named in the error
 }
 
 std::string DemoScenePath() {

@@ -322,6 +322,10 @@ std::string Renderer::DeviceName() const {
     return state_->context.properties.deviceName;
 }
 
+bool Renderer::HasFloat16() const {
+    return state_->context.shader_float16;
+}
+
 std::vector<std::string> Renderer::ValidationMessages() const {
     return vk::ValidationMessages(state_->context);
 }

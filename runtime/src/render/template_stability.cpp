@@ -17,6 +17,7 @@
 #include "kiln/reference/classic_lighting.h"
 #include "kiln/reference/guards.h"
 #include "kiln/reference/sh.h"
+#include "kiln/reference/unity_terms.h"
 #include "kiln/reference/white_furnace.h"
 #include "render/harness_scene.h"
 
@@ -53,6 +54,8 @@ struct GridCase {
     // denormal input is compared with both references and the closer counts.
     std::function<dvec3(const double in[4], bool flush)> reference;
     int channels = 3;
+    // The bound of a --precision half build, where the case computes in binary16; 0: `bound`.
+    double half_bound = 0;
 };
 
 constexpr double kDenormal = 1e-40;
@@ -190,6 +193,25 @@ std::vector<GridCase> Cases() {
          {normal, Plain("azimuth", {0.0, 1.0, 2.5, 4.0}), IntensityAxis("coefficient scale")},
          1e-3,
          nullptr});
+    // Case 7: binary16 arithmetic in a --precision half build (their parameters are half); the
+    // bound there is 8 units of binary16 rounding (2^-11 each) over chains of a few operations.
+    cases.push_back(
+        {"Unity half terms",
+         "r: DisneyDiffuse(a, b, d, c); g: SmithBeckmannVisibilityTerm(b, a, alpha); b: "
+         "FresnelTerm(0.04, d)",
+         {Plain("n . v", {0.0, 1e-7, 0.5, 1.0}), Plain("n . l", {0.0, 1e-7, 0.5, 1.0}),
+          Plain("perceptual roughness", {0.0, 1e-7, 0.045, 0.089, 0.5, 1.0}),
+          Plain("l . h", {0.0, 0.5, 1.0})},
+         1e-3,
+         [](const double in[4], bool) {
+             const double alpha = reference::RoughnessFromSmoothness(1.0 - in[2]);
+             return dvec3(
+                 reference::DisneyDiffuse(in[0], in[1], in[3], in[2]),
+                 0.25 * reference::SmithVisibility(in[1], in[0], reference::BeckmannK(alpha)),
+                 reference::F_Schlick(dvec3(0.04), in[3]).x);
+         },
+         3,
+         8.0 / 2048.0});
     return cases;
 }
 
@@ -244,7 +266,8 @@ std::vector<EnergyReport> WhiteFurnaceReport() {
 }
 
 Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
-                                                      const ColorPipeline& color) {
+                                                      const ColorPipeline& color,
+                                                      const TemplateStabilityOptions& options) {
     Renderer::State& s = *renderer.state_;
     std::optional<uint32_t> shader;
     uint32_t pack_index = 0;
@@ -302,7 +325,8 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
         GridCaseReport r;
         r.name = c.name;
         r.functions = c.functions;
-        r.bound = c.bound;
+        r.bound = options.precision == pack::Precision::kHalf && c.half_bound > 0 ? c.half_bound
+                                                                                  : c.bound;
         r.points = points;
         for (const Axis& a : c.axes) {
             std::string values;

@@ -217,14 +217,34 @@ Status CreateContext(const ContextOptions& options, Context& out) {
     vkEnumerateDeviceExtensionProperties(c.physical, nullptr, &ext_count, available.data());
     VkPhysicalDeviceMaintenance4FeaturesKHR maintenance4{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES_KHR};
+    // Packs compiled with --precision half compute in binary16 (the Float16 capability).
+    VkPhysicalDeviceShaderFloat16Int8FeaturesKHR float16{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR};
+    void* chain = nullptr;
     for (const VkExtensionProperties& e : available) {
         if (std::strcmp(e.extensionName, VK_KHR_MAINTENANCE_4_EXTENSION_NAME) == 0) {
             extensions.push_back(VK_KHR_MAINTENANCE_4_EXTENSION_NAME);
             maintenance4.maintenance4 = VK_TRUE;
+            maintenance4.pNext = chain;
+            chain = &maintenance4;
+        }
+        if (std::strcmp(e.extensionName, VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME) == 0) {
+            VkPhysicalDeviceShaderFloat16Int8FeaturesKHR query{
+                VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR};
+            VkPhysicalDeviceFeatures2 all{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+            all.pNext = &query;
+            vkGetPhysicalDeviceFeatures2(c.physical, &all);
+            if (query.shaderFloat16) {
+                extensions.push_back(VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
+                float16.shaderFloat16 = VK_TRUE;
+                float16.pNext = chain;
+                chain = &float16;
+                c.shader_float16 = true;
+            }
         }
     }
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    info.pNext = maintenance4.maintenance4 ? &maintenance4 : nullptr;
+    info.pNext = chain;
     info.enabledExtensionCount = uint32_t(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     info.queueCreateInfoCount = 1;

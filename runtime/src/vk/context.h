@@ -39,6 +39,7 @@ struct Context {
     bool validation = false;
     bool image_cube_array = false;  // the imageCubeArray feature is enabled
     bool logic_op = false;          // the logicOp feature is enabled
+    bool shader_float16 = false;    // shaderFloat16 is enabled (--precision half packs)
     ValidationLog* log = nullptr;   // owned; the messenger's user data
 };
 

@@ -162,6 +162,21 @@ std::string EntryPointName(std::span<const uint32_t> words) {
     return {};
 }
 
+bool DeclaresCapability(std::span<const uint32_t> words, uint32_t capability) {
+    constexpr uint32_t kOpCapability = 17;
+    for (size_t i = 5; i < words.size();) {
+        const uint32_t count = words[i] >> 16, opcode = words[i] & 0xFFFF;
+        if (count == 0 || count > words.size() - i) {
+            break;
+        }
+        if (opcode == kOpCapability && count == 2 && words[i + 1] == capability) {
+            return true;
+        }
+        i += count;
+    }
+    return false;
+}
+
 }  // namespace
 
 Status CreatePipeline(const Context& c,
@@ -198,6 +213,14 @@ Status CreatePipeline(const Context& c,
                 return fail(e.error());
         }
         entry_points[i] = EntryPointName(words);
+        constexpr uint32_t kCapabilityFloat16 = 9;
+        if (!c.shader_float16 && DeclaresCapability(words, kCapabilityFloat16)) {
+            return fail(Error{DiagCode::kRenderFailed,
+                              std::string("the variant computes in 16-bit floats (compiled with "
+                                          "--precision half) and device '") +
+                                  c.properties.deviceName +
+                                  "' has no shaderFloat16; compile with --precision relaxed"});
+        }
         if (entry_points[i].empty()) {
             return fail(Error{DiagCode::kRenderFailed,
                               "a SPIR-V module of the variant has no entry point"});

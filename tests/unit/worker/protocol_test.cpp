@@ -31,6 +31,7 @@ Request SampleRequest() {
     r.debug_info = true;
     r.opt_level = 2;
     r.optimize = false;
+    r.half_arithmetic = true;
     r.words = {0x07230203, 0x00010300, 7, 42, 0};
     return r;
 }
@@ -53,6 +54,7 @@ TEST(WorkerProtocol, RequestsRoundTrip) {
     EXPECT_EQ(back->debug_info, r.debug_info);
     EXPECT_EQ(back->opt_level, r.opt_level);
     EXPECT_EQ(back->optimize, r.optimize);
+    EXPECT_EQ(back->half_arithmetic, r.half_arithmetic);
     EXPECT_EQ(back->words, r.words);
 }
 
@@ -99,8 +101,8 @@ TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
     for (size_t n = 0; n < full->payload.size(); ++n)
         accepted += DecodeRequest(full->payload.substr(0, n)) ? 1 : 0;
     // Fields: kind, stage, name, source, entry, 2 include dirs, templates, debug, opt level,
-    // optimize, words: 12 boundaries before the end, the empty prefix included.
-    EXPECT_EQ(accepted, 12u);
+    // optimize, half arithmetic, words: 13 boundaries before the end, the empty prefix included.
+    EXPECT_EQ(accepted, 13u);
     for (size_t n = 0; n < 4; ++n)
         EXPECT_FALSE(SplitFrame(Payload(bytes).substr(0, n)));
 }

@@ -72,10 +72,34 @@ struct StrRef {  // 8 bytes: a UTF-8 string in STRS, not NUL-terminated
     uint32_t length = 0;
 };
 
+// How `half` and `fixed` compile (kiln compile --precision, docs/unity-compat.md): kFull as 32-bit
+// float (Unity's desktop targets), kRelaxed as min16float (RelaxedPrecision: the driver may use 16
+// bits, as Unity's Vulkan back end emits them), kHalf as min16float whose arithmetic SPIRV-Tools
+// then converts to binary16 (Float16 capability; the device needs shaderFloat16).
+enum class Precision : uint32_t { kFull, kRelaxed, kHalf };
+
+// MetaRec::flags: how the pack was compiled.
+enum MetaFlags : uint32_t {
+    kMetaDebugInfo = 1u << 0,         // -g: debug info kept
+    kMetaRelaxedPrecision = 1u << 1,  // --precision relaxed: half is min16float (RelaxedPrecision)
+    // --precision half: half arithmetic is binary16 (Float16 capability; needs shaderFloat16)
+    kMetaHalfPrecision = 1u << 2,
+};
+
+inline const char* PrecisionName(Precision p) {  // as --precision spells it
+    return p == Precision::kHalf ? "half" : p == Precision::kRelaxed ? "relaxed" : "full";
+}
+
+inline Precision PrecisionOf(uint32_t meta_flags) {
+    return (meta_flags & kMetaHalfPrecision)      ? Precision::kHalf
+           : (meta_flags & kMetaRelaxedPrecision) ? Precision::kRelaxed
+                                                  : Precision::kFull;
+}
+
 struct MetaRec {             // 24 bytes
     StrRef producer;         // "kiln 0.2.0; glslang 12.0.0; SPIRV-Tools v2023.1; SPIRV-Cross"
     uint32_t opt_level = 0;  // 0 = -O0, 1 = -O, 2 = -Os
-    uint32_t flags = 0;      // bit 0: debug info kept (-g)
+    uint32_t flags = 0;      // MetaFlags
     uint32_t variant_count = 0;
     uint32_t module_count = 0;
 };

@@ -14,6 +14,9 @@ namespace kiln::reference {
 inline constexpr double kPi = 3.14159265358979323846;
 // Largest finite binary16 value; HDR results are clamped to it (16-bit float targets).
 inline constexpr double kHalfMax = 65504.0;
+// Smallest normal binary16 value, 2^-14: a divisor bounded by it keeps a quotient of 1 within
+// binary16 (as KILN_HALF_MIN; a subnormal bound could be flushed to 0).
+inline constexpr double kHalfMin = 6.103515625e-5;
 // Squared length below which a vector counts as zero (as KILN_MIN_LENGTH_SQ).
 inline constexpr double kMinLengthSq = 1e-12;
 

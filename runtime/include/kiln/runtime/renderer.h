@@ -103,6 +103,7 @@ struct VariantTestOptions;
 struct VariantTestReport;
 struct MaterialStabilityOptions;
 struct MaterialStabilityReport;
+struct TemplateStabilityOptions;
 struct TemplateStabilityReport;
 
 class Renderer {
@@ -128,6 +129,8 @@ class Renderer {
                   FrameCapture* capture = nullptr);
 
     std::string DeviceName() const;
+    // shaderFloat16 is enabled: packs compiled with --precision half can be drawn.
+    bool HasFloat16() const;
     std::vector<std::string> ValidationMessages() const;
     Status WriteUsage(const std::string& path) const;
 
@@ -146,8 +149,10 @@ class Renderer {
         const ColorPipeline& color,
         const std::string& material,
         const MaterialStabilityOptions& options);
-    friend Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
-                                                                 const ColorPipeline& color);
+    friend Result<TemplateStabilityReport> TestTemplateStability(
+        Renderer& renderer,
+        const ColorPipeline& color,
+        const TemplateStabilityOptions& options);
     std::unique_ptr<State> state_;
 };
 

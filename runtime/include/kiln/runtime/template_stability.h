@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "kiln/pack/format.h"
 #include "kiln/result.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
@@ -46,9 +47,16 @@ struct TemplateStabilityReport {
     std::vector<EnergyReport> energy;
 };
 
+struct TemplateStabilityOptions {
+    // How the harness pack was compiled: a case evaluated in binary16 there is held to its
+    // binary16 bound (docs/accuracy.md, "fp16").
+    pack::Precision precision = pack::Precision::kFull;
+};
+
 // Needs a pack holding pack::kShaderStabilityGrid among the renderer's packs.
 Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
-                                                      const ColorPipeline& color);
+                                                      const ColorPipeline& color,
+                                                      const TemplateStabilityOptions& options = {});
 
 // The white-furnace part alone (CPU only).
 std::vector<EnergyReport> WhiteFurnaceReport();

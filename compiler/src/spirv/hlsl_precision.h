@@ -1,0 +1,27 @@
+// RelaxedPrecision as HLSL's types give it. glslang decorates an operation RelaxedPrecision when
+// any operand is (GLSL's rule, where an unqualified float has no precision of its own), so
+// `min16float * float` becomes relaxed; in HLSL that product is float. With --precision half,
+// SPIRV-Tools then computes every relaxed operation in binary16, and a float expression that
+// merely touches a half value (a light colour times a half albedo) would overflow at 65504.
+//
+// MatchHlslPromotion removes the decoration from every arithmetic result that has a 32-bit float
+// operand which is neither relaxed nor a constant (literals take their context's precision, as
+// in both languages), repeated through phis until nothing changes. What stays relaxed is
+// arithmetic on half values alone. Loads, image operations and other producers keep glslang's
+// decoration, so run on glslang's output, before legalization, a load of a half variable or
+// parameter is relaxed: assigning a float to a half narrows it, as in HLSL.
+#ifndef KILN_SPIRV_HLSL_PRECISION_H_
+#define KILN_SPIRV_HLSL_PRECISION_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace kiln::spirv {
+
+// Edits `words` (a valid module) in place; returns the number of decorations removed.
+size_t MatchHlslPromotion(std::vector<uint32_t>& words);
+
+}  // namespace kiln::spirv
+
+#endif  // KILN_SPIRV_HLSL_PRECISION_H_
