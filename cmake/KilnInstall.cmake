@@ -35,7 +35,9 @@ foreach(_inc base/include runtime/include compiler/include)
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
 endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/templates/ DESTINATION ${KILN_INSTALL_DATADIR}/templates)
-install(FILES ${CMAKE_BINARY_DIR}/materials/materials.kpack DESTINATION ${KILN_INSTALL_DATADIR})
+install(FILES ${CMAKE_BINARY_DIR}/materials/materials.kpack
+              ${CMAKE_BINARY_DIR}/materials/materials-half.kpack
+        DESTINATION ${KILN_INSTALL_DATADIR})
 
 install(EXPORT KilnTargets NAMESPACE kiln:: DESTINATION ${KILN_INSTALL_CMAKEDIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/KilnConfig.cmake.in

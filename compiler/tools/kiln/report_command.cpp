@@ -2,6 +2,7 @@
 // (kiln/runtime/accuracy_report.h, docs/accuracy.md).
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,8 +21,31 @@ struct ReportArgs {
     std::vector<std::string> packs, compare, only;
     runtime::AccuracyOptions options;
     runtime::ColorOptions color;
-    bool validation = false, no_default_light = false;
+    bool validation = false, no_default_light = false, no_fp16 = false;
 };
+
+// With the shipped packs, the fp16 configuration: auto-4 drawn with the shipped shaders compiled
+// with --precision half, where the device has shaderFloat16 (a warning where it has none).
+Status AddFp16Comparison(ReportArgs& a, DiagnosticList& diags) {
+    if (!a.packs.empty() || a.no_fp16)
+        return {};
+    const std::string half = ShippedPackPath(kShippedHalfPack);
+    if (!std::filesystem::exists(half))
+        return {};
+    runtime::RendererOptions options;
+    options.device_filter = a.device;
+    Result<runtime::Renderer> probe = runtime::Renderer::Create(options);
+    if (!probe)
+        return probe.error();
+    if (!probe.value().HasFloat16()) {
+        diags.Warning(DiagCode::kRenderFailed, "", kNoPosition,
+                      "the fp16 configuration is left out: device '" + probe.value().DeviceName() +
+                          "' has no shaderFloat16");
+        return {};
+    }
+    a.compare.insert(a.compare.begin(), "fp16=" + half);
+    return {};
+}
 
 // "LABEL=PACK" -> {LABEL, PACK}; an empty label when there is no '='.
 std::pair<std::string, std::string> SplitCompare(const std::string& text) {
@@ -89,6 +113,9 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
                     "one shader built with -D KILN_BRDF_F_EXACT)")
         ->option_text("LABEL=PACK");
     cmd->add_option("--only", a->only, "Only these of the default configurations (repeatable)");
+    cmd->add_flag("--no-fp16", a->no_fp16,
+                  "Leave out the fp16 configuration (the shipped shaders compiled with "
+                  "--precision half, drawn where the device has shaderFloat16)");
     cmd->add_option("--width", a->options.width, "Image width (default 640)")
         ->check(CLI::Range(1, 4096).description(""));
     cmd->add_option("--height", a->options.height, "Image height (default 360)")
@@ -118,6 +145,9 @@ std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global
                                       "no scene given, and the demo scene is not beside this kiln "
                                       "(give a .gltf or .glb file)"});
             }
+        }
+        if (Status fp16 = AddFp16Comparison(*a, diags); !fp16.ok()) {
+            return run.Fail(fp16.error());
         }
         Result<std::vector<runtime::AccuracyConfig>> configs = Configs(*a);
         if (!configs) {
