@@ -110,6 +110,8 @@ TEST(Cli, CompileWritesPackAndDepfileListingEveryFileRead) {
     EXPECT_NE(r.out.find("variants 3, stage programs 6, unique programs 3"), std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("aliased variants 1"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("ms: load "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("peak memory: kiln "), std::string::npos) << r.out;
     const std::string dep = ReadFile(dir + "/out.d");
     const std::string shader =
         std::filesystem::canonical(DataPath("data/compile/multi_light.shader"));
@@ -327,6 +329,37 @@ TEST(Cli, MaterialsChooseTheShaderFeatureCombinations) {
                                   WriteTemp("broken.material", "{\"shader\": 3}"));
     EXPECT_EQ(bad.exit_code, 1);
     EXPECT_NE(bad.err.find("broken.material:1:"), std::string::npos) << bad.err;
+}
+
+// --stats=json: the counts, each phase's milliseconds and peak memory as one object. A cold
+// compile spends time in every phase, the phases add up to at most the total, and the workers
+// (which ran glslang) are counted once they have ended; a warm one compiles nothing.
+TEST(Cli, StatsAsJsonTimeEveryPhaseAndCountTheCache) {
+    const std::string dir = testing::TempDir() + "/kiln_cli_stats";
+    std::filesystem::remove_all(dir);
+    const std::string cmd = "compile " + DataPath("data/compile/multi_light.shader") + " -o " +
+                            dir + "/out.kpack --cache-dir " + dir + "/cache --stats=json";
+    const RunResult cold = RunKiln(cmd);
+    ASSERT_EQ(cold.exit_code, 0) << cold.err;
+    const nlohmann::json c = nlohmann::json::parse(cold.out);
+    EXPECT_EQ(c["variants"], 3);
+    EXPECT_EQ(c["glslang_compiles"], 3);
+    EXPECT_EQ(c["cache_hits"], 0);
+    double sum = 0;
+    for (const char* phase : {"load", "expand", "preprocess", "compile", "finish", "emit"}) {
+        EXPECT_GT(c["ms"][phase].get<double>(), 0.0) << phase;
+        sum += c["ms"][phase].get<double>();
+    }
+    EXPECT_LE(sum, c["ms"]["total"].get<double>());
+    EXPECT_GT(c["peak_rss_kib"].get<uint64_t>(), 0u);
+    EXPECT_GT(c["peak_worker_rss_kib"].get<uint64_t>(), 0u);
+    const RunResult warm = RunKiln(cmd);
+    ASSERT_EQ(warm.exit_code, 0) << warm.err;
+    const nlohmann::json w = nlohmann::json::parse(warm.out);
+    EXPECT_EQ(w["glslang_compiles"], 0);
+    EXPECT_EQ(w["cache_hits"], 3);
+    EXPECT_EQ(RunKiln(cmd + " --stats=xml").exit_code, 2);
+    std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, UnityVersionMustBeAVersion) {

@@ -95,6 +95,17 @@ struct CompileStats {
     // Variants not stored because their keyword is an alias of another (identical SPIR-V in
     // both stages): lookups of them find the other keyword's variants.
     size_t aliased_variants = 0;
+    // Wall-clock milliseconds of each phase of this run (kiln compile --stats): reading, parsing
+    // and checking the shaders; expanding variants into stage programs; preprocessing and
+    // reducing them to their entry points, and deduplicating (in the workers); glslang and
+    // SPIRV-Tools on the unique programs, or the cache; bindings, reflection and validation;
+    // building the pack's bytes. Phases that did not run are 0.
+    struct Phases {
+        double load = 0, expand = 0, preprocess = 0, compile = 0, finish = 0, emit = 0, total = 0;
+    } ms;
+    // Peak resident memory in KiB of this process and of the largest worker process (0 with
+    // --in-process), from getrusage.
+    uint64_t peak_rss_kib = 0, peak_worker_rss_kib = 0;
 };
 
 struct KeywordSetReport {

@@ -2,6 +2,9 @@
 // compile (or cache) -> bindings/reflection/validation -> pack.
 #include "kiln/compile.h"
 
+#include <sys/resource.h>
+
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -163,6 +166,27 @@ void Lint(CompileState& st, const std::vector<uint8_t>& bytes) {
 
 enum class Mode { kPack, kAnalyze, kSkeleton, kLint };
 
+// Adds the milliseconds since the last call (or construction) to a phase.
+class PhaseClock {
+  public:
+    void Into(double& phase) {
+        const auto now = std::chrono::steady_clock::now();
+        phase += std::chrono::duration<double, std::milli>(now - last_).count();
+        last_ = now;
+    }
+
+  private:
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+void RecordPeakMemory(CompileStats& stats) {
+    rusage self{}, children{};
+    if (getrusage(RUSAGE_SELF, &self) == 0)
+        stats.peak_rss_kib = uint64_t(self.ru_maxrss);  // KiB on Linux
+    if (getrusage(RUSAGE_CHILDREN, &children) == 0)
+        stats.peak_worker_rss_kib = uint64_t(children.ru_maxrss);
+}
+
 CompileOutput Run(const std::vector<std::string>& paths,
                   const CompileOptions& options,
                   DiagnosticList& diags,
@@ -170,6 +194,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
     frontend::InitializeGlslang();  // before any thread starts
     CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
+    PhaseClock clock, whole;
+    CompileStats::Phases& ms = out.stats.ms;
     if (options.templates_dir.empty() && DefaultTemplatesDir().empty()) {
         // An installed kiln without its share/kiln folder, or a program linking the library
         // that names none: every Unity include would fail, one confusing error per program.
@@ -180,6 +206,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
         return out;
     }
     LoadShaders(st, paths);
+    clock.Into(ms.load);
     if (mode == Mode::kSkeleton) {
         if (!diags.has_errors())
             driver::ExpandRequestedPasses(st, true);
@@ -206,28 +233,39 @@ CompileOutput Run(const std::vector<std::string>& paths,
     }
     if (!diags.has_errors())
         driver::CreateTasks(st);
+    clock.Into(ms.expand);
     bool preprocessed = false;
     if (!diags.has_errors()) {
         PreprocessAndDedup(st);
         preprocessed = true;
     }
+    clock.Into(ms.preprocess);
     if (mode == Mode::kAnalyze) {
         if (preprocessed)
             driver::ReportJobDiagnostics(st);
     } else if (!diags.has_errors()) {
         driver::CompileJobs(st, out.stats);
         driver::ReportJobDiagnostics(st);
+        clock.Into(ms.compile);
         if (!diags.has_errors())
             driver::FinishModules(st);
         if (!diags.has_errors())
             driver::CheckInterfaces(st);
+        clock.Into(ms.finish);
         if (!diags.has_errors())
             out.pack = driver::EmitPack(st, out.stats);
         if (mode == Mode::kLint && !diags.has_errors())
             Lint(st, out.pack);
+        clock.Into(ms.emit);
     }
     FillReports(st, out);
     driver::FillStripReport(st, out);
+    // The workers end (and are waited for) with the executor: only then does the kernel count
+    // their peak memory among this process's children.
+    st.exec = nullptr;
+    exec.reset();
+    whole.Into(ms.total);
+    RecordPeakMemory(out.stats);
     out.files = st.files.Files();
     out.ok = !diags.has_errors();
     if (!out.ok)

@@ -9,6 +9,8 @@
 #include <memory>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/compile.h"
@@ -27,6 +29,44 @@ std::string DepfileEscape(const std::string& path) {
         out += c;
     }
     return out;
+}
+
+void PrintStats(const CompileStats& s, bool json) {
+    const CompileStats::Phases& ms = s.ms;
+    if (json) {
+        const nlohmann::ordered_json j = {{"permutations", s.permutations},
+                                          {"variants", s.variants},
+                                          {"stage_programs", s.stage_programs},
+                                          {"unique_programs", s.unique_programs},
+                                          {"glslang_compiles", s.glslang_compiles},
+                                          {"cache_hits", s.cache_hits},
+                                          {"modules", s.modules},
+                                          {"aliased_variants", s.aliased_variants},
+                                          {"ms",
+                                           {{"load", ms.load},
+                                            {"expand", ms.expand},
+                                            {"preprocess", ms.preprocess},
+                                            {"compile", ms.compile},
+                                            {"finish", ms.finish},
+                                            {"emit", ms.emit},
+                                            {"total", ms.total}}},
+                                          {"peak_rss_kib", s.peak_rss_kib},
+                                          {"peak_worker_rss_kib", s.peak_worker_rss_kib}};
+        std::printf("%s\n", j.dump(2).c_str());
+        return;
+    }
+    std::printf(
+        "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, glslang "
+        "compiles %zu, cache hits %zu, modules %zu, aliased variants %zu\n",
+        static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
+        s.unique_programs, s.glslang_compiles, s.cache_hits, s.modules, s.aliased_variants);
+    std::printf(
+        "ms: load %.1f, expand %.1f, preprocess %.1f, compile %.1f, finish %.1f, emit %.1f, total "
+        "%.1f\n",
+        ms.load, ms.expand, ms.preprocess, ms.compile, ms.finish, ms.emit, ms.total);
+    std::printf("peak memory: kiln %llu KiB, largest worker %llu KiB\n",
+                static_cast<unsigned long long>(s.peak_rss_kib),
+                static_cast<unsigned long long>(s.peak_worker_rss_kib));
 }
 
 }  // namespace
@@ -235,7 +275,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         bool no_cache = false;
         bool md = false;
         std::string mf;
-        bool stats = false;
+        std::string stats;  // "", "text" or "json"
         bool no_aliases = false;
         SceneStripFlags strip;
     };
@@ -259,7 +299,10 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
     cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the compile cache");
     cmd->add_flag("--md", o->md, "")->group("");
     cmd->add_option("--mf", o->mf, "")->group("");
-    cmd->add_flag("--stats", o->stats, "Print variant and compile counts on stdout");
+    cmd->add_flag("--stats{text}", o->stats,
+                  "Print variant and compile counts, cache hits, phase times and peak memory on "
+                  "stdout; --stats=json as one JSON object")
+        ->check(CLI::IsMember({"text", "json"}));
     cmd->add_flag("--no-keyword-aliases", o->no_aliases,
                   "Store every variant, also those of keywords whose SPIR-V duplicates another "
                   "keyword's (pack format 1.0 readers need this)");
@@ -358,14 +401,8 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
                             written.error().message);
             }
         }
-        if (o->stats) {
-            const CompileStats& s = out.stats;
-            std::printf(
-                "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, "
-                "glslang compiles %zu, cache hits %zu, modules %zu, aliased variants %zu\n",
-                static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
-                s.unique_programs, s.glslang_compiles, s.cache_hits, s.modules, s.aliased_variants);
-        }
+        if (!o->stats.empty())
+            PrintStats(out.stats, o->stats == "json");
         PrintDiagnostics(diags, Views(out, material_files), global);
         return ExitCodeFor(diags);
     };
