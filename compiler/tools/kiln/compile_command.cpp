@@ -200,9 +200,7 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
     }
     if (auto v = ParseUnityVersion(f.unity_version))
         o.unity_version = *v;
-    o.precision = f.precision == "half"      ? Precision::kHalf
-                  : f.precision == "relaxed" ? Precision::kRelaxed
-                                             : Precision::kFull;
+    o.precision = pack::PrecisionFromName(f.precision);
     if (!f.keywords.empty())
         o.keywords = std::set<std::string>(f.keywords.begin(), f.keywords.end());
     o.all_features = f.all_features;

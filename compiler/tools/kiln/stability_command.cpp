@@ -31,12 +31,6 @@ struct StabilityArgs {
     std::string device, templates;
 };
 
-pack::Precision ToPrecision(const std::string& name) {
-    return name == "half"      ? pack::Precision::kHalf
-           : name == "relaxed" ? pack::Precision::kRelaxed
-                               : pack::Precision::kFull;
-}
-
 // A half build needs shaderFloat16; without it the build is skipped with a warning.
 bool CanRun(pack::Precision p, const runtime::Renderer& renderer, DiagnosticList& diags) {
     if (p != pack::Precision::kHalf || renderer.HasFloat16())
@@ -252,7 +246,7 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
         if (a->precisions.empty())
             a->precisions = {"full", "half"};
         if (a->materials.empty()) {
-            size_t cases = 0, checks = 0, failed = 0;
+            size_t builds = 0, cases = 0, checks = 0, failed = 0;
             std::string device;
             for (const std::string& precision : a->precisions) {
                 Result<runtime::Renderer> made = runtime::Renderer::Create(options);
@@ -260,7 +254,7 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
                     return run.Fail(made.error(), "");
                 runtime::Renderer renderer = std::move(made).value();
                 device = renderer.DeviceName();
-                const pack::Precision p = ToPrecision(precision);
+                const pack::Precision p = pack::PrecisionFromName(precision);
                 if (!CanRun(p, renderer, diags))
                     continue;
                 if (!AddCompiledPack(*a, {GridHarness(*a)}, {}, p, renderer, diags, global))
@@ -275,6 +269,7 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
                             p == pack::Precision::kHalf ? "binary16" : "32-bit", precision.c_str());
                 failed += PrintGrid(ran.value(), diags, precision);
                 std::printf("\n");
+                ++builds;
                 cases += ran.value().cases.size();
                 checks += ran.value().energy.size();
                 validation(renderer);
@@ -282,7 +277,7 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
             std::printf(
                 "kiln stability: %zu grid cases and %zu white-furnace checks in %zu builds on "
                 "'%s': %zu failed\n",
-                cases, checks, a->precisions.size(), device.c_str(), failed);
+                cases, checks, builds, device.c_str(), failed);
             return run.Finish(ExitCodeFor(diags));
         }
         if (a->packs.empty() && a->sources.empty())
@@ -302,7 +297,7 @@ std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& glo
             if (!a->sources.empty()) {
                 const StrictMode& mode = kStrictModes[i % std::size(kStrictModes)];
                 const std::string& precision = a->precisions[i / std::size(kStrictModes)];
-                const pack::Precision p = ToPrecision(precision);
+                const pack::Precision p = pack::PrecisionFromName(precision);
                 if (!CanRun(p, renderer, diags))
                     continue;
                 cause = std::string(mode.cause) + " (--precision " + precision + ")";

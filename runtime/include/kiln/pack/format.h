@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace kiln::pack {
 
@@ -88,6 +89,15 @@ enum MetaFlags : uint32_t {
 
 inline const char* PrecisionName(Precision p) {  // as --precision spells it
     return p == Precision::kHalf ? "half" : p == Precision::kRelaxed ? "relaxed" : "full";
+}
+
+// The inverse of PrecisionName; kFull for any other name (the CLI admits only the three).
+inline Precision PrecisionFromName(std::string_view name) {
+    for (Precision p : {Precision::kHalf, Precision::kRelaxed}) {
+        if (name == PrecisionName(p))
+            return p;
+    }
+    return Precision::kFull;
 }
 
 inline Precision PrecisionOf(uint32_t meta_flags) {
