@@ -7,9 +7,14 @@
 //   _OCCLUSIONMAP      glTF occlusionTexture: R = ambient occlusion (indirect light only)
 //   _EMISSION          emissive colour x emission map
 //   _ALPHATEST_ON      glTF alphaMode MASK: fragments with base alpha below _Cutoff are discarded
-// ForwardBase: the main light, SH ambient and emission; ForwardAdd: one more light per pass;
-// Deferred: the G-buffer (UnityGBuffer.cginc) with SH ambient and emission in RT3, lit by the
-// deferred path's light pass (materials/internal/DeferredShading.shader) with the same BRDF.
+// As glTF has it, each map has its own tiling and offset (<map>_ST), UV set and rotation
+// (<map>_UV; GltfTexture.cginc), the base colour is multiplied by the vertex colour (white where
+// the mesh has none), and a back face (drawn with Cull Off) is lit with its normal reversed.
+// ForwardBase: the main light, SH ambient, the reflection probe (unity_SpecCube0: the ambient
+// environment prefiltered per roughness mip) and emission; ForwardAdd: one more light per pass;
+// Deferred: the G-buffer (UnityGBuffer.cginc) with the ambient (SH and probe) and emission in
+// RT3, lit by the deferred path's light pass (materials/internal/DeferredShading.shader) with
+// the same BRDF.
 Shader "Kiln/StandardMetallic"
 {
     Properties
@@ -26,31 +31,45 @@ Shader "Kiln/StandardMetallic"
         [HDR] _EmissionColor ("Emission", Color) = (0, 0, 0, 1)
         _EmissionMap ("Emission Map", 2D) = "white" {}
         _Cutoff ("Alpha Cutoff", Range(0, 1)) = 0.5
+        // Each map's UV set (x: 0 or 1) and rotation (y, radians): glTF's texCoord and
+        // KHR_texture_transform (its scale and offset are the map's tiling and offset).
+        [HideInInspector] _MainTex_UV ("Base Color Map UV", Vector) = (0, 0, 0, 0)
+        [HideInInspector] _MetallicGlossMap_UV ("Metallic-Roughness Map UV", Vector) = (0, 0, 0, 0)
+        [HideInInspector] _BumpMap_UV ("Normal Map UV", Vector) = (0, 0, 0, 0)
+        [HideInInspector] _OcclusionMap_UV ("Occlusion Map UV", Vector) = (0, 0, 0, 0)
+        [HideInInspector] _EmissionMap_UV ("Emission Map UV", Vector) = (0, 0, 0, 0)
     }
 
     CGINCLUDE
     #include "UnityPBSLighting.cginc"
     #include "AutoLight.cginc"
     #include "UnityGBuffer.cginc"
+    #include "GltfTexture.cginc"
 
     float4 _Color;
     sampler2D _MainTex;
-    float4 _MainTex_ST;
+    float4 _MainTex_ST, _MainTex_UV;
     float _Metallic;
     float _Roughness;
     sampler2D _MetallicGlossMap;
+    float4 _MetallicGlossMap_ST, _MetallicGlossMap_UV;
     float _BumpScale;
     sampler2D _BumpMap;
+    float4 _BumpMap_ST, _BumpMap_UV;
     float _OcclusionStrength;
     sampler2D _OcclusionMap;
+    float4 _OcclusionMap_ST, _OcclusionMap_UV;
     float4 _EmissionColor;
     sampler2D _EmissionMap;
+    float4 _EmissionMap_ST, _EmissionMap_UV;
     float _Cutoff;
 
     struct VertexData {
         float4 position : POSITION;
         float3 normal : NORMAL;
         float2 uv : TEXCOORD0;
+        float2 uv1 : TEXCOORD1;
+        float4 color : COLOR;
     #if defined(_NORMALMAP)
         float4 tangent : TANGENT;
     #endif
@@ -58,11 +77,12 @@ Shader "Kiln/StandardMetallic"
 
     struct Interpolators {
         float4 position : SV_POSITION;
-        float2 uv : TEXCOORD0;
+        float4 uv : TEXCOORD0;  // TEXCOORD_0 in xy, TEXCOORD_1 in zw, untransformed
         float3 normal : TEXCOORD1;
         float3 worldPos : TEXCOORD2;
+        float4 color : TEXCOORD3;  // the vertex colour, linear
     #if defined(_NORMALMAP)
-        float4 tangent : TEXCOORD3;  // world-space tangent, w = bitangent sign
+        float4 tangent : TEXCOORD4;  // world-space tangent, w = bitangent sign
     #endif
     };
 
@@ -71,20 +91,27 @@ Shader "Kiln/StandardMetallic"
         i.position = UnityObjectToClipPos(v.position);
         i.worldPos = mul(unity_ObjectToWorld, float4(v.position.xyz, 1.0)).xyz;
         i.normal = UnityObjectToWorldNormal(v.normal);
-        i.uv = TRANSFORM_TEX(v.uv, _MainTex);
+        i.uv = float4(v.uv, v.uv1);
+        i.color = v.color;
     #if defined(_NORMALMAP)
-        // guard: a zero handedness would zero the bitangent; glTF requires w = +-1
-        i.tangent = float4(UnityObjectToWorldDir(v.tangent.xyz), v.tangent.w < 0.0 ? -1.0 : 1.0);
+        // guard: a zero handedness would zero the bitangent; glTF requires w = +-1. A mirroring
+        // transform reverses the bitangent too (unity_WorldTransformParams.w = -1).
+        float sign = (v.tangent.w < 0.0 ? -1.0 : 1.0) * unity_WorldTransformParams.w;
+        i.tangent = float4(UnityObjectToWorldDir(v.tangent.xyz), sign);
     #endif
         return i;
     }
 
-    float3 SurfaceNormal(Interpolators i) {
-        float3 n = SafeNormalize(i.normal);
+    // The shading normal; a back face (front = false, drawn only with Cull Off) has its whole
+    // frame reversed, so that it is lit as seen from its own side (glTF 2.0, 3.9.5).
+    float3 SurfaceNormal(Interpolators i, bool front) {
+        float side = front ? 1.0 : -1.0;
+        float3 n = SafeNormalize(i.normal) * side;
     #if defined(_NORMALMAP)
-        float3 t = SafeNormalize(i.tangent.xyz);
-        float3 b = cross(n, t) * i.tangent.w;
-        float3 ts = UnpackScaleNormal(tex2D(_BumpMap, i.uv), _BumpScale);
+        float3 t = SafeNormalize(i.tangent.xyz) * side;
+        float3 b = cross(n, t) * i.tangent.w;  // the reversed n and t give back b; reverse it too
+        b *= side;
+        float3 ts = UnpackScaleNormal(tex2D(_BumpMap, GLTF_MAP_UV(i.uv, _BumpMap)), _BumpScale);
         n = SafeNormalize(ts.x * t + ts.y * b + ts.z * n);
     #endif
         return n;
@@ -99,11 +126,11 @@ Shader "Kiln/StandardMetallic"
     };
 
     MetallicSurface ReadSurface(Interpolators i) {
-        float4 base = tex2D(_MainTex, i.uv) * _Color;
+        float4 base = tex2D(_MainTex, GLTF_MAP_UV(i.uv, _MainTex)) * _Color * i.color;
         float metallic = _Metallic;
         float roughness = _Roughness;
     #if defined(_METALLICGLOSSMAP)
-        float4 mr = tex2D(_MetallicGlossMap, i.uv);
+        float4 mr = tex2D(_MetallicGlossMap, GLTF_MAP_UV(i.uv, _MetallicGlossMap));
         roughness *= mr.g;
         metallic *= mr.b;
     #endif
@@ -119,9 +146,9 @@ Shader "Kiln/StandardMetallic"
         return s;
     }
 
-    float4 ShadeLight(Interpolators i, UnityIndirect indirect) {
+    float4 ShadeLight(Interpolators i, bool front, UnityIndirect indirect) {
         MetallicSurface s = ReadSurface(i);
-        float3 n = SurfaceNormal(i);
+        float3 n = SurfaceNormal(i, front);
         UnityLight light;
         light.dir = SafeNormalize(UnityWorldSpaceLightDir(i.worldPos));
         UNITY_LIGHT_ATTENUATION(attenuation, 0, i.worldPos);
@@ -133,19 +160,42 @@ Shader "Kiln/StandardMetallic"
         return float4(c.rgb, s.alpha);
     }
 
-    float4 BaseFragment(Interpolators i) : SV_TARGET {
-        float3 n = SurfaceNormal(i);
+    float Occlusion(Interpolators i) {
         float occlusion = 1.0;
     #if defined(_OCCLUSIONMAP)
-        occlusion = lerp(1.0, tex2D(_OcclusionMap, i.uv).r, _OcclusionStrength);
+        float ao = tex2D(_OcclusionMap, GLTF_MAP_UV(i.uv, _OcclusionMap)).r;
+        occlusion = lerp(1.0, ao, _OcclusionStrength);
     #endif
+        return occlusion;
+    }
+
+    float3 Emission(Interpolators i) {
+    #if defined(_EMISSION)
+        return _EmissionColor.rgb * tex2D(_EmissionMap, GLTF_MAP_UV(i.uv, _EmissionMap)).rgb;
+    #else
+        return 0;
+    #endif
+    }
+
+    // The ambient light at the fragment: SH irradiance and the reflection probe's prefiltered
+    // radiance along the reflected view direction, at the mip of the surface's roughness
+    // (Unity_GlossyEnvironment), both times the occlusion.
+    UnityIndirect Ambient(Interpolators i, float3 n, float smoothness) {
+        float occlusion = Occlusion(i);
+        float3 v = SafeNormalize(UnityWorldSpaceViewDir(i.worldPos));
+        Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(smoothness, v, n, 0);
         UnityIndirect indirect;
         indirect.diffuse = ShadeSH9(float4(n, 1.0)) * occlusion;
-        indirect.specular = 0;
-        float4 c = ShadeLight(i, indirect);
-    #if defined(_EMISSION)
-        c.rgb += _EmissionColor.rgb * tex2D(_EmissionMap, i.uv).rgb;
-    #endif
+        indirect.specular = Unity_GlossyEnvironment(UNITY_PASS_TEXCUBE(unity_SpecCube0),
+                                                    unity_SpecCube0_HDR, g) * occlusion;
+        return indirect;
+    }
+
+    float4 BaseFragment(Interpolators i, bool front : SV_IsFrontFace) : SV_TARGET {
+        float3 n = SurfaceNormal(i, front);
+        UnityIndirect indirect = Ambient(i, n, ReadSurface(i).smoothness);
+        float4 c = ShadeLight(i, front, indirect);
+        c.rgb += Emission(i);
         return float4(ClampToHalfRange(c.rgb), c.a);
     }
 
@@ -157,15 +207,19 @@ Shader "Kiln/StandardMetallic"
     };
 
     // The surface into the G-buffer; RT3 gets what BaseFragment adds besides the main light:
-    // the SH ambient through the diffuse colour (UNITY_BRDF_PBS's indirect diffuse term) and the
-    // emission.
-    GBufferOutput DeferredFragment(Interpolators i) {
+    // UNITY_BRDF_PBS's ambient terms (SH through the diffuse colour, the probe through the
+    // Fresnel and surface reduction) with no direct light, and the emission.
+    GBufferOutput DeferredFragment(Interpolators i, bool front : SV_IsFrontFace) {
         MetallicSurface s = ReadSurface(i);
-        float3 n = SurfaceNormal(i);
-        float occlusion = 1.0;
-    #if defined(_OCCLUSIONMAP)
-        occlusion = lerp(1.0, tex2D(_OcclusionMap, i.uv).r, _OcclusionStrength);
-    #endif
+        float3 n = SurfaceNormal(i, front);
+        float occlusion = Occlusion(i);
+        UnityLight none;
+        none.color = 0;
+        none.dir = n;
+        none.ndotl = 0;
+        float3 v = SafeNormalize(UnityWorldSpaceViewDir(i.worldPos));
+        float3 ambient = UNITY_BRDF_PBS(s.diffuse, s.specular, s.oneMinusReflectivity,
+                                       s.smoothness, n, v, none, Ambient(i, n, s.smoothness)).rgb;
         UnityStandardData data;
         data.diffuseColor = s.diffuse;
         data.occlusion = occlusion;
@@ -174,19 +228,16 @@ Shader "Kiln/StandardMetallic"
         data.normalWorld = n;
         GBufferOutput o;
         UnityStandardDataToGbuffer(data, o.gBuffer0, o.gBuffer1, o.gBuffer2);
-        float3 emission = s.diffuse * ShadeSH9(float4(n, 1.0)) * occlusion;
-    #if defined(_EMISSION)
-        emission += _EmissionColor.rgb * tex2D(_EmissionMap, i.uv).rgb;
-    #endif
+        float3 emission = ambient + Emission(i);
         o.gBuffer3 = GBuffer_EncodeEmission(emission);
         return o;
     }
 
-    float4 AddFragment(Interpolators i) : SV_TARGET {
+    float4 AddFragment(Interpolators i, bool front : SV_IsFrontFace) : SV_TARGET {
         UnityIndirect none;
         none.diffuse = 0;
         none.specular = 0;
-        return ShadeLight(i, none);
+        return ShadeLight(i, front, none);
     }
     ENDCG
 

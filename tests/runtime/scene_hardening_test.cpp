@@ -9,78 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "kiln/runtime/scene.h"
+#include "runtime/gltf_files.h"
 
 namespace kiln::testing {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-// One triangle (positions in a data URI), its mesh on node 0, one scene with node 0.
-json Triangle() {
-    // -1,0,0  1,0,0  0,1,0 as little-endian float32.
-    const char* positions =
-        "data:application/octet-stream;base64,AACAvwAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA";
-    return json{{"asset", {{"version", "2.0"}}},
-                {"buffers", {{{"byteLength", 36}, {"uri", positions}}}},
-                {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
-                {"accessors",
-                 {{{"bufferView", 0},
-                   {"componentType", 5126},
-                   {"count", 3},
-                   {"type", "VEC3"},
-                   {"min", {-1, 0, 0}},
-                   {"max", {1, 1, 0}}}}},
-                {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
-                {"nodes", {{{"mesh", 0}}}},
-                {"scenes", {{{"nodes", {0}}}}},
-                {"scene", 0}};
-}
-
-struct Loaded {
-    std::optional<kiln::Error> error;
-    runtime::Scene scene;
-    DiagnosticList warnings;
-};
-
-fs::path ScratchDir() {
-    const fs::path dir = fs::temp_directory_path() / "kiln_scene_hardening";
-    fs::create_directories(dir);
-    return dir;
-}
-
-Loaded LoadFile(const fs::path& file) {
-    Loaded out;
-    Result<runtime::Scene> loaded = runtime::LoadGltf(file.string(), out.warnings);
-    if (loaded) {
-        out.scene = std::move(loaded).value();
-    } else {
-        out.error = loaded.error();
-    }
-    return out;
-}
-
-// Writes `text` as <test name><extension> and loads it.
-Loaded LoadText(const std::string& text, const std::string& extension = ".gltf") {
-    const fs::path file =
-        ScratchDir() /
-        (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + extension);
-    std::ofstream(file, std::ios::binary) << text;
-    return LoadFile(file);
-}
-
-Loaded Load(const json& gltf) {
-    return LoadText(gltf.dump());
-}
-
-std::string AllWarnings(const Loaded& l) {
-    std::string all;
-    for (const Diagnostic& w : l.warnings.all()) {
-        EXPECT_EQ(w.severity, Severity::kWarning);
-        all += w.message + "\n";
-    }
-    return all;
-}
 
 TEST(GltfHardening, TheTriangleLoads) {
     const Loaded l = Load(Triangle());
@@ -130,25 +65,26 @@ json SparseTriangle(int index, int base_view) {
     json g = Triangle();
     // A second buffer: one unsigned short index (then 2 padding bytes) and one VEC3 value.
     // Index `index`, value (5, 6, 7) as little-endian float32.
-    const unsigned char bytes[16] = {uint8_t(index), 0, 0, 0, 0, 0, 0xa0, 0x40,
-                                     0, 0, 0xc0, 0x40, 0, 0, 0xe0, 0x40};
+    const unsigned char bytes[16] = {uint8_t(index), 0,    0, 0, 0,    0,   0xa0, 0x40, 0, 0,
+                                     0xc0,           0x40, 0, 0, 0xe0, 0x40};
     static const char* b64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string enc;
     for (size_t i = 0; i < 16; i += 3) {
-        const uint32_t n = uint32_t(bytes[i]) << 16 | (i + 1 < 16 ? uint32_t(bytes[i + 1]) << 8 : 0) |
+        const uint32_t n = uint32_t(bytes[i]) << 16 |
+                           (i + 1 < 16 ? uint32_t(bytes[i + 1]) << 8 : 0) |
                            (i + 2 < 16 ? bytes[i + 2] : 0);
         enc += b64[n >> 18 & 63];
         enc += b64[n >> 12 & 63];
         enc += i + 1 < 16 ? b64[n >> 6 & 63] : '=';
         enc += i + 2 < 16 ? b64[n & 63] : '=';
     }
-    g["buffers"].push_back({{"byteLength", 16}, {"uri", "data:application/octet-stream;base64," + enc}});
+    g["buffers"].push_back(
+        {{"byteLength", 16}, {"uri", "data:application/octet-stream;base64," + enc}});
     g["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 0}, {"byteLength", 2}});
     g["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 4}, {"byteLength", 12}});
-    g["accessors"][0]["sparse"] = {
-        {"count", 1},
-        {"indices", {{"bufferView", 1}, {"componentType", 5123}}},
-        {"values", {{"bufferView", 2}}}};
+    g["accessors"][0]["sparse"] = {{"count", 1},
+                                   {"indices", {{"bufferView", 1}, {"componentType", 5123}}},
+                                   {"values", {{"bufferView", 2}}}};
     g["accessors"][0]["max"] = {5, 6, 7};
     if (base_view < 0) {
         g["accessors"][0].erase("bufferView");
@@ -344,8 +280,7 @@ TEST(GltfHardening, SidecarsAreBoundedRegularFiles) {
     ASSERT_FALSE(e.ok());
     EXPECT_EQ(e.error().code, DiagCode::kBadScene);
     // The .material reader's bounded JSON parser, with the position where it stopped.
-    EXPECT_NE(e.error().message.find("deep.kiln.json:1:"), std::string::npos)
-        << e.error().message;
+    EXPECT_NE(e.error().message.find("deep.kiln.json:1:"), std::string::npos) << e.error().message;
     EXPECT_NE(e.error().message.find("nesting deeper than 64 levels"), std::string::npos)
         << e.error().message;
 }

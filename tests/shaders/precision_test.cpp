@@ -22,11 +22,17 @@ struct Spirv {
     bool float16 = false;     // OpCapability Float16
     size_t relaxed = 0;       // RelaxedPrecision decorations
     size_t half_results = 0;  // instructions whose result type is a 16-bit float (vector)
+    // 16-bit float values an image access reads besides the image (coordinates, level, ...)
+    size_t half_image_operands = 0;
 };
+
+bool IsImageAccess(uint32_t op) {
+    return (op >= 87 && op <= 105) || (op >= 305 && op <= 320);  // OpImageSample* .. QueryLod
+}
 
 Spirv Inspect(const std::vector<uint32_t>& words) {
     Spirv s;
-    std::set<uint32_t> half_types;
+    std::set<uint32_t> half_types, half_values;
     for (size_t i = 5; i < words.size();) {
         const uint32_t count = words[i] >> 16, op = words[i] & 0xFFFF;
         if (count == 0 || i + count > words.size())
@@ -40,8 +46,14 @@ Spirv Inspect(const std::vector<uint32_t>& words) {
             half_types.insert(w[1]);
         else if (op == kOpDecorate && count == 3 && w[2] == kRelaxedPrecision)
             ++s.relaxed;
-        else if (count >= 3 && half_types.count(w[1]) && op != kOpTypeVector)
+        else if (count >= 3 && half_types.count(w[1]) && op != kOpTypeVector) {
             ++s.half_results;
+            half_values.insert(w[2]);
+        }
+        if (IsImageAccess(op)) {
+            for (uint32_t k = 4; k < count; ++k)
+                s.half_image_operands += half_values.count(w[k]);
+        }
         i += count;
     }
     return s;
@@ -58,6 +70,7 @@ Spirv CompileFragment(const std::string& body, Precision precision) {
     #pragma fragment frag
     float4 _C;
     half4 _H, _H2;
+    sampler2D _Tex;
     float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
     half4 frag() : SV_Target {
 )" + body + R"(
@@ -114,6 +127,20 @@ TEST(Precision, AFloatAssignedToAHalfNarrows) {
         CompileFragment("        half4 n = _C * 2.0;\n        return n * _H;", Precision::kHalf);
     EXPECT_TRUE(s.float16);
     EXPECT_GT(s.half_results, 0u);
+}
+
+// A level and coordinates computed in half are read by the sample in 32 bits: Vulkan allows no
+// binary16 image operands (without VK_AMD_gpu_shader_half_float_fetch) and llvmpipe aborts on
+// them; SPIRV-Tools' conversion would leave them half.
+TEST(Precision, ImageCoordinatesAndLevelsStay32Bit) {
+    const Spirv s = CompileFragment(
+        "        half lod = _H.x * _H2.x;\n"
+        "        half2 uv = _H.zw * _H2.zw;\n"
+        "        return tex2Dlod(_Tex, half4(uv, 0, lod)) * (_H * _H2);",
+        Precision::kHalf);
+    EXPECT_TRUE(s.float16);
+    EXPECT_GT(s.half_results, 0u);
+    EXPECT_EQ(s.half_image_operands, 0u);
 }
 
 TEST(Precision, EveryShippedShaderCompilesInEachPrecision) {

@@ -48,6 +48,7 @@ enum class DiagCode : uint16_t {
     kVariantTestFailed = 27,     // kiln test: a variant failed a check of the harness
     kNotFinite = 28,             // kiln stability: a non-finite value on an extreme input
     kOutsideBounds = 29,         // kiln stability: an error past the documented bound
+    kUnsupportedExtension = 30,  // a glTF file requires an extension Kiln does not support
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,

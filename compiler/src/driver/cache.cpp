@@ -20,7 +20,10 @@ namespace {
 constexpr uint32_t kEntryMagic = 0x4341434B;  // "KCAC"
 // 2: a stage whose entry point does not exist is an error (version 1 cached an empty module).
 // 3: the entry carries its key; the hash covers key and payload.
-constexpr uint32_t kEntryVersion = 3;
+// 4: --precision half keeps image coordinates and levels in 32 bits (KeepImageOperandsFloat):
+//    the same inputs compile to other modules. Bump it whenever that happens, so that entries
+//    of an older kiln are misses.
+constexpr uint32_t kEntryVersion = 4;
 constexpr uint32_t kSpirvMagic = 0x07230203;
 constexpr int64_t kStaleTemporarySeconds = 24 * 60 * 60;
 

@@ -50,6 +50,10 @@ enum Op : uint32_t {
     kOpDPdx = 207,
     kOpFwidthCoarse = 215,
     kOpPhi = 245,
+    kOpImageSampleImplicitLod = 87,  // through kOpImageQueryLod (105): every image access
+    kOpImageQueryLod = 105,
+    kOpImageSparseSampleImplicitLod = 305,  // through OpImageSparseRead (320)
+    kOpImageSparseRead = 320,
 };
 constexpr uint32_t kRelaxedPrecision = 0;
 
@@ -212,14 +216,10 @@ struct State {
 
 }  // namespace
 
-size_t MatchHlslPromotion(std::vector<uint32_t>& words) {
-    if (words.size() < 5)
-        return 0;
-    State st{words};
-    st.Parse();
-    st.JudgeLoads();
-    while (st.Sweep()) {
-    }
+namespace {
+
+// Rewrites `words` without the RelaxedPrecision decorations of ids `st` no longer holds relaxed.
+size_t DropUndecorated(const State& st, std::vector<uint32_t>& words) {
     std::vector<uint32_t> out(words.begin(), words.begin() + 5);
     out.reserve(words.size());
     size_t removed = 0;
@@ -234,6 +234,41 @@ size_t MatchHlslPromotion(std::vector<uint32_t>& words) {
     }
     words = std::move(out);
     return removed;
+}
+
+bool IsImageAccess(uint32_t opcode) {
+    return (opcode >= kOpImageSampleImplicitLod && opcode <= kOpImageQueryLod) ||
+           (opcode >= kOpImageSparseSampleImplicitLod && opcode <= kOpImageSparseRead);
+}
+
+}  // namespace
+
+size_t MatchHlslPromotion(std::vector<uint32_t>& words) {
+    if (words.size() < 5)
+        return 0;
+    State st{words};
+    st.Parse();
+    st.JudgeLoads();
+    while (st.Sweep()) {
+    }
+    return DropUndecorated(st, words);
+}
+
+size_t KeepImageOperandsFloat(std::vector<uint32_t>& words) {
+    if (words.size() < 5)
+        return 0;
+    State st{words};
+    st.Parse();
+    for (const Instruction& in : st.instructions) {
+        if (!IsImageAccess(in.opcode) || in.count < 5)
+            continue;
+        // After the result type, the result and the (sampled) image: coordinates, Dref or
+        // component, then the image operands. The mask among them is a literal; dropping the
+        // decoration of an id that happens to equal it only keeps that value in 32 bits.
+        for (size_t k = in.at + 4; k < in.at + in.count; ++k)
+            st.relaxed.erase(words[k]);
+    }
+    return DropUndecorated(st, words);
 }
 
 }  // namespace kiln::spirv

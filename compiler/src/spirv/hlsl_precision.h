@@ -22,6 +22,14 @@ namespace kiln::spirv {
 // Edits `words` (a valid module) in place; returns the number of decorations removed.
 size_t MatchHlslPromotion(std::vector<uint32_t>& words);
 
+// Removes RelaxedPrecision from every value an image access reads besides the image: its
+// coordinates, level of detail, bias, gradients, offsets and Dref. SPIRV-Tools'
+// convert-relaxed-to-half converts only a Dref back to 32 bits and leaves binary16 coordinates
+// and levels, which Vulkan does not allow without VK_AMD_gpu_shader_half_float_fetch (LLVM 15 in
+// llvmpipe aborts on them). Undecorated, those values are computed in 32 bits from their
+// relaxed inputs. Run after legalization (on SSA values), before the conversion.
+size_t KeepImageOperandsFloat(std::vector<uint32_t>& words);
+
 }  // namespace kiln::spirv
 
 #endif  // KILN_SPIRV_HLSL_PRECISION_H_

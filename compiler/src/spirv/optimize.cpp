@@ -54,14 +54,25 @@ bool Optimize(std::vector<uint32_t>& words,
         MatchHlslPromotion(words);
     spvtools::Optimizer opt(kEnv);
     opt.SetMessageConsumer(Collect(messages));
-    opt.RegisterLegalizationPasses();
     if (half_arithmetic) {
+        // Legalized in a run of its own: image accesses then read SSA values, whose
+        // decorations KeepImageOperandsFloat drops before the conversion sees them.
+        spvtools::Optimizer legalize(kEnv);
+        legalize.SetMessageConsumer(Collect(messages));
+        legalize.RegisterLegalizationPasses();
+        std::vector<uint32_t> legal;
+        if (!legalize.Run(words.data(), words.size(), &legal, options))
+            return false;
+        words = std::move(legal);
+        KeepImageOperandsFloat(words);
         // After legalization has inlined and removed function-scope loads and stores, as the
         // pass asks; the clean-up folds the conversions it inserts.
         opt.RegisterPass(spvtools::CreateConvertRelaxedToHalfPass())
             .RegisterPass(spvtools::CreateSimplificationPass())
             .RegisterPass(spvtools::CreateRedundancyEliminationPass())
             .RegisterPass(spvtools::CreateAggressiveDCEPass());
+    } else {
+        opt.RegisterLegalizationPasses();
     }
     if (level == OptLevel::kPerformance)
         opt.RegisterPerformancePasses();

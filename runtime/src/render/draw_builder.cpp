@@ -1,5 +1,8 @@
 #include "render/draw_builder.h"
 
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
 #include <algorithm>
 
 #include "kiln/pack/engine_names.h"
@@ -78,6 +81,7 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
                              uint32_t pass,
                              uint32_t variant,
                              bool additive,
+                             bool mirrored,
                              const std::vector<std::string>& chosen,
                              Binding& out) {
     const pack::Pack& pack = s_.packs[m.pack]->pack;
@@ -102,6 +106,7 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
         return Error{DiagCode::kRenderFailed,
                      m.name + ": pass '" + pack::PassLabel(pack, pass) + "': " + e.error().message};
     }
+    state.front_clockwise = mirrored;
     if (additive) {
         // The frame's alpha is coverage (docs/runtime.md): an additive pass adds light, and
         // its Blend One One would add 1 to the alpha per light.
@@ -128,7 +133,9 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
 // A frame target sampled by name (the light pass's G-buffer and depth): nearest texels, clamped.
 Status DrawBuilder::TargetTexture(uint32_t target, pack::ResourceKind kind, Draw::Write& out) {
     VkSampler sampler = VK_NULL_HANDLE;
-    if (Status e = s_.Sampler(false, true, sampler, true); !e.ok()) {
+    if (Status e =
+            s_.Sampler(TextureWrap::kClampToEdge, TextureWrap::kClampToEdge, true, sampler, true);
+        !e.ok()) {
         return e;
     }
     out.type = kind == pack::ResourceKind::kSeparateImage ? VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE
@@ -272,10 +279,15 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
     if (!additive && std::count(chosen.begin(), chosen.end(), pack::kKeywordVertexLight)) {
         ++stats_.vertex_lit;
     }
-    auto [it, fresh] = bindings_.try_emplace({&m, pass, choice.variant, additive});
+    // glTF 2.0, 3.5.3: a node whose transform has a negative determinant has its winding
+    // reversed.
+    const bool mirrored =
+        request.instance && glm::determinant(glm::mat3(request.instance->world)) < 0.0f;
+    auto [it, fresh] = bindings_.try_emplace({&m, pass, choice.variant, additive, mirrored});
     Binding& binding = it->second;
     if (fresh) {
-        if (Status e = Pipeline(m, pass, choice.variant, additive, chosen, binding); !e.ok()) {
+        if (Status e = Pipeline(m, pass, choice.variant, additive, mirrored, chosen, binding);
+            !e.ok()) {
             bindings_.erase(it);
             return e;
         }

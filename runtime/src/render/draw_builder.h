@@ -58,6 +58,7 @@ class DrawBuilder {
                     uint32_t pass,
                     uint32_t variant,
                     bool additive,
+                    bool mirrored,
                     const std::vector<std::string>& chosen,
                     Binding& out);
     Status Textures(const render::MaterialInstance& m, const pack::VariantRec& v, Binding& out);
@@ -78,7 +79,8 @@ class DrawBuilder {
     std::map<std::string, uint32_t, std::less<>> target_textures_;
     std::vector<uint8_t> uniforms_;
     VkDeviceSize alignment_ = 256;
-    std::map<std::tuple<const render::MaterialInstance*, uint32_t, uint32_t, bool>, Binding>
+    // (material, pass, variant, additive, mirrored)
+    std::map<std::tuple<const render::MaterialInstance*, uint32_t, uint32_t, bool, bool>, Binding>
         bindings_;
 };
 

@@ -35,17 +35,17 @@ Status MaterialCache::For(const std::vector<const pack::Pack*>& packs,
             return e;
         }
     } else {
+        const char* wanted = gltf.unlit ? pack::kShaderUnlit : pack::kShaderStandardMetallic;
         bool found = false;
         for (uint32_t p = 0; p < packs.size() && !found; ++p) {
-            if (auto shader = packs[p]->FindShader(pack::kShaderStandardMetallic)) {
+            if (auto shader = packs[p]->FindShader(wanted)) {
                 InstanceFromDefaults(*packs[p], p, *shader, color, inst);
                 found = true;
             }
         }
         if (!found) {
             return Error{DiagCode::kRenderFailed,
-                         "glTF material '" + gltf.name + "' needs shader '" +
-                             std::string(pack::kShaderStandardMetallic) +
+                         "glTF material '" + gltf.name + "' needs shader '" + wanted +
                              "', which is in none of the loaded packs (add the shipped "
                              "materials.kpack)"};
         }

@@ -165,7 +165,7 @@ Values FrameValues(const runtime::Scene& scene,
                                               : sky);
     v["unity_IndirectSpecColor"] = Vec(glm::vec4(MeanAmbient(scene), 1));
     v["glstate_lightmodel_ambient"] = Vec(sky * 0.5f);
-    // The reflection probe is the ambient sky itself (render/textures.cpp): a linear float
+    // The reflection probe is the ambient itself (render/reflection_probe.h): a linear float
     // cube (DecodeHDR multiplier 1, exponent 1), one probe (blend weight BoxMin.w = 1), no box
     // projection (ProbePosition.w = 0).
     for (const char* probe : {"unity_SpecCube0", "unity_SpecCube1"}) {

@@ -191,10 +191,16 @@ void ApplyGltfMaterial(const runtime::SceneMaterial& g, MaterialInstance& m) {
             return false;
         }
         TextureBinding& t = m.textures[name];
+        // KHR_texture_transform: scale and offset as Unity's tiling and offset, the rotation
+        // and the UV set beside them.
+        set((std::string(name) + "_ST").c_str(),
+            {ref.uv_scale.x, ref.uv_scale.y, ref.offset.x, ref.offset.y});
+        set((std::string(name) + "_UV").c_str(), {float(ref.texcoord), ref.rotation, 0.0f, 0.0f});
         t.source = TextureBinding::Source::kSceneImage;
         t.image = ref.image;
         t.srgb = srgb;
-        t.repeat = ref.repeat;
+        t.wrap_u = ref.wrap_s;
+        t.wrap_v = ref.wrap_t;
         t.nearest = ref.nearest;
         if (keyword) {
             m.keywords.emplace_back(keyword);
@@ -202,21 +208,7 @@ void ApplyGltfMaterial(const runtime::SceneMaterial& g, MaterialInstance& m) {
         return true;
     };
     set("_Color", {g.base_color.r, g.base_color.g, g.base_color.b, g.base_color.a});
-    set("_Metallic", {g.metallic});
-    set("_Roughness", {g.roughness});
     texture("_MainTex", g.base_color_texture, true, nullptr);
-    texture("_MetallicGlossMap", g.metallic_roughness_texture, false, "_METALLICGLOSSMAP");
-    if (texture("_BumpMap", g.normal_texture, false, "_NORMALMAP")) {
-        set("_BumpScale", {g.normal_texture.scale});
-    }
-    if (texture("_OcclusionMap", g.occlusion_texture, false, "_OCCLUSIONMAP")) {
-        set("_OcclusionStrength", {g.occlusion_texture.scale});
-    }
-    if (g.emissive != glm::vec3(0.0f)) {
-        set("_EmissionColor", {g.emissive.r, g.emissive.g, g.emissive.b, 1.0f});
-        texture("_EmissionMap", g.emissive_texture, true, nullptr);
-        m.keywords.emplace_back("_EMISSION");
-    }
     if (g.alpha_mode == runtime::AlphaMode::kMask) {
         m.keywords.emplace_back("_ALPHATEST_ON");
         set("_Cutoff", {g.alpha_cutoff});
@@ -228,6 +220,23 @@ void ApplyGltfMaterial(const runtime::SceneMaterial& g, MaterialInstance& m) {
     }
     if (g.double_sided) {
         m.overrides.push_back({"Cull", {"Off"}});
+    }
+    if (g.unlit) {
+        return;  // KHR_materials_unlit: the base colour alone (Kiln/Unlit)
+    }
+    set("_Metallic", {g.metallic});
+    set("_Roughness", {g.roughness});
+    texture("_MetallicGlossMap", g.metallic_roughness_texture, false, "_METALLICGLOSSMAP");
+    if (texture("_BumpMap", g.normal_texture, false, "_NORMALMAP")) {
+        set("_BumpScale", {g.normal_texture.scale});
+    }
+    if (texture("_OcclusionMap", g.occlusion_texture, false, "_OCCLUSIONMAP")) {
+        set("_OcclusionStrength", {g.occlusion_texture.scale});
+    }
+    if (g.emissive != glm::vec3(0.0f)) {
+        set("_EmissionColor", {g.emissive.r, g.emissive.g, g.emissive.b, 1.0f});
+        texture("_EmissionMap", g.emissive_texture, true, nullptr);
+        m.keywords.emplace_back("_EMISSION");
     }
 }
 

@@ -19,15 +19,17 @@
 namespace kiln::render {
 
 struct TextureBinding {
-    // kAmbient: the scene's ambient radiance as a constant environment (the reflection-probe
-    // cube unity_SpecCube0/1 of a uniform sky).
+    // kAmbient: the scene's ambient radiance as the environment (the reflection-probe cube
+    // unity_SpecCube0/1, prefiltered per roughness mip; render/reflection_probe.h).
     enum class Source { kDefault, kSceneImage, kFile, kAmbient };
     Source source = Source::kDefault;
     std::string default_name = "white";  // "white", "black", "gray", "bump", "red"
     int image = -1;                      // kSceneImage
     std::string file;                    // kFile
     bool srgb = true;
-    bool repeat = true, nearest = false;
+    runtime::TextureWrap wrap_u = runtime::TextureWrap::kRepeat,
+                         wrap_v = runtime::TextureWrap::kRepeat;
+    bool nearest = false;
 };
 
 struct MaterialInstance {
@@ -56,8 +58,10 @@ Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
                                 const runtime::ColorPipeline& color,
                                 MaterialInstance& out);
 
-// A glTF metallic-roughness material mapped onto Kiln/StandardMetallic (factors are linear in
-// glTF and written as they are; maps switch on their shader_feature keywords).
+// A glTF metallic-roughness material mapped onto Kiln/StandardMetallic, or a KHR_materials_unlit
+// one onto Kiln/Unlit (factors are linear in glTF and written as they are; maps switch on their
+// shader_feature keywords; each map's KHR_texture_transform and UV set go to <map>_ST and
+// <map>_UV, materials/GltfTexture.cginc).
 void ApplyGltfMaterial(const runtime::SceneMaterial& m, MaterialInstance& inout);
 
 // Writes a uniform or push-constant block: each member whose name `lookup` knows gets that

@@ -136,8 +136,28 @@ Status Renderer::State::GetPipeline(uint32_t pack,
     return {};
 }
 
-Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out, bool nearest_mips) {
-    const auto key = std::tuple{repeat, nearest, nearest_mips};
+namespace {
+
+VkSamplerAddressMode AddressMode(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::kClampToEdge:
+            return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        case TextureWrap::kMirroredRepeat:
+            return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case TextureWrap::kRepeat:
+            break;
+    }
+    return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+}  // namespace
+
+Status Renderer::State::Sampler(TextureWrap u,
+                                TextureWrap v,
+                                bool nearest,
+                                VkSampler& out,
+                                bool nearest_mips) {
+    const auto key = std::tuple{u, v, nearest, nearest_mips};
     auto it = samplers.find(key);
     if (it != samplers.end()) {
         out = it->second;
@@ -147,9 +167,8 @@ Status Renderer::State::Sampler(bool repeat, bool nearest, VkSampler& out, bool 
     info.magFilter = nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
     info.minFilter = nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
     info.mipmapMode = nearest_mips ? VK_SAMPLER_MIPMAP_MODE_NEAREST : VK_SAMPLER_MIPMAP_MODE_LINEAR;
-    const VkSamplerAddressMode mode =
-        repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.addressModeU = info.addressModeV = info.addressModeW = mode;
+    info.addressModeU = AddressMode(u);
+    info.addressModeV = info.addressModeW = AddressMode(v);
     info.maxLod = VK_LOD_CLAMP_NONE;
     VkSampler sampler = VK_NULL_HANDLE;
     if (VkResult r = vkCreateSampler(context.device, &info, nullptr, &sampler); r != VK_SUCCESS) {

@@ -90,7 +90,8 @@ struct Renderer::State {
     // (render passes that differ only in load operations and layouts are compatible).
     std::map<std::tuple<vk::TargetFormats, bool, bool>, VkRenderPass> render_passes;
     std::deque<PipelineEntry> pipelines;  // deque: entries are handed out by pointer
-    std::map<std::tuple<bool, bool, bool>, VkSampler> samplers;  // (repeat, nearest, nearest mips)
+    // (wrap u, wrap v, nearest, nearest mips)
+    std::map<std::tuple<TextureWrap, TextureWrap, bool, bool>, VkSampler> samplers;
     std::map<std::pair<std::string, vk::ImageShape>, vk::Image> default_textures;
     DiagnosticList notes;  // pipeline-cache warnings etc., reported with the next frame
     std::set<pack::UsageMaterial> used_materials;       // every frame's, for the usage file
@@ -114,7 +115,11 @@ struct Renderer::State {
     SceneResources& ResourcesFor(const Scene& scene, const ColorPipeline& color);
     // `nearest_mips`: no filtering between mip levels either (what a depth target, which has no
     // linear filtering, must be sampled with).
-    Status Sampler(bool repeat, bool nearest, VkSampler& out, bool nearest_mips = false);
+    Status Sampler(TextureWrap u,
+                   TextureWrap v,
+                   bool nearest,
+                   VkSampler& out,
+                   bool nearest_mips = false);
     // Unity's named defaults ("white", "black", "gray", "bump", "red"; others are "gray") in
     // the shape the shader declares.
     Status DefaultTexture(const std::string& name, vk::ImageShape shape, const vk::Image*& out);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/frame_values.h"
+#include "render/reflection_probe.h"
 
 namespace kiln::render {
 namespace {
@@ -78,8 +79,8 @@ std::optional<vk::ImageShape> ShapeOf(const pack::ResourceRec& resource) {
 
 TextureBinding UnsetTexture(std::string_view name) {
     TextureBinding binding;
-    // Kiln has no reflection probes: the environment is the scene's uniform ambient sky, which is
-    // also what the spherical harmonics (unity_SH*) hold, so diffuse and specular ambient agree.
+    // The one reflection probe is the scene's ambient (render/reflection_probe.h), which is also
+    // what the spherical harmonics (unity_SH*) hold, so diffuse and specular ambient agree.
     if (name == "unity_SpecCube0" || name == "unity_SpecCube1") {
         binding.source = TextureBinding::Source::kAmbient;
     }
@@ -108,39 +109,45 @@ Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
     auto it = ambient_.find(shape);
     if (it == ambient_.end()) {
         // Linear radiance above 1 needs a float texel; RGBA16F is filterable on every device.
-        // A trilight cube has the sky on +Y, the ground on -Y and the equator on the sides; a
-        // sky's cube each face's mean radiance; other shapes hold the mean radiance.
-        const bool cube = shape == vk::ImageShape::kCube || shape == vk::ImageShape::kCubeArray;
-        const bool trilight = scene_->ambient_mode == runtime::AmbientMode::kTrilight;
-        std::vector<glm::vec3> faces;
-        if (const runtime::Sky* sky = SkyOf(*scene_); cube && sky) {
-            faces.assign(sky->faces.begin(), sky->faces.end());
-        } else if (cube && trilight) {
-            const glm::vec3 e = scene_->ambient_equator;
-            faces = {e, e, scene_->ambient, scene_->ambient_ground, e, e};
-        } else {
-            faces = {MeanAmbient(*scene_)};
-        }
-        std::vector<uint8_t> texels;
-        for (const glm::vec3& face : faces) {
-            const glm::vec4 radiance(face, 1.0f);
+        // A cube is the reflection probe (render/reflection_probe.h), prefiltered per roughness
+        // mip; other shapes hold the mean radiance.
+        auto half4 = [](const glm::vec3& radiance, std::vector<uint8_t>& bytes_out) {
             std::array<uint16_t, 4> half{};
-            for (int i = 0; i < 4; ++i) {
+            for (int i = 0; i < 3; ++i) {
                 // guard: beyond binary16's largest value the texel would be infinite
                 half[size_t(i)] = glm::packHalf1x16(std::min(radiance[i], 65504.0f));
             }
+            half[3] = glm::packHalf1x16(1.0f);
             const auto* bytes = reinterpret_cast<const uint8_t*>(half.data());
-            texels.insert(texels.end(), bytes, bytes + 8);
-        }
+            bytes_out.insert(bytes_out.end(), bytes, bytes + 8);
+        };
+        std::vector<uint8_t> texels;
         vk::Image image;
-        if (Status e = vk::CreateConstantImage(s_.context, shape, VK_FORMAT_R16G16B16A16_SFLOAT,
-                                               texels, image);
-            !e.ok()) {
-            return e;
+        if (shape == vk::ImageShape::kCube || shape == vk::ImageShape::kCubeArray) {
+            const ReflectionProbe probe = MakeReflectionProbe(*scene_);
+            for (const std::vector<glm::vec3>& level : probe.texels) {
+                for (const glm::vec3& t : level) {
+                    half4(t, texels);
+                }
+            }
+            if (Status e = vk::CreateCubeImage(s_.context, shape, probe.size, probe.mips,
+                                               VK_FORMAT_R16G16B16A16_SFLOAT, texels, image);
+                !e.ok()) {
+                return e;
+            }
+        } else {
+            half4(MeanAmbient(*scene_), texels);
+            if (Status e = vk::CreateConstantImage(s_.context, shape, VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                   texels, image);
+                !e.ok()) {
+                return e;
+            }
         }
         it = ambient_.emplace(shape, image).first;
     }
-    if (Status e = s_.Sampler(false, false, out.sampler); !e.ok()) {
+    if (Status e = s_.Sampler(runtime::TextureWrap::kClampToEdge,
+                              runtime::TextureWrap::kClampToEdge, false, out.sampler);
+        !e.ok()) {
         return e;
     }
     out.view = it->second.view;
@@ -155,7 +162,9 @@ Status FrameTextures::Default(const TextureBinding& binding,
     if (Status e = s_.DefaultTexture(binding.default_name, shape, image); !e.ok()) {
         return e;
     }
-    if (Status e = s_.Sampler(true, false, out.sampler); !e.ok()) {
+    if (Status e = s_.Sampler(runtime::TextureWrap::kRepeat, runtime::TextureWrap::kRepeat, false,
+                              out.sampler);
+        !e.ok()) {
         return e;
     }
     out.view = image->view;
@@ -192,7 +201,8 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
     } else {
         key = binding.file;
     }
-    if (Status e = s_.Sampler(binding.repeat, binding.nearest, out.sampler); !e.ok()) {
+    if (Status e = s_.Sampler(binding.wrap_u, binding.wrap_v, binding.nearest, out.sampler);
+        !e.ok()) {
         return e;
     }
     auto it = images_.find({key, binding.srgb});

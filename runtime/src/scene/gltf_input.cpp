@@ -6,6 +6,7 @@
 
 #include "kiln/base/bytes.h"
 #include "kiln/base/files.h"
+#include "scene/gltf_extensions.h"
 
 namespace kiln::runtime {
 namespace {
@@ -101,13 +102,20 @@ Status LoadGltfModel(const std::string& path, tinygltf::Model& model, std::strin
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, p, n, dir)
                            : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), n, dir);
     if (!ok) {
+        // tinygltf fails on some required extensions (Draco's accessors have no bufferView)
+        // before saying why: the extension is the better message.
+        if (Status required =
+                CheckRequiredExtensions(path, RequiredExtensionsOf(JsonOf(data, binary)));
+            !required.ok()) {
+            return required;
+        }
         std::string why;
         for (const std::string& line : MessageLines(err))
             why += (why.empty() ? "" : "; ") + line;
         return Error{DiagCode::kBadScene,
                      path + ": " + (why.empty() ? std::string("not a glTF file") : why)};
     }
-    return {};
+    return CheckRequiredExtensions(path, model.extensionsRequired);
 }
 
 }  // namespace kiln::runtime

@@ -30,7 +30,9 @@ size_t JsonDepth(std::string_view json, size_t limit);
 // tinygltf's messages, which end with newlines, one per line.
 std::vector<std::string> MessageLines(const std::string& text);
 
-// Loads `path` (.gltf, or .glb by extension) into `model`; tinygltf's warnings go to `warn`.
+// Loads `path` (.gltf, or .glb by extension) into `model`; tinygltf's warnings go to `warn`. A
+// required extension Kiln does not support is an error (K0030, scene/gltf_extensions.h), also
+// where tinygltf itself fails on the file.
 Status LoadGltfModel(const std::string& path, tinygltf::Model& model, std::string& warn);
 
 }  // namespace kiln::runtime

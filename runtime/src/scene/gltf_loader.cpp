@@ -13,9 +13,12 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
 
 #include "scene/accessors.h"
+#include "scene/gltf_extensions.h"
 #include "scene/gltf_input.h"
+#include "scene/gltf_material.h"
 #include "scene/node_tree.h"
 
 namespace kiln::runtime {
@@ -23,18 +26,54 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// Errors and warnings name `path` and `where` ("mesh M primitive P").
+const char* ModeName(int mode) {
+    switch (mode) {
+        case TINYGLTF_MODE_POINTS:
+            return "points";
+        case TINYGLTF_MODE_LINE:
+            return "lines";
+        case TINYGLTF_MODE_LINE_LOOP:
+            return "line loops";
+        case TINYGLTF_MODE_LINE_STRIP:
+            return "line strips";
+        default:
+            return "an unknown mode";
+    }
+}
+
+// A triangle strip or fan's indices as a triangle list (glTF 2.0, 3.7.2.1: strip triangle i is
+// {v_i, v_i+(1+i%2), v_i+(2-i%2)}, keeping every triangle's winding; fan triangle i is
+// {v_i+1, v_i+2, v_0}).
+std::vector<uint32_t> TriangleList(int mode, const std::vector<uint32_t>& in) {
+    std::vector<uint32_t> out;
+    if (in.size() < 3) {
+        return out;
+    }
+    out.reserve((in.size() - 2) * 3);
+    for (size_t i = 0; i + 2 < in.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+            out.insert(out.end(), {in[i + 1], in[i + 2], in[0]});
+        } else {
+            out.insert(out.end(), {in[i], in[i + 1 + i % 2], in[i + 2 - i % 2]});
+        }
+    }
+    return out;
+}
+
+// Errors and warnings name `path` and `where` ("mesh M primitive P"). A primitive of points or
+// lines is skipped and counted in `skipped` by mode (warned about once per mode by the caller).
 Status ReadPrimitive(const tinygltf::Model& m,
                      const tinygltf::Primitive& p,
                      const std::string& path,
                      const std::string& where,
                      Primitive& out,
+                     std::map<int, size_t>& skipped,
                      DiagnosticList& diags) {
     const std::string at = path + ": " + where;
-    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
-        diags.Warning(
-            DiagCode::kSceneContentIgnored, path, kNoPosition,
-            where + ": primitive mode " + std::to_string(p.mode) + " is not triangles; skipped");
+    const bool strip = p.mode == TINYGLTF_MODE_TRIANGLE_STRIP;
+    const bool fan = p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES && !strip && !fan) {
+        ++skipped[p.mode];
         return {};
     }
     auto attr = [&](const char* name) {
@@ -120,6 +159,9 @@ Status ReadPrimitive(const tinygltf::Model& m,
             out.indices[i] = uint32_t(i);
         }
     }
+    if (strip || fan) {
+        out.indices = TriangleList(p.mode, out.indices);
+    }
     out.indices.resize(out.indices.size() / 3 * 3);
     for (uint32_t& index : out.indices) {
         if (index >= n) {
@@ -153,61 +195,6 @@ Status ReadPrimitive(const tinygltf::Model& m,
         GenerateTangents(out);
     }
     return {};
-}
-
-TextureRef ReadTextureRef(const tinygltf::Model& m, int texture, int texcoord, float scale) {
-    TextureRef ref;
-    if (texture < 0 || size_t(texture) >= m.textures.size()) {
-        return ref;
-    }
-    const tinygltf::Texture& t = m.textures[size_t(texture)];
-    if (t.source < 0 || size_t(t.source) >= m.images.size()) {
-        return ref;
-    }
-    ref.image = t.source;
-    ref.texcoord = texcoord;
-    ref.scale = scale;
-    if (t.sampler >= 0 && size_t(t.sampler) < m.samplers.size()) {
-        const tinygltf::Sampler& s = m.samplers[size_t(t.sampler)];
-        ref.repeat = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-        ref.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
-    }
-    return ref;
-}
-
-SceneMaterial ReadMaterial(const tinygltf::Model& m, const tinygltf::Material& g) {
-    SceneMaterial s;
-    s.name = g.name;
-    const auto& pbr = g.pbrMetallicRoughness;
-    for (int i = 0; i < 4 && size_t(i) < pbr.baseColorFactor.size(); ++i) {
-        s.base_color[i] = float(pbr.baseColorFactor[size_t(i)]);
-    }
-    s.metallic = float(pbr.metallicFactor);
-    s.roughness = float(pbr.roughnessFactor);
-    for (int i = 0; i < 3 && size_t(i) < g.emissiveFactor.size(); ++i) {
-        s.emissive[i] = float(g.emissiveFactor[size_t(i)]);
-    }
-    if (auto it = g.extensions.find("KHR_materials_emissive_strength"); it != g.extensions.end()) {
-        const tinygltf::Value& strength = it->second.Get("emissiveStrength");
-        if (strength.IsNumber()) {
-            s.emissive *= float(strength.GetNumberAsDouble());
-        }
-    }
-    s.base_color_texture =
-        ReadTextureRef(m, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, 1);
-    s.metallic_roughness_texture = ReadTextureRef(m, pbr.metallicRoughnessTexture.index,
-                                                  pbr.metallicRoughnessTexture.texCoord, 1);
-    s.normal_texture = ReadTextureRef(m, g.normalTexture.index, g.normalTexture.texCoord,
-                                      float(g.normalTexture.scale));
-    s.occlusion_texture = ReadTextureRef(m, g.occlusionTexture.index, g.occlusionTexture.texCoord,
-                                         float(g.occlusionTexture.strength));
-    s.emissive_texture = ReadTextureRef(m, g.emissiveTexture.index, g.emissiveTexture.texCoord, 1);
-    s.alpha_mode = g.alphaMode == "MASK"    ? AlphaMode::kMask
-                   : g.alphaMode == "BLEND" ? AlphaMode::kBlend
-                                            : AlphaMode::kOpaque;
-    s.alpha_cutoff = float(g.alphaCutoff);
-    s.double_sided = g.doubleSided;
-    return s;
 }
 
 // Checks one KHR_lights_punctual light; empty when valid.
@@ -292,9 +279,11 @@ Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
         }
         scene.images.push_back(std::move(si));
     }
-    for (const tinygltf::Material& g : model.materials) {
-        scene.materials.push_back(ReadMaterial(model, g));
+    WarnIgnoredFeatures(model, path, diags);
+    for (size_t i = 0; i < model.materials.size(); ++i) {
+        scene.materials.push_back(ReadGltfMaterial(model, i, path, diags));
     }
+    std::map<int, size_t> skipped;  // primitives of points and lines, by mode
     for (size_t mi = 0; mi < model.meshes.size(); ++mi) {
         Mesh mesh;
         mesh.name = model.meshes[mi].name;
@@ -302,8 +291,8 @@ Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
             Primitive prim;
             const std::string where =
                 "mesh " + std::to_string(mi) + " primitive " + std::to_string(pi);
-            if (Status read =
-                    ReadPrimitive(model, model.meshes[mi].primitives[pi], path, where, prim, diags);
+            if (Status read = ReadPrimitive(model, model.meshes[mi].primitives[pi], path, where,
+                                            prim, skipped, diags);
                 !read.ok()) {
                 return read.error();
             }
@@ -313,6 +302,11 @@ Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
             }
         }
         scene.meshes.push_back(std::move(mesh));
+    }
+    for (const auto& [mode, count] : skipped) {
+        diags.Warning(DiagCode::kSceneContentIgnored, path, kNoPosition,
+                      std::to_string(count) + " primitive(s) of " + ModeName(mode) + " (mode " +
+                          std::to_string(mode) + ") skipped: Kiln draws triangles only");
     }
     // Lights: validated once; nodes refer to them by index.
     std::vector<std::string> light_problem(model.lights.size());

@@ -282,8 +282,9 @@ Status CreatePipeline(const Context& c,
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = state.cull;
     // The projection is right-handed and the viewport is flipped (negative height), so glTF's
-    // counter-clockwise front faces stay counter-clockwise.
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    // counter-clockwise front faces stay counter-clockwise; a mirroring transform reverses them.
+    raster.frontFace =
+        state.front_clockwise ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.depthBiasEnable = state.offset_factor != 0 || state.offset_units != 0;
     raster.depthBiasSlopeFactor = state.offset_factor;
     raster.depthBiasConstantFactor = state.offset_units;

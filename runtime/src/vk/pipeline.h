@@ -40,6 +40,9 @@ struct StencilFace {
 // The fixed-function state of one draw, Unity's defaults until a pass or material says otherwise.
 struct RenderState {
     VkCullModeFlags cull = VK_CULL_MODE_BACK_BIT;
+    // Clockwise front faces: an object whose transform mirrors it (negative determinant), so
+    // that culling and SV_IsFrontFace see its faces as the file meant.
+    bool front_clockwise = false;
     bool depth_test = true;
     VkCompareOp ztest = VK_COMPARE_OP_LESS_OR_EQUAL;
     bool zwrite = true;

@@ -265,6 +265,44 @@ Status CreateTexture(const Context& c,
     return {};
 }
 
+namespace {
+
+// Copies `texels` into `img` (in UNDEFINED layout) by `copies` and leaves it in
+// SHADER_READ_ONLY_OPTIMAL for `out`; on failure `img` is destroyed.
+Status FillSampledImage(const Context& c,
+                        Image& img,
+                        std::span<const uint8_t> texels,
+                        const std::vector<VkBufferImageCopy>& copies,
+                        Image& out) {
+    Buffer staging;
+    if (Status e = CreateBufferWithData(c, texels, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+        !e.ok()) {
+        DestroyImage(c, img);
+        return e;
+    }
+    auto e = SubmitOnce(c, [&](VkCommandBuffer cmd) {
+        const auto color = VK_IMAGE_ASPECT_COLOR_BIT;
+        ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        vkCmdCopyBufferToImage(cmd, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               uint32_t(copies.size()), copies.data());
+        ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+    });
+    DestroyBuffer(c, staging);
+    if (!e.ok()) {
+        DestroyImage(c, img);
+        return e;
+    }
+    out = img;
+    return {};
+}
+
+}  // namespace
+
 Status CreateConstantImage(const Context& c,
                            ImageShape shape,
                            VkFormat format,
@@ -312,34 +350,64 @@ Status CreateConstantImage(const Context& c,
             texels.insert(texels.end(), texel.begin(), texel.begin() + texel_size);
         }
     }
-    Buffer staging;
-    if (Status e = CreateBufferWithData(c, texels, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
-        !e.ok()) {
-        DestroyImage(c, img);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers};
+    copy.imageExtent = {1, 1, 1};
+    return FillSampledImage(c, img, texels, {copy}, out);
+}
+
+Status CreateCubeImage(const Context& c,
+                       ImageShape shape,
+                       uint32_t size,
+                       uint32_t mips,
+                       VkFormat format,
+                       std::span<const uint8_t> texels,
+                       Image& out) {
+    if (shape == ImageShape::kCubeArray && !c.image_cube_array) {
+        return Error{DiagCode::kRenderFailed,
+                     "the device cannot sample cube-map arrays (imageCubeArray)"};
+    }
+    const size_t texel_size = format == VK_FORMAT_R32G32B32A32_SFLOAT ? 16u : 8u;
+    size_t expected = 0;
+    for (uint32_t m = 0; m < mips; ++m) {
+        const size_t n = std::max(1u, size >> m);
+        expected += 6 * n * n * texel_size;
+    }
+    if (size == 0 || mips == 0 || texels.size() != expected) {
+        return Error{DiagCode::kRenderFailed, "a cube image's texels do not match its size"};
+    }
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {size, size, 1};
+    info.mipLevels = mips;
+    info.arrayLayers = 6;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    Image img;
+    img.format = format;
+    img.width = img.height = size;
+    img.mip_levels = mips;
+    const VkImageViewType view =
+        shape == ImageShape::kCubeArray ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE;
+    if (Status e = CreateImageAndView(c, info, view, VK_IMAGE_ASPECT_COLOR_BIT, img); !e.ok()) {
         return e;
     }
-    auto e = SubmitOnce(c, [&](VkCommandBuffer cmd) {
-        const auto color = VK_IMAGE_ASPECT_COLOR_BIT;
-        ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    std::vector<VkBufferImageCopy> copies;
+    VkDeviceSize offset = 0;
+    for (uint32_t m = 0; m < mips; ++m) {
+        const uint32_t n = std::max(1u, size >> m);
         VkBufferImageCopy copy{};
-        copy.imageSubresource = {color, 0, 0, layers};
-        copy.imageExtent = {1, 1, 1};
-        vkCmdCopyBufferToImage(cmd, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                               1, &copy);
-        ImageBarrier(cmd, img.image, color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                     VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
-    });
-    DestroyBuffer(c, staging);
-    if (!e.ok()) {
-        DestroyImage(c, img);
-        return e;
+        copy.bufferOffset = offset;
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, 0, 6};
+        copy.imageExtent = {n, n, 1};
+        copies.push_back(copy);
+        offset += VkDeviceSize(6) * n * n * texel_size;
     }
-    out = img;
-    return {};
+    return FillSampledImage(c, img, texels, copies, out);
 }
 
 }  // namespace kiln::vk

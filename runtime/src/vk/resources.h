@@ -66,6 +66,17 @@ Status CreateConstantImage(const Context& c,
                            std::span<const uint8_t> texel,
                            Image& out);
 
+// A cube (or a cube array of one cube) of `size`^2 faces and `mips` levels of `format` (RGBA16F or
+// RGBA32F), filled from `texels`: level by level, each the six faces (+X, -X, +Y, -Y, +Z, -Z) of
+// tightly packed rows; left in SHADER_READ_ONLY_OPTIMAL. The reflection probe.
+Status CreateCubeImage(const Context& c,
+                       ImageShape shape,
+                       uint32_t size,
+                       uint32_t mips,
+                       VkFormat format,
+                       std::span<const uint8_t> texels,
+                       Image& out);
+
 // A layout transition of mip levels [base_mip, base_mip + mip_count) of every array layer.
 void ImageBarrier(VkCommandBuffer cmd,
                   VkImage image,

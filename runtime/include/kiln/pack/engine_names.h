@@ -42,6 +42,8 @@ inline constexpr const char* kKeywordGBufferNormalsOct = "_GBUFFER_NORMALS_OCT";
 
 // The shader the renderer maps a glTF metallic-roughness material onto (no sidecar .material).
 inline constexpr const char* kShaderStandardMetallic = "Kiln/StandardMetallic";
+// ... and a KHR_materials_unlit material (base colour x vertex colour, no lighting).
+inline constexpr const char* kShaderUnlit = "Kiln/Unlit";
 // The deferred path's light pass (materials/internal/DeferredShading.shader; Unity's name for its
 // own): the first loaded pack that has a shader of this name provides it.
 inline constexpr const char* kShaderDeferredShading = "Hidden/Internal-DeferredShading";

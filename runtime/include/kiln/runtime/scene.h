@@ -5,6 +5,7 @@
 #define KILN_RUNTIME_SCENE_H_
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -28,7 +29,7 @@ using MeshVertex = pack::MeshVertex;
 
 struct Primitive {
     std::vector<MeshVertex> vertices;
-    std::vector<uint32_t> indices;  // triangle list
+    std::vector<uint32_t> indices;  // triangle list (glTF strips and fans converted at load)
     int material = -1;              // -1: glTF's default material
     bool has_tangents = false;      // from the file (else generated when there are UVs)
     bool has_colors = false;
@@ -49,12 +50,19 @@ struct SceneImage {
     std::vector<uint8_t> rgba8;
 };
 
+// A sampler's wrap mode on one axis (glTF's wrapS / wrapT).
+enum class TextureWrap { kRepeat, kClampToEdge, kMirroredRepeat };
+
 struct TextureRef {
-    int image = -1;  // -1: none
-    int texcoord = 0;
-    float scale = 1;     // normalTexture.scale / occlusionTexture.strength
-    bool repeat = true;  // false: clamp to edge
+    int image = -1;    // -1: none
+    int texcoord = 0;  // the TEXCOORD_n set (0 or 1; KHR_texture_transform's texCoord wins)
+    float scale = 1;   // normalTexture.scale / occlusionTexture.strength
+    TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
     bool nearest = false;
+    // KHR_texture_transform: uv' = offset + R(rotation) (uv_scale * uv), R rotating
+    // counter-clockwise in UV space, [[cos, sin], [-sin, cos]] (the extension's matrix).
+    glm::vec2 offset{0.0f}, uv_scale{1.0f};
+    float rotation = 0;
 };
 
 enum class AlphaMode { kOpaque, kMask, kBlend };
@@ -69,7 +77,8 @@ struct SceneMaterial {
         emissive_texture;
     AlphaMode alpha_mode = AlphaMode::kOpaque;
     float alpha_cutoff = 0.5f;
-    bool double_sided = false;
+    bool double_sided = false;  // back faces drawn, lit with the normal turned towards them
+    bool unlit = false;         // KHR_materials_unlit: drawn with Kiln/Unlit
 };
 
 enum class LightType { kDirectional, kPoint, kSpot };
@@ -170,7 +179,9 @@ struct Scene {
 
 // Loads a .gltf or .glb. Recoverable problems (an invalid light, a missing image) are dropped
 // with a warning added to `diags` (K0013, K0016, K0017; the file is the scene); anything that
-// leaves no usable scene is an error (K0007).
+// leaves no usable scene is an error (K0007). An extension the file requires and Kiln does not
+// support is an error naming it (K0030); each optional feature Kiln ignores (an unsupported
+// extension it uses, skins, animations, morph targets, points and lines) one warning (K0016).
 Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags);
 
 // Reads a material sidecar: {"kiln_materials": 1, "materials": {"<glTF material>": "x.material"},
