@@ -216,6 +216,11 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                         CLI::ignore_case)
                         .description(""))
         ->option_text("forward|deferred");
+    cmd->add_option("--msaa", a->frame.msaa,
+                    "Samples per pixel on the forward path, resolved before the display "
+                    "transform (default 1; the deferred path and --frame-debug draw 1)")
+        ->check(CLI::IsMember({1u, 2u, 4u, 8u}).description(""))
+        ->option_text("1|2|4|8");
     cmd->add_option("--gbuffer-normals", a->frame.gbuffer.normals,
                     "Deferred path: the G-buffer normal target's format (default rgb10a2, "
                     "Unity's)")

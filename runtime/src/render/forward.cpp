@@ -29,6 +29,10 @@ Status RenderFrame(Renderer::State& s,
     if (s.packs.empty()) {
         return Error{DiagCode::kRenderFailed, "no variant pack loaded"};
     }
+    if (settings.msaa != 1 && settings.msaa != 2 && settings.msaa != 4 && settings.msaa != 8) {
+        return Error{DiagCode::kBadScene, "msaa must be 1, 2, 4 or 8 samples per pixel (got " +
+                                              std::to_string(settings.msaa) + ")"};
+    }
     if (scene.instances.empty()) {
         return Error{DiagCode::kBadScene,
                      (scene.path.empty() ? std::string("the scene") : scene.path) +
@@ -57,6 +61,30 @@ Status RenderFrame(Renderer::State& s,
         observer = CaptureObserver(camera.projection, color, *capture);
     }
     const StepObserver* step = capture ? &observer : nullptr;
+    // One sample per pixel where MSAA does not apply, as in Unity: the deferred path's G-buffer
+    // (its light pass reads one sample), and the frame debugger, which reads every target back.
+    FrameSettings sampled = settings;
+    if (settings.msaa > 1 && (settings.path == RenderPath::kDeferred || capture)) {
+        sampled.msaa = 1;
+        stats.warnings.Warning(
+            DiagCode::kRenderWarning, scene.path, kNoPosition,
+            std::string("MSAA is off for ") +
+                (capture ? "the frame debugger, which reads every target back"
+                         : "the deferred path, whose light pass reads one G-buffer sample") +
+                ": drawn with 1 sample per pixel");
+    }
+    const VkSampleCountFlags supported = s.context.properties.limits.framebufferColorSampleCounts &
+                                         s.context.properties.limits.framebufferDepthSampleCounts;
+    if (!(supported & VkSampleCountFlags(sampled.msaa))) {
+        std::string counts;
+        for (uint32_t n = 1; n <= 64; n *= 2) {
+            counts += supported & n ? (counts.empty() ? "" : ", ") + std::to_string(n) : "";
+        }
+        return Error{DiagCode::kRenderFailed,
+                     "device '" + std::string(s.context.properties.deviceName) +
+                         "' cannot render " + std::to_string(sampled.msaa) +
+                         " samples per pixel (it has " + counts + ")"};
+    }
     // After planning: the materials for the usage file and what the frame resolved and uploaded.
     auto draw = [&](const render::DrawList& list, auto&& record) -> Status {
         s.NoteMaterials(list);
@@ -83,7 +111,7 @@ Status RenderFrame(Renderer::State& s,
         return e;
     }
     return draw(plan.list, [&] {
-        return DrawPlan(s, resources, scene, settings, camera, plan, out, stats, step);
+        return DrawPlan(s, resources, scene, sampled, camera, plan, out, stats, step);
     });
 }
 
@@ -96,22 +124,33 @@ Status DrawPlan(Renderer::State& s,
                 LinearImage& out,
                 FrameStats& stats,
                 const StepObserver* observer) {
-    // The forward path's frame: one pass into the colour target and the depth buffer.
+    // The forward path's frame: one pass into the colour target and the depth buffer; with MSAA
+    // both have settings.msaa samples per pixel and the colour is resolved (averaged) into a
+    // single-sample target at the end of the pass, before the display transform reads it.
+    const uint32_t samples = settings.msaa;
     Frame frame;
     frame.width = settings.width;
     frame.height = settings.height;
     FrameTarget color_target{"color", s.color_format, false, {}};
-    // Alpha 0: not covered (the frame's alpha is coverage).
+    // Alpha 0: not covered (the frame's alpha is coverage; resolved, the covered fraction).
     color_target.clear.color = {
         {settings.background.r, settings.background.g, settings.background.b, 0}};
+    color_target.samples = VkSampleCountFlagBits(samples);
     FrameTarget depth_target{"depth", s.depth_format, true, {}};
     depth_target.clear.depthStencil = {1.0f, 0};
+    depth_target.samples = VkSampleCountFlagBits(samples);
     frame.targets = {color_target, depth_target};
     frame.output = 0;
     FramePass& forward = frame.passes.emplace_back();
     forward.name = "forward";
     forward.colors = {0};
     forward.depth = 1;
+    if (samples > 1) {
+        FrameTarget resolved{"color (resolved)", s.color_format, false, {}};
+        frame.targets.push_back(resolved);
+        frame.output = 2;
+        forward.resolves = {2};
+    }
 
     DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats,
                         observer != nullptr);

@@ -165,6 +165,11 @@ vk::TargetFormats FormatsOf(const Frame& frame, const FramePass& pass) {
     if (pass.depth) {
         out.depth = frame.targets[*pass.depth].format;
     }
+    const std::vector<uint32_t> attachments = Attachments(pass);
+    if (!attachments.empty()) {
+        out.samples = frame.targets[attachments.front()].samples;
+    }
+    out.resolve = !pass.resolves.empty();
     return out;
 }
 
@@ -220,6 +225,9 @@ void Layouts::Before(VkCommandBuffer cmd, const FramePass& pass) {
             To(cmd, t, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
         }
     }
+    for (uint32_t t : pass.resolves) {  // the render pass takes them from undefined
+        current[t] = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    }
     if (pass.depth) {
         const VkImageLayout want = pass.depth_read_only
                                        ? ReadOnlyDepthLayout()
@@ -236,13 +244,15 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
     const vk::Context& c = s.context;
     for (const FrameTarget& t : frame.targets) {
         vk::Image& image = f.targets.emplace_back();
-        // Every target may be sampled by a later pass and read back (the frame debugger).
-        const VkImageUsageFlags usage = (t.depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
-                                                 : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
-                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                        VK_IMAGE_USAGE_SAMPLED_BIT;
-        if (Status e =
-                vk::CreateImage(c, frame.width, frame.height, t.format, usage, AspectsOf(t), image);
+        // Every single-sample target may be sampled by a later pass and read back (the frame
+        // debugger); a multisampled one is only an attachment, resolved by its pass.
+        const bool multisampled = t.samples != VK_SAMPLE_COUNT_1_BIT;
+        const VkImageUsageFlags usage =
+            (t.depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
+                     : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
+            (multisampled ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+        if (Status e = vk::CreateImage(c, frame.width, frame.height, t.format, usage, AspectsOf(t),
+                                       image, 1, t.samples);
             !e.ok()) {
             return e;
         }
@@ -271,6 +281,9 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
         f.render_passes.push_back(rp);
         std::vector<VkImageView> views;
         for (uint32_t t : Attachments(pass)) {
+            views.push_back(f.targets[t].view);
+        }
+        for (uint32_t t : pass.resolves) {  // after the depth, as the render pass has them
             views.push_back(f.targets[t].view);
         }
         VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};

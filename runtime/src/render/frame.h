@@ -54,6 +54,9 @@ struct FrameTarget {
     // How the frame debugger shows it: through the display transform (light), or as stored
     // (G-buffer data). Depth targets are linearised.
     bool display = true;
+    // Samples per pixel (MSAA). A multisampled target is only an attachment: a pass resolves it
+    // (FramePass::resolves) into a single-sample target that is read back or sampled.
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 
 struct FramePass {
@@ -65,6 +68,9 @@ struct FramePass {
     // sample it; its stencil is cleared at the start and writable (the light pass's masks).
     bool depth_read_only = false;
     std::vector<uint32_t> sampled;  // targets the draws sample (Draw::Write::target)
+    // Multisampled passes: the single-sample targets the colour attachments are resolved into
+    // at the end of the pass, one per colour, in order.
+    std::vector<uint32_t> resolves;
     std::vector<Draw> draws;
 };
 

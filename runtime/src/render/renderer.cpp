@@ -124,7 +124,8 @@ Status Renderer::State::GetPipeline(uint32_t pack,
     if (Status e = RenderPass(targets, true, false, compatible); !e.ok()) {
         return e;
     }
-    const vk::PipelineTargets pipeline_targets{compatible, uint32_t(targets.colors.size())};
+    const vk::PipelineTargets pipeline_targets{compatible, uint32_t(targets.colors.size()),
+                                               targets.samples};
     if (Status e = vk::CreatePipeline(context, packs[pack]->pack, variant, state, pipeline_targets,
                                       pipeline_cache, module_checker.get(), entry.pipeline);
         !e.ok()) {

@@ -141,8 +141,9 @@ Status RenderFrame(Renderer::State& state,
                    FrameStats& stats,
                    FrameCapture* capture = nullptr);
 // Draws a planned frame: each request's variant, pipeline, uniforms and descriptors, then one
-// command buffer (what RenderFrame does after planning; kiln test plans its own frames). The
-// meshes and textures come from `resources`.
+// command buffer (what RenderFrame does after planning; kiln test plans its own frames), with
+// settings.msaa samples per pixel resolved before the read-back. The meshes and textures come
+// from `resources`.
 Status DrawPlan(Renderer::State& state,
                 SceneResources& resources,
                 const Scene& scene,

@@ -86,6 +86,7 @@ struct Pipeline {
 struct PipelineTargets {
     VkRenderPass render_pass = VK_NULL_HANDLE;
     uint32_t color_count = 1;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // the render pass's (MSAA)
 };
 
 // `checker` looks at the variant's SPIR-V and reflection before the driver does

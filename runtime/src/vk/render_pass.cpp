@@ -6,12 +6,16 @@ namespace {
 
 // One attachment of `format`, cleared (from undefined) or loaded (in `layout`), left in `layout`.
 // Depth-stencil attachments keep their stencil too.
-VkAttachmentDescription Attachment(VkFormat format, bool clear, VkImageLayout layout, bool depth) {
+VkAttachmentDescription Attachment(VkFormat format,
+                                   bool clear,
+                                   VkImageLayout layout,
+                                   bool depth,
+                                   VkSampleCountFlagBits samples) {
     const VkAttachmentLoadOp load =
         clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
     VkAttachmentDescription a{};
     a.format = format;
-    a.samples = VK_SAMPLE_COUNT_1_BIT;
+    a.samples = samples;
     a.loadOp = load;
     a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     a.stencilLoadOp = depth ? load : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
@@ -36,12 +40,12 @@ Status CreateRenderPass(const Context& c,
     for (VkFormat f : formats.colors) {
         colors.push_back({uint32_t(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
         attachments.push_back(
-            Attachment(f, clear, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false));
+            Attachment(f, clear, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false, formats.samples));
     }
     VkAttachmentReference depth{uint32_t(attachments.size()), depth_layout};
     if (formats.depth != VK_FORMAT_UNDEFINED) {
-        VkAttachmentDescription a =
-            Attachment(formats.depth, clear && !depth_read_only, depth_layout, true);
+        VkAttachmentDescription a = Attachment(formats.depth, clear && !depth_read_only,
+                                               depth_layout, true, formats.samples);
         if (depth_read_only) {
             // The depth is kept; the stencil starts cleared, for the pass's own masks.
             a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
@@ -49,10 +53,23 @@ Status CreateRenderPass(const Context& c,
         }
         attachments.push_back(a);
     }
+    std::vector<VkAttachmentReference> resolves;
+    if (formats.resolve) {
+        for (VkFormat f : formats.colors) {
+            resolves.push_back(
+                {uint32_t(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+            // Written whole by the resolve: nothing to load or clear.
+            VkAttachmentDescription a = Attachment(
+                f, true, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false, VK_SAMPLE_COUNT_1_BIT);
+            a.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+            attachments.push_back(a);
+        }
+    }
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     subpass.colorAttachmentCount = uint32_t(colors.size());
     subpass.pColorAttachments = colors.data();
+    subpass.pResolveAttachments = resolves.empty() ? nullptr : resolves.data();
     subpass.pDepthStencilAttachment = formats.depth != VK_FORMAT_UNDEFINED ? &depth : nullptr;
 
     const VkPipelineStageFlags attachment_stages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |

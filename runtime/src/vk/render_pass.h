@@ -17,6 +17,10 @@ namespace kiln::vk {
 struct TargetFormats {
     std::vector<VkFormat> colors;
     VkFormat depth = VK_FORMAT_UNDEFINED;  // none
+    // Samples per pixel of every attachment (MSAA); with `resolve`, each colour attachment is
+    // resolved into a single-sample one of its format at the end of the pass.
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    bool resolve = false;
 
     auto operator<=>(const TargetFormats&) const = default;
 };
@@ -25,7 +29,8 @@ struct TargetFormats {
 // layouts (a previous pass of the frame wrote them). `depth_read_only`: the depth buffer is loaded
 // and stays in DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, so the pass may sample its depth while
 // it depth-tests against it; its stencil is cleared and writable (the deferred light pass's
-// masks).
+// masks). Resolve attachments follow the depth attachment (or the colours), one per colour,
+// undefined at the start and left in COLOR_ATTACHMENT_OPTIMAL.
 Status CreateRenderPass(const Context& c,
                         const TargetFormats& formats,
                         bool clear,

@@ -131,7 +131,8 @@ Status CreateImage(const Context& c,
                    VkImageUsageFlags usage,
                    VkImageAspectFlags aspect,
                    Image& out,
-                   uint32_t mip_levels) {
+                   uint32_t mip_levels,
+                   VkSampleCountFlagBits samples) {
     Image img;
     img.format = format;
     img.width = width;
@@ -143,7 +144,7 @@ Status CreateImage(const Context& c,
     info.extent = {width, height, 1};
     info.mipLevels = mip_levels;
     info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.samples = samples;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;

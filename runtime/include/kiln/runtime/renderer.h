@@ -67,6 +67,10 @@ struct FrameSettings {
     float time = 0;              // seconds, for _Time
     glm::vec3 background{0.0f};  // linear clear colour
     bool default_light = true;   // light a scene without lights by one directional light
+    // Samples per pixel (MSAA: 1, 2, 4 or 8) on the forward path, resolved before the display
+    // transform; the deferred path and the frame debugger draw 1 with a warning, as Unity's
+    // deferred path does.
+    uint32_t msaa = 1;
 };
 
 struct FrameStats {
