@@ -6,7 +6,8 @@
 #      (ShaderLab parser, pack reader, material parser, usage-file and diagnostics readers, glTF
 #      loader, compile driver with its worker processes) on its corpus and a bounded fuzz run,
 #   3. the benchmarks, checked against the speed targets in bench/check_targets.py.
-# Environment: KILN_FUZZ_SECONDS (default 60) bounds each fuzz run of step 2.
+# Environment: KILN_FUZZ_SECONDS (default 30; set it higher for a longer run) bounds each fuzz
+# run of step 2.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -54,7 +55,7 @@ fuzz() {
         -rss_limit_mb=2048 -max_len="$max_len" -print_final_stats=1 \
         -artifact_prefix="$scratch/" "$scratch/$target" "$@"
 }
-seconds=${KILN_FUZZ_SECONDS:-60}
+seconds=${KILN_FUZZ_SECONDS:-30}
 fuzz shaderlab 65536 10 "$seconds" tests/fuzz/corpus/shaderlab tests/golden/parse tests/lecture \
     materials
 fuzz pack 65536 10 "$seconds" tests/fuzz/corpus/pack

@@ -260,18 +260,27 @@ TEST(UnityCorpus, StandardWithANormalMappedMetallicMaterialCompilesInBothModesAn
     const std::string sidecar =
         dir.Write("box.kiln.json",
                   R"({"kiln_materials": 1, "materials": {"Texture": "normal_metallic.material"}})");
+    // CI compiles what the box scene looks up (kiln compile --scene: the material's variants the
+    // renderer plans); KILN_COMPAT=full every variant of Standard with the material (3,360,
+    // about 75 s a mode on 2 cores).
+    const char* env = std::getenv("KILN_COMPAT");
+    const bool full = env && std::string(env) == "full";
+    const bool scene = !full && fs::exists(box / "BoxTextured.gltf");
     for (const char* shader : {"DefaultResourcesExtra/Standard.shader",
                                "DefaultResourcesExtra/Internal-DeferredShading.shader"}) {
+        const bool standard = std::string(shader).find("Standard") != std::string::npos;
+        const std::string args = scene && standard ? "--materials " + Quote(sidecar) + " --scene " +
+                                                         Quote((box / "BoxTextured.gltf").string())
+                                                   : "--materials " + Quote(material);
         for (Mode mode : {Mode::kUnity, Mode::kKiln}) {
-            const Outcome o = CompileInProcess(dir, shader, mode, "--materials " + Quote(material));
+            const Outcome o = CompileInProcess(dir, shader, mode, args);
             EXPECT_EQ(o.kind, Outcome::kCompiled)
                 << shader << (mode == Mode::kUnity ? " (unity mode): " : " (kiln mode): ")
                 << o.first_error;
             std::cout << shader << (mode == Mode::kUnity ? " unity" : " kiln") << " mode with "
-                      << "_NORMALMAP _METALLICGLOSSMAP: " << KindName(o.kind) << " in " << o.seconds
-                      << " s\n";
-            if (o.kind != Outcome::kCompiled || mode != Mode::kUnity ||
-                std::string(shader).find("Standard") == std::string::npos) {
+                      << "_NORMALMAP _METALLICGLOSSMAP" << (scene && standard ? " (scene)" : "")
+                      << ": " << KindName(o.kind) << " in " << o.seconds << " s\n";
+            if (o.kind != Outcome::kCompiled || mode != Mode::kUnity || !standard) {
                 continue;
             }
             if (!fs::exists(box / "BoxTextured.gltf") || !fs::exists(normals)) {
