@@ -39,5 +39,19 @@ Shader "Kiln/BlinnPhong"
             }
             ENDCG
         }
+
+        // Casts shadows (docs/runtime.md, "Shadows").
+        Pass
+        {
+            Name "ShadowCaster"
+            Tags { "LightMode" = "ShadowCaster" }
+
+            CGPROGRAM
+            #pragma vertex ShadowCasterVertex
+            #pragma fragment ShadowCasterFragment
+            #pragma multi_compile_shadowcaster
+            #include "ShadowCasterPass.cginc"
+            ENDCG
+        }
     }
 }

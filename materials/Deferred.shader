@@ -125,5 +125,19 @@ Shader "Kiln/Deferred"
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             ENDCG
         }
+
+        // Casts shadows (docs/runtime.md, "Shadows").
+        Pass
+        {
+            Name "ShadowCaster"
+            Tags { "LightMode" = "ShadowCaster" }
+
+            CGPROGRAM
+            #pragma vertex ShadowCasterVertex
+            #pragma fragment ShadowCasterFragment
+            #pragma multi_compile_shadowcaster
+            #include "ShadowCasterPass.cginc"
+            ENDCG
+        }
     }
 }

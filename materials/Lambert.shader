@@ -27,5 +27,19 @@ Shader "Kiln/Lambert"
             }
             ENDCG
         }
+
+        // Casts shadows (docs/runtime.md, "Shadows").
+        Pass
+        {
+            Name "ShadowCaster"
+            Tags { "LightMode" = "ShadowCaster" }
+
+            CGPROGRAM
+            #pragma vertex ShadowCasterVertex
+            #pragma fragment ShadowCasterFragment
+            #pragma multi_compile_shadowcaster
+            #include "ShadowCasterPass.cginc"
+            ENDCG
+        }
     }
 }

@@ -29,5 +29,19 @@ Shader "Kiln/LambertAmbient"
             }
             ENDCG
         }
+
+        // Casts shadows (docs/runtime.md, "Shadows").
+        Pass
+        {
+            Name "ShadowCaster"
+            Tags { "LightMode" = "ShadowCaster" }
+
+            CGPROGRAM
+            #pragma vertex ShadowCasterVertex
+            #pragma fragment ShadowCasterFragment
+            #pragma multi_compile_shadowcaster
+            #include "ShadowCasterPass.cginc"
+            ENDCG
+        }
     }
 }

@@ -106,5 +106,19 @@ Shader "Kiln/MultiLight"
             #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
             ENDCG
         }
+
+        // Casts shadows (docs/runtime.md, "Shadows").
+        Pass
+        {
+            Name "ShadowCaster"
+            Tags { "LightMode" = "ShadowCaster" }
+
+            CGPROGRAM
+            #pragma vertex ShadowCasterVertex
+            #pragma fragment ShadowCasterFragment
+            #pragma multi_compile_shadowcaster
+            #include "ShadowCasterPass.cginc"
+            ENDCG
+        }
     }
 }

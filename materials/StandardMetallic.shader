@@ -239,6 +239,39 @@ Shader "Kiln/StandardMetallic"
         none.specular = 0;
         return ShadeLight(i, front, none);
     }
+
+    // The ShadowCaster pass: depth from the light (or the camera's depth texture), moved by
+    // Unity's normal and depth biases (UnityCGShadowCaster.cginc); MASK materials cut out what
+    // their base colour's alpha cuts out.
+    struct ShadowVertexData {
+        float4 vertex : POSITION;
+        float3 normal : NORMAL;
+        float2 uv : TEXCOORD0;
+        float2 uv1 : TEXCOORD1;
+        float4 color : COLOR;
+    };
+
+    struct ShadowInterpolators {
+        V2F_SHADOW_CASTER;
+        float4 uv : TEXCOORD1;
+        float alpha : TEXCOORD2;  // the vertex colour's
+    };
+
+    ShadowInterpolators ShadowVertex(ShadowVertexData v) {
+        ShadowInterpolators o;
+        TRANSFER_SHADOW_CASTER_NORMALOFFSET(o)
+        o.uv = float4(v.uv, v.uv1);
+        o.alpha = v.color.a;
+        return o;
+    }
+
+    float4 ShadowFragment(ShadowInterpolators i) : SV_TARGET {
+    #if defined(_ALPHATEST_ON)
+        float alpha = _Color.a * tex2D(_MainTex, GLTF_MAP_UV(i.uv, _MainTex)).a * i.alpha;
+        clip(alpha - _Cutoff);
+    #endif
+        SHADOW_CASTER_FRAGMENT(i)
+    }
     ENDCG
 
     SubShader
@@ -254,6 +287,7 @@ Shader "Kiln/StandardMetallic"
             #pragma vertex MetallicVertex
             #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment BaseFragment
+            #pragma multi_compile_fragment _ SHADOWS_SCREEN
             #pragma shader_feature_local _NORMALMAP
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
             #pragma shader_feature_local_fragment _OCCLUSIONMAP
@@ -274,6 +308,8 @@ Shader "Kiln/StandardMetallic"
             #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment AddFragment
             #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
+            #pragma multi_compile_fragment _ SHADOWS_SCREEN SHADOWS_DEPTH SHADOWS_CUBE
+            #pragma multi_compile_fragment _ SHADOWS_SOFT
             #pragma shader_feature_local _NORMALMAP
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
             #pragma shader_feature_local_fragment _ALPHATEST_ON
@@ -294,6 +330,21 @@ Shader "Kiln/StandardMetallic"
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
             #pragma shader_feature_local_fragment _OCCLUSIONMAP
             #pragma shader_feature_local_fragment _EMISSION
+            #pragma shader_feature_local_fragment _ALPHATEST_ON
+            ENDCG
+        }
+
+        Pass
+        {
+            Name "ShadowCaster"
+            Tags { "LightMode" = "ShadowCaster" }
+            ZWrite On
+            ZTest LEqual
+
+            CGPROGRAM
+            #pragma vertex ShadowVertex
+            #pragma fragment ShadowFragment
+            #pragma multi_compile_shadowcaster
             #pragma shader_feature_local_fragment _ALPHATEST_ON
             ENDCG
         }

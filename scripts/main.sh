@@ -40,9 +40,10 @@ for f in tests/lecture/*.shader; do
     fi
 done
 echo
-echo "== kiln render: the demo scene (scenes/demo), headless, validation layer on"
+echo "== kiln render: the demo scene (scenes/demo), soft shadows, headless, validation layer on"
 mkdir -p out
 build/release/bin/kiln render scenes/demo/demo.gltf --validation --width 1280 --height 720 \
+    --shadows soft \
     -o out/demo.png --exr out/demo.exr
 echo
 echo "== kiln render: the glTF samples in ../shared/gltf-samples"

@@ -7,8 +7,11 @@
 // from _WorldSpaceLightPos0, kiln_SpotDirection0 and kiln_LightParams0: Kiln's physical light
 // units instead of Unity's attenuation textures (docs/shader-library.md). Kiln has no light
 // cookies: POINT_COOKIE and DIRECTIONAL_COOKIE behave as POINT and DIRECTIONAL. Shadows: the
-// SHADOWS_* variants sample the maps (UnityShadowLibrary.cginc), which Kiln's runtime does not
-// render yet; every other variant is unshadowed (attenuation 1).
+// SHADOWS_* variants sample the maps the runtime renders from ShadowCaster passes
+// (UnityShadowLibrary.cginc; SHADOWS_SCREEN: the screen-space shadow texture of the pass's
+// directional light); every other variant is unshadowed (attenuation 1). UNITY_LIGHT_ATTENUATION
+// needs only the world position: with input 0 (no shadow coordinates interpolated) it projects
+// the position itself.
 #ifndef AUTOLIGHT_INCLUDED
 #define AUTOLIGHT_INCLUDED
 
@@ -55,21 +58,49 @@ inline fixed unitySampleShadow(unityShadowCoord4 shadowCoord) {
 #define UNITY_READ_SHADOW_COORDS(input) 0
 #define UNITY_SHADOW_W(_w) _w
 
-// Unity's forward-pass shadow with the real-time / baked blend; Kiln's runtime has neither yet.
-half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 screenPos) {
-    float zDist = dot(_WorldSpaceCameraPos - worldPos, UNITY_MATRIX_V[2].xyz);
-    half fade = UnityComputeShadowFade(UnityComputeShadowFadeDistance(worldPos, zDist));
-    half baked = UnitySampleBakedOcclusion(lightmapUV, worldPos);
-    half realtime = 1.0;
+// The real-time shadow of the pass's light at a world position: the screen-space shadow at the
+// position's pixel (SHADOWS_SCREEN), the spot light's depth map (SHADOWS_DEPTH) or the point
+// light's depth cube (SHADOWS_CUBE); 1 without a shadow variant.
+half UnityRealtimeShadowAt(float3 worldPos) {
 #if defined(SHADOWS_SCREEN)
-    realtime = unitySampleShadow(screenPos);
+    return unitySampleShadow(ComputeScreenPos(mul(UNITY_MATRIX_VP, float4(worldPos, 1.0))));
+#elif defined(SHADOWS_DEPTH) && defined(SPOT)
+    return UnitySampleShadowmap(mul(unity_WorldToShadow[0], float4(worldPos, 1.0)));
+#elif defined(SHADOWS_CUBE)
+    return UnitySampleShadowmap(worldPos - _LightPositionRange.xyz);
+#else
+    return 1.0;
 #endif
-    return UnityMixRealtimeAndBakedShadows(realtime, baked, fade);
+}
+
+// The fade of real-time shadows with distance from the camera (_LightShadowData.zw).
+half UnityShadowFadeAt(float3 worldPos) {
+    float zDist = dot(_WorldSpaceCameraPos - worldPos, UNITY_MATRIX_V[2].xyz);
+    return UnityComputeShadowFade(UnityComputeShadowFadeDistance(worldPos, zDist));
+}
+
+// Unity's forward-pass shadow with the real-time / baked blend: SHADOWS_SCREEN reads the screen
+// position the vertex stage interpolated, the others the world position.
+half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 screenPos) {
+    half baked = UnitySampleBakedOcclusion(lightmapUV, worldPos);
+#if defined(SHADOWS_SCREEN)
+    half realtime = unitySampleShadow(screenPos);
+#else
+    half realtime = UnityRealtimeShadowAt(worldPos);
+#endif
+    return UnityMixRealtimeAndBakedShadows(realtime, baked, UnityShadowFadeAt(worldPos));
+}
+
+// The same from the world position alone (UNITY_SHADOW_ATTENUATION's, Kiln's).
+half UnityShadowAttenuationAt(float3 worldPos) {
+    return UnityMixRealtimeAndBakedShadows(UnityRealtimeShadowAt(worldPos),
+                                           UnitySampleBakedOcclusion(0, worldPos),
+                                           UnityShadowFadeAt(worldPos));
 }
 
 #define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
 #define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
-#define UNITY_SHADOW_ATTENUATION(a, worldPos) SHADOW_ATTENUATION(a)
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) UnityShadowAttenuationAt((worldPos).xyz)
 
 // ---- light attenuation ----
 // Attenuation of the pass's pixel light at a world position, by light type.

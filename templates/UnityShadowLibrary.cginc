@@ -1,8 +1,10 @@
 // UnityShadowLibrary.cginc: shadow-map sampling and the real-time / baked shadow blend, with
-// Unity's names. Kiln's runtime renders no shadow maps yet and never selects a SHADOWS_*
-// variant; these sample the maps the variants declare (_ShadowMapTexture: a depth map with a
-// comparison sampler for spot lights, a depth cube for point lights) so the code is complete for
-// when it does. Baked occlusion (shadow masks) reads unity_ShadowMask, a default white texture.
+// Unity's names. Kiln's runtime renders the maps from the objects' ShadowCaster passes
+// (docs/runtime.md, "Shadows"): _ShadowMapTexture is a depth map sampled with a comparison
+// sampler (spot lights, SHADOWS_DEPTH) or a depth cube (point lights, SHADOWS_CUBE, stored as
+// depth: SHADOWS_CUBE_IN_DEPTH_TEX); the comparison sampler filters bilinearly (2x2 PCF) and
+// SHADOWS_SOFT adds a wider filter. Baked occlusion (shadow masks) reads unity_ShadowMask, a
+// default white texture.
 #ifndef UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
 #define UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
 
@@ -28,35 +30,14 @@ UNITY_DECLARE_SHADOWMAP(_ShadowMapTexture);
 #endif
 float4 _ShadowMapTexture_TexelSize;
 #define SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED
-
-// 1 where lit, _LightShadowData.r (the shadow strength's complement) where fully shadowed.
-inline fixed UnitySampleShadowmap(float4 shadowCoord) {
-    // guard: w = 0 only for a receiver in the light's plane, outside its frustum
-    float3 coord = shadowCoord.xyz / max(abs(shadowCoord.w), 1e-7);
-    half shadow = UNITY_SAMPLE_SHADOW(_ShadowMapTexture, coord);
-    return lerp(_LightShadowData.r, 1.0, shadow);
-}
 #endif
 
-// ---- point light shadows: a depth cube compared at the light-to-surface distance ----
-#if defined(SHADOWS_CUBE)
-#if !defined(SHADOWMAPSAMPLER_DEFINED)
-UNITY_DECLARE_TEXCUBE_SHADOWMAP(_ShadowMapTexture);
-#define SHADOWMAPSAMPLER_DEFINED
-#endif
-// vec: surface position minus the light's (_LightPositionRange.xyz).
-inline half UnitySampleShadowmap(float3 vec) {
-    float depth = length(vec) * _LightPositionRange.w;  // 0 at the light, 1 at its range
-    depth *= _LightProjectionParams.w;                   // to the cube map's depth encoding
-    half shadow = UNITY_SAMPLE_TEXCUBE_SHADOW(_ShadowMapTexture, float4(vec, depth));
-    return lerp(_LightShadowData.r, 1.0, shadow);
-}
-#endif
-
-// Percentage-closer filtering over an N x N texel footprint (uniform weights). Without a spot
-// shadow map (no SHADOWS_DEPTH variant) there is nothing to filter: 1.
+// Percentage-closer filtering over an N x N texel footprint (uniform weights of bilinear
+// comparison taps). Without a spot shadow map (no SHADOWS_DEPTH variant) there is nothing to
+// filter: 1.
 #if defined(SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED)
 half UnitySampleShadowmap_PCFNxN(float4 coord, int n) {
+    // guard: w = 0 only for a receiver in the light's plane, outside its frustum
     float3 c = coord.xyz / max(abs(coord.w), 1e-7);
     half sum = 0.0;
     for (int y = 0; y < n; ++y) {
@@ -72,6 +53,68 @@ half UnitySampleShadowmap_PCFNxN(float4 coord, int n) {
     return 1.0;
 }
 #endif
+
+#if defined(SHADOWS_DEPTH) && defined(SPOT)
+// 1 where lit, _LightShadowData.r (the shadow strength's complement) where fully shadowed;
+// SHADOWS_SOFT: a 3 x 3 texel filter (Unity's PCF3x3).
+inline fixed UnitySampleShadowmap(float4 shadowCoord) {
+#if defined(SHADOWS_SOFT)
+    return UnitySampleShadowmap_PCFNxN(shadowCoord, 3);
+#else
+    // guard: w = 0 only for a receiver in the light's plane, outside its frustum
+    float3 coord = shadowCoord.xyz / max(abs(shadowCoord.w), 1e-7);
+    half shadow = UNITY_SAMPLE_SHADOW(_ShadowMapTexture, coord);
+    return lerp(_LightShadowData.r, 1.0, shadow);
+#endif
+}
+#endif
+
+// ---- point light shadows: a depth cube compared at the receiver's projected depth ----
+#if defined(SHADOWS_CUBE)
+#if !defined(SHADOWMAPSAMPLER_DEFINED)
+UNITY_DECLARE_TEXCUBE_SHADOWMAP(_ShadowMapTexture);
+#define SHADOWMAPSAMPLER_DEFINED
+#endif
+float4 _ShadowMapTexture_TexelSize;  // of a face
+// The depth the cube face that `dir` looks through stores for the point `vec` (Unity's
+// SHADOWS_CUBE_IN_DEPTH_TEX): the point's distance along that face's axis, less the bias
+// (_LightProjectionParams.z, world units) and `extraBias`, projected as z = -x + y / d
+// (x = -f/(f-n), y = -f n/(f-n): depth 0 at the near plane, 1 at far).
+float UnityCubeShadowDepthAlong(float3 vec, float3 dir, float extraBias) {
+    float3 a = abs(dir);
+    float3 v = abs(vec);
+    float axisDistance = a.x >= a.y && a.x >= a.z ? v.x : (a.y >= a.z ? v.y : v.z);
+    // guard: a receiver at the light's position
+    axisDistance = max(0.00001, axisDistance - _LightProjectionParams.z - extraBias);
+    axisDistance *= _LightProjectionParams.w;
+    return -_LightProjectionParams.x + _LightProjectionParams.y / axisDistance;
+}
+float UnityCubeShadowDepth(float3 vec) {
+    return UnityCubeShadowDepthAlong(vec, vec, 0.0);
+}
+// vec: surface position minus the light's (_LightPositionRange.xyz). SHADOWS_SOFT: four taps
+// on the diagonals, as Unity's, about a face texel and a half from the centre (a face spans 2 at
+// distance 1: a texel is 2 / size there); each compares the point's depth on the face its tap
+// reads, so taps across a face edge agree with their neighbours, biased further by twice the
+// taps' offset: a tap reads the receiver up to that far away, nearer the light on a slope.
+inline half UnitySampleShadowmap(float3 vec) {
+#if defined(SHADOWS_SOFT)
+    float z = length(vec) * 2.0 * _ShadowMapTexture_TexelSize.x;
+    float3 o[4] = {float3(z, z, z), float3(-z, -z, z), float3(-z, z, -z), float3(z, -z, -z)};
+    half shadow = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        float3 dir = vec + o[k];
+        float depth = UnityCubeShadowDepthAlong(vec, dir, 3.5 * z);  // 2 |o[k]|
+        shadow += 0.25 * UNITY_SAMPLE_TEXCUBE_SHADOW(_ShadowMapTexture, float4(dir, depth));
+    }
+#else
+    half shadow =
+        UNITY_SAMPLE_TEXCUBE_SHADOW(_ShadowMapTexture, float4(vec, UnityCubeShadowDepth(vec)));
+#endif
+    return lerp(_LightShadowData.r, 1.0, shadow);
+}
+#endif
+
 half UnitySampleShadowmap_PCF3x3(float4 coord, float3 receiverPlaneDepthBias) {
     return UnitySampleShadowmap_PCFNxN(coord, 3);
 }

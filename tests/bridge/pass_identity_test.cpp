@@ -155,7 +155,8 @@ TEST(UsageFile, KeepsWhoAskedAndTheMaterials) {
 // Every truncated prefix of a usage file is an error with a message, never a crash.
 TEST(UsageFile, EveryTruncatedPrefixIsRejectedCleanly) {
     pack::UsageLog log;
-    log.lookups.push_back({"S", "FORWARD", {"POINT", "_NORMALMAP"}, 3, false, {"m on node 'a'"}, 1});
+    log.lookups.push_back(
+        {"S", "FORWARD", {"POINT", "_NORMALMAP"}, 3, false, {"m on node 'a'"}, 1});
     log.materials.push_back({"m", "S"});
     const std::string text = pack::UsageFileText(log);
     for (size_t n = 0; n < text.size(); ++n) {
@@ -180,7 +181,7 @@ TEST(VariantSelection, MissingVariantErrorNamesShaderPassKeywordsAndClosest) {
     EXPECT_EQ(missing.error().message,
               "shader 'Kiln/StandardMetallic' pass 'FORWARD' has no variant for keywords "
               "'_NORMALMAP _EMISSION' (stripped or never compiled); closest present: "
-              "'_NORMALMAP', '(no keywords)'");
+              "'_NORMALMAP', '(no keywords)', 'SHADOWS_SCREEN _NORMALMAP'");
     const auto found = strict.Select(pass, {"_NORMALMAP"});
     ASSERT_TRUE(found.ok());
     EXPECT_TRUE(found.value().exact);

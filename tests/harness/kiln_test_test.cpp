@@ -23,23 +23,28 @@ TEST(KilnTest, EveryVariantOfTheShippedMaterialsPasses) {
     const nlohmann::json report = nlohmann::json::parse(r.out);
     EXPECT_TRUE(report["passed"].get<bool>());
     EXPECT_TRUE(report["failures"].empty()) << report["failures"].dump(1);
-    // Every variant of every pass the forward path draws; the G-buffer passes and the deferred
-    // path's light pass are listed as skipped, and are every variant not tested.
+    // Every variant of every pass the forward path draws; the G-buffer passes, the deferred
+    // path's light pass, the ShadowCaster pass and the screen-space shadow collector are listed
+    // as skipped, and are every variant not tested.
     pack::MappedFile file;
     pack::Pack pk;
     ASSERT_TRUE(MapInto(KILN_MATERIALS_PACK, file));
     ASSERT_TRUE(OpenInto(file.bytes(), pk));
-    size_t untested = 0;
+    size_t untested = 0, casters = 0;
     for (uint32_t p = 0; p < pk.Count(pack::SectionTag::kPasses); ++p) {
+        casters += pack::LightModeOf(pk, p) == pack::kLightModeShadowCaster;
         const pack::PassRec rec = pk.Pass(p).value();
         const pack::ShaderRec sr = pk.Shader(rec.shader).value();
         if (pack::LightModeOf(pk, p) == pack::kLightModeDeferred ||
-            pk.String(sr.name) == pack::kShaderDeferredShading) {
+            pack::LightModeOf(pk, p) == pack::kLightModeShadowCaster ||
+            pk.String(sr.name) == pack::kShaderDeferredShading ||
+            pk.String(sr.name) == pack::kShaderScreenSpaceShadows) {
             untested += rec.variant_count;
         }
     }
     EXPECT_EQ(report["variants"].get<size_t>() + untested, pk.Count(pack::SectionTag::kVariants));
-    ASSERT_EQ(report["skipped"].size(), 3u) << report["skipped"].dump(1);
+    // The two Deferred passes, the two internal shaders and one line per ShadowCaster pass.
+    ASSERT_EQ(report["skipped"].size(), 4u + casters) << report["skipped"].dump(1);
     std::string skipped;
     for (const auto& line : report["skipped"]) {
         skipped += line.get<std::string>() + "\n";
@@ -47,7 +52,9 @@ TEST(KilnTest, EveryVariantOfTheShippedMaterialsPasses) {
     for (const char* expected :
          {"shader \"Kiln/Deferred\" pass \"DEFERRED\": LightMode Deferred",
           "shader \"Kiln/StandardMetallic\" pass \"DEFERRED\": LightMode Deferred",
-          "shader \"Hidden/Internal-DeferredShading\": the deferred path's light pass"}) {
+          "shader \"Hidden/Internal-DeferredShading\": the deferred path's light pass",
+          "shader \"Kiln/StandardMetallic\" pass \"ShadowCaster\": LightMode ShadowCaster",
+          "shader \"Hidden/Internal-ScreenSpaceShadows\": the screen-space shadow collector"}) {
         EXPECT_NE(skipped.find(expected), std::string::npos) << expected << "\n" << skipped;
     }
     // Defaults, intensity 0, no light, then each Range() property at both ends.

@@ -274,15 +274,7 @@ class GltfConformanceTest : public RuntimeTest {
         settings.height = view.height;
         scene.id = runtime::NewSceneId();  // the test edits scenes between frames
         runtime::LinearImage image = Render(scene, settings);
-        // KILN_TEST_IMAGES=<folder>: each render kept as <test>-<n>.png, to look at.
-        if (const char* dir = std::getenv("KILN_TEST_IMAGES")) {
-            static int n = 0;
-            const std::string name =
-                ::testing::UnitTest::GetInstance()->current_test_info()->name();
-            EXPECT_TRUE(Ok(runtime::WriteDisplayPng(
-                std::string(dir) + "/" + name + "-" + std::to_string(n++) + ".png", image,
-                color_)));
-        }
+        KeepImage(image);  // KILN_TEST_IMAGES=<folder>: each render kept, to look at
         return image;
     }
 };

@@ -151,6 +151,18 @@ class RuntimeTest : public ::testing::Test {
         return image;
     }
 
+    // KILN_TEST_IMAGES=<folder>: keeps `image` as <test>-<n>.png there, to look at.
+    void KeepImage(const runtime::LinearImage& image) {
+        if (const char* dir = std::getenv("KILN_TEST_IMAGES")) {
+            static int n = 0;
+            const std::string name =
+                ::testing::UnitTest::GetInstance()->current_test_info()->name();
+            EXPECT_TRUE(Ok(runtime::WriteDisplayPng(
+                std::string(dir) + "/" + name + "-" + std::to_string(n++) + ".png", image,
+                color_)));
+        }
+    }
+
     runtime::Renderer renderer_;
     runtime::ColorPipeline color_;
 };

@@ -167,9 +167,13 @@ void LintDeclarations(CompileState& st, size_t s) {
                             "' builds it only where a "
                             "material enables it: use multi_compile if code sets it");
                 }
+                // The engine's keywords (light types, shadows) have their companions per pass
+                // by design: Unity's own shortcuts declare SHADOWS_SCREEN with other sets in
+                // ForwardBase and ForwardAdd.
                 auto [it, fresh] = first.emplace(k, std::make_pair(pass, &set));
                 const variants::KeywordSet& other = *it->second.second;
-                if (!fresh && (other.kind != set.kind || other.keywords != set.keywords) &&
+                if (!fresh && !engine &&
+                    (other.kind != set.kind || other.keywords != set.keywords) &&
                     reported.insert("7007" + k).second) {
                     st.diags
                         .Warning(DiagCode::kLintKeywordDeclaredTwoWays, file, set.range,

@@ -221,6 +221,21 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                     "transform (default 1; the deferred path and --frame-debug draw 1)")
         ->check(CLI::IsMember({1u, 2u, 4u, 8u}).description(""))
         ->option_text("1|2|4|8");
+    cmd->add_option("--shadows", a->frame.shadows,
+                    "Real-time shadows of the pixel lights from the objects' ShadowCaster "
+                    "passes, on the forward path: off, hard, or soft (SHADOWS_SOFT) "
+                    "(default off)")
+        ->transform(CLI::CheckedTransformer(
+                        std::map<std::string, runtime::Shadows>{{"off", runtime::Shadows::kOff},
+                                                                {"hard", runtime::Shadows::kHard},
+                                                                {"soft", runtime::Shadows::kSoft}},
+                        CLI::ignore_case)
+                        .description(""))
+        ->option_text("off|hard|soft");
+    cmd->add_option("--shadow-resolution", a->frame.shadow_resolution,
+                    "Texels a side of each shadow map, 16 to 8192 (default 2048)")
+        ->check(CLI::Range(16u, 8192u).description(""))
+        ->option_text("N");
     cmd->add_option("--gbuffer-normals", a->frame.gbuffer.normals,
                     "Deferred path: the G-buffer normal target's format (default rgb10a2, "
                     "Unity's)")
@@ -412,6 +427,9 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         if (a->frame.path == runtime::RenderPath::kDeferred) {
             deferred = std::to_string(stats.gbuffer_draws) + " G-buffer draws, " +
                        std::to_string(stats.light_passes) + " light passes, ";
+        }
+        if (stats.shadow_draws > 0) {
+            deferred += std::to_string(stats.shadow_draws) + " shadow draws, ";
         }
         std::printf(
             "%s: %ux%u, camera '%s', %u objects, %s%u base + %u additive passes (%u with vertex "

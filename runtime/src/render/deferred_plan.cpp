@@ -91,13 +91,7 @@ Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
             forward.push_back(&item);
             continue;
         }
-        DrawRequest r;
-        r.instance = item.instance;
-        r.primitive = item.primitive;
-        r.material = &m;
-        r.pass = *passes.deferred;
-        r.center = item.center;
-        r.keywords = m.keywords;
+        DrawRequest r = ObjectRequest(item, *passes.deferred);
         // Ambient from the light probes, as the forward base pass asks for it.
         r.keywords.emplace_back(pack::kKeywordLightProbeSH);
         if (octahedral) {

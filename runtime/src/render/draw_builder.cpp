@@ -82,6 +82,7 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
                              uint32_t variant,
                              bool additive,
                              bool mirrored,
+                             bool depth_only,
                              const std::vector<std::string>& chosen,
                              Binding& out) {
     const pack::Pack& pack = s_.packs[m.pack]->pack;
@@ -107,6 +108,11 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
                      m.name + ": pass '" + pack::PassLabel(pack, pass) + "': " + e.error().message};
     }
     state.front_clockwise = mirrored;
+    if (depth_only) {
+        for (vk::BlendTarget& t : state.targets) {
+            t.mask = 0;
+        }
+    }
     if (additive) {
         // The frame's alpha is coverage (docs/runtime.md): an additive pass adds light, and
         // its Blend One One would add 1 to the alpha per light.
@@ -131,10 +137,13 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
 }
 
 // A frame target sampled by name (the light pass's G-buffer and depth): nearest texels, clamped.
+// A shadow map: with the depth-comparison sampler.
 Status DrawBuilder::TargetTexture(uint32_t target, pack::ResourceKind kind, Draw::Write& out) {
     VkSampler sampler = VK_NULL_HANDLE;
-    if (Status e =
-            s_.Sampler(TextureWrap::kClampToEdge, TextureWrap::kClampToEdge, true, sampler, true);
+    if (Status e = frame_->targets[target].shadow_map
+                       ? s_.ShadowSampler(sampler)
+                       : s_.Sampler(TextureWrap::kClampToEdge, TextureWrap::kClampToEdge, true,
+                                    sampler, true);
         !e.ok()) {
         return e;
     }
@@ -149,7 +158,10 @@ Status DrawBuilder::TargetTexture(uint32_t target, pack::ResourceKind kind, Draw
     return {};
 }
 
-Status DrawBuilder::Textures(const MaterialInstance& m, const pack::VariantRec& v, Binding& out) {
+Status DrawBuilder::Textures(const MaterialInstance& m,
+                             const pack::VariantRec& v,
+                             int shadow_map,
+                             Binding& out) {
     const pack::Pack& pack = s_.packs[m.pack]->pack;
     for (uint32_t module : {v.vertex_module, v.fragment_module}) {
         const pack::ModuleRec mod = pack.Module(module).value();
@@ -171,13 +183,41 @@ Status DrawBuilder::Textures(const MaterialInstance& m, const pack::VariantRec& 
                              m.name + ": resource '" + name +
                                  "' is a storage resource, which forward passes cannot bind"};
             }
-            if (auto t = target_textures_.find(name); t != target_textures_.end()) {
+            auto named = target_textures_.find(name);
+            if (named != target_textures_.end() ||
+                (shadow_map >= 0 && name == pack::kTextureShadowMap)) {
+                const uint32_t target =
+                    named != target_textures_.end() ? named->second : uint32_t(shadow_map);
                 Draw::Write w{res.set, res.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
-                if (Status e = TargetTexture(t->second, kind, w); !e.ok()) {
+                if (Status e = TargetTexture(target, kind, w); !e.ok()) {
                     return e;
                 }
                 const float fw = float(frame_->width), fh = float(frame_->height);
                 out.texel_sizes[name + "_TexelSize"] = {1.0f / fw, 1.0f / fh, fw, fh};
+                out.textures.push_back(w);
+                continue;
+            }
+            if (name == pack::kTextureShadowMap && (kind == pack::ResourceKind::kSeparateImage ||
+                                                    kind == pack::ResourceKind::kSeparateSampler)) {
+                // A depth map or cube compared with a comparison sampler, drawn without its
+                // light's map (kiln test, shadows off): the renderer's map at depth 1, lit.
+                Draw::Write w{res.set, res.binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE};
+                if (kind == pack::ResourceKind::kSeparateSampler) {
+                    w.type = VK_DESCRIPTOR_TYPE_SAMPLER;
+                    if (Status e = s_.ShadowSampler(w.image.sampler); !e.ok()) {
+                        return e;
+                    }
+                } else {
+                    const vk::Image* map = nullptr;
+                    if (Status e =
+                            s_.DefaultShadowMap(render::ShapeOf(res) == vk::ImageShape::kCube, map);
+                        !e.ok()) {
+                        return e;
+                    }
+                    w.image = {VK_NULL_HANDLE, map->view,
+                               VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+                }
+                out.texel_sizes[name + "_TexelSize"] = {1, 1, 1, 1};
                 out.textures.push_back(w);
                 continue;
             }
@@ -282,16 +322,19 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
     // glTF 2.0, 3.5.3: a node whose transform has a negative determinant has its winding
     // reversed.
     const bool mirrored =
-        request.instance && glm::determinant(glm::mat3(request.instance->world)) < 0.0f;
-    auto [it, fresh] = bindings_.try_emplace({&m, pass, choice.variant, additive, mirrored});
+        (request.instance && glm::determinant(glm::mat3(request.instance->world)) < 0.0f) !=
+        request.mirrored_view;
+    auto [it, fresh] =
+        bindings_.try_emplace({&m, pass, choice.variant, additive, mirrored, request.shadow_map});
     Binding& binding = it->second;
     if (fresh) {
-        if (Status e = Pipeline(m, pass, choice.variant, additive, mirrored, chosen, binding);
+        if (Status e = Pipeline(m, pass, choice.variant, additive, mirrored, request.depth_only,
+                                chosen, binding);
             !e.ok()) {
             bindings_.erase(it);
             return e;
         }
-        if (Status e = Textures(m, v, binding); !e.ok()) {
+        if (Status e = Textures(m, v, request.shadow_map, binding); !e.ok()) {
             bindings_.erase(it);
             return e;
         }
@@ -337,7 +380,10 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
         render::ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f));
     const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
         for (const Values* table : std::initializer_list<const Values*>{
-                 &object, &light_values, &frame_values_, &binding.texel_sizes}) {
+                 request.values, &object, &light_values, &frame_values_, &binding.texel_sizes}) {
+            if (!table) {
+                continue;
+            }
             if (auto found = table->find(name); found != table->end()) {
                 return &found->second;
             }

@@ -59,9 +59,14 @@ class DrawBuilder {
                     uint32_t variant,
                     bool additive,
                     bool mirrored,
+                    bool depth_only,
                     const std::vector<std::string>& chosen,
                     Binding& out);
-    Status Textures(const render::MaterialInstance& m, const pack::VariantRec& v, Binding& out);
+    // `shadow_map`: the frame target bound as _ShadowMapTexture (-1: none).
+    Status Textures(const render::MaterialInstance& m,
+                    const pack::VariantRec& v,
+                    int shadow_map,
+                    Binding& out);
     Status TargetTexture(uint32_t target, pack::ResourceKind kind, Draw::Write& out);
     void Uniforms(const pack::Pack& pack,
                   const pack::VariantRec& v,
@@ -79,8 +84,9 @@ class DrawBuilder {
     std::map<std::string, uint32_t, std::less<>> target_textures_;
     std::vector<uint8_t> uniforms_;
     VkDeviceSize alignment_ = 256;
-    // (material, pass, variant, additive, mirrored)
-    std::map<std::tuple<const render::MaterialInstance*, uint32_t, uint32_t, bool, bool>, Binding>
+    // (material, pass, variant, additive, mirrored, shadow map)
+    std::map<std::tuple<const render::MaterialInstance*, uint32_t, uint32_t, bool, bool, int>,
+             Binding>
         bindings_;
 };
 

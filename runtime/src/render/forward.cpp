@@ -12,6 +12,7 @@
 #include "render/frame.h"
 #include "render/frame_values.h"
 #include "render/renderer_state.h"
+#include "render/shadow_passes.h"
 
 namespace kiln::runtime {
 
@@ -85,6 +86,19 @@ Status RenderFrame(Renderer::State& s,
                          "' cannot render " + std::to_string(sampled.msaa) +
                          " samples per pixel (it has " + counts + ")"};
     }
+    // Shadows are drawn on the forward path only (Unity's deferred path has them in its light
+    // pass, which Kiln's does not yet), and not for the frame debugger, which reads every
+    // target back at the frame's size.
+    if (sampled.shadows != Shadows::kOff && (settings.path == RenderPath::kDeferred || capture)) {
+        sampled.shadows = Shadows::kOff;
+        stats.warnings.Warning(DiagCode::kRenderWarning, scene.path, kNoPosition,
+                               std::string("shadows are off for ") +
+                                   (capture ? "the frame debugger" : "the deferred path") +
+                                   ": drawn without them");
+    }
+    if (sampled.shadows != Shadows::kOff && !resources.bounds) {
+        resources.bounds = SceneBounds(scene);
+    }
     // After planning: the materials for the usage file and what the frame resolved and uploaded.
     auto draw = [&](const render::DrawList& list, auto&& record) -> Status {
         s.NoteMaterials(list);
@@ -105,7 +119,7 @@ Status RenderFrame(Renderer::State& s,
         });
     }
     render::ForwardPlan plan;
-    if (Status e = render::PlanForward(s.PackList(), scene, settings, camera.position, color,
+    if (Status e = render::PlanForward(s.PackList(), scene, sampled, camera.position, color,
                                        resources.materials, plan, stats.warnings);
         !e.ok()) {
         return e;
@@ -131,6 +145,11 @@ Status DrawPlan(Renderer::State& s,
     Frame frame;
     frame.width = settings.width;
     frame.height = settings.height;
+    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats,
+                        observer != nullptr);
+    // The shadow passes first (their targets after the forward pass's three).
+    ShadowFrame shadows;
+    const bool shadowed = !plan.shadows.lights.empty();
     FrameTarget color_target{"color", s.color_format, false, {}};
     // Alpha 0: not covered (the frame's alpha is coverage; resolved, the covered fraction).
     color_target.clear.color = {
@@ -141,23 +160,46 @@ Status DrawPlan(Renderer::State& s,
     depth_target.samples = VkSampleCountFlagBits(samples);
     frame.targets = {color_target, depth_target};
     frame.output = 0;
+    if (samples > 1) {
+        FrameTarget resolved{"color (resolved)", s.color_format, false, {}};
+        frame.targets.push_back(resolved);
+        frame.output = 2;
+    }
+    if (shadowed) {
+        if (Status e = AddShadowPasses(s, builder, settings, plan.shadows, *resources.bounds, frame,
+                                       shadows);
+            !e.ok()) {
+            return e;
+        }
+    }
     FramePass& forward = frame.passes.emplace_back();
     forward.name = "forward";
     forward.colors = {0};
     forward.depth = 1;
     if (samples > 1) {
-        FrameTarget resolved{"color (resolved)", s.color_format, false, {}};
-        frame.targets.push_back(resolved);
-        frame.output = 2;
         forward.resolves = {2};
     }
-
-    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats,
-                        observer != nullptr);
+    forward.sampled = shadows.sampled;
     builder.BeginPass(frame, forward);
-    if (Status e = builder.BuildForward(plan.draws, forward.draws); !e.ok()) {
-        return e;
+    if (!shadowed) {
+        if (Status e = builder.BuildForward(plan.draws, forward.draws); !e.ok()) {
+            return e;
+        }
+    } else {
+        // Each receiver binds its light's shadow and reads its values.
+        std::vector<render::DrawRequest> requests = plan.draws;
+        for (render::DrawRequest& r : requests) {
+            if (auto it = shadows.receivers.find(r.light);
+                r.light && it != shadows.receivers.end()) {
+                r.shadow_map = int(it->second.target);
+                r.values = it->second.values;
+            }
+        }
+        if (Status e = builder.BuildForward(requests, forward.draws); !e.ok()) {
+            return e;
+        }
     }
+    stats.shadow_draws = shadows.draws;
     stats.objects = plan.objects;
     frame.uniforms = builder.TakeUniforms();
     return RecordFrame(s, frame, out, stats, observer);

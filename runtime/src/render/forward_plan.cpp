@@ -5,6 +5,7 @@
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
 #include "render/frame_values.h"
+#include "render/shadow_plan.h"
 
 namespace kiln::render {
 namespace {
@@ -56,9 +57,22 @@ ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
             out.add = p;
         } else if (mode == pack::kLightModeDeferred && !out.deferred) {
             out.deferred = p;
+        } else if (mode == pack::kLightModeShadowCaster && !out.shadow_caster) {
+            out.shadow_caster = p;
         }
     }
     return out;
+}
+
+DrawRequest ObjectRequest(const DrawItem& item, uint32_t pass) {
+    DrawRequest r;
+    r.instance = item.instance;
+    r.primitive = item.primitive;
+    r.material = item.material;
+    r.pass = pass;
+    r.center = item.center;
+    r.keywords = item.material->keywords;
+    return r;
 }
 
 std::string LightName(const Light* light) {
@@ -145,6 +159,9 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
         if (AddForwardRequests(packs, scene, settings, out.list, item, out.draws, warnings)) {
             ++out.objects;
         }
+    }
+    if (settings.shadows != runtime::Shadows::kOff) {
+        return PlanShadows(packs, scene, settings, color, out, out.shadows, warnings);
     }
     return {};
 }

@@ -20,6 +20,7 @@
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
 #include "render/draw_list.h"
+#include "render/frame_values.h"
 #include "render/material_binding.h"
 
 namespace kiln::render {
@@ -30,6 +31,7 @@ struct ShaderPasses {
     std::vector<uint32_t> base;
     std::optional<uint32_t> add;
     std::optional<uint32_t> deferred;
+    std::optional<uint32_t> shadow_caster;  // the first ShadowCaster pass
 };
 ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader);
 
@@ -45,12 +47,35 @@ struct DrawRequest {
     std::vector<std::string> keywords;          // what the draw asks the selector for
     std::string reason;                         // "material on node 'n': point light 'l'"
     glm::vec3 center{0.0f};                     // the object's, where SH lights are projected
+    // Set when the frame is built: values read before the frame's (a shadow pass's camera, the
+    // shadow a receiver samples), the frame target bound as _ShadowMapTexture (-1: none), and
+    // whether the pass's view mirrors the winding (a cube face).
+    const Values* values = nullptr;
+    int shadow_map = -1;
+    bool mirrored_view = false;
+    bool depth_only = false;  // colour writes masked off (a shadow pass's unused target)
 };
+
+// The shadows of a forward frame (render/shadow_plan.h).
+struct ShadowPlan {
+    std::vector<const runtime::Light*> lights;  // shadowed, in first-use order
+    // The ShadowCaster pass of each opaque object that has one, with SHADOWS_DEPTH (directional
+    // and spot maps, the camera's depth) and with SHADOWS_CUBE (point maps).
+    std::vector<DrawRequest> casters, cube_casters;
+    // The collector, when a directional light casts: its material and request (SHADOWS_SOFT with
+    // soft shadows).
+    std::optional<MaterialInstance> collector;
+    std::optional<DrawRequest> collect;
+};
+
+// A request of `item`'s pass `pass` with the material's keywords (no light, reason unset).
+DrawRequest ObjectRequest(const DrawItem& item, uint32_t pass);
 
 struct ForwardPlan {
     DrawList list;                   // the requests point into it
     std::vector<DrawRequest> draws;  // in drawing order
     uint32_t objects = 0;            // primitives drawn
+    ShadowPlan shadows;              // with settings.shadows on
 };
 
 // The forward requests of one item of `list`, appended to `out`: its base passes, then one

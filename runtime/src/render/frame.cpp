@@ -173,6 +173,17 @@ vk::TargetFormats FormatsOf(const Frame& frame, const FramePass& pass) {
     return out;
 }
 
+VkExtent2D ExtentOf(const Frame& frame, const FrameTarget& target) {
+    return target.size > 0 ? VkExtent2D{target.size, target.size}
+                           : VkExtent2D{frame.width, frame.height};
+}
+
+VkExtent2D ExtentOf(const Frame& frame, const FramePass& pass) {
+    const std::vector<uint32_t> attachments = Attachments(pass);
+    return attachments.empty() ? VkExtent2D{frame.width, frame.height}
+                               : ExtentOf(frame, frame.targets[attachments.front()]);
+}
+
 FrameObjects::~FrameObjects() {
     if (pool) {
         vkDestroyDescriptorPool(c.device, pool, nullptr);
@@ -204,7 +215,7 @@ void Layouts::To(VkCommandBuffer cmd, uint32_t t, VkImageLayout want) {
     b.newLayout = want;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.image = images[t].image;
-    b.subresourceRange = {AspectsOf(frame.targets[t]), 0, 1, 0, 1};
+    b.subresourceRange = {AspectsOf(frame.targets[t]), 0, 1, 0, frame.targets[t].cube ? 6u : 1u};
     const VkPipelineStageFlags stages =
         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
         VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
@@ -244,6 +255,13 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
     const vk::Context& c = s.context;
     for (const FrameTarget& t : frame.targets) {
         vk::Image& image = f.targets.emplace_back();
+        if (t.shadow_map) {  // depth only, sampled with comparisons
+            if (Status e = vk::CreateShadowMap(c, t.size, t.format, t.cube, image); !e.ok()) {
+                return e;
+            }
+            f.sampled_views.push_back(image.view);
+            continue;
+        }
         // Every single-sample target may be sampled by a later pass and read back (the frame
         // debugger); a multisampled one is only an attachment, resolved by its pass.
         const bool multisampled = t.samples != VK_SAMPLE_COUNT_1_BIT;
@@ -251,8 +269,9 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
             (t.depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
                      : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
             (multisampled ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
-        if (Status e = vk::CreateImage(c, frame.width, frame.height, t.format, usage, AspectsOf(t),
-                                       image, 1, t.samples);
+        const VkExtent2D extent = ExtentOf(frame, t);
+        if (Status e = vk::CreateImage(c, extent.width, extent.height, t.format, usage,
+                                       AspectsOf(t), image, 1, t.samples);
             !e.ok()) {
             return e;
         }
@@ -282,6 +301,20 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
         std::vector<VkImageView> views;
         for (uint32_t t : Attachments(pass)) {
             views.push_back(f.targets[t].view);
+            if (frame.targets[t].cube) {  // the face the pass draws, as a 2D view
+                VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+                view.image = f.targets[t].image;
+                view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+                view.format = frame.targets[t].format;
+                view.subresourceRange = {AspectsOf(frame.targets[t]), 0, 1, pass.layer, 1};
+                VkImageView face = VK_NULL_HANDLE;
+                if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &face);
+                    r != VK_SUCCESS) {
+                    return vk::VkError("cannot create a cube face view", r);
+                }
+                f.own_views.push_back(face);
+                views.back() = face;
+            }
         }
         for (uint32_t t : pass.resolves) {  // after the depth, as the render pass has them
             views.push_back(f.targets[t].view);
@@ -290,8 +323,9 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
         fb.renderPass = rp;
         fb.attachmentCount = uint32_t(views.size());
         fb.pAttachments = views.data();
-        fb.width = frame.width;
-        fb.height = frame.height;
+        const VkExtent2D extent = ExtentOf(frame, pass);
+        fb.width = extent.width;
+        fb.height = extent.height;
         fb.layers = 1;
         VkFramebuffer framebuffer = VK_NULL_HANDLE;
         if (VkResult r = vkCreateFramebuffer(c.device, &fb, nullptr, &framebuffer);
@@ -333,7 +367,8 @@ void BeginPass(VkCommandBuffer cmd,
     for (uint32_t t : Attachments(pass)) {
         clear.push_back(frame.targets[t].clear);
     }
-    const uint32_t w = frame.width, h = frame.height;
+    const VkExtent2D extent = ExtentOf(frame, pass);
+    const uint32_t w = extent.width, h = extent.height;
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = render_pass;
     begin.framebuffer = f.framebuffers[p];
@@ -405,7 +440,6 @@ Status RecordFrame(Renderer::State& s,
     if (cmd == VK_NULL_HANDLE) {
         return Error{DiagCode::kRenderFailed, "cannot allocate a command buffer"};
     }
-    const VkRect2D full{{0, 0}, {frame.width, frame.height}};
     Layouts layouts{frame, f.targets,
                     std::vector<VkImageLayout>(frame.targets.size(), VK_IMAGE_LAYOUT_UNDEFINED)};
     // A mark before each pass and one after the last: the intervals are the passes' times.
@@ -416,7 +450,8 @@ Status RecordFrame(Renderer::State& s,
         layouts.Before(cmd, frame.passes[p]);
         timer.Mark(cmd, p, p > 0);
         BeginPass(cmd, frame, f, p, f.render_passes[p]);
-        RecordDraws(cmd, frame.passes[p].draws, f.sets[p], full);
+        RecordDraws(cmd, frame.passes[p].draws, f.sets[p],
+                    {{0, 0}, ExtentOf(frame, frame.passes[p])});
         vkCmdEndRenderPass(cmd);
     }
     timer.Mark(cmd, passes, true);

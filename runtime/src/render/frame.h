@@ -57,6 +57,12 @@ struct FrameTarget {
     // Samples per pixel (MSAA). A multisampled target is only an attachment: a pass resolves it
     // (FramePass::resolves) into a single-sample target that is read back or sampled.
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    // A shadow map (depth only): `size` x `size` texels whatever the frame's size, sampled with a
+    // depth-comparison sampler; `cube`: six layers (+X, -X, +Y, -Y, +Z, -Z) sampled as a cube, one
+    // pass drawing each (FramePass::layer). Not read back by the frame debugger.
+    bool shadow_map = false;
+    uint32_t size = 0;
+    bool cube = false;
 };
 
 struct FramePass {
@@ -71,6 +77,8 @@ struct FramePass {
     // Multisampled passes: the single-sample targets the colour attachments are resolved into
     // at the end of the pass, one per colour, in order.
     std::vector<uint32_t> resolves;
+    // The layer of a cube shadow map (FrameTarget::cube) the pass draws into.
+    uint32_t layer = 0;
     std::vector<Draw> draws;
 };
 
@@ -84,6 +92,10 @@ struct Frame {
 
 // The formats of a pass's targets: what its pipelines are created against.
 vk::TargetFormats FormatsOf(const Frame& frame, const FramePass& pass);
+
+// The size of a target, and of a pass's render area (its attachments').
+VkExtent2D ExtentOf(const Frame& frame, const FrameTarget& target);
+VkExtent2D ExtentOf(const Frame& frame, const FramePass& pass);
 
 // A target read back after a step: its index into Frame::targets and its texels (a depth
 // target's depth aspect, 4 bytes each).

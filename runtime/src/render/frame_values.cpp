@@ -140,8 +140,14 @@ Values FrameValues(const runtime::Scene& scene,
     v["unity_DeltaTime"] = {1.0f / 60, 60.0f, 1.0f / 60, 60.0f};
     v[pack::kGlobalWorldSpaceCameraPos] = {camera.position.x, camera.position.y, camera.position.z};
     const float far = camera.zfar > 0 ? camera.zfar : 1e30f;
-    v[pack::kGlobalProjectionParams] = {1, camera.znear, far, camera.zfar > 0 ? 1 / far : 0};
+    // x = -1: the viewport flips clip space (+y is the top row, texture row 0), so
+    // ComputeScreenPos must flip y to give texture coordinates of the frame's targets (Unity's
+    // convention for a flipped projection).
+    v[pack::kGlobalProjectionParams] = {-1, camera.znear, far, camera.zfar > 0 ? 1 / far : 0};
     v[pack::kGlobalScreenParams] = {w, h, 1 + 1 / w, 1 + 1 / h};
+    // Shadow receivers drawn without their light's map (kiln test) read these: depth 0 against
+    // the renderer's default map at depth 1, lit (render/shadow_plan.h sets the real ones).
+    v[pack::kGlobalLightProjectionParams] = {0, 0, 0, 1};
     v["unity_MatrixV"] = Mat(camera.view);
     v["unity_MatrixInvV"] = Mat(glm::inverse(camera.view));
     v["unity_MatrixVP"] = Mat(camera.projection * camera.view);

@@ -51,6 +51,17 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
         for (const render::DrawRequest& r : forward.draws) {
             requests.push_back(&r);
         }
+        const render::ShadowPlan& shadows = forward.shadows;
+        if (!shadows.lights.empty()) {  // the shadow passes' draws
+            for (const auto* casters : {&shadows.casters, &shadows.cube_casters}) {
+                for (const render::DrawRequest& r : *casters) {
+                    requests.push_back(&r);
+                }
+            }
+            if (shadows.collect) {
+                requests.push_back(&*shadows.collect);
+            }
+        }
     }
     const render::DrawList& list = is_deferred ? deferred.list : forward.list;
     ScenePlan out;
@@ -77,6 +88,9 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     std::vector<const render::MaterialInstance*> used_instances = list.materials;
     if (deferred.light_material) {
         used_instances.push_back(&*deferred.light_material);
+    }
+    if (forward.shadows.collect) {
+        used_instances.push_back(&*forward.shadows.collector);
     }
     for (const render::MaterialInstance* m : used_instances) {
         const pack::Pack& p = *packs[m->pack];

@@ -29,6 +29,12 @@ Renderer::State::~State() {
     for (auto& [key, sampler] : samplers) {
         vkDestroySampler(context.device, sampler, nullptr);
     }
+    if (shadow_sampler) {
+        vkDestroySampler(context.device, shadow_sampler, nullptr);
+    }
+    for (auto& [cube, image] : default_shadow_maps) {
+        vk::DestroyImage(context, image);
+    }
     for (auto& [name, image] : default_textures) {
         vk::DestroyImage(context, image);
     }
@@ -177,6 +183,92 @@ Status Renderer::State::Sampler(TextureWrap u,
     }
     samplers[key] = sampler;
     out = sampler;
+    return {};
+}
+
+Status Renderer::State::ShadowSampler(VkSampler& out) {
+    if (!shadow_sampler) {
+        VkFormat format = VK_FORMAT_UNDEFINED;
+        if (Status e = ShadowMapFormat(format); !e.ok()) {
+            return e;
+        }
+        VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        info.magFilter = info.minFilter = shadow_filtered ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+        info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+        info.addressModeU = info.addressModeV = info.addressModeW =
+            VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+        info.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;  // depth 1: nothing casts there
+        info.compareEnable = VK_TRUE;
+        info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+        if (VkResult r = vkCreateSampler(context.device, &info, nullptr, &shadow_sampler);
+            r != VK_SUCCESS) {
+            return vk::VkError("cannot create the shadow-map sampler", r);
+        }
+    }
+    out = shadow_sampler;
+    return {};
+}
+
+Status Renderer::State::ShadowMapFormat(VkFormat& out) {
+    if (shadow_format == VK_FORMAT_UNDEFINED) {
+        // D32, else D16; filtered where the device can (lavapipe cannot: nearest comparisons).
+        const VkFormatFeatureFlags need =
+            VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+        const VkFormatFeatureFlags linear = VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+        for (VkFormatFeatureFlags want : {need | linear, need}) {
+            for (VkFormat f : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM}) {
+                VkFormatProperties props;
+                vkGetPhysicalDeviceFormatProperties(context.physical, f, &props);
+                if (shadow_format == VK_FORMAT_UNDEFINED &&
+                    (props.optimalTilingFeatures & want) == want) {
+                    shadow_format = f;
+                    shadow_filtered = (want & linear) != 0;
+                }
+            }
+        }
+        if (shadow_format == VK_FORMAT_UNDEFINED) {
+            return Error{DiagCode::kRenderFailed,
+                         "the device has no depth format it can render shadow maps into and "
+                         "sample (render without shadows)"};
+        }
+    }
+    out = shadow_format;
+    return {};
+}
+
+Status Renderer::State::DefaultShadowMap(bool cube, const vk::Image*& out) {
+    if (auto it = default_shadow_maps.find(cube); it != default_shadow_maps.end()) {
+        out = &it->second;
+        return {};
+    }
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    if (Status e = ShadowMapFormat(format); !e.ok()) {
+        return e;
+    }
+    vk::Image image;
+    if (Status e = vk::CreateShadowMap(context, 1, format, cube, image); !e.ok()) {
+        return e;
+    }
+    const Status cleared = vk::SubmitOnce(context, [&](VkCommandBuffer cmd) {
+        vk::ImageBarrier(cmd, image.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const VkClearDepthStencilValue far{1.0f, 0};
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0,
+                                          VK_REMAINING_ARRAY_LAYERS};
+        vkCmdClearDepthStencilImage(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1,
+                                    &all);
+        vk::ImageBarrier(cmd, image.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                         VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+    });
+    if (!cleared.ok()) {
+        vk::DestroyImage(context, image);
+        return cleared;
+    }
+    out = &(default_shadow_maps[cube] = image);
     return {};
 }
 

@@ -93,6 +93,10 @@ struct Renderer::State {
     // (wrap u, wrap v, nearest, nearest mips)
     std::map<std::tuple<TextureWrap, TextureWrap, bool, bool>, VkSampler> samplers;
     std::map<std::pair<std::string, vk::ImageShape>, vk::Image> default_textures;
+    VkSampler shadow_sampler = VK_NULL_HANDLE;      // ShadowSampler's, made on first use
+    VkFormat shadow_format = VK_FORMAT_UNDEFINED;   // ShadowMapFormat's, found on first use
+    bool shadow_filtered = false;                   // ... and whether it filters linearly
+    std::map<bool, vk::Image> default_shadow_maps;  // (cube) -> DefaultShadowMap's
     DiagnosticList notes;  // pipeline-cache warnings etc., reported with the next frame
     std::set<pack::UsageMaterial> used_materials;       // every frame's, for the usage file
     std::unique_ptr<vk::ModuleChecker> module_checker;  // null when the packs are trusted
@@ -120,6 +124,16 @@ struct Renderer::State {
                    bool nearest,
                    VkSampler& out,
                    bool nearest_mips = false);
+    // The shadow maps' sampler: a depth comparison (reference <= stored: lit) with bilinear
+    // filtering of its results (2x2 percentage-closer filtering) where the format filters
+    // (ShadowMapFormat), 1 (lit) outside the map.
+    Status ShadowSampler(VkSampler& out);
+    // The shadow maps' depth format: one the device draws into and samples (D32, else D16),
+    // preferring one it filters linearly.
+    Status ShadowMapFormat(VkFormat& out);
+    // A 1x1 shadow map (a cube: six faces) at depth 1, in DEPTH_STENCIL_READ_ONLY_OPTIMAL: what a
+    // receiver variant drawn without its light's map (kiln test, shadows off) samples: lit.
+    Status DefaultShadowMap(bool cube, const vk::Image*& out);
     // Unity's named defaults ("white", "black", "gray", "bump", "red"; others are "gray") in
     // the shape the shader declares.
     Status DefaultTexture(const std::string& name, vk::ImageShape shape, const vk::Image*& out);

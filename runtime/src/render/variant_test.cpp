@@ -256,6 +256,13 @@ std::vector<Case> Cases(const Renderer::State& s,
                                   "not on an object");
                 continue;
             }
+            if (name == pack::kShaderScreenSpaceShadows) {
+                // Drawn over the camera's depth with a light's shadow map, never on an object.
+                skipped.push_back("shader \"" + name +
+                                  "\": the screen-space shadow collector, drawn over the "
+                                  "camera's depth, not on an object");
+                continue;
+            }
             for (uint32_t pass = sr.first_pass; pass < sr.first_pass + sr.pass_count; ++pass) {
                 const pack::PassRec rec = pk.Pass(pass).value();
                 const std::string_view mode = pack::LightModeOf(pk, pass);

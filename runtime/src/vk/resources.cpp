@@ -155,6 +155,32 @@ Status CreateImage(const Context& c,
     return {};
 }
 
+Status CreateShadowMap(const Context& c, uint32_t size, VkFormat format, bool cube, Image& out) {
+    Image img;
+    img.format = format;
+    img.width = img.height = size;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {size, size, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = cube ? 6 : 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (Status e =
+            CreateImageAndView(c, info, cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D,
+                               VK_IMAGE_ASPECT_DEPTH_BIT, img);
+        !e.ok()) {
+        return e;
+    }
+    out = img;
+    return {};
+}
+
 void DestroyImage(const Context& c, Image& img) {
     if (img.view) {
         vkDestroyImageView(c.device, img.view, nullptr);

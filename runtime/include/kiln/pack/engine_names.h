@@ -37,6 +37,16 @@ inline constexpr const char* kKeywordPointCookie = "POINT_COOKIE";
 inline constexpr const char* kKeywordDirectionalCookie = "DIRECTIONAL_COOKIE";
 inline constexpr const char* kKeywordLightProbeSH = "LIGHTPROBE_SH";
 inline constexpr const char* kKeywordVertexLight = "VERTEXLIGHT_ON";
+// Shadows (docs/runtime.md, "Shadows"): the base pass of a shadowed main directional light asks
+// for SHADOWS_SCREEN (a screen-space shadow texture); additive passes ask for SHADOWS_SCREEN,
+// SHADOWS_DEPTH (spot: a depth map) or SHADOWS_CUBE (point: a depth cube) by light type, and
+// SHADOWS_SOFT for filtered spot and point shadows; ShadowCaster passes are drawn with
+// SHADOWS_DEPTH (directional, spot, the camera's depth) or SHADOWS_CUBE (point).
+inline constexpr const char* kKeywordShadowsScreen = "SHADOWS_SCREEN";
+inline constexpr const char* kKeywordShadowsDepth = "SHADOWS_DEPTH";
+inline constexpr const char* kKeywordShadowsCube = "SHADOWS_CUBE";
+inline constexpr const char* kKeywordShadowsSoft = "SHADOWS_SOFT";
+
 // The deferred path's G-buffer normals in the octahedral encoding (URP's name; UnityGBuffer.cginc).
 inline constexpr const char* kKeywordGBufferNormalsOct = "_GBUFFER_NORMALS_OCT";
 
@@ -47,6 +57,10 @@ inline constexpr const char* kShaderUnlit = "Kiln/Unlit";
 // The deferred path's light pass (materials/internal/DeferredShading.shader; Unity's name for its
 // own): the first loaded pack that has a shader of this name provides it.
 inline constexpr const char* kShaderDeferredShading = "Hidden/Internal-DeferredShading";
+// The screen-space shadow collector (materials/internal/ScreenSpaceShadows.shader; Unity's name):
+// a directional light's shadow map read at the camera depth's world positions into a screen
+// texture, filtered with SHADOWS_SOFT.
+inline constexpr const char* kShaderScreenSpaceShadows = "Hidden/Internal-ScreenSpaceShadows";
 // kiln stability's grid harness (templates/stability/KilnStabilityGrid.shader), compiled when the
 // command runs; kiln/runtime/template_stability.h fills its properties.
 inline constexpr const char* kShaderStabilityGrid = "Hidden/Kiln/StabilityGrid";
@@ -61,6 +75,10 @@ inline constexpr const char* kTextureGBuffer0 = "_CameraGBufferTexture0";
 inline constexpr const char* kTextureGBuffer1 = "_CameraGBufferTexture1";
 inline constexpr const char* kTextureGBuffer2 = "_CameraGBufferTexture2";
 inline constexpr const char* kTextureCameraDepth = "_CameraDepthTexture";
+// A shadowed light's map as its receivers sample it: the screen-space shadows (SHADOWS_SCREEN),
+// a depth map (SHADOWS_DEPTH) or a depth cube (SHADOWS_CUBE); the collector samples the light's
+// depth map by this name.
+inline constexpr const char* kTextureShadowMap = "_ShadowMapTexture";
 
 // Built-in globals the renderer fills per frame, light or draw that are not named unity_* or
 // UNITY_* (every such name is the engine's too: IsEngineGlobal). docs/shader-library.md.
@@ -74,10 +92,13 @@ inline constexpr const char* kGlobalProjectionParams = "_ProjectionParams";
 inline constexpr const char* kGlobalScreenParams = "_ScreenParams";
 inline constexpr const char* kGlobalZBufferParams = "_ZBufferParams";
 inline constexpr const char* kGlobalLightPositionRange = "_LightPositionRange";
-// Unity sets these too; Kiln's renderer does not yet (shadows, cookies: issue 18), and a shader
-// reading them gets zero, as in Unity without that feature.
-inline constexpr const char* kGlobalLightMatrix0 = "_LightMatrix0";
+// Shadows: (1 - strength, 0, fade scale, fade offset) and the depth cube's projection
+// (-f/(f-n), -f n/(f-n), bias, 1) (UnityShadowLibrary.cginc).
 inline constexpr const char* kGlobalLightShadowData = "_LightShadowData";
+inline constexpr const char* kGlobalLightProjectionParams = "_LightProjectionParams";
+// Unity sets these too; Kiln's renderer does not yet (cookies), and a shader reading them gets
+// zero, as in Unity without that feature.
+inline constexpr const char* kGlobalLightMatrix0 = "_LightMatrix0";
 inline constexpr const char* kGlobalSpecColor = "_SpecColor";
 
 inline constexpr const char* kEngineGlobals[] = {
@@ -93,17 +114,25 @@ inline constexpr const char* kEngineGlobals[] = {
     kGlobalLightPositionRange,
     kGlobalLightMatrix0,
     kGlobalLightShadowData,
+    kGlobalLightProjectionParams,
     kGlobalSpecColor,
     kTextureGBuffer0,
     kTextureGBuffer1,
     kTextureGBuffer2,
     kTextureCameraDepth,
+    kTextureShadowMap,
 };
 
-// Whether the engine, not a material, sets the global `name`.
+// Whether the engine, not a material, sets the global `name` (an engine texture's
+// <name>_TexelSize too).
 constexpr bool IsEngineGlobal(std::string_view name) {
     if (name.substr(0, 6) == "unity_" || name.substr(0, 6) == "UNITY_") {
         return true;
+    }
+    constexpr std::string_view kTexelSize = "_TexelSize";
+    if (name.size() > kTexelSize.size() &&
+        name.substr(name.size() - kTexelSize.size()) == kTexelSize) {
+        name = name.substr(0, name.size() - kTexelSize.size());
     }
     for (const char* g : kEngineGlobals) {
         if (name == g) {

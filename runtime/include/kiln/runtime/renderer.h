@@ -54,6 +54,10 @@ struct GBufferSettings {
     bool octahedral = false;
 };
 
+// Real-time shadows of the pixel lights from the objects' ShadowCaster passes (forward path):
+// hard (each comparison filtered over 2x2 texels) or soft (SHADOWS_SOFT: a wider filter).
+enum class Shadows { kOff, kHard, kSoft };
+
 struct FrameSettings {
     uint32_t width = 960, height = 540;
     // A scene camera index; kCameraDefault: the first, or one framing the scene when it has
@@ -71,6 +75,10 @@ struct FrameSettings {
     // transform; the deferred path and the frame debugger draw 1 with a warning, as Unity's
     // deferred path does.
     uint32_t msaa = 1;
+    // Off by default, as a scene file says nothing about shadows; the deferred path and the frame
+    // debugger draw without them (a K0010 warning).
+    Shadows shadows = Shadows::kOff;
+    uint32_t shadow_resolution = 2048;  // texels a side of each map (a cube: of each face)
 };
 
 struct FrameStats {
@@ -81,6 +89,7 @@ struct FrameStats {
     uint32_t sh_lit = 0;         // base draws with lights in their spherical harmonics
     uint32_t gbuffer_draws = 0;  // deferred path: Deferred passes into the G-buffer
     uint32_t light_passes = 0;   // deferred path: light passes over the G-buffer
+    uint32_t shadow_draws = 0;   // ShadowCaster draws into maps and the camera depth, collectors
     uint32_t pipelines_created = 0;
     // Device uploads this frame: vertex and index buffers, and material instances resolved. A
     // scene with an id (Scene::id) uploads them on its first frame only.
