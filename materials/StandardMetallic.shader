@@ -307,9 +307,12 @@ Shader "Kiln/StandardMetallic"
             #pragma vertex MetallicVertex
             #pragma target 3.0  // GGX (UNITY_BRDF_PBS is BRDF3 below shader model 3.0, as in Unity)
             #pragma fragment AddFragment
-            #pragma multi_compile_fragment DIRECTIONAL POINT SPOT
-            #pragma multi_compile_fragment _ SHADOWS_SCREEN SHADOWS_DEPTH SHADOWS_CUBE
-            #pragma multi_compile_fragment _ SHADOWS_SOFT
+            // Unity's light and shadow combinations (SHADOWS_SCREEN for directional lights,
+            // SHADOWS_DEPTH for spot, SHADOWS_CUBE for point, SHADOWS_SOFT with the last two),
+            // without cookies and baked shadows, which Kiln does not render.
+            #pragma multi_compile_fwdadd_fullshadows
+            #pragma skip_variants POINT_COOKIE DIRECTIONAL_COOKIE
+            #pragma skip_variants SHADOWS_SHADOWMASK LIGHTMAP_SHADOW_MIXING
             #pragma shader_feature_local _NORMALMAP
             #pragma shader_feature_local_fragment _METALLICGLOSSMAP
             #pragma shader_feature_local_fragment _ALPHATEST_ON

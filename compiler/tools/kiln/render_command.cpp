@@ -233,7 +233,8 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                         .description(""))
         ->option_text("off|hard|soft");
     cmd->add_option("--shadow-resolution", a->frame.shadow_resolution,
-                    "Texels a side of each shadow map, 16 to 8192 (default 2048)")
+                    "Texels a side of each shadow map, 16 to 8192 (default 2048; a point "
+                    "light's cube faces half that)")
         ->check(CLI::Range(16u, 8192u).description(""))
         ->option_text("N");
     cmd->add_option("--gbuffer-normals", a->frame.gbuffer.normals,

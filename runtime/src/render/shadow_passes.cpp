@@ -70,13 +70,16 @@ Status AddShadowPasses(Renderer::State& s,
     const uint32_t resolution = std::clamp(settings.shadow_resolution, 16u, 8192u);
     std::optional<uint32_t> camera_depth;
     for (const Light* light : plan.lights) {
-        const render::LightShadow& shadow =
-            out.shadows.emplace_back(render::ShadowOf(*light, bounds, resolution));
+        // A point light's cube has six faces of half the resolution (a quarter of the texels
+        // each), as Unity sizes them: 1.5 times a 2D map's memory instead of 6.
         const bool cube = light->type == LightType::kPoint;
+        const uint32_t size = cube ? std::max(resolution / 2, 16u) : resolution;
+        const render::LightShadow& shadow =
+            out.shadows.emplace_back(render::ShadowOf(*light, bounds, size));
         FrameTarget map{"shadow map: " + render::LightName(light), format, true, {}, false};
         map.clear.depthStencil = {1.0f, 0};
         map.shadow_map = true;
-        map.size = resolution;
+        map.size = size;
         map.cube = cube;
         const uint32_t map_target = uint32_t(frame.targets.size());
         frame.targets.push_back(map);

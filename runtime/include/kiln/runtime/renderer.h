@@ -78,7 +78,7 @@ struct FrameSettings {
     // Off by default, as a scene file says nothing about shadows; the deferred path and the frame
     // debugger draw without them (a K0010 warning).
     Shadows shadows = Shadows::kOff;
-    uint32_t shadow_resolution = 2048;  // texels a side of each map (a cube: of each face)
+    uint32_t shadow_resolution = 2048;  // texels a side of each map (a cube's faces: half)
 };
 
 struct FrameStats {
