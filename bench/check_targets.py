@@ -2,12 +2,13 @@
 """Checks Kiln's speed targets against a Google Benchmark JSON report.
 
 Usage: check_targets.py report.json
-Two kinds of target:
+Three kinds of target:
 - a benchmark name and the most real time (ms) one iteration may take (the fastest repetition
   where there are several, the least disturbed by whatever else the machine runs);
 - a benchmark's counter and its largest value: the ratio of worker isolation's compile time to
   in-process compilation's (issue 13), which the benchmark measures by alternating the two modes
   so that a machine that speeds up or slows down during the run affects both alike.
+- a benchmark's time over another's, both from this run (the variant lookup's).
 Exits 1 when a target is missed or its benchmark is absent, printing every measured value either way.
 """
 import json
@@ -24,6 +25,14 @@ COUNTERS = {
         (1.15, "the shipped materials compile in kiln-worker processes within 15% of in-process"),
     ("BM_Isolation1000Variants", "ratio"):
         (1.15, "a 1000-variant shader compiles in kiln-worker processes within 15% of in-process"),
+}
+
+# (benchmark, reference benchmark) -> (largest ratio of their fastest times, what it stands for):
+# measured in one run, so the machine's speed cancels.
+RATIOS = {
+    ("BM_VariantSelectorSelect", "BM_PackKeyForAndFindVariant"):
+        (1.0, "the runtime's Select (usage kept) costs no more than the pack's own KeyFor + "
+              "FindVariant"),
 }
 
 UNIT_TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
@@ -70,7 +79,13 @@ def main() -> int:
         detail = ", ".join(f"{k} {v:.0f}" for k, v in bench.items() if k.endswith("_ms"))
         failed += check(f"{name} {counter}", value, limit, meaning,
                         lambda: f"{value:.3f} ({detail}; target <= {limit:.2f}")
-    total = len(TARGETS) + len(COUNTERS)
+    for (name, reference), (limit, meaning) in RATIOS.items():
+        a, b = times.get(name), times.get(reference)
+        ratio = a / b if a is not None and b else None
+        failed += check(f"{name} / {reference}", ratio, limit, meaning,
+                        lambda: f"{ratio:.3f} ({a * 1e6:.0f} ns / {b * 1e6:.0f} ns; "
+                                f"target <= {limit:.2f}")
+    total = len(TARGETS) + len(COUNTERS) + len(RATIOS)
     print(f"bench: {total - failed} passed, {failed} failed")
     return 1 if failed else 0
 

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <tuple>
 
 #include "kiln/base/files.h"
 #include "kiln/pack/pass_id.h"
@@ -34,6 +35,74 @@ std::string JoinKeywords(const std::vector<std::string>& keywords) {
     return out;
 }
 
+const VariantSelector::PassTable& VariantSelector::TableFor(uint32_t pass) {
+    if (tables_.empty()) {
+        tables_.resize(pack_->Count(SectionTag::kPasses));
+    }
+    PassTable& t = tables_[pass];
+    if (t.built) {
+        return t;
+    }
+    t.built = true;
+    const PassRec p = pack_->Pass(pass).value();
+    for (uint32_t s = 0; s < p.keyword_set_count; ++s) {
+        const KeywordSetRec set = pack_->KeywordSet(p.first_keyword_set + s).value();
+        t.sets.push_back(set);
+        for (uint32_t k = 0; k < set.keyword_count; ++k) {
+            const std::string_view kw = pack_->KeywordName(set.first_keyword + k);
+            if (!kw.empty()) {
+                t.keywords.push_back({kw, s, k});
+            }
+        }
+    }
+    std::sort(t.keywords.begin(), t.keywords.end(), [](const Declared& a, const Declared& b) {
+        return std::tie(a.keyword, a.set, a.index) < std::tie(b.keyword, b.set, b.index);
+    });
+    return t;
+}
+
+VariantKey VariantSelector::KeyFor(uint32_t pass, const std::vector<std::string>& keywords) {
+    // As Pack::KeyFor: in each set, the first of its keywords (in set order) that is enabled.
+    const PassTable& t = TableFor(pass);
+    constexpr uint32_t kUnset = ~0u;
+    constexpr size_t kSmall = 64;
+    uint32_t small[kSmall];
+    std::vector<uint32_t> large;  // only for a pass of more than kSmall sets
+    uint32_t* chosen = small;
+    if (t.sets.size() > kSmall) {
+        large.assign(t.sets.size(), kUnset);
+        chosen = large.data();
+    } else {
+        std::fill_n(small, t.sets.size(), kUnset);
+    }
+    for (const std::string& k : keywords) {
+        auto it = std::lower_bound(
+            t.keywords.begin(), t.keywords.end(), std::string_view(k),
+            [](const Declared& d, std::string_view name) { return d.keyword < name; });
+        for (; it != t.keywords.end() && it->keyword == k; ++it) {
+            chosen[it->set] = std::min(chosen[it->set], it->index);
+        }
+    }
+    VariantKey key;
+    for (size_t s = 0; s < t.sets.size(); ++s) {
+        if (chosen[s] != kUnset) {
+            key.Set(t.sets[s].key_shift, t.sets[s].key_bits, chosen[s]);
+        }
+    }
+    return key;
+}
+
+std::map<VariantSelector::UsageKey, VariantSelector::Usage> VariantSelector::usage() const {
+    std::map<UsageKey, Usage> out;
+    for (const auto& [at, u] : usage_) {
+        const auto [pass, bits] = at;
+        const PassRec p = pack_->Pass(pass).value();
+        const std::string shader(pack_->String(pack_->Shader(p.shader).value().name));
+        out[{shader, PassLabel(*pack_, pass), pack_->KeywordsOf(pass, VariantKey(bits))}] = u;
+    }
+    return out;
+}
+
 Result<VariantChoice> VariantSelector::Select(uint32_t pass,
                                               const std::vector<std::string>& keywords,
                                               const std::string& requester) {
@@ -43,12 +112,8 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
                      "pass index " + std::to_string(pass) + " is out of range (the pack has " +
                          std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
     }
-    const VariantKey key = pack.KeyFor(pass, keywords);
-    const PassRec p = pack.Pass(pass).value();
-    const std::string shader(pack.String(pack.Shader(p.shader).value().name));
-    const std::string label = PassLabel(pack, pass);
-    const std::vector<std::string> requested = pack.KeywordsOf(pass, key);
-    Usage& usage = usage_[{shader, label, requested}];
+    const VariantKey key = KeyFor(pass, keywords);
+    Usage& usage = usage_[{pass, key.bits()}];
     ++usage.count;
     if (!requester.empty()) {
         AddRequester(usage.requested_by, usage.requesters, requester);
@@ -58,6 +123,10 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
         return VariantChoice{*v, true, {}};
     }
     usage.found = false;
+    const PassRec p = pack.Pass(pass).value();
+    const std::string shader(pack.String(pack.Shader(p.shader).value().name));
+    const std::string label = PassLabel(pack, pass);
+    const std::vector<std::string> requested = pack.KeywordsOf(pass, key);
     // Closest present variants: fewest differing keyword sets, then lowest key.
     std::vector<std::pair<uint32_t, uint32_t>> ranked;  // (distance, variant)
     for (uint32_t v = p.first_variant; v < p.first_variant + p.variant_count; ++v) {

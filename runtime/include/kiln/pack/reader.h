@@ -99,6 +99,11 @@ class Pack {
     Status CheckKeywords(uint32_t pass, const std::vector<std::string>& enabled) const;
     // The keyword names a key selects (no-keyword entries omitted).
     std::vector<std::string> KeywordsOf(uint32_t pass, VariantKey key) const;
+    // Keyword `i` of the keyword table (KeywordSetRec::first_keyword + k); "" out of range and
+    // for a set's no-keyword entry.
+    std::string_view KeywordName(uint32_t i) const {
+        return i < Count(SectionTag::kKeywords) ? KeywordAt(i) : std::string_view();
+    }
 
   private:
     static constexpr size_t kSectionSlots = 18;

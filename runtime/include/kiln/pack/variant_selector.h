@@ -9,6 +9,8 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "kiln/pack/reader.h"
@@ -35,14 +37,18 @@ class VariantSelector {
     VariantSelector(const Pack& pack, MissingVariantPolicy policy)
         : pack_(&pack), policy_(policy) {}
 
-    // O(log n): the key is built from the keywords (names in no keyword set of the pass are
-    // ignored, as Unity ignores them) and binary-searched in the pass's sorted variant table. An
-    // error for a pass index out of range, and (kError) for a variant the pack lacks.
-    // `requester`, when not empty, is recorded with the lookup (who asked: a planned frame's
-    // "material on node: light").
+    // O(k log m + log n) for k keywords, m keywords declared by the pass and n variants: each
+    // keyword is looked up in the pass's sorted keyword table (built on the pass's first lookup;
+    // names in no keyword set of the pass are ignored, as Unity ignores them) and the key is
+    // binary-searched in the pass's sorted variant table. A found variant allocates nothing after
+    // the first lookup of the same key (without a requester). An error for a pass index out of
+    // range, and (kError) for a variant the pack lacks. `requester`, when not empty, is recorded
+    // with the lookup (who asked: a planned frame's "material on node: light").
     Result<VariantChoice> Select(uint32_t pass,
                                  const std::vector<std::string>& keywords,
                                  const std::string& requester = {});
+    // The key Select builds for `keywords` (Pack::KeyFor's, from the cached table).
+    VariantKey KeyFor(uint32_t pass, const std::vector<std::string>& keywords);
 
     // Every Select() so far, grouped: (shader, pass's PassLabel, keywords) -> (count, found,
     // who asked).
@@ -53,12 +59,32 @@ class VariantSelector {
         uint64_t requesters = 0;
     };
     using UsageKey = std::tuple<std::string, std::string, std::vector<std::string>>;
-    const std::map<UsageKey, Usage>& usage() const { return usage_; }
+    std::map<UsageKey, Usage> usage() const;
 
   private:
+    // A pass's declared keywords, sorted by name: (keyword, set's index within the pass, the
+    // keyword's index within its set).
+    struct Declared {
+        std::string_view keyword;
+        uint32_t set = 0, index = 0;
+    };
+    struct PassTable {
+        bool built = false;
+        std::vector<Declared> keywords;
+        std::vector<KeywordSetRec> sets;  // the pass's, in order
+    };
+    const PassTable& TableFor(uint32_t pass);
+    struct KeyHash {
+        size_t operator()(const std::pair<uint32_t, uint64_t>& k) const {
+            return std::hash<uint64_t>()(k.second * 0x9E3779B97F4A7C15ull ^ k.first);
+        }
+    };
+
     const Pack* pack_;
     MissingVariantPolicy policy_;
-    std::map<UsageKey, Usage> usage_;
+    std::vector<PassTable> tables_;  // per pass
+    // (pass, key) -> usage: strings are made when usage() is read, not per lookup.
+    std::unordered_map<std::pair<uint32_t, uint64_t>, Usage, KeyHash> usage_;
 };
 
 // Keywords as messages show them: "A B C", or "(no keywords)".

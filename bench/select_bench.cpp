@@ -1,0 +1,76 @@
+// The runtime's variant lookup as an engine makes it every draw: VariantSelector::Select for a
+// material's keywords plus the renderer's light keywords, against Pack::KeyFor + FindVariant
+// (the pack's own lookup, no usage record) on the same keywords, in the shipped materials pack
+// (Kiln/StandardMetallic's ForwardAdd pass: 192 variants, 7 keyword sets). The target is
+// Select < 200 ns (issue 19); bench/check_targets.py checks it.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "kiln/pack/reader.h"
+#include "kiln/pack/variant_selector.h"
+
+namespace {
+
+struct Fixture {
+    kiln::pack::MappedFile file;
+    kiln::pack::Pack pack;
+    uint32_t pass = 0;
+    bool ok = false;
+    Fixture() {
+        auto mapped = kiln::pack::MappedFile::Map(KILN_MATERIALS_PACK);
+        if (!mapped) {
+            return;
+        }
+        file = std::move(mapped.value());
+        auto opened = kiln::pack::Pack::Open(file.bytes());
+        if (!opened) {
+            return;
+        }
+        pack = std::move(opened.value());
+        const std::optional<uint32_t> shader = pack.FindShader("Kiln/StandardMetallic");
+        const std::optional<uint32_t> p =
+            shader ? pack.FindPass(*shader, "ForwardAdd") : std::nullopt;
+        ok = p.has_value();
+        pass = p.value_or(0);
+    }
+};
+
+Fixture& Shared() {
+    static Fixture f;
+    return f;
+}
+
+// A normal-mapped material lit by a soft-shadowed spot light, and a keyword the pass ignores.
+const std::vector<std::string> kKeywords = {"_NORMALMAP", "SPOT", "SHADOWS_DEPTH", "SHADOWS_SOFT",
+                                            "LIGHTPROBE_SH"};
+
+void BM_VariantSelectorSelect(benchmark::State& state) {
+    Fixture& f = Shared();
+    if (!f.ok) {
+        state.SkipWithError("materials.kpack has no Kiln/StandardMetallic ForwardAdd pass");
+        return;
+    }
+    kiln::pack::VariantSelector selector(f.pack, kiln::pack::MissingVariantPolicy::kError);
+    for (auto _ : state) {
+        auto chosen = selector.Select(f.pass, kKeywords);
+        benchmark::DoNotOptimize(chosen);
+    }
+}
+BENCHMARK(BM_VariantSelectorSelect);
+
+void BM_PackKeyForAndFindVariant(benchmark::State& state) {
+    Fixture& f = Shared();
+    if (!f.ok) {
+        state.SkipWithError("materials.kpack has no Kiln/StandardMetallic ForwardAdd pass");
+        return;
+    }
+    for (auto _ : state) {
+        auto v = f.pack.FindVariant(f.pass, f.pack.KeyFor(f.pass, kKeywords));
+        benchmark::DoNotOptimize(v);
+    }
+}
+BENCHMARK(BM_PackKeyForAndFindVariant);
+
+}  // namespace
