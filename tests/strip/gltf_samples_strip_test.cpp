@@ -88,7 +88,7 @@ TEST(GltfSamplesStrip, EverySampleGetsAVerifiedStrippedPack) {
         // A needed variant removed by hand (skip_variants POINT in a copy of the shader): the
         // verification fails and names it.
         std::string text = ReadFile(DataPath("../materials/StandardMetallic.shader"));
-        const std::string anchor = "#pragma multi_compile_fragment DIRECTIONAL POINT SPOT";
+        const std::string anchor = "#pragma multi_compile_fwdadd_fullshadows";
         ASSERT_NE(text.find(anchor), std::string::npos);
         text.replace(text.find(anchor), anchor.size(), anchor + " \n#pragma skip_variants POINT");
         const std::string copy = dir.Write("edited/StandardMetallic.shader", text);
