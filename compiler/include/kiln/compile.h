@@ -91,7 +91,10 @@ struct CompileStats {
     size_t unique_programs = 0;   // distinct reduced stage texts (what dedup leaves)
     size_t glslang_compiles = 0;  // unique programs compiled by glslang in this run
     size_t cache_hits = 0;        // unique programs taken from the cache
-    size_t modules = 0;           // distinct SPIR-V modules in the pack
+    // Stage programs not preprocessed: the cache's direct mode knew their result (every file
+    // they read unchanged) and held its SPIR-V.
+    size_t direct_hits = 0;
+    size_t modules = 0;  // distinct SPIR-V modules in the pack
     // Variants not stored because their keyword is an alias of another (identical SPIR-V in
     // both stages): lookups of them find the other keyword's variants.
     size_t aliased_variants = 0;

@@ -23,7 +23,9 @@ constexpr uint32_t kEntryMagic = 0x4341434B;  // "KCAC"
 // 4: --precision half keeps image coordinates and levels in 32 bits (KeepImageOperandsFloat):
 //    the same inputs compile to other modules. Bump it whenever that happens, so that entries
 //    of an older kiln are misses.
-constexpr uint32_t kEntryVersion = 4;
+// 5: entries hold bytes (a byte count, not a word count): SPIR-V or a direct-mode manifest; keys
+//    are of the code without #line lines.
+constexpr uint32_t kEntryVersion = 5;
 constexpr uint32_t kSpirvMagic = 0x07230203;
 constexpr int64_t kStaleTemporarySeconds = 24 * 60 * 60;
 
@@ -45,23 +47,48 @@ std::string HashKey(const std::vector<std::string>& parts) {
     return buf;
 }
 
-std::string Cache::PathFor(const std::string& key) const {
-    return (fs::path(dir_) / key.substr(0, 2) / (key + ".spv")).string();
+std::string CodeOf(const std::string& reduced, bool debug_info) {
+    if (debug_info)
+        return reduced;
+    std::string out;
+    out.reserve(reduced.size());
+    for (size_t at = 0; at < reduced.size();) {
+        size_t end = reduced.find('\n', at);
+        if (end == std::string::npos)
+            end = reduced.size();
+        const size_t first = reduced.find_first_not_of(" \t\r", at);
+        const bool blank = first == std::string::npos || first >= end;
+        if (!blank && reduced.compare(first, 5, "#line") != 0) {
+            // Without the indentation, which glslang's output varies with the lines around.
+            size_t last = end;
+            while (last > first && (reduced[last - 1] == ' ' || reduced[last - 1] == '\t' ||
+                                    reduced[last - 1] == '\r'))
+                --last;
+            out.append(reduced, first, last - first);
+            out += '\n';
+        }
+        at = end + 1;
+    }
+    return out;
 }
 
-// Entry: magic, version, key length, key, word count, XXH64 of (key + payload) as two u32s, then
-// the payload (the SPIR-V words, little-endian).
-std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
+std::string Cache::PathFor(const std::string& key, const std::string& ext) const {
+    return (fs::path(dir_) / key.substr(0, 2) / (key + "." + ext)).string();
+}
+
+// Entry: magic, version, key length, key, payload length, XXH64 of (key + payload) as two u32s,
+// then the payload.
+std::optional<std::string> Cache::LoadBytes(const std::string& key, const std::string& ext) const {
     if (!enabled())
         return std::nullopt;
-    const std::string path = PathFor(key);
+    const std::string path = PathFor(key, ext);
     struct stat st {};
     if (lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
         return std::nullopt;  // absent, or damaged: a link, a FIFO, a directory
     Result<std::string> read = base::ReadRegularFile(path, kMaxEntryBytes);
     if (!read)
         return std::nullopt;
-    const std::string& data = read.value();
+    std::string data = std::move(read).value();
     if (data.size() < 12 || base::LoadLe32(data, 0) != kEntryMagic ||
         base::LoadLe32(data, 4) != kEntryVersion)
         return std::nullopt;
@@ -71,9 +98,9 @@ std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
         return std::nullopt;  // another entry's bytes under this name
     }
     const size_t at = 12 + key_size;
-    const uint32_t words = base::LoadLe32(data, at);
+    const uint32_t bytes = base::LoadLe32(data, at);
     const size_t payload = at + 12;
-    if (words < 5 || data.size() != payload + uint64_t{words} * 4)
+    if (data.size() != payload + uint64_t{bytes})
         return std::nullopt;
     const uint64_t hash =
         uint64_t{base::LoadLe32(data, at + 4)} | uint64_t{base::LoadLe32(data, at + 8)} << 32;
@@ -83,22 +110,37 @@ std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
     XXH64_update(h, data.data() + payload, data.size() - payload);
     const uint64_t actual = XXH64_digest(h);
     XXH64_freeState(h);
-    if (actual != hash || base::LoadLe32(data, payload) != kSpirvMagic)
+    if (actual != hash)
         return std::nullopt;
-    std::vector<uint32_t> out(words);
-    for (uint32_t i = 0; i < words; ++i)
-        out[i] = base::LoadLe32(data, payload + size_t{i} * 4);
+    return data.substr(payload);
+}
+
+std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
+    std::optional<std::string> bytes = LoadBytes(key, "spv");
+    if (!bytes || bytes->size() % 4 != 0 || bytes->size() < 20 ||
+        base::LoadLe32(*bytes, 0) != kSpirvMagic)
+        return std::nullopt;
+    std::vector<uint32_t> out(bytes->size() / 4);
+    for (size_t i = 0; i < out.size(); ++i)
+        out[i] = base::LoadLe32(*bytes, i * 4);
     return out;
 }
 
 bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) const {
-    if (!enabled())
+    std::string payload;
+    payload.reserve(words.size() * 4);
+    for (uint32_t w : words)
+        base::AppendLe32(payload, w);
+    return StoreBytes(key, "spv", payload);
+}
+
+bool Cache::StoreBytes(const std::string& key,
+                       const std::string& ext,
+                       const std::string& payload) const {
+    if (!enabled() || payload.size() > kMaxEntryBytes / 2)
         return false;
     static std::once_flag cleaned;
     std::call_once(cleaned, [this] { RemoveStaleTemporaries(kStaleTemporarySeconds); });
-    std::string payload;
-    for (uint32_t w : words)
-        base::AppendLe32(payload, w);
     XXH64_state_t* h = XXH64_createState();
     XXH64_reset(h, 0);
     XXH64_update(h, key.data(), key.size());
@@ -110,12 +152,12 @@ bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) co
     base::AppendLe32(data, kEntryVersion);
     base::AppendLe32(data, static_cast<uint32_t>(key.size()));
     data += key;
-    base::AppendLe32(data, static_cast<uint32_t>(words.size()));
+    base::AppendLe32(data, static_cast<uint32_t>(payload.size()));
     base::AppendLe32(data, static_cast<uint32_t>(hash));
     base::AppendLe32(data, static_cast<uint32_t>(hash >> 32));
     data += payload;
 
-    const fs::path path = PathFor(key);
+    const fs::path path = PathFor(key, ext);
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
     // A damaged entry that is not a regular file (a directory, a FIFO, a link, which the writer

@@ -1,7 +1,9 @@
 // The content-addressed compile cache: optimized (pre-binding) SPIR-V per unique stage program,
-// keyed by a hash of the reduced text, stage, entry point, options and the versions of Kiln,
-// glslang and SPIRV-Tools. Entries are written to a unique temporary file and renamed, so
-// concurrent kiln processes never see a partial entry.
+// keyed by a hash of the reduced text's code (without #line lines, blank lines and indentation
+// unless -g, so that neither the folder nor a line shift elsewhere changes it), stage, entry
+// point, options and the versions of Kiln, glslang and SPIRV-Tools; and the direct mode's manifests
+// (driver/direct_cache.h) under their own keys. Entries are written to a unique temporary file
+// and renamed, so concurrent kiln processes never see a partial entry.
 //
 // The cache is never trusted: an entry carries its own key and a hash of key and payload, must be
 // a regular file (not a link, FIFO or directory) of bounded size, and must hold a SPIR-V header;
@@ -29,11 +31,14 @@ class Cache {
     std::optional<std::vector<uint32_t>> Load(const std::string& key) const;
     // Best effort: false when the entry cannot be written (the compile goes on).
     bool Store(const std::string& key, const std::vector<uint32_t>& words) const;
+    // Any bytes under a key, in files named `<key>.<ext>` (a manifest: "man").
+    std::optional<std::string> LoadBytes(const std::string& key, const std::string& ext) const;
+    bool StoreBytes(const std::string& key, const std::string& ext, const std::string& bytes) const;
 
     // Removes "*.tmp.*" files under the cache older than `age_seconds`; returns how many.
     size_t RemoveStaleTemporaries(int64_t age_seconds) const;
 
-    std::string PathFor(const std::string& key) const;
+    std::string PathFor(const std::string& key, const std::string& ext = "spv") const;
 
   private:
     std::string dir_;
@@ -41,6 +46,11 @@ class Cache {
 
 // 32 hex digits (XXH3 128-bit) of the parts, each length-prefixed.
 std::string HashKey(const std::vector<std::string>& parts);
+
+// What of a reduced stage text the compile cache keys: the text without its `#line` lines, blank
+// lines (removed functions leave blank lines) and indentation, or all of it with debug info,
+// whose SPIR-V holds the file names and lines.
+std::string CodeOf(const std::string& reduced, bool debug_info);
 
 }  // namespace kiln::driver
 

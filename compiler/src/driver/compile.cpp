@@ -51,66 +51,6 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
     }
 }
 
-// Phase 3: preprocess every task (in the workers) and dedup the reduced texts into jobs.
-void PreprocessAndDedup(CompileState& st) {
-    driver::ParallelFor(
-        st.tasks.size(), st.options.jobs,
-        [&](size_t i) {
-            driver::StageTask& t = st.tasks[i];
-            worker::Request request = driver::StageRequest(st, t, worker::RequestKind::kPreprocess);
-            request.source = t.source;
-            worker::Outcome o = st.exec->Run(request);
-            if ((t.failure = driver::OutcomeDiagnostic(st, t, o)))
-                return;
-            for (const std::string& f : o.response.files_read)
-                st.files.Get(f);  // for diagnostics and the depfile (a no-op in-process)
-            t.preprocess_ok = o.response.ok;
-            t.preprocess_log = std::move(o.response.info_log);
-            t.reduced = std::move(o.response.text);
-            t.rewritten = std::move(o.response.rewritten);
-            t.functions_if_entry_missing = std::move(o.response.functions);
-        },
-        [&](size_t done) { driver::Progress(st.options, "preprocessing", done, st.tasks.size()); });
-
-    const std::string versions = ProducerVersion();
-    const std::string options = "O" + std::to_string(int(st.options.opt_level)) +
-                                (st.options.debug_info ? "g" : "") +
-                                (st.options.precision == Precision::kRelaxed ? "r"
-                                 : st.options.precision == Precision::kHalf  ? "h"
-                                                                             : "");
-    std::map<std::string, size_t> by_key;
-    for (size_t i = 0; i < st.tasks.size(); ++i) {
-        driver::StageTask& t = st.tasks[i];
-        if (!t.preprocess_ok) {
-            // Each failing preprocess is its own job so its messages are reported per variant.
-            driver::Job job;
-            job.stage = t.stage;
-            job.entry = driver::EntryOf(st, t);
-            job.first_task = i;
-            if (t.failure)
-                job.diags.push_back(*t.failure);
-            else
-                driver::AppendGlslangLog(st, t.preprocess_log, job.diags, &t.source);
-            t.job = st.jobs.size();
-            st.jobs.push_back(std::move(job));
-            continue;
-        }
-        const std::string key =
-            driver::HashKey({versions, options, t.stage == pack::Stage::kVertex ? "vert" : "frag",
-                             driver::EntryOf(st, t), t.reduced});
-        auto [it, fresh] = by_key.emplace(key, st.jobs.size());
-        if (fresh) {
-            driver::Job job;
-            job.stage = t.stage;
-            job.entry = driver::EntryOf(st, t);
-            job.first_task = i;
-            job.cache_key = key;
-            st.jobs.push_back(std::move(job));
-        }
-        t.job = it->second;
-    }
-}
-
 void FillReports(const CompileState& st, CompileOutput& out) {
     DiagnosticList ignored;  // a bad budget tag was reported at expansion
     for (const driver::PassUnit& pu : st.passes) {
@@ -187,12 +127,33 @@ void RecordPeakMemory(CompileStats& stats) {
         stats.peak_worker_rss_kib = uint64_t(children.ru_maxrss);
 }
 
+// The reports, the workers' end and peak memory, and the files read: the end of every compile.
+CompileOutput Finish(CompileState& st,
+                     CompileOutput& out,
+                     std::unique_ptr<worker::Executor>& exec,
+                     PhaseClock& whole) {
+    FillReports(st, out);
+    driver::FillStripReport(st, out);
+    // The workers end (and are waited for) with the executor: only then does the kernel count
+    // their peak memory among this process's children.
+    st.exec = nullptr;
+    exec.reset();
+    whole.Into(out.stats.ms.total);
+    RecordPeakMemory(out.stats);
+    out.files = st.files.Files();
+    out.ok = !st.diags.has_errors();
+    if (!out.ok)
+        out.pack.clear();
+    return std::move(out);
+}
+
 CompileOutput Run(const std::vector<std::string>& paths,
                   const CompileOptions& options,
                   DiagnosticList& diags,
                   Mode mode) {
     frontend::InitializeGlslang();  // before any thread starts
-    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}};
+    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    const size_t diags_before = diags.all().size();
     CompileOutput out;
     PhaseClock clock, whole;
     CompileStats::Phases& ms = out.stats.ms;
@@ -236,7 +197,18 @@ CompileOutput Run(const std::vector<std::string>& paths,
     clock.Into(ms.expand);
     bool preprocessed = false;
     if (!diags.has_errors()) {
-        PreprocessAndDedup(st);
+        const bool known = mode != Mode::kAnalyze && driver::LookUpDirect(st);
+        if (known && mode == Mode::kPack) {
+            if (auto pack = driver::LoadCachedPack(st, out.stats)) {
+                // Nothing changed since a compile that reported nothing: its pack.
+                driver::DedupKnown(st, out.stats);
+                out.stats.cache_hits = st.jobs.size();
+                out.pack = std::move(*pack);
+                clock.Into(ms.preprocess);
+                return Finish(st, out, exec, whole);
+            }
+        }
+        driver::PreprocessAndDedup(st, out.stats);
         preprocessed = true;
     }
     clock.Into(ms.preprocess);
@@ -256,21 +228,11 @@ CompileOutput Run(const std::vector<std::string>& paths,
             out.pack = driver::EmitPack(st, out.stats);
         if (mode == Mode::kLint && !diags.has_errors())
             Lint(st, out.pack);
+        if (mode == Mode::kPack && !diags.has_errors() && diags.all().size() == diags_before)
+            driver::StoreCachedPack(st, out.stats, out.pack);
         clock.Into(ms.emit);
     }
-    FillReports(st, out);
-    driver::FillStripReport(st, out);
-    // The workers end (and are waited for) with the executor: only then does the kernel count
-    // their peak memory among this process's children.
-    st.exec = nullptr;
-    exec.reset();
-    whole.Into(ms.total);
-    RecordPeakMemory(out.stats);
-    out.files = st.files.Files();
-    out.ok = !diags.has_errors();
-    if (!out.ok)
-        out.pack.clear();
-    return out;
+    return Finish(st, out, exec, whole);
 }
 
 }  // namespace

@@ -47,23 +47,6 @@ Diagnostic MissingEntryPoint(const CompileState& st, const StageTask& t) {
     return d;
 }
 
-// A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
-// the compile that follows replaces it.
-std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
-                                                const Cache& cache,
-                                                const std::string& key) {
-    std::optional<std::vector<uint32_t>> cached = cache.Load(key);
-    if (!cached)
-        return std::nullopt;
-    worker::Request check;
-    check.kind = worker::RequestKind::kValidate;
-    check.words = *cached;
-    const worker::Outcome o = st.exec->Run(check);
-    if (o.status != worker::Outcome::Status::kOk || !o.response.ok)
-        return std::nullopt;
-    return cached;
-}
-
 // One job through glslang and SPIRV-Tools in a worker; its diagnostics go to job.diags.
 void CompileJob(CompileState& st, Job& job) {
     const StageTask& task = st.tasks[job.first_task];
@@ -119,6 +102,23 @@ void CompileJob(CompileState& st, Job& job) {
 
 }  // namespace
 
+// A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
+// the compile that follows replaces it.
+std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
+                                                const Cache& cache,
+                                                const std::string& key) {
+    std::optional<std::vector<uint32_t>> cached = cache.Load(key);
+    if (!cached)
+        return std::nullopt;
+    worker::Request check;
+    check.kind = worker::RequestKind::kValidate;
+    check.words = *cached;
+    const worker::Outcome o = st.exec->Run(check);
+    if (o.status != worker::Outcome::Status::kOk || !o.response.ok)
+        return std::nullopt;
+    return cached;
+}
+
 const std::string& EntryOf(const CompileState& st, const StageTask& t) {
     const auto& pr = st.passes[t.pass].pragmas;
     return t.stage == pack::Stage::kVertex ? pr.vertex->name : pr.fragment->name;
@@ -152,6 +152,10 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
             Job& job = st.jobs[j];
             if (!st.tasks[job.first_task].preprocess_ok)
                 return;  // reported by PreprocessAndDedup
+            if (job.ok) {
+                ++hits;  // taken from the cache with the direct mode's manifest
+                return;
+            }
             if (auto cached = LoadCached(st, cache, job.cache_key)) {
                 job.words = std::move(*cached);
                 job.ok = job.from_cache = true;
@@ -160,8 +164,13 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
             }
             ++compiles;
             CompileJob(st, job);
-            if (job.ok)
+            if (job.ok) {
                 cache.Store(job.cache_key, job.words);
+                // Its texts are needed no more (streaming memory).
+                StageTask& t = st.tasks[job.first_task];
+                std::string().swap(t.reduced);
+                std::string().swap(t.rewritten);
+            }
         },
         [&](size_t done) { Progress(st.options, "compiling", done, st.jobs.size()); });
     stats.glslang_compiles = compiles;

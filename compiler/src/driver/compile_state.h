@@ -21,6 +21,8 @@
 
 namespace kiln::driver {
 
+class DirectCache;
+
 struct ShaderUnit {
     std::shared_ptr<const SourceFile> file;
     std::optional<shaderlab::Shader> ast;
@@ -51,6 +53,8 @@ struct StageTask {
     std::string preprocess_log;
     std::vector<std::string> functions_if_entry_missing;  // hlsl::Reduced's, for suggestions
     std::optional<Diagnostic> failure;  // preprocessing crashed, timed out, or was refused
+    std::string result_key;             // the compile cache's key of `reduced` (CodeOf), once known
+    bool direct = false;                // taken from the direct mode's manifest: not preprocessed
     size_t job = 0;
 };
 
@@ -89,6 +93,9 @@ struct CompileState {
     std::vector<std::map<size_t, FinalModule>> finals;
     // Keyword aliases the pack records (EmitPack): (pass index, alias).
     std::vector<std::pair<size_t, variants::KeywordAlias>> aliases;
+    // The cache's direct mode (null without a cache) and each task's direct key.
+    std::shared_ptr<DirectCache> direct;
+    std::vector<std::string> direct_keys;
 };
 
 // The entry point of a task's stage.
@@ -117,8 +124,30 @@ void ExpandRequestedPasses(CompileState& st, bool skeleton);
 // The stripped compile's report: kept and excluded variants with who asked, shaders left out.
 void FillStripReport(const CompileState& st, CompileOutput& out);
 
+// Phase 3 (preprocess.cpp). LookUpDirect: each task's result key from the direct mode's
+// manifest (driver/direct_cache.h), where nothing it read changed; true when every task has one.
+// PreprocessAndDedup: every other task preprocessed in the workers (and recorded in a manifest),
+// then the tasks deduplicated by result key into jobs; jobs whose SPIR-V the cache holds are
+// loaded (validated). DedupKnown: only the dedup, for a pack taken whole from the cache.
+bool LookUpDirect(CompileState& st);
+void PreprocessAndDedup(CompileState& st, CompileStats& stats);
+void DedupKnown(CompileState& st, CompileStats& stats);
+
+// The whole pack in the cache (pack_cache.cpp): its key (empty unless every task's result key is
+// known), a pack that opens, and storing one.
+std::string PackKey(const CompileState& st);
+std::optional<std::vector<uint8_t>> LoadCachedPack(const CompileState& st, CompileStats& stats);
+void StoreCachedPack(const CompileState& st,
+                     const CompileStats& stats,
+                     const std::vector<uint8_t>& pack);
+
 // Phase 4, in compile_jobs.cpp: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats);
+// A cache entry, once spirv-val accepts it (a damaged or forged entry is a miss).
+class Cache;
+std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
+                                                const Cache& cache,
+                                                const std::string& key);
 
 // Phases implemented in pack_emit.cpp.
 void FinishModules(CompileState& st);    // bindings, reflection, strip, validate
