@@ -94,6 +94,10 @@ struct CompileStats {
     // Stage programs not preprocessed: the cache's direct mode knew their result (every file
     // they read unchanged) and held its SPIR-V.
     size_t direct_hits = 0;
+    // Stage programs not preprocessed on their own: another one of the same shader, stage and
+    // entry point had the same assembled text (variants differing only in the other stage's
+    // keywords), or the variant's vertex preprocess served it (nothing read tests the stage).
+    size_t shared_preprocesses = 0;
     size_t modules = 0;  // distinct SPIR-V modules in the pack
     // Variants not stored because their keyword is an alias of another (identical SPIR-V in
     // both stages): lookups of them find the other keyword's variants.

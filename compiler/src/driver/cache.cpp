@@ -76,6 +76,11 @@ std::string Cache::PathFor(const std::string& key, const std::string& ext) const
     return (fs::path(dir_) / key.substr(0, 2) / (key + "." + ext)).string();
 }
 
+// The largest entry of a kind.
+uint64_t Cache::MaxBytes(const std::string& ext) {
+    return ext == kPackExt ? kMaxPackEntryBytes : kMaxEntryBytes;
+}
+
 // Entry: magic, version, key length, key, payload length, XXH64 of (key + payload) as two u32s,
 // then the payload.
 std::optional<std::string> Cache::LoadBytes(const std::string& key, const std::string& ext) const {
@@ -85,7 +90,7 @@ std::optional<std::string> Cache::LoadBytes(const std::string& key, const std::s
     struct stat st {};
     if (lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
         return std::nullopt;  // absent, or damaged: a link, a FIFO, a directory
-    Result<std::string> read = base::ReadRegularFile(path, kMaxEntryBytes);
+    Result<std::string> read = base::ReadRegularFile(path, MaxBytes(ext));
     if (!read)
         return std::nullopt;
     std::string data = std::move(read).value();
@@ -137,7 +142,7 @@ bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) co
 bool Cache::StoreBytes(const std::string& key,
                        const std::string& ext,
                        const std::string& payload) const {
-    if (!enabled() || payload.size() > kMaxEntryBytes / 2)
+    if (!enabled() || payload.size() > MaxBytes(ext) / 2)
         return false;
     static std::once_flag cleaned;
     std::call_once(cleaned, [this] { RemoveStaleTemporaries(kStaleTemporarySeconds); });

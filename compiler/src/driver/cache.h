@@ -22,8 +22,11 @@ namespace kiln::driver {
 
 class Cache {
   public:
-    // The largest entry read (a stage of a Unity shader is a few hundred KiB).
+    // The largest entry read (a stage of a Unity shader is a few hundred KiB), and the largest
+    // whole-pack entry (a pack of 10,000 variants is about 55 MB).
     static constexpr uint64_t kMaxEntryBytes = uint64_t{64} << 20;
+    static constexpr uint64_t kMaxPackEntryBytes = uint64_t{1} << 30;
+    static constexpr const char* kPackExt = "kpack";  // whole packs (pack_cache.cpp)
 
     explicit Cache(std::string dir) : dir_(std::move(dir)) {}
     bool enabled() const { return !dir_.empty(); }
@@ -34,6 +37,7 @@ class Cache {
     // Any bytes under a key, in files named `<key>.<ext>` (a manifest: "man").
     std::optional<std::string> LoadBytes(const std::string& key, const std::string& ext) const;
     bool StoreBytes(const std::string& key, const std::string& ext, const std::string& bytes) const;
+    static uint64_t MaxBytes(const std::string& ext);
 
     // Removes "*.tmp.*" files under the cache older than `age_seconds`; returns how many.
     size_t RemoveStaleTemporaries(int64_t age_seconds) const;

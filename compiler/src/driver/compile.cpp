@@ -153,7 +153,6 @@ CompileOutput Run(const std::vector<std::string>& paths,
                   Mode mode) {
     frontend::InitializeGlslang();  // before any thread starts
     CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}};
-    const size_t diags_before = diags.all().size();
     CompileOutput out;
     PhaseClock clock, whole;
     CompileStats::Phases& ms = out.stats.ms;
@@ -195,6 +194,9 @@ CompileOutput Run(const std::vector<std::string>& paths,
     if (!diags.has_errors())
         driver::CreateTasks(st);
     clock.Into(ms.expand);
+    // Loading and expansion run every time, so their warnings are shown every time; a pack is
+    // kept whole only when nothing after them reported anything (a warning of glslang, say).
+    const size_t diags_after_expand = diags.all().size();
     bool preprocessed = false;
     if (!diags.has_errors()) {
         const bool known = mode != Mode::kAnalyze && driver::LookUpDirect(st);
@@ -228,7 +230,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
             out.pack = driver::EmitPack(st, out.stats);
         if (mode == Mode::kLint && !diags.has_errors())
             Lint(st, out.pack);
-        if (mode == Mode::kPack && !diags.has_errors() && diags.all().size() == diags_before)
+        if (mode == Mode::kPack && !diags.has_errors() && diags.all().size() == diags_after_expand)
             driver::StoreCachedPack(st, out.stats, out.pack);
         clock.Into(ms.emit);
     }

@@ -16,8 +16,6 @@
 namespace kiln::driver {
 namespace {
 
-constexpr const char* kPackExt = "kpack";
-
 std::string Number(double v) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.17g", v);
@@ -91,7 +89,7 @@ std::optional<std::vector<uint8_t>> LoadCachedPack(const CompileState& st, Compi
     const std::string key = PackKey(st);
     if (key.empty())
         return std::nullopt;
-    const std::optional<std::string> entry = cache.LoadBytes(key, kPackExt);
+    const std::optional<std::string> entry = cache.LoadBytes(key, Cache::kPackExt);
     if (!entry || entry->size() < 8)
         return std::nullopt;
     std::vector<uint8_t> bytes(entry->begin() + 8, entry->end());
@@ -112,7 +110,7 @@ void StoreCachedPack(const CompileState& st,
     base::AppendLe32(entry, static_cast<uint32_t>(stats.modules));
     base::AppendLe32(entry, static_cast<uint32_t>(stats.aliased_variants));
     entry.append(pack.begin(), pack.end());
-    Cache(st.options.cache_dir).StoreBytes(key, kPackExt, entry);
+    Cache(st.options.cache_dir).StoreBytes(key, Cache::kPackExt, entry);
 }
 
 }  // namespace kiln::driver

@@ -1,10 +1,13 @@
 // Phase 3 of the compile driver: every stage program preprocessed and reduced to its entry point
 // in the workers, unless the direct mode's manifest says what it gives and the compile cache
-// holds that; then the reduced texts deduplicated into jobs. Only the first task of each job
+// holds that, or another stage program with the same assembled text was preprocessed already;
+// then the reduced texts deduplicated into jobs. Only the first task of each job
 // keeps its texts (the one CompileJob reads), so memory grows with the unique programs.
+#include <algorithm>
 #include <atomic>
 #include <map>
 #include <mutex>
+#include <unordered_map>
 
 #include "driver/cache.h"
 #include "driver/compile_state.h"
@@ -73,40 +76,98 @@ void KeepTextsOfFirst(State& s, size_t i) {
     std::string().swap(d.rewritten);
 }
 
-void Preprocess(State& s, size_t i) {
+// Takes a preprocessed and reduced text as task i's: its result key, its manifest, its texts.
+void Accept(State& s,
+            size_t i,
+            std::string reduced,
+            std::string rewritten,
+            std::vector<std::string> functions,
+            const std::string& log,
+            const std::vector<std::string>& files_read) {
+    CompileState& st = s.st;
+    StageTask& t = st.tasks[i];
+    t.preprocess_ok = true;
+    t.preprocess_log = log;
+    t.reduced = std::move(reduced);
+    t.rewritten = std::move(rewritten);
+    t.functions_if_entry_missing = std::move(functions);
+    std::vector<std::string> parts = KeyParts(st, t);
+    parts.push_back(CodeOf(t.reduced, st.options.debug_info));
+    t.result_key = HashKey(parts);
+    // A preprocess with messages is done again each time, so that they are shown each time.
+    if (st.direct && t.preprocess_log.empty())
+        st.direct->Record(st.direct_keys[i], ShaderOf(st, t), t.source, files_read, t.result_key);
+    KeepTextsOfFirst(s, i);
+}
+
+// Preprocesses task i; `partner` (when not npos) is its variant's fragment task, whose text
+// differs only in the stage's #define: the worker reduces the one preprocessed text to both entry
+// points when nothing read tests the stage. Returns true when the partner was filled.
+bool Preprocess(State& s, size_t i, size_t partner = std::string::npos) {
     CompileState& st = s.st;
     StageTask& t = st.tasks[i];
     if (!t.result_key.empty()) {
         if (const auto it = s.found.find(t.result_key); it != s.found.end() && it->second) {
             t.preprocess_ok = t.direct = true;
             std::string().swap(t.source);
-            return;
+            return false;
         }
         t.result_key.clear();  // its entry is gone or damaged: preprocess as if unknown
     }
     worker::Request request = StageRequest(st, t, worker::RequestKind::kPreprocess);
     request.source = t.source;
+    if (partner != std::string::npos)
+        request.second_entry = EntryOf(st, st.tasks[partner]);
     worker::Outcome o = st.exec->Run(request);
     if ((t.failure = OutcomeDiagnostic(st, t, o)))
-        return;
-    for (const std::string& f : o.response.files_read)
+        return false;
+    worker::Response& r = o.response;
+    for (const std::string& f : r.files_read)
         st.files.Get(f);  // for diagnostics and the depfile (a no-op in-process)
-    t.preprocess_ok = o.response.ok;
-    t.preprocess_log = std::move(o.response.info_log);
-    t.reduced = std::move(o.response.text);
-    t.rewritten = std::move(o.response.rewritten);
-    t.functions_if_entry_missing = std::move(o.response.functions);
-    if (!t.preprocess_ok)
-        return;
-    std::vector<std::string> parts = KeyParts(st, t);
-    parts.push_back(CodeOf(t.reduced, st.options.debug_info));
-    t.result_key = HashKey(parts);
-    // A preprocess with messages is done again each time, so that they are shown each time.
-    if (st.direct && t.preprocess_log.empty()) {
-        st.direct->Record(st.direct_keys[i], ShaderOf(st, t), t.source, o.response.files_read,
-                          t.result_key);
+    if (!r.ok) {
+        t.preprocess_log = std::move(r.info_log);
+        t.functions_if_entry_missing = std::move(r.functions);
+        return false;
     }
-    KeepTextsOfFirst(s, i);
+    const bool paired = partner != std::string::npos && r.second_ok;
+    if (paired) {
+        Accept(s, partner, std::move(r.second_text), r.rewritten, std::move(r.second_functions),
+               r.info_log, r.files_read);
+    }
+    Accept(s, i, std::move(r.text), std::move(r.rewritten), std::move(r.functions), r.info_log,
+           r.files_read);
+    return paired;
+}
+
+// True when `fragment` is `vertex` with the vertex stage's #define swapped for the fragment's.
+bool SameButStage(const std::string& vertex, const std::string& fragment) {
+    static const std::string kVertex = "#define SHADER_STAGE_VERTEX 1\n";
+    static const std::string kFragment = "#define SHADER_STAGE_FRAGMENT 1\n";
+    const size_t at = vertex.find(kVertex);
+    if (at == std::string::npos ||
+        fragment.size() != vertex.size() - kVertex.size() + kFragment.size())
+        return false;
+    const size_t tail = at + kVertex.size();
+    return fragment.compare(0, at, vertex, 0, at) == 0 &&
+           fragment.compare(at, kFragment.size(), kFragment) == 0 &&
+           fragment.compare(at + kFragment.size(), std::string::npos, vertex, tail) == 0;
+}
+
+// For each task, the first task whose preprocess gives the same result: the same shader file,
+// stage, entry point and assembled text (a keyword of a fragment-only set leaves the vertex
+// stage's text unchanged, so its variants share one preprocess).
+std::vector<size_t> Leaders(const CompileState& st) {
+    std::vector<std::string> keys(st.tasks.size());
+    ParallelFor(st.tasks.size(), st.options.jobs, [&](size_t i) {
+        const StageTask& t = st.tasks[i];
+        keys[i] = HashKey({ShaderOf(st, t), t.stage == pack::Stage::kVertex ? "vert" : "frag",
+                           EntryOf(st, t), t.source});
+    });
+    std::vector<size_t> leader(st.tasks.size());
+    std::unordered_map<std::string, size_t> first;
+    for (size_t i = 0; i < st.tasks.size(); ++i)
+        leader[i] = first.emplace(keys[i], i).first->second;
+    return leader;
 }
 
 Job NewJob(const CompileState& st, const StageTask& t, size_t i) {
@@ -181,9 +242,63 @@ void PreprocessAndDedup(CompileState& st, CompileStats& stats) {
     State s{st, Cache(st.options.cache_dir), {}, {}, {}};
     if (st.direct)
         LoadFound(s);
+    const size_t n = st.tasks.size();
+    const std::vector<size_t> leader = Leaders(st);
+    // A variant's vertex task (a leader) carries its fragment task (a leader too) when the two
+    // texts differ only in the stage's #define (CreateTasks puts them side by side).
+    std::vector<size_t> partner(n, std::string::npos);
+    std::vector<char> carried(n, 0), filled(n, 0);
+    for (size_t i = 0; i + 1 < n; ++i) {
+        const StageTask& v = st.tasks[i];
+        const StageTask& f = st.tasks[i + 1];
+        if (leader[i] == i && leader[i + 1] == i + 1 && v.stage == pack::Stage::kVertex &&
+            f.stage == pack::Stage::kFragment && v.pass == f.pass && v.key == f.key &&
+            SameButStage(v.source, f.source)) {
+            partner[i] = i + 1;
+            carried[i + 1] = 1;
+        }
+    }
+    std::vector<size_t> leaders, followers;
+    for (size_t i = 0; i < n; ++i) {
+        if (leader[i] != i)
+            followers.push_back(i);
+        else if (!carried[i])
+            leaders.push_back(i);
+    }
     ParallelFor(
-        st.tasks.size(), st.options.jobs, [&](size_t i) { Preprocess(s, i); },
-        [&](size_t done) { Progress(st.options, "preprocessing", done, st.tasks.size()); });
+        leaders.size(), st.options.jobs,
+        [&](size_t k) {
+            const size_t i = leaders[k];
+            if (Preprocess(s, i, partner[i]))
+                filled[partner[i]] = 1;
+        },
+        [&](size_t done) { Progress(st.options, "preprocessing", done, leaders.size()); });
+    // A carried task its vertex task did not fill (a direct hit, a failure, a text that tests the
+    // stage) is preprocessed itself; so is a follower whose leader failed, so that each failing
+    // variant has its own messages. Other followers take their leader's result.
+    std::vector<size_t> again;
+    for (size_t i = 0; i < n; ++i) {
+        if (carried[i] && !filled[i])
+            again.push_back(i);
+    }
+    ParallelFor(again.size(), st.options.jobs, [&](size_t k) { Preprocess(s, again[k]); });
+    again.clear();
+    size_t shared = std::count(filled.begin(), filled.end(), 1);
+    for (size_t i : followers) {
+        StageTask& t = st.tasks[i];
+        const StageTask& l = st.tasks[leader[i]];
+        if (!l.preprocess_ok || l.failure || l.result_key.empty()) {
+            again.push_back(i);
+            continue;
+        }
+        t.preprocess_ok = true;
+        t.direct = l.direct;
+        t.result_key = l.result_key;
+        std::string().swap(t.source);
+        ++shared;
+    }
+    ParallelFor(again.size(), st.options.jobs, [&](size_t k) { Preprocess(s, again[k]); });
+    stats.shared_preprocesses = shared;
     Dedup(st, &s, stats);
 }
 

@@ -1,5 +1,7 @@
 #include "worker/execute.h"
 
+#include <string_view>
+
 #include "frontend/glslang_stage.h"
 #include "hlsl/includer.h"
 #include "hlsl/reduce.h"
@@ -12,6 +14,22 @@ namespace {
 void Enter(ExecuteContext& context, Component c) {
     if (context.phase)
         context.phase(c);
+}
+
+// True when the preprocessed text cannot depend on the stage: the source names SHADER_STAGE_
+// once (the prelude's #define of its own stage) and no file it read names it at all. The two
+// stages' sources then differ only in that #define (the driver checks), so they preprocess alike.
+bool StageFree(const Request& r, ExecuteContext& context, const hlsl::Includer& includer) {
+    constexpr std::string_view kStageMacro = "SHADER_STAGE_";
+    const size_t first = r.source.find(kStageMacro);
+    if (first == std::string::npos || r.source.find(kStageMacro, first + 1) != std::string::npos)
+        return false;
+    for (const std::string& path : includer.Served()) {
+        const std::shared_ptr<const SourceFile> file = context.files.Get(path);
+        if (!file || file->text().find(kStageMacro) != std::string::npos)
+            return false;
+    }
+    return true;
 }
 
 Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& includer) {
@@ -27,6 +45,12 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     Enter(context, Component::kKilnReduction);
     hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(out.text);
     hlsl::Reduced reduced = hlsl::ReduceToEntryPoint(rewritten.text, r.entry);
+    if (!r.second_entry.empty() && StageFree(r, context, includer)) {
+        hlsl::Reduced second = hlsl::ReduceToEntryPoint(rewritten.text, r.second_entry);
+        resp.second_ok = true;
+        resp.second_text = std::move(second.text);
+        resp.second_functions = std::move(second.functions_if_entry_missing);
+    }
     resp.text = std::move(reduced.text);
     resp.functions = std::move(reduced.functions_if_entry_missing);
     if (rewritten.changed())

@@ -34,6 +34,10 @@ enum Tag : uint8_t {
     kRewritten,
     kFunction,
     kHalfArithmetic,
+    kSecondEntry,
+    kSecondOk,
+    kSecondText,
+    kSecondFunction,
 };
 
 // Builds a whole frame: the length is patched in when it is taken.
@@ -161,6 +165,7 @@ std::string EncodeRequest(const Request& r) {
     w.Bytes(kName, r.name);
     w.Bytes(kSource, r.source);
     w.Bytes(kEntry, r.entry);
+    w.Bytes(kSecondEntry, r.second_entry);
     for (const std::string& d : r.include_dirs)
         w.Bytes(kIncludeDir, d);
     w.Bytes(kTemplatesDir, r.templates_dir);
@@ -186,6 +191,10 @@ std::string EncodeResponse(const Response& r) {
     w.Bytes(kRewritten, r.rewritten);
     for (const std::string& f : r.functions)
         w.Bytes(kFunction, f);
+    w.U8(kSecondOk, r.second_ok);
+    w.Bytes(kSecondText, r.second_text);
+    for (const std::string& f : r.second_functions)
+        w.Bytes(kSecondFunction, f);
     return w.Take();
 }
 
@@ -233,6 +242,9 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
                 return true;
             case kEntry:
                 r.entry = b;
+                return true;
+            case kSecondEntry:
+                r.second_entry = b;
                 return true;
             case kIncludeDir:
                 r.include_dirs.emplace_back(b);
@@ -286,6 +298,14 @@ std::optional<Response> DecodeResponse(std::string_view fields) {
                 return true;
             case kFunction:
                 r.functions.emplace_back(b);
+                return true;
+            case kSecondOk:
+                return ToBool(b, r.second_ok);
+            case kSecondText:
+                r.second_text = b;
+                return true;
+            case kSecondFunction:
+                r.second_functions.emplace_back(b);
                 return true;
             default:
                 return true;

@@ -52,6 +52,9 @@ struct Request {
     std::string name;    // the main file's name: its folder is searched for `#include "x"`
     std::string source;  // program text
     std::string entry;   // kCompile: the entry point
+    // kPreprocess: also reduce to this entry point of the other stage, when the preprocessed text
+    // cannot depend on the stage (driver/preprocess.cpp pairs a variant's two stages).
+    std::string second_entry;
     std::vector<std::string> include_dirs;  // -I, in order
     std::string templates_dir;              // the built-in include library
     bool debug_info = false;                // kCompile/kFinish: keep debug info (-g)
@@ -68,6 +71,11 @@ struct Response {
     std::string text;       // kPreprocess: the text reduced to the entry point
     std::string rewritten;  // kPreprocess: the preprocessed text, when a rewrite changed it
     std::vector<std::string> functions;  // kPreprocess: every function, when `entry` is none
+    // kPreprocess with second_entry: true when the text was reduced to it as well (no file read,
+    // and nothing in the source but the stage's own #define, names SHADER_STAGE_*).
+    bool second_ok = false;
+    std::string second_text;
+    std::vector<std::string> second_functions;
     std::string info_log;  // glslang's messages (frontend/glslang_messages.h reads them)
     std::string messages;  // SPIRV-Tools' messages when it failed
     std::vector<uint32_t> words;

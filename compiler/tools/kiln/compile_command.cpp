@@ -41,6 +41,7 @@ void PrintStats(const CompileStats& s, bool json) {
                                           {"glslang_compiles", s.glslang_compiles},
                                           {"cache_hits", s.cache_hits},
                                           {"direct_hits", s.direct_hits},
+                                          {"shared_preprocesses", s.shared_preprocesses},
                                           {"modules", s.modules},
                                           {"aliased_variants", s.aliased_variants},
                                           {"ms",
@@ -58,10 +59,11 @@ void PrintStats(const CompileStats& s, bool json) {
     }
     std::printf(
         "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, glslang "
-        "compiles %zu, cache hits %zu (direct %zu), modules %zu, aliased variants %zu\n",
+        "compiles %zu, cache hits %zu (direct %zu), shared preprocesses %zu, modules %zu, aliased "
+        "variants %zu\n",
         static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
-        s.unique_programs, s.glslang_compiles, s.cache_hits, s.direct_hits, s.modules,
-        s.aliased_variants);
+        s.unique_programs, s.glslang_compiles, s.cache_hits, s.direct_hits, s.shared_preprocesses,
+        s.modules, s.aliased_variants);
     std::printf(
         "ms: load %.1f, expand %.1f, preprocess %.1f, compile %.1f, finish %.1f, emit %.1f, total "
         "%.1f\n",

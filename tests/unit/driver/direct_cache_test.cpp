@@ -3,7 +3,8 @@
 // lines but not code compiles nothing; a code change compiles only the programs it changes; a
 // header that now shadows an include, a damaged manifest and a manifest whose module is gone are
 // misses that give the pack a compile without the cache gives; the same sources in another folder
-// hit; a compile with a warning is not stored, so the warning is shown every time.
+// hit; a compile with a warning of glslang or reflection is not stored whole, so the warning is
+// shown every time (those of loading and expansion are shown by steps that run every time).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -191,6 +192,24 @@ TEST(DirectCache, ACompileWithAWarningShowsItEveryTime) {
         ASSERT_TRUE(r.out.ok) << Brief(r.diags);
         EXPECT_NE(Brief(r.diags).find("'_Extra' is not in Properties"), std::string::npos)
             << "run " << run << ": " << Brief(r.diags);
+    }
+}
+
+// A warning of loading or expansion (here skip_variants naming no keyword) comes from steps that
+// run every time: the pack is still taken whole, and the warning still shown.
+TEST(DirectCache, AWarningOfExpansionStillTakesThePackWholeAndIsShown) {
+    Project p;
+    p.shader = p.dir.Write("proj/direct.shader",
+                           Shader("            #pragma skip_variants NO_SUCH_KEYWORD\n"));
+    for (int run = 0; run < 2; ++run) {
+        const CompileRun r = p.Build();
+        ASSERT_TRUE(r.out.ok) << Brief(r.diags);
+        EXPECT_NE(Brief(r.diags).find("NO_SUCH_KEYWORD"), std::string::npos)
+            << "run " << run << ": " << Brief(r.diags);
+        if (run == 1) {
+            EXPECT_EQ(r.out.stats.direct_hits, 4u);
+            EXPECT_EQ(r.out.stats.ms.finish, 0.0);  // the pack was taken whole
+        }
     }
 }
 

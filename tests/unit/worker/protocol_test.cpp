@@ -26,6 +26,7 @@ Request SampleRequest() {
     r.name = "dir/a.shader";
     r.source = std::string("float4 frag() : SV_Target { return 1; }\0tail", 44);
     r.entry = "frag";
+    r.second_entry = "vert";
     r.include_dirs = {"inc1", "inc2"};
     r.templates_dir = "/t";
     r.debug_info = true;
@@ -49,6 +50,7 @@ TEST(WorkerProtocol, RequestsRoundTrip) {
     EXPECT_EQ(back->name, r.name);
     EXPECT_EQ(back->source, r.source);  // NUL bytes included
     EXPECT_EQ(back->entry, r.entry);
+    EXPECT_EQ(back->second_entry, r.second_entry);
     EXPECT_EQ(back->include_dirs, r.include_dirs);
     EXPECT_EQ(back->templates_dir, r.templates_dir);
     EXPECT_EQ(back->debug_info, r.debug_info);
@@ -68,6 +70,9 @@ TEST(WorkerProtocol, ResponsesRoundTrip) {
     r.messages = "bad";
     r.words = {1, 2, 3};
     r.files_read = {"a.cginc", "b.cginc"};
+    r.second_ok = true;
+    r.second_text = "second";
+    r.second_functions = {"vert", "frag"};
     const std::string bytes = EncodeResponse(r);
     const auto frame = SplitFrame(Payload(bytes));
     ASSERT_TRUE(frame);
@@ -82,6 +87,9 @@ TEST(WorkerProtocol, ResponsesRoundTrip) {
     EXPECT_EQ(back->messages, r.messages);
     EXPECT_EQ(back->words, r.words);
     EXPECT_EQ(back->files_read, r.files_read);
+    EXPECT_EQ(back->second_ok, r.second_ok);
+    EXPECT_EQ(back->second_text, r.second_text);
+    EXPECT_EQ(back->second_functions, r.second_functions);
 
     const std::string failure_bytes = EncodeFailure("memory", "an allocation failed");
     const auto failure = SplitFrame(Payload(failure_bytes));
@@ -100,9 +108,10 @@ TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
     size_t accepted = 0;
     for (size_t n = 0; n < full->payload.size(); ++n)
         accepted += DecodeRequest(full->payload.substr(0, n)) ? 1 : 0;
-    // Fields: kind, stage, name, source, entry, 2 include dirs, templates, debug, opt level,
-    // optimize, half arithmetic, words: 13 boundaries before the end, the empty prefix included.
-    EXPECT_EQ(accepted, 13u);
+    // Fields: kind, stage, name, source, entry, second entry, 2 include dirs, templates, debug,
+    // opt level, optimize, half arithmetic, words: 14 boundaries before the end, the empty prefix
+    // included.
+    EXPECT_EQ(accepted, 14u);
     for (size_t n = 0; n < 4; ++n)
         EXPECT_FALSE(SplitFrame(Payload(bytes).substr(0, n)));
 }
