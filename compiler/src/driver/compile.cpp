@@ -194,8 +194,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
     if (!diags.has_errors())
         driver::CreateTasks(st);
     clock.Into(ms.expand);
-    // Loading and expansion run every time, so their warnings are shown every time; a pack is
-    // kept whole only when nothing after them reported anything (a warning of glslang, say).
+    // Loading and expansion run every time, so their warnings are shown every time; a pack kept
+    // whole keeps the warnings of the steps after them, to report them again when it is taken.
     const size_t diags_after_expand = diags.all().size();
     bool preprocessed = false;
     if (!diags.has_errors()) {
@@ -230,8 +230,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
             out.pack = driver::EmitPack(st, out.stats);
         if (mode == Mode::kLint && !diags.has_errors())
             Lint(st, out.pack);
-        if (mode == Mode::kPack && !diags.has_errors() && diags.all().size() == diags_after_expand)
-            driver::StoreCachedPack(st, out.stats, out.pack);
+        if (mode == Mode::kPack && !diags.has_errors())
+            driver::StoreCachedPack(st, out.stats, out.pack, diags_after_expand);
         clock.Into(ms.emit);
     }
     return Finish(st, out, exec, whole);

@@ -134,12 +134,14 @@ void PreprocessAndDedup(CompileState& st, CompileStats& stats);
 void DedupKnown(CompileState& st, CompileStats& stats);
 
 // The whole pack in the cache (pack_cache.cpp): its key (empty unless every task's result key is
-// known), a pack that opens, and storing one.
+// known), a pack that opens (its stored warnings reported again into st.diags), and storing one
+// with the warnings from `first_warning` on (those of the steps a hit skips).
 std::string PackKey(const CompileState& st);
 std::optional<std::vector<uint8_t>> LoadCachedPack(const CompileState& st, CompileStats& stats);
 void StoreCachedPack(const CompileState& st,
                      const CompileStats& stats,
-                     const std::vector<uint8_t>& pack);
+                     const std::vector<uint8_t>& pack,
+                     size_t first_warning);
 
 // Phase 4, in compile_jobs.cpp: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats);

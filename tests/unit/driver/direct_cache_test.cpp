@@ -3,8 +3,8 @@
 // lines but not code compiles nothing; a code change compiles only the programs it changes; a
 // header that now shadows an include, a damaged manifest and a manifest whose module is gone are
 // misses that give the pack a compile without the cache gives; the same sources in another folder
-// hit; a compile with a warning of glslang or reflection is not stored whole, so the warning is
-// shown every time (those of loading and expansion are shown by steps that run every time).
+// hit; a warning is shown every time (one of loading or expansion by steps that run every time,
+// any other kept with the whole pack and reported again).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -183,6 +183,9 @@ TEST(DirectCache, DamagedManifestsAndMissingModulesAreMisses) {
     EXPECT_EQ(gone.out.pack, reference);
 }
 
+// A warning of a step a hit skips (here reflection's) is kept with the pack and reported again
+// when the pack is taken whole; from another folder the pack is not taken (the warning would name
+// the old path), and the warning names the new one.
 TEST(DirectCache, ACompileWithAWarningShowsItEveryTime) {
     Project p;
     p.shader = p.dir.Write("proj/direct.shader", Replace(Shader("            float4 _Extra;\n"),
@@ -192,7 +195,20 @@ TEST(DirectCache, ACompileWithAWarningShowsItEveryTime) {
         ASSERT_TRUE(r.out.ok) << Brief(r.diags);
         EXPECT_NE(Brief(r.diags).find("'_Extra' is not in Properties"), std::string::npos)
             << "run " << run << ": " << Brief(r.diags);
+        EXPECT_EQ(r.diags.all().size(), 1u) << Brief(r.diags);
+        if (run == 1) {
+            EXPECT_EQ(r.out.stats.ms.finish, 0.0);  // the pack was taken whole
+        }
     }
+    fs::create_directories(p.dir.path() + "/elsewhere");
+    fs::copy(p.dir.path() + "/proj", p.dir.path() + "/elsewhere/proj", fs::copy_options::recursive);
+    const std::string moved_path = p.dir.path() + "/elsewhere/proj/direct.shader";
+    const CompileRun moved = Compile({moved_path}, p.options);
+    ASSERT_TRUE(moved.out.ok) << Brief(moved.diags);
+    EXPECT_EQ(moved.out.stats.direct_hits, 4u);
+    EXPECT_GT(moved.out.stats.ms.finish, 0.0);  // not taken whole
+    ASSERT_EQ(moved.diags.all().size(), 1u) << Brief(moved.diags);
+    EXPECT_EQ(moved.diags.all()[0].file, moved_path);
 }
 
 // A warning of loading or expansion (here skip_variants naming no keyword) comes from steps that
