@@ -12,6 +12,7 @@ that are reported but not enforced (missed, or too close to the machine's noise)
 their cause in docs/performance.md.
 """
 import argparse
+import itertools
 import json
 import math
 import os
@@ -158,7 +159,7 @@ def naive_commands(work, shader, sets, sample):
     with open(program, "w", encoding="utf-8") as f:
         f.write('#include "HLSLSupport.cginc"\n#include "UnityShaderVariables.cginc"\n'
                 '#include "UnityShaderUtilities.cginc"\n' + body)
-    combos = list(__import__("itertools").product(*[range(n) for n in sets]))
+    combos = list(itertools.product(*[range(n) for n in sets]))
     rng = random.Random(19)
     chosen = rng.sample(combos, min(sample, len(combos)))
     out = []
@@ -301,12 +302,13 @@ def markdown(results):
            "|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         pre = r["cold_ms"]["preprocess"] / r["cold_ms"]["total"]
+        j1 = f"{r['j1_s']:.2f}" if "j1_s" in r else "-"
         naive = (f"{r['naive']['estimated_s']:.1f} ({r['naive']['estimated_s'] / r['cold_s']:.1f}x)"
                  if "naive" in r else "-")
         out.append(f"| {r['input']} | {r['variants']} | {r['stage_programs']} / "
                    f"{r['unique_programs']} | {r['cold_s']:.2f} | {pre:.0%} | {r['warm_s']:.3f} "
                    f"({r['warm_s'] / r['cold_s']:.3f}) | "
-                   f"{r.get('j1_s', float('nan')):.2f} | {r['floor_s']:.2f} "
+                   f"{j1} | {r['floor_s']:.2f} "
                    f"({r['cold_s'] / r['floor_s']:.2f}) | {naive} | "
                    f"{r['peak_kib'] / 1024:.0f} + {r['peak_worker_kib'] / 1024:.0f} |")
     out += ["", "| input | change | seconds | glslang compiles (expected) |", "|---|---|---|---|"]

@@ -202,7 +202,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
         const bool known = mode != Mode::kAnalyze && driver::LookUpDirect(st);
         if (known && mode == Mode::kPack) {
             if (auto pack = driver::LoadCachedPack(st, out.stats)) {
-                // Nothing changed since a compile that reported nothing: its pack.
+                // Nothing changed since a compile without errors: its pack (and the warnings
+                // of the steps skipped, reported again).
                 driver::DedupKnown(st, out.stats);
                 out.stats.cache_hits = st.jobs.size();
                 out.pack = std::move(*pack);

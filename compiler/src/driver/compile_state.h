@@ -21,6 +21,7 @@
 
 namespace kiln::driver {
 
+class Cache;
 class DirectCache;
 
 struct ShaderUnit {
@@ -146,7 +147,6 @@ void StoreCachedPack(const CompileState& st,
 // Phase 4, in compile_jobs.cpp: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats);
 // A cache entry, once spirv-val accepts it (a damaged or forged entry is a miss).
-class Cache;
 std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
                                                 const Cache& cache,
                                                 const std::string& key);

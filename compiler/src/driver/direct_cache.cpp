@@ -171,7 +171,6 @@ std::optional<std::string> DirectCache::Lookup(const std::string& key, const std
     if (lines.size() < 2 || lines[0] != kManifestHeader)
         return std::nullopt;
     std::optional<std::string> result;
-    std::vector<std::string> files;
     for (size_t i = 1; i < lines.size(); ++i) {
         const std::vector<std::string> f = Split(lines[i], '\t');
         if (f[0] == "result" && f.size() == 2 && f[1].size() == 32 && !result) {
@@ -180,7 +179,6 @@ std::optional<std::string> DirectCache::Lookup(const std::string& key, const std
             const std::string path = Untag(f[2], shader);
             if (path.empty() || ContentHash(path) != f[1])
                 return std::nullopt;
-            files.push_back(path);
         } else if (f[0] == "include" && f.size() == 5 && (f[1] == "0" || f[1] == "1")) {
             const std::string includer = Untag(f[2], shader);
             if (includer.empty() || ResolvedTag({f[3], f[1] == "1"}, includer, shader) != f[4])
