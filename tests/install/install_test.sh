@@ -29,6 +29,65 @@ if grep -rlF "$build" "$prefix"; then
     exit 1
 fi
 
+# What each component's config finds: traced, for the log, and checked for pack (an engine that
+# only loads packs must not need Vulkan, OpenColorIO, tinygltf, glslang, SPIRV-Tools or
+# SPIRV-Cross).
+for component in pack material runtime compiler; do
+    probe="$work/probe-$component"
+    mkdir -p "$probe"
+    printf 'cmake_minimum_required(VERSION 3.25)\nproject(P LANGUAGES CXX)\nfind_package(Kiln REQUIRED COMPONENTS %s)\n' \
+        "$component" >"$probe/CMakeLists.txt"
+    cmake -S "$probe" -B "$probe/build" -DCMAKE_PREFIX_PATH="$prefix" --trace-expand \
+        >"$probe.log" 2>&1 || { cat "$probe.log"; echo "FAIL: COMPONENTS $component"; exit 1; }
+    found=$(grep -F 'KilnConfig.cmake' "$probe.log" | grep -oE '(find_dependency|pkg_check_modules)\([A-Za-z_-]+' |
+            sed -E 's/.*\(//' | sort -u | tr '\n' ' ')
+    echo "COMPONENTS $component finds: $found"
+    if [ "$component" = pack ] && [ "$found" != "PkgConfig XXHASH " ]; then
+        echo "FAIL: the pack component finds more than xxhash: $found"; exit 1
+    fi
+done
+# Unknown components are an error naming the valid ones.
+printf 'cmake_minimum_required(VERSION 3.25)\nproject(P LANGUAGES CXX)\nfind_package(Kiln REQUIRED COMPONENTS packs)\n' \
+    >"$work/probe-pack/CMakeLists.txt"
+if cmake -S "$work/probe-pack" -B "$work/probe-pack/bad" -DCMAKE_PREFIX_PATH="$prefix" >"$work/bad.log" 2>&1; then
+    echo "FAIL: COMPONENTS packs configured"; exit 1
+fi
+grep -q "unknown Kiln component 'packs'" "$work/bad.log" || { cat "$work/bad.log"; echo "FAIL: no message"; exit 1; }
+
+# COMPONENTS pack on a view of this machine without the other components' packages: their CMake
+# packages cannot be found and pkg-config sees only xxhash. Configure, build, run.
+nopkg="$work/pkgconfig-xxhash-only"
+mkdir -p "$nopkg"
+ln -s "$(pkg-config --variable=pcfiledir libxxhash)/libxxhash.pc" "$nopkg/"
+disable=()
+for p in Vulkan TinyGLTF glm SPIRV-Tools SPIRV-Tools-opt glslang spirv_cross_core spirv_cross_glsl \
+         spirv_cross_hlsl spirv_cross_msl OpenColorIO; do
+    disable+=("-DCMAKE_DISABLE_FIND_PACKAGE_$p=TRUE")
+done
+dir="$work/consumer-pack-only"
+env -u KILN_TEMPLATES_DIR -u KILN_WORKER PATH=/usr/bin:/bin PKG_CONFIG_LIBDIR="$nopkg" \
+    cmake -S "$consumer" -B "$dir" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" -DKILN_COMPONENTS=pack \
+    "${disable[@]}" >"$dir.log" 2>&1 || { cat "$dir.log"; echo "FAIL: configure COMPONENTS pack"; exit 1; }
+cmake --build "$dir" >>"$dir.log" 2>&1 || { cat "$dir.log"; echo "FAIL: build COMPONENTS pack"; exit 1; }
+out=$("$dir/pick_variant" "$dir/packs/nested/consumer.kpack")
+echo "COMPONENTS pack: $out"
+[[ "$out" == "pass ForwardBase variant FOG_LINEAR: "* ]] || { echo "FAIL: COMPONENTS pack output"; exit 1; }
+
+# pkg-config from the prefix: the same loader compiled with nothing but kiln-pack's flags.
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+libs=$(pkg-config --libs kiln-pack)
+echo "pkg-config --libs kiln-pack: $libs"
+[[ "$libs" == *"-lkiln_pack"* && "$libs" == *"-lxxhash"* ]] || { echo "FAIL: kiln-pack.pc"; exit 1; }
+for c in material runtime compiler; do
+    pkg-config --exists "kiln-$c" || { echo "FAIL: kiln-$c.pc"; exit 1; }
+done
+# shellcheck disable=SC2046
+c++ -std=c++20 -o "$work/pick_variant_pc" "$consumer/pick_variant.cpp" \
+    $(pkg-config --cflags --libs kiln-pack) || { echo "FAIL: build with pkg-config"; exit 1; }
+out=$("$work/pick_variant_pc" "$dir/packs/nested/consumer.kpack")
+[[ "$out" == "pass ForwardBase variant FOG_LINEAR: "* ]] || { echo "FAIL: pkg-config build output"; exit 1; }
+unset PKG_CONFIG_PATH
+
 for gen in Ninja "Unix Makefiles"; do
     dir="$work/consumer-${gen// /-}"
     echo "== $gen"
