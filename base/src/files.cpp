@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
+#include <optional>
 #include <random>
 #include <utility>
 
@@ -15,6 +17,9 @@ namespace kiln::base {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The most standard input Kiln keeps, whatever the caller's limit (a pack or a shader).
+constexpr uint64_t kMaxStandardInputBytes = uint64_t{4} << 30;
 
 std::string Errno(const std::string& what) {
     return what + ": " + std::strerror(errno);
@@ -89,6 +94,44 @@ std::string TempName(const std::string& target) {
            std::to_string(seed ^ (counter++ * 0x9e3779b97f4a7c15ull));
 }
 
+// Standard input, read to its end (or past `max_bytes`) the first time it is asked for.
+Result<std::string> ReadStandardInput(uint64_t max_bytes) {
+    static std::mutex mu;
+    static std::optional<std::string> text;
+    static std::string error;
+    std::lock_guard<std::mutex> lock(mu);
+    if (!text && error.empty()) {
+        std::string out;
+        char buffer[65536];
+        for (;;) {
+            const ssize_t n = read(STDIN_FILENO, buffer, sizeof buffer);
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n < 0) {
+                error = Errno("cannot read standard input");
+                break;
+            }
+            if (n == 0)
+                break;
+            out.append(buffer, static_cast<size_t>(n));
+            if (out.size() > kMaxStandardInputBytes) {
+                error = "standard input is larger than the limit of " +
+                        std::to_string(kMaxStandardInputBytes) + " bytes";
+                break;
+            }
+        }
+        if (error.empty())
+            text = std::move(out);
+    }
+    if (!error.empty())
+        return Error{DiagCode::kCannotReadFile, error};
+    if (text->size() > max_bytes) {
+        return Error{DiagCode::kCannotReadFile, "standard input is larger than the limit of " +
+                                                    std::to_string(max_bytes) + " bytes"};
+    }
+    return *text;
+}
+
 }  // namespace
 
 std::string NotRegularFileKind(const std::string& path) {
@@ -99,6 +142,8 @@ std::string NotRegularFileKind(const std::string& path) {
 }
 
 Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes) {
+    if (path == kStandardStream)
+        return ReadStandardInput(max_bytes);
     // O_NONBLOCK: opening a FIFO for reading must not wait for a writer.
     Fd fd(open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
     if (fd.get() < 0)
@@ -142,6 +187,8 @@ Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes)
 
 Result<std::string> CheckOutputPath(const std::string& path,
                                     const std::vector<std::string>& inputs) {
+    if (path == kStandardStream)
+        return path;
     Result<std::string> resolved = OutputTarget(path);
     if (!resolved)
         return resolved;
@@ -167,6 +214,11 @@ Result<std::string> CheckOutputPath(const std::string& path,
 Status WriteFileAtomically(const std::string& path,
                            std::span<const uint8_t> bytes,
                            const WriteOptions& options) {
+    if (path == kStandardStream) {
+        if (!WriteAll(STDOUT_FILENO, bytes.data(), bytes.size()))
+            return Error{DiagCode::kCannotWriteFile, Errno("cannot write standard output")};
+        return {};
+    }
     Result<std::string> checked = CheckOutputPath(path, options.inputs);
     if (!checked)
         return checked.error();

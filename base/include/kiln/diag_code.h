@@ -49,6 +49,7 @@ enum class DiagCode : uint16_t {
     kNotFinite = 28,             // kiln stability: a non-finite value on an extreme input
     kOutsideBounds = 29,         // kiln stability: an error past the documented bound
     kUnsupportedExtension = 30,  // a glTF file requires an extension Kiln does not support
+    kCannotShowModule = 31,      // kiln show: a module SPIRV-Cross or the disassembler refuses
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,

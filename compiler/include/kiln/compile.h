@@ -80,6 +80,10 @@ struct CompileOptions {
     // the same) with only the requested variants. The product of a pass's keyword sets is never
     // enumerated. shader_feature narrowing, --keywords and --all-features do not apply.
     std::optional<pack::UsageLog> requests;
+    // Keep the text glslang compiles of every distinct stage program (CompileOutput::programs):
+    // kiln show --hlsl and kiln compile -E. Set cache_dir empty with it: a program the cache's
+    // direct mode knows is not preprocessed, so it has no text.
+    bool keep_programs = false;
     // Called from the driver thread as work completes (phase, done, total).
     std::function<void(const char*, size_t, size_t)> progress;
 };
@@ -153,8 +157,22 @@ struct StripReport {
     std::vector<std::pair<std::string, size_t>> other_shaders;
 };
 
+// One distinct stage program's text as glslang compiles it (CompileOptions::keep_programs):
+// preprocessed, rewritten for glslang and reduced to what the entry point reaches, with #line
+// directives back to the .shader and its includes.
+struct ProgramText {
+    std::string shader;
+    std::string pass;                   // its label, as kiln info names it
+    std::vector<std::string> keywords;  // of the first variant that has this text
+    pack::Stage stage = pack::Stage::kVertex;
+    std::string entry;   // the entry point
+    size_t variants = 1;  // stage programs of this pass with the same text
+    std::string text;
+};
+
 struct CompileOutput {
     bool ok = false;
+    std::vector<ProgramText> programs;  // CompileOptions::keep_programs, in task order
     std::vector<uint8_t> pack;  // empty unless ok and a pack was requested
     CompileStats stats;
     std::vector<PassReport> passes;

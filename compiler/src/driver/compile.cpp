@@ -104,6 +104,31 @@ void Lint(CompileState& st, const std::vector<uint8_t>& bytes) {
         driver::LintPropertiesAndState(st, pack.value());
 }
 
+// CompileOptions::keep_programs: each job's text, as its first task (the one that keeps it) names
+// it, with the number of stage programs that share it.
+void KeepPrograms(const CompileState& st, CompileOutput& out) {
+    std::vector<size_t> sharing(st.jobs.size(), 0);
+    for (const driver::StageTask& t : st.tasks) {
+        if (t.preprocess_ok && t.job < sharing.size())
+            ++sharing[t.job];
+    }
+    for (size_t j = 0; j < st.jobs.size(); ++j) {
+        const driver::Job& job = st.jobs[j];
+        const driver::StageTask& t = st.tasks[job.first_task];
+        const driver::PassUnit& pu = st.passes[t.pass];
+        const driver::ShaderUnit& unit = st.shaders[pu.shader];
+        ProgramText p;
+        p.shader = unit.ast ? unit.ast->name : unit.file->path();
+        p.pass = unit.passes[pu.flat].label;
+        p.keywords = variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, t.key);
+        p.stage = t.stage;
+        p.entry = job.entry;
+        p.variants = sharing[j];
+        p.text = t.reduced;
+        out.programs.push_back(std::move(p));
+    }
+}
+
 enum class Mode { kPack, kAnalyze, kSkeleton, kLint };
 
 // Adds the milliseconds since the last call (or construction) to a phase.
@@ -199,7 +224,9 @@ CompileOutput Run(const std::vector<std::string>& paths,
     const size_t diags_after_expand = diags.all().size();
     bool preprocessed = false;
     if (!diags.has_errors()) {
-        const bool known = mode != Mode::kAnalyze && driver::LookUpDirect(st);
+        // Kept texts need every program preprocessed: the direct mode would skip them.
+        const bool known =
+            mode != Mode::kAnalyze && !options.keep_programs && driver::LookUpDirect(st);
         if (known && mode == Mode::kPack) {
             if (auto pack = driver::LoadCachedPack(st, out.stats)) {
                 // Nothing changed since a compile without errors: its pack (and the warnings
@@ -213,6 +240,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
         }
         driver::PreprocessAndDedup(st, out.stats);
         preprocessed = true;
+        if (options.keep_programs)
+            KeepPrograms(st, out);
     }
     clock.Into(ms.preprocess);
     if (mode == Mode::kAnalyze) {

@@ -67,6 +67,24 @@ bool OpenPack(const std::string& path,
               pack::Pack& pack,
               const GlobalOptions& global);
 
+// One variant of a pack by name (kiln extract, kiln show): --shader, --pass, --keywords.
+struct VariantName {
+    std::string shader, pass;
+    std::vector<std::string> keywords;
+};
+void AddVariantNameOptions(CLI::App& cmd, VariantName& name);
+// The pass `name` means in `pack` (read from `file`), its keywords checked against the pass's;
+// what does not resolve is reported (K0005 with the closest names, K4015) and gives nullopt.
+std::optional<uint32_t> ResolvePass(const pack::Pack& pack,
+                                    const std::string& file,
+                                    const VariantName& name,
+                                    const GlobalOptions& global);
+// The same, then the variant (K0006 when the pack does not hold it).
+std::optional<pack::VariantRec> ResolveVariant(const pack::Pack& pack,
+                                               const std::string& file,
+                                               const VariantName& name,
+                                               const GlobalOptions& global);
+
 // Flags shared by `compile` and `variants`.
 struct CompilerFlags {
     std::vector<std::string> include_dirs;
@@ -85,7 +103,9 @@ struct CompilerFlags {
     double program_timeout = 60;
     uint64_t program_memory = 2048;
 };
-void AddCompilerOptions(CLI::App& cmd, CompilerFlags& flags);
+// With `variant_choice` false (kiln show), the options that choose which variants to build
+// (--materials, --keywords, --all-features, --max-variants) are left out.
+void AddCompilerOptions(CLI::App& cmd, CompilerFlags& flags, bool variant_choice = true);
 // The library's options from the flags; reads the --materials files (kept in `files` for the
 // diagnostics that point into them). Problems go to `diags`.
 CompileOptions ToCompileOptions(const CompilerFlags& flags,
@@ -147,6 +167,7 @@ std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddDiffCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddShowCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global);
 std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global);

@@ -15,6 +15,7 @@
 #include "kiln/base/files.h"
 #include "kiln/compile.h"
 #include "kiln/material/sidecar.h"
+#include "kiln/show.h"
 
 namespace kiln::cli {
 namespace {
@@ -31,7 +32,8 @@ std::string DepfileEscape(const std::string& path) {
     return out;
 }
 
-void PrintStats(const CompileStats& s, bool json) {
+// On `to`: stdout, or stderr when the pack goes to stdout (-o -).
+void PrintStats(const CompileStats& s, bool json, FILE* to) {
     const CompileStats::Phases& ms = s.ms;
     if (json) {
         const nlohmann::ordered_json j = {{"permutations", s.permutations},
@@ -54,28 +56,33 @@ void PrintStats(const CompileStats& s, bool json) {
                                             {"total", ms.total}}},
                                           {"peak_rss_kib", s.peak_rss_kib},
                                           {"peak_worker_rss_kib", s.peak_worker_rss_kib}};
-        std::printf("%s\n", j.dump(2).c_str());
+        std::fprintf(to, "%s\n", j.dump(2).c_str());
         return;
     }
-    std::printf(
+    std::fprintf(to, 
         "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, glslang "
         "compiles %zu, cache hits %zu (direct %zu), shared preprocesses %zu, modules %zu, aliased "
         "variants %zu\n",
         static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
         s.unique_programs, s.glslang_compiles, s.cache_hits, s.direct_hits, s.shared_preprocesses,
         s.modules, s.aliased_variants);
-    std::printf(
+    std::fprintf(to, 
         "ms: load %.1f, expand %.1f, preprocess %.1f, compile %.1f, finish %.1f, emit %.1f, total "
         "%.1f\n",
         ms.load, ms.expand, ms.preprocess, ms.compile, ms.finish, ms.emit, ms.total);
-    std::printf("peak memory: kiln %llu KiB, largest worker %llu KiB\n",
+    std::fprintf(to, "peak memory: kiln %llu KiB, largest worker %llu KiB\n",
                 static_cast<unsigned long long>(s.peak_rss_kib),
                 static_cast<unsigned long long>(s.peak_worker_rss_kib));
 }
 
 }  // namespace
 
-void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
+namespace {
+// --templates-dir, -j and how glslang runs: kiln compile's options that choose no variant.
+void AddToolOptions(CLI::App& cmd, CompilerFlags& f);
+}  // namespace
+
+void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f, bool variant_choice) {
     cmd.add_option("-I", f.include_dirs, "Add an include directory (searched in order)");
     cmd.add_option("-D", f.defines, "Define a preprocessor macro NAME or NAME=VALUE");
     cmd.add_option("-U", f.undefines,
@@ -98,6 +105,10 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
                    "(binary16 arithmetic; the device needs shaderFloat16)")
         ->check(CLI::IsMember({"full", "relaxed", "half"}))
         ->option_text("full|relaxed|half");
+    if (!variant_choice) {
+        AddToolOptions(cmd, f);
+        return;
+    }
     cmd.add_option("--materials", f.materials,
                    ".material files or <scene>.kiln.json sidecars: build the shader_feature "
                    "combinations they enable");
@@ -111,6 +122,11 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
                    "Largest number of variants a pass may have (default 4096)")
         ->check(CLI::PositiveNumber.description(""))
         ->option_text("N");
+    AddToolOptions(cmd, f);
+}
+
+namespace {
+void AddToolOptions(CLI::App& cmd, CompilerFlags& f) {
     cmd.add_option("--templates-dir", f.templates_dir,
                    "The built-in include library (default: Kiln's templates/)");
     cmd.add_option("-j,--jobs", f.jobs, "Parallel compile jobs (default: all cores)");
@@ -126,6 +142,7 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f) {
         ->check(CLI::Range(uint64_t{16}, uint64_t{1} << 24).description(""))
         ->option_text("MIB");
 }
+}  // namespace
 
 std::optional<int> ParseUnityVersion(const std::string& text) {
     int parts[3] = {0, 0, 0};
@@ -264,27 +281,76 @@ std::string CheckStripFlags(const SceneStripFlags& strip, const CompilerFlags& f
     return "";
 }
 
+struct CompileArgs {
+    std::vector<std::string> files;
+    std::string output;
+    CompilerFlags flags;
+    std::string opt = "1";
+    bool debug = false;
+    std::string cache_dir;
+    bool no_cache = false;
+    bool md = false;
+    std::string mf;
+    std::string stats;  // "", "text" or "json"
+    bool no_aliases = false;
+    bool preprocess_only = false;  // -E
+    SceneStripFlags strip;
+};
+
+// kiln compile -E: every distinct stage program's text as glslang would compile it, each under a
+// comment naming the shader, pass, keywords, stage and entry point. Nothing is compiled.
+int PreprocessOnly(const CompileArgs& o, const GlobalOptions& global) {
+    if (o.strip.active() || o.md || !o.mf.empty() || !o.stats.empty()) {
+        ReportError(global, DiagCode::kBadCommandLine, "",
+                    "-E prints the preprocessed programs only; it takes no --scene, --usage, "
+                    "-MD, -MF or --stats");
+        return int(kExitUsageError);
+    }
+    std::vector<std::unique_ptr<SourceFile>> material_files;
+    DiagnosticList diags;
+    CompileOptions options = ToCompileOptions(o.flags, material_files, diags);
+    options.cache_dir.clear();
+    options.keep_programs = true;
+    CompileOutput out;
+    if (!diags.has_errors())
+        out = AnalyzeVariants(o.files, options, diags);
+    std::string text;
+    for (const ProgramText& p : out.programs) {
+        char shared[64] = "";
+        if (p.variants > 1)
+            std::snprintf(shared, sizeof shared, " (and %zu more variants)", p.variants - 1);
+        text += "// " + p.shader + ", pass " + p.pass + ", keywords " +
+                (p.keywords.empty() ? "(none)" : pack::JoinKeywords(p.keywords)) + shared + ", " +
+                (p.stage == pack::Stage::kVertex ? "vertex" : "fragment") + " stage, entry " +
+                p.entry + "\n" + CompactProgramText(p.text) + "\n";
+    }
+    if (!diags.has_errors()) {
+        const std::string target = o.output.empty() ? std::string(base::kStandardStream) : o.output;
+        std::vector<std::string> inputs = o.flags.materials;
+        inputs.insert(inputs.end(), o.files.begin(), o.files.end());
+        for (const auto& f : out.files)
+            inputs.push_back(f->path());
+        if (Status written = base::WriteFileAtomically(target, text, {inputs}); !written.ok())
+            diags.Error(DiagCode::kCannotWriteFile, target, kNoPosition, written.error().message);
+    }
+    PrintDiagnostics(diags, Views(out, material_files), global);
+    return ExitCodeFor(diags);
+}
+
 }  // namespace
 
 std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& global) {
-    struct Options {
-        std::vector<std::string> files;
-        std::string output;
-        CompilerFlags flags;
-        std::string opt = "1";
-        bool debug = false;
-        std::string cache_dir;
-        bool no_cache = false;
-        bool md = false;
-        std::string mf;
-        std::string stats;  // "", "text" or "json"
-        bool no_aliases = false;
-        SceneStripFlags strip;
-    };
+    using Options = CompileArgs;
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("compile", "Compile .shader files into a variant pack");
     cmd->add_option("files", o->files, "ShaderLab files")->required();
-    cmd->add_option("-o,--output", o->output, "The pack to write")->required();
+    cmd->add_option("-o,--output", o->output,
+                    "The pack to write (- writes it to standard output); with -E, where the "
+                    "text goes (default: standard output)");
+    cmd->add_flag("-E", o->preprocess_only,
+                  "Preprocess only (glslc -E): print the HLSL glslang would compile for every "
+                  "distinct stage program, reduced to its entry point, with #line back to the "
+                  ".shader; no pack is written");
     AddCompilerOptions(*cmd, o->flags);
     // -O0/-O/-Os, -MD and -MF are rewritten to these before parsing (main.cpp); the help shows
     // the compiler spellings only, as README does.
@@ -318,6 +384,20 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
 
     return [o, &global]() {
         DiagnosticList diags;
+        if (o->preprocess_only)
+            return PreprocessOnly(*o, global);
+        const bool to_stdout = o->output == base::kStandardStream;
+        std::string bad_output;
+        if (o->output.empty())
+            bad_output = "kiln compile needs -o FILE (the pack to write; -o - for standard output)";
+        else if (to_stdout && (o->md || !o->mf.empty()))
+            bad_output = "-MD and -MF need a pack file to name in the depfile, not -o -";
+        else if (to_stdout && (o->strip.explain || o->strip.explain_json))
+            bad_output = "--explain prints on standard output, where -o - writes the pack";
+        if (!bad_output.empty()) {
+            ReportError(global, DiagCode::kBadCommandLine, "", bad_output);
+            return int(kExitUsageError);
+        }
         if (std::string bad = CheckStripFlags(o->strip, o->flags); !bad.empty()) {
             ReportError(global, DiagCode::kBadCommandLine, "", bad);
             return int(kExitUsageError);
@@ -404,7 +484,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
             }
         }
         if (!o->stats.empty())
-            PrintStats(out.stats, o->stats == "json");
+            PrintStats(out.stats, o->stats == "json", to_stdout ? stderr : stdout);
         PrintDiagnostics(diags, Views(out, material_files), global);
         return ExitCodeFor(diags);
     };

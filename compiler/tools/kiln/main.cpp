@@ -216,6 +216,7 @@ int main(int argc, char** argv) {
             {"diff", AddDiffCommand(app, global)},
             {"info", AddInfoCommand(app, global)},
             {"extract", AddExtractCommand(app, global)},
+            {"show", AddShowCommand(app, global)},
             {"validate", AddValidateCommand(app, global)},
             {"new", AddNewCommand(app, global)},
             // Listed for --help and "did you mean"; main() hands them to kiln-render first.

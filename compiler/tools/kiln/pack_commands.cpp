@@ -239,59 +239,81 @@ std::vector<std::string> PassNames(const Pack& pack, uint32_t shader) {
     return names;
 }
 
+// The pass of a pack named by shader and pass, its keywords checked (kiln extract, kiln show).
+std::optional<uint32_t> ResolvePass(const Pack& pack,
+                                    const std::string& file,
+                                    const VariantName& name,
+                                    const GlobalOptions& global) {
+    const auto shader = pack.FindShader(name.shader);
+    if (!shader) {
+        ReportError(global, DiagCode::kUnknownPackName, file,
+                    "no shader \"" + name.shader + "\" in " +
+                        (file.ends_with(".kpack") || file == "-" ? "the pack" : "'" + file + "'") +
+                        pack::DidYouMean(name.shader, ShaderNames(pack)));
+        return std::nullopt;
+    }
+    const auto pass = pack.FindPass(*shader, name.pass);
+    if (!pass) {
+        ReportError(global, DiagCode::kUnknownPackName, file,
+                    "shader \"" + name.shader + "\" has no pass \"" + name.pass + "\"" +
+                        pack::DidYouMean(name.pass, PassNames(pack, *shader)));
+        return std::nullopt;
+    }
+    if (Status declared = pack.CheckKeywords(*pass, name.keywords); !declared.ok()) {
+        ReportError(global, declared.error().code, file,
+                    "shader \"" + name.shader + "\" pass \"" + name.pass +
+                        "\": " + declared.error().message);
+        return std::nullopt;
+    }
+    return pass;
+}
+
+std::optional<pack::VariantRec> ResolveVariant(const Pack& pack,
+                                               const std::string& file,
+                                               const VariantName& name,
+                                               const GlobalOptions& global) {
+    const std::optional<uint32_t> pass = ResolvePass(pack, file, name, global);
+    if (!pass)
+        return std::nullopt;
+    const auto variant = pack.FindVariant(*pass, pack.KeyFor(*pass, name.keywords));
+    if (!variant) {
+        std::string kws;
+        for (const auto& k : name.keywords)
+            kws += " " + k;
+        ReportError(global, DiagCode::kMissingVariant, file,
+                    "shader \"" + name.shader + "\" pass \"" + name.pass +
+                        "\" has no variant with keywords" + (kws.empty() ? " (none)" : kws) +
+                        " (stripped or never built)");
+        return std::nullopt;
+    }
+    return pack.Variant(*variant).value();
+}
+
 std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global) {
     struct Options {
-        std::string file, shader, pass, stage, output;
-        std::vector<std::string> keywords;
+        std::string file, stage, output;
+        VariantName name;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("extract", "Write one variant's SPIR-V module to a file");
-    cmd->add_option("pack", o->file, "A .kpack file")->required();
-    cmd->add_option("--shader", o->shader, "Shader name")->required();
-    cmd->add_option("--pass", o->pass, "Pass as kiln info names it, its Name or LightMode")
-        ->required();
-    cmd->add_option("--keywords", o->keywords, "Enabled keywords")->delimiter(',');
+    cmd->add_option("pack", o->file, "A .kpack file (- reads standard input)")->required();
+    AddVariantNameOptions(*cmd, o->name);
     cmd->add_option("--stage", o->stage, "vert or frag")
         ->required()
         ->check(CLI::IsMember({"vert", "frag", "vertex", "fragment"}));
-    cmd->add_option("-o,--output", o->output, "Output .spv")->required();
+    cmd->add_option("-o,--output", o->output, "Output .spv (- writes standard output)")
+        ->required();
     return [o, &global]() {
         MappedFile file;
         Pack pack;
         if (!OpenPack(o->file, file, pack, global))
             return int(kExitInputError);
-        const auto shader = pack.FindShader(o->shader);
-        if (!shader) {
-            return ReportError(global, DiagCode::kUnknownPackName, o->file,
-                               "no shader \"" + o->shader + "\" in the pack" +
-                                   pack::DidYouMean(o->shader, ShaderNames(pack)));
-        }
-        const auto pass = pack.FindPass(*shader, o->pass);
-        if (!pass) {
-            return ReportError(global, DiagCode::kUnknownPackName, o->file,
-                               "shader \"" + o->shader + "\" has no pass \"" + o->pass + "\"" +
-                                   pack::DidYouMean(o->pass, PassNames(pack, *shader)));
-        }
-        if (Status declared = pack.CheckKeywords(*pass, o->keywords); !declared.ok()) {
-            return ReportError(global, declared.error().code, o->file,
-                               "shader \"" + o->shader + "\" pass \"" + o->pass +
-                                   "\": " + declared.error().message);
-        }
-        const VariantKey key = pack.KeyFor(*pass, o->keywords);
-        const auto variant = pack.FindVariant(*pass, key);
-        if (!variant) {
-            std::string kws;
-            for (const auto& k : o->keywords)
-                kws += " " + k;
-            return ReportError(global, DiagCode::kMissingVariant, o->file,
-                               "shader \"" + o->shader + "\" pass \"" + o->pass +
-                                   "\" has no variant with keywords" +
-                                   (kws.empty() ? " (none)" : kws) + " (stripped or never built)");
-        }
-        const VariantRec v = pack.Variant(*variant).value();
+        const std::optional<pack::VariantRec> v = ResolveVariant(pack, o->file, o->name, global);
+        if (!v)
+            return int(kExitInputError);
         const bool vert = o->stage[0] == 'v';
         const auto bytes =
-            pack.Spirv(pack.Module(vert ? v.vertex_module : v.fragment_module).value());
+            pack.Spirv(pack.Module(vert ? v->vertex_module : v->fragment_module).value());
         Status written = base::WriteFileAtomically(
             o->output, std::span<const uint8_t>(bytes.data(), bytes.size()), {{o->file}});
         if (!written.ok())
@@ -299,6 +321,13 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
                                written.error().message);
         return int(kExitOk);
     };
+}
+
+void AddVariantNameOptions(CLI::App& cmd, VariantName& name) {
+    cmd.add_option("--shader", name.shader, "Shader name")->required();
+    cmd.add_option("--pass", name.pass, "Pass as kiln info names it, its Name or LightMode")
+        ->required();
+    cmd.add_option("--keywords", name.keywords, "Enabled keywords")->delimiter(',');
 }
 
 }  // namespace kiln::cli

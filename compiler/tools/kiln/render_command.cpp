@@ -53,6 +53,12 @@ std::string ParseAmbient(const std::string& text, runtime::Scene* scene) {
     if (IsSkyImage(text)) {
         return "";  // read when the scene is (LoadSky)
     }
+    // flat:R,G,B: one colour, spelled out (the default before the sky was).
+    if (text.rfind("flat:", 0) == 0) {
+        if (text.find(':', 5) != std::string::npos || !ParseAmbient(text.substr(5), nullptr).empty())
+            return "expected flat:R,G,B (one linear, non-negative colour)";
+        return ParseAmbient(text.substr(5), scene);
+    }
     // Kiln's procedural sky, with its default clear-day colours or ZENITH:HORIZON:GROUND.
     if (text == "sky" || text.rfind("sky:", 0) == 0) {
         runtime::Scene colours;
@@ -157,8 +163,9 @@ int DryRun(const RenderArgs& a,
             return finish(int(kExitInputError));
         }
     }
-    std::printf("%s: dry run, %u objects, %u draws, %zu distinct lookups, %zu missing\n",
-                a.scene.c_str(), plan.objects, plan.draws, plan.usage.lookups.size(),
+    std::fprintf(a.usage == base::kStandardStream ? stderr : stdout,
+                 "%s: dry run, %u objects, %u draws, %zu distinct lookups, %zu missing\n",
+                 a.scene.c_str(), plan.objects, plan.draws, plan.usage.lookups.size(),
                 plan.missing.all().size());
     return finish(ExitCodeFor(diags));
 }
@@ -254,11 +261,11 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
     cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
     cmd->add_option("--ambient", a->ambient,
-                    "Ambient light, linear: one colour, Unity's gradient SKY:EQUATOR:GROUND, "
-                    "Kiln's procedural sky, or a sky image as --sky (default: the sidecar's, "
-                    "else 0.05,0.05,0.05)")
+                    "Ambient light, linear: one colour (R,G,B or flat:R,G,B), Unity's gradient "
+                    "SKY:EQUATOR:GROUND, Kiln's procedural sky, or a sky image as --sky "
+                    "(default: the sidecar's, else the procedural sky, as a new Unity scene)")
         ->check(CLI::Validator([](std::string& v) { return ParseAmbient(v, nullptr); }, ""))
-        ->option_text("R,G,B|R,G,B:R,G,B:R,G,B|sky[:R,G,B:R,G,B:R,G,B]|IMAGE.hdr");
+        ->option_text("R,G,B|flat:R,G,B|R,G,B:R,G,B:R,G,B|sky[:R,G,B:R,G,B:R,G,B]|IMAGE.hdr");
     cmd->add_option("--sky", a->sky,
                     "Ambient light from an equirectangular HDR image (Radiance .hdr; row 0 "
                     "straight up, the centre looking down -Z), projected to SH")
@@ -322,6 +329,19 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         inputs.push_back(a->scene);
         if (!a->materials.empty())
             inputs.push_back(a->materials);
+        // One output may be standard output ("-"); the summary then goes to stderr.
+        int to_stdout = 0;
+        for (const std::string* out : {&a->output, &a->exr, &a->usage})
+            to_stdout += *out == base::kStandardStream;
+        if (to_stdout > 1 || a->pipeline_cache == base::kStandardStream) {
+            diags.Error(DiagCode::kBadCommandLine, "", kNoPosition,
+                        to_stdout > 1 ? "only one of -o, --exr and --usage can be - (standard "
+                                        "output)"
+                                      : "--pipeline-cache is read as well as written: it "
+                                        "cannot be - (standard output)");
+            return finish(int(kExitUsageError));
+        }
+        FILE* const summary = to_stdout ? stderr : stdout;
         for (const std::string* out : {&a->output, &a->exr, &a->usage, &a->pipeline_cache}) {
             if (out->empty())
                 continue;
@@ -353,6 +373,11 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         if (!a->ambient.empty()) {
             ParseAmbient(a->ambient, &scene);  // validated by the option's check
         }
+        // A scene that says nothing of its environment gets a new Unity scene's: the
+        // procedural sky as ambient and reflection source.
+        const bool default_sky = a->ambient.empty() && a->sky.empty() && !scene.ambient_given;
+        if (default_sky)
+            ParseAmbient("sky", &scene);
         if (!a->sky.empty()) {
             Result<std::shared_ptr<const runtime::Sky>> sky =
                 runtime::LoadSky(a->sky, a->sky_intensity);
@@ -422,7 +447,8 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             if (Status written = runtime::WriteFrameDebug(a->frame_debug, capture); !written.ok()) {
                 return fail(written.error(), a->frame_debug);
             }
-            std::printf("%s/index.html: %zu steps\n", a->frame_debug.c_str(), capture.steps.size());
+            std::fprintf(summary, "%s/index.html: %zu steps\n", a->frame_debug.c_str(),
+                         capture.steps.size());
         }
         std::string deferred;
         if (a->frame.path == runtime::RenderPath::kDeferred) {
@@ -432,13 +458,17 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         if (stats.shadow_draws > 0) {
             deferred += std::to_string(stats.shadow_draws) + " shadow draws, ";
         }
-        std::printf(
+        std::fprintf(
+            summary,
             "%s: %ux%u, camera '%s', %u objects, %s%u base + %u additive passes (%u with vertex "
-            "lights, %u with SH lights), %u pipelines, device '%s', %s%s\n",
+            "lights, %u with SH lights), %u pipelines, device '%s', %s%s%s\n",
             a->output.c_str(), image.width, image.height, stats.camera.c_str(), stats.objects,
             deferred.c_str(), stats.base_passes, stats.add_passes, stats.vertex_lit, stats.sh_lit,
             stats.pipelines_created, renderer.DeviceName().c_str(), color.description().c_str(),
-            a->validation ? ", validation messages: 0" : "");
+            a->validation ? ", validation messages: 0" : "",
+            default_sky ? ", ambient: the default sky (the scene sets none; --ambient "
+                          "flat:R,G,B for one colour)"
+                        : "");
         return finish(int(kExitOk));
     };
 }

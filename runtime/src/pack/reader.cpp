@@ -14,6 +14,7 @@
 
 #include <xxhash.h>
 
+#include "kiln/base/files.h"
 #include "kiln/pack/names.h"
 
 #include "kiln/pack/pass_id.h"
@@ -115,6 +116,26 @@ MappedFile::~MappedFile() {
 }
 
 Result<MappedFile> MappedFile::Map(const std::string& path) {
+    if (path == base::kStandardStream) {
+        // Standard input (kiln info -): its bytes copied into an anonymous mapping, which is
+        // page-aligned as a file's is and unmapped the same way.
+        Result<std::string> read = base::ReadRegularFile(path, uint64_t{4} << 30);
+        if (!read)
+            return read.error();
+        MappedFile out;
+        if (read.value().empty())
+            return out;
+        void* p = mmap(nullptr, read.value().size(), PROT_READ | PROT_WRITE,
+                       MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (p == MAP_FAILED) {
+            return Error{DiagCode::kCannotReadFile,
+                         std::string("cannot hold standard input: ") + std::strerror(errno)};
+        }
+        std::memcpy(p, read.value().data(), read.value().size());
+        out.data_ = static_cast<const uint8_t*>(p);
+        out.size_ = read.value().size();
+        return out;
+    }
     // O_NONBLOCK: opening a FIFO must not wait for a writer (fstat then refuses it).
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) {

@@ -115,6 +115,7 @@ Status LoadMaterialSidecar(const std::string& path, Scene& scene) {
     if (sidecar.has_ambient) {
         const auto vec = [](const std::array<float, 3>& a) { return glm::vec3(a[0], a[1], a[2]); };
         scene.ambient_mode = sidecar.trilight ? AmbientMode::kTrilight : AmbientMode::kFlat;
+        scene.ambient_given = true;
         scene.ambient = vec(sidecar.ambient);
         scene.ambient_equator = vec(sidecar.equator);
         scene.ambient_ground = vec(sidecar.ground);

@@ -15,8 +15,14 @@
 
 namespace kiln::base {
 
+// "-", the command-line spelling of standard input (as a path to read) and standard output (as a
+// path to write), as glslc and gcc take it.
+inline constexpr std::string_view kStandardStream = "-";
+
 // The whole of a regular file of at most `max_bytes`. The error says what the path is when it is
-// not a regular file ("is a directory", "is a FIFO"), or that it is over the limit.
+// not a regular file ("is a directory", "is a FIFO"), or that it is over the limit. The path "-"
+// is standard input, read to its end once (later reads of "-" give the same bytes), under the
+// same limit: a pipe is the one stream Kiln reads, and only when asked to by that name.
 Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes);
 
 struct WriteOptions {
@@ -28,7 +34,8 @@ struct WriteOptions {
 
 // Writes `bytes` to `path` atomically. An output that is one of the inputs (the same file, by
 // device and inode) is refused. An output that is a symbolic link is written through: the file it
-// points to is replaced and the link is kept.
+// points to is replaced and the link is kept. The path "-" is standard output: the bytes are
+// written whole in one go after the work is done, so a failed command writes nothing there.
 Status WriteFileAtomically(const std::string& path,
                            std::span<const uint8_t> bytes,
                            const WriteOptions& options = {});
@@ -38,7 +45,8 @@ Status WriteFileAtomically(const std::string& path,
 
 // The checks WriteFileAtomically makes before it writes, for a command that wants to refuse a bad
 // output before doing the work: `path` (or the file its symbolic link names) is absent or a
-// regular file, and none of `inputs`. Gives the file that will be replaced.
+// regular file, and none of `inputs`. Gives the file that will be replaced ("-" for standard
+// output).
 Result<std::string> CheckOutputPath(const std::string& path,
                                     const std::vector<std::string>& inputs);
 

@@ -173,6 +173,9 @@ struct Scene {
     glm::vec3 ambient{0.05f};
     glm::vec3 ambient_equator{0.05f}, ambient_ground{0.05f};
     std::shared_ptr<const Sky> sky;  // kSky
+    // The scene said what its ambient is (its sidecar's "ambient"). kiln render gives a scene
+    // that says nothing Unity's default environment, the procedural sky.
+    bool ambient_given = false;
     // glTF material name -> .material file (absolute or relative to the working directory).
     std::map<std::string, std::string> material_files;
 };
