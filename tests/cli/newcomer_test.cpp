@@ -3,8 +3,8 @@
 // default environment of a scene that sets none.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <cstdio>
@@ -30,8 +30,8 @@ const std::string kSpot =
     " --shader Kiln/StandardMetallic --pass ForwardAdd --keywords SPOT --stage frag";
 
 TEST(Streams, ACompiledPackPipesIntoInfo) {
-    const RunResult r = RunKiln("compile " + Material("Unlit.shader") + " --no-cache -o - | " +
-                                kKiln + " info -");
+    const RunResult r =
+        RunKiln("compile " + Material("Unlit.shader") + " --no-cache -o - | " + kKiln + " info -");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("-: kiln pack"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("Kiln/Unlit"), std::string::npos) << r.out;
@@ -67,8 +67,7 @@ TEST(Streams, AShaderFromStandardInput) {
 }
 
 TEST(Streams, ExtractAndRenderWriteToStandardOutput) {
-    const RunResult spv =
-        RunKiln("extract " + std::string(KILN_MATERIALS_PACK) + kSpot + " -o -");
+    const RunResult spv = RunKiln("extract " + std::string(KILN_MATERIALS_PACK) + kSpot + " -o -");
     ASSERT_EQ(spv.exit_code, 0) << spv.err;
     ASSERT_GE(spv.out.size(), 20u);
     uint32_t magic = 0;
@@ -90,8 +89,8 @@ TEST(Streams, StandardOutputConflictsAreUsageErrors) {
     const RunResult none = RunKiln("compile " + Material("Unlit.shader"));
     EXPECT_EQ(none.exit_code, 2);
     EXPECT_NE(none.err.find("needs -o FILE"), std::string::npos) << none.err;
-    const RunResult two = RunKiln("render " + DataPath("cli/mistakes/triangle.gltf") +
-                                  " -o - --exr -");
+    const RunResult two =
+        RunKiln("render " + DataPath("cli/mistakes/triangle.gltf") + " -o - --exr -");
     EXPECT_EQ(two.exit_code, 2);
     EXPECT_NE(two.err.find("only one of -o, --exr and --usage"), std::string::npos) << two.err;
 }
@@ -210,8 +209,8 @@ TEST(Show, CompileDashEPrintsEveryProgram) {
 // top-left pixel's colour).
 double MeanLitBrightness(const std::string& png) {
     int w = 0, h = 0, n = 0;
-    unsigned char* pixels = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(png.data()),
-                                                  int(png.size()), &w, &h, &n, 3);
+    unsigned char* pixels = stbi_load_from_memory(
+        reinterpret_cast<const unsigned char*>(png.data()), int(png.size()), &w, &h, &n, 3);
     if (!pixels)
         return -1;
     double sum = 0;

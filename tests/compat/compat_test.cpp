@@ -222,7 +222,8 @@ void RunCorpus(Mode mode) {
                   shaders.size(), allowed_failures, total);
     table << summary;
     std::cout << table.str();
-    std::ofstream(std::string(KILN_TEST_OUTPUT_DIR) + "/compat-" + mode_name + ".md") << table.str();
+    std::ofstream(std::string(KILN_TEST_OUTPUT_DIR) + "/compat-" + mode_name + ".md")
+        << table.str();
     if (full) {
         // The allow-list stays under 10% of the non-surface shaders.
         EXPECT_LT(allow.size() * 10, shaders.size()) << "allow-list too long";

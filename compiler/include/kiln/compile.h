@@ -165,7 +165,7 @@ struct ProgramText {
     std::string pass;                   // its label, as kiln info names it
     std::vector<std::string> keywords;  // of the first variant that has this text
     pack::Stage stage = pack::Stage::kVertex;
-    std::string entry;   // the entry point
+    std::string entry;    // the entry point
     size_t variants = 1;  // stage programs of this pass with the same text
     std::string text;
 };
@@ -173,7 +173,7 @@ struct ProgramText {
 struct CompileOutput {
     bool ok = false;
     std::vector<ProgramText> programs;  // CompileOptions::keep_programs, in task order
-    std::vector<uint8_t> pack;  // empty unless ok and a pack was requested
+    std::vector<uint8_t> pack;          // empty unless ok and a pack was requested
     CompileStats stats;
     std::vector<PassReport> passes;
     StripReport strip;

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "kiln/compile.h"
 #include "kiln/pack/reader.h"
 #include "kiln/result.h"
 
@@ -42,6 +43,11 @@ Result<std::string> ViewModule(std::span<const uint32_t> words,
 // before it, and redundant directives are dropped. What glslang reports against the text still
 // maps to the same places.
 std::string CompactProgramText(const std::string& text);
+
+// One kept program as kiln show --hlsl and kiln compile -E print it: a comment naming its shader,
+// pass, keywords (and how many more variants share the text), stage and entry point, then its
+// compacted text.
+std::string ProgramView(const ProgramText& program);
 
 // The reflection a pack records for one of its modules (inputs and outputs, uniform blocks and
 // push constants with their members, resources and their bindings), as text or as JSON.

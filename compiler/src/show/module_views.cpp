@@ -23,11 +23,11 @@ Error ShowError(std::string message) {
 std::string Validate(std::span<const uint32_t> words) {
     spvtools::SpirvTools tools(kEnv);
     std::string message;
-    tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&,
-                                 const char* m) {
-        if (message.empty())
-            message = m;
-    });
+    tools.SetMessageConsumer(
+        [&](spv_message_level_t, const char*, const spv_position_t&, const char* m) {
+            if (message.empty())
+                message = m;
+        });
     if (tools.Validate(words.data(), words.size()))
         return "";
     return message.empty() ? "the module is not valid SPIR-V" : message;
@@ -47,8 +47,8 @@ Result<std::string> Disassemble(std::span<const uint32_t> words) {
 std::string Identifier(std::string_view name) {
     std::string out;
     for (char c : name) {
-        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                        (c >= '0' && c <= '9') || c == '_';
+        const bool ok =
+            (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
         if (ok)
             out += c;
         else if (c != '@' && c != '$')
@@ -82,7 +82,8 @@ void NameFromPack(spirv_cross::Compiler& c, const pack::Pack& pack, const pack::
                     const auto mem =
                         pack.Get<pack::MemberRec>(SectionTag::kMembers, b.value().first_member + j);
                     if (mem && mem.value().offset == offset) {
-                        c.set_member_name(r.base_type_id, k, Identifier(pack.String(mem.value().name)));
+                        c.set_member_name(r.base_type_id, k,
+                                          Identifier(pack.String(mem.value().name)));
                         break;
                     }
                 }
@@ -153,8 +154,8 @@ std::string CrossGlsl(std::vector<uint32_t> words, bool es, const Names& names) 
     if (es) {
         glsl.build_combined_image_samplers();
         for (const spirv_cross::CombinedImageSampler& c : glsl.get_combined_image_samplers()) {
-            glsl.set_name(c.combined_id, glsl.get_name(c.image_id) + "_" +
-                                             glsl.get_name(c.sampler_id));
+            glsl.set_name(c.combined_id,
+                          glsl.get_name(c.image_id) + "_" + glsl.get_name(c.sampler_id));
         }
     }
     return glsl.compile();

@@ -44,4 +44,14 @@ std::string CompactProgramText(const std::string& text) {
     return out;
 }
 
+std::string ProgramView(const ProgramText& p) {
+    std::string header = "// " + p.shader + ", pass " + p.pass + ", keywords " +
+                         (p.keywords.empty() ? "(none)" : pack::JoinKeywords(p.keywords));
+    if (p.variants > 1)
+        header += " (and " + std::to_string(p.variants - 1) + " more variants)";
+    header += std::string(", ") + (p.stage == pack::Stage::kVertex ? "vertex" : "fragment") +
+              " stage, entry " + p.entry + "\n";
+    return header + CompactProgramText(p.text);
+}
+
 }  // namespace kiln

@@ -74,7 +74,8 @@ nlohmann::ordered_json ReflectionJson(const pack::Pack& pack, const pack::Module
     j["inputs"] = nlohmann::ordered_json::array();
     j["outputs"] = nlohmann::ordered_json::array();
     for (uint32_t i = 0; i < m.interface_count; ++i) {
-        const auto v = pack.Get<pack::InterfaceVarRec>(SectionTag::kInterface, m.first_interface + i);
+        const auto v =
+            pack.Get<pack::InterfaceVarRec>(SectionTag::kInterface, m.first_interface + i);
         if (!v)
             break;
         const pack::InterfaceVarRec& r = v.value();
@@ -145,9 +146,9 @@ std::string Text(const nlohmann::ordered_json& j) {
     for (const char* dir : {"inputs", "outputs"}) {
         out += std::string(dir) + ":" + (j[dir].empty() ? " none" : "") + "\n";
         for (const auto& v : j[dir]) {
-            const std::string where =
-                v.contains("location") ? "location " + std::to_string(v["location"].get<int>())
-                                       : "built-in";
+            const std::string where = v.contains("location")
+                                          ? "location " + std::to_string(v["location"].get<int>())
+                                          : "built-in";
             out += Line("  %-12s %-8s %s", where.c_str(), v["type"].get<std::string>().c_str(),
                         v["name"].get<std::string>().c_str());
             const std::string semantic = v["semantic"].get<std::string>();
@@ -158,8 +159,8 @@ std::string Text(const nlohmann::ordered_json& j) {
     for (const auto& b : j["blocks"]) {
         const std::string where = b["kind"] == "push_constant"
                                       ? "push constant"
-                                      : "set " + std::to_string(b["set"].get<int>()) +
-                                            " binding " + std::to_string(b["binding"].get<int>());
+                                      : "set " + std::to_string(b["set"].get<int>()) + " binding " +
+                                            std::to_string(b["binding"].get<int>());
         out += Line("  %-20s %s, %d bytes\n", where.c_str(), b["name"].get<std::string>().c_str(),
                     b["size"].get<int>());
         for (const auto& m : b["members"]) {

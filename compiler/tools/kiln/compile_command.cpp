@@ -59,20 +59,22 @@ void PrintStats(const CompileStats& s, bool json, FILE* to) {
         std::fprintf(to, "%s\n", j.dump(2).c_str());
         return;
     }
-    std::fprintf(to, 
+    std::fprintf(
+        to,
         "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, glslang "
         "compiles %zu, cache hits %zu (direct %zu), shared preprocesses %zu, modules %zu, aliased "
         "variants %zu\n",
         static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
         s.unique_programs, s.glslang_compiles, s.cache_hits, s.direct_hits, s.shared_preprocesses,
         s.modules, s.aliased_variants);
-    std::fprintf(to, 
+    std::fprintf(
+        to,
         "ms: load %.1f, expand %.1f, preprocess %.1f, compile %.1f, finish %.1f, emit %.1f, total "
         "%.1f\n",
         ms.load, ms.expand, ms.preprocess, ms.compile, ms.finish, ms.emit, ms.total);
     std::fprintf(to, "peak memory: kiln %llu KiB, largest worker %llu KiB\n",
-                static_cast<unsigned long long>(s.peak_rss_kib),
-                static_cast<unsigned long long>(s.peak_worker_rss_kib));
+                 static_cast<unsigned long long>(s.peak_rss_kib),
+                 static_cast<unsigned long long>(s.peak_worker_rss_kib));
 }
 
 }  // namespace
@@ -315,15 +317,8 @@ int PreprocessOnly(const CompileArgs& o, const GlobalOptions& global) {
     if (!diags.has_errors())
         out = AnalyzeVariants(o.files, options, diags);
     std::string text;
-    for (const ProgramText& p : out.programs) {
-        char shared[64] = "";
-        if (p.variants > 1)
-            std::snprintf(shared, sizeof shared, " (and %zu more variants)", p.variants - 1);
-        text += "// " + p.shader + ", pass " + p.pass + ", keywords " +
-                (p.keywords.empty() ? "(none)" : pack::JoinKeywords(p.keywords)) + shared + ", " +
-                (p.stage == pack::Stage::kVertex ? "vertex" : "fragment") + " stage, entry " +
-                p.entry + "\n" + CompactProgramText(p.text) + "\n";
-    }
+    for (const ProgramText& p : out.programs)
+        text += ProgramView(p) + "\n";
     if (!diags.has_errors()) {
         const std::string target = o.output.empty() ? std::string(base::kStandardStream) : o.output;
         std::vector<std::string> inputs = o.flags.materials;

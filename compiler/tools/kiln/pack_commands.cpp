@@ -301,8 +301,7 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
     cmd->add_option("--stage", o->stage, "vert or frag")
         ->required()
         ->check(CLI::IsMember({"vert", "frag", "vertex", "fragment"}));
-    cmd->add_option("-o,--output", o->output, "Output .spv (- writes standard output)")
-        ->required();
+    cmd->add_option("-o,--output", o->output, "Output .spv (- writes standard output)")->required();
     return [o, &global]() {
         MappedFile file;
         Pack pack;

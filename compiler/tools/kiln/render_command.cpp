@@ -55,7 +55,8 @@ std::string ParseAmbient(const std::string& text, runtime::Scene* scene) {
     }
     // flat:R,G,B: one colour, spelled out (the default before the sky was).
     if (text.rfind("flat:", 0) == 0) {
-        if (text.find(':', 5) != std::string::npos || !ParseAmbient(text.substr(5), nullptr).empty())
+        if (text.find(':', 5) != std::string::npos ||
+            !ParseAmbient(text.substr(5), nullptr).empty())
             return "expected flat:R,G,B (one linear, non-negative colour)";
         return ParseAmbient(text.substr(5), scene);
     }
@@ -166,7 +167,7 @@ int DryRun(const RenderArgs& a,
     std::fprintf(a.usage == base::kStandardStream ? stderr : stdout,
                  "%s: dry run, %u objects, %u draws, %zu distinct lookups, %zu missing\n",
                  a.scene.c_str(), plan.objects, plan.draws, plan.usage.lookups.size(),
-                plan.missing.all().size());
+                 plan.missing.all().size());
     return finish(ExitCodeFor(diags));
 }
 

@@ -86,14 +86,10 @@ bool CompileOneVariant(const Options& o,
 }
 
 // The text glslang compiled for the stage, from the compile's kept programs.
-std::optional<std::string> SourceView(const std::vector<ProgramText>& programs,
-                                      pack::Stage stage) {
+std::optional<std::string> SourceView(const std::vector<ProgramText>& programs, pack::Stage stage) {
     for (const ProgramText& p : programs) {
         if (p.stage == stage)
-            return "// " + p.shader + ", pass " + p.pass + ", keywords " +
-                   (p.keywords.empty() ? "(none)" : pack::JoinKeywords(p.keywords)) + ", " +
-                   (stage == pack::Stage::kVertex ? "vertex" : "fragment") + " stage, entry " +
-                   p.entry + "\n" + CompactProgramText(p.text);
+            return ProgramView(p);
     }
     return std::nullopt;
 }
@@ -152,11 +148,12 @@ int Run(const Options& o, const GlobalOptions& global) {
                                "the compile kept no text for this stage");
         add("hlsl", *source);
     }
-    const std::pair<bool, ModuleView> module_views[] = {{o.views.spirv, ModuleView::kSpirv},
-                                                        {o.views.glsl, ModuleView::kGlsl},
-                                                        {o.views.essl, ModuleView::kEssl},
-                                                        {o.views.msl, ModuleView::kMsl},
-                                                        {o.views.cross_hlsl, ModuleView::kCrossHlsl}};
+    const std::pair<bool, ModuleView> module_views[] = {
+        {o.views.spirv, ModuleView::kSpirv},
+        {o.views.glsl, ModuleView::kGlsl},
+        {o.views.essl, ModuleView::kEssl},
+        {o.views.msl, ModuleView::kMsl},
+        {o.views.cross_hlsl, ModuleView::kCrossHlsl}};
     for (const auto& [wanted, view] : module_views) {
         if (!wanted)
             continue;
@@ -178,8 +175,9 @@ int Run(const Options& o, const GlobalOptions& global) {
 std::function<int()> AddShowCommand(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
-        "show", "Show what Kiln compiled for one variant and stage: the HLSL glslang compiled, "
-                "SPIR-V assembly, GLSL, ESSL, MSL, HLSL, reflection");
+        "show",
+        "Show what Kiln compiled for one variant and stage: the HLSL glslang compiled, "
+        "SPIR-V assembly, GLSL, ESSL, MSL, HLSL, reflection");
     cmd->add_option("input", o->input,
                     "A .kpack, or a .shader compiled for this variant alone (- reads standard "
                     "input)")
