@@ -211,6 +211,33 @@ Result<std::string> CheckOutputPath(const std::string& path,
     return resolved;
 }
 
+Status CheckDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+    auto same = [](const std::string& a, const std::string& b) {
+        struct stat sa {
+        }, sb{};
+        if (stat(a.c_str(), &sa) == 0 && stat(b.c_str(), &sb) == 0)
+            return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+        std::error_code ea, eb;
+        const fs::path ca = fs::weakly_canonical(a, ea), cb = fs::weakly_canonical(b, eb);
+        return !ea && !eb && ca == cb;
+    };
+    for (size_t i = 0; i < outputs.size(); ++i) {
+        const auto& [flag_a, a] = outputs[i];
+        if (a.empty() || a == kStandardStream)
+            continue;
+        for (size_t j = i + 1; j < outputs.size(); ++j) {
+            const auto& [flag_b, b] = outputs[j];
+            if (b.empty() || b == kStandardStream || !same(a, b))
+                continue;
+            return Error{DiagCode::kCannotWriteFile, flag_a + " '" + a + "' and " + flag_b + " '" +
+                                                         b +
+                                                         "' are one file; give each output "
+                                                         "its own"};
+        }
+    }
+    return {};
+}
+
 Status WriteFileAtomically(const std::string& path,
                            std::span<const uint8_t> bytes,
                            const WriteOptions& options) {

@@ -11,6 +11,12 @@
 #include <regex>
 #include <string>
 
+#include <xxhash.h>
+
+#include <nlohmann/json.hpp>
+
+#include "kiln/pack/format.h"
+#include "support/compile_support.h"
 #include "support/test_support.h"
 
 namespace kiln::test {
@@ -251,6 +257,42 @@ TEST(HostileText, NulAndControlBytesInInputsAreEscapedAndNothingIsLost) {
     EXPECT_EQ(r.err.find('\0'), std::string::npos) << "raw NUL in the output";
     EXPECT_NE(r.err.find("Sideways"), std::string::npos)
         << "the diagnostic after the NUL: " << r.err;
+}
+
+// A pack whose checksum is valid but whose shader name holds an invalid UTF-8 byte (written by
+// another tool, or re-sealed by hand): info and diff, text and JSON, show it escaped as \xFF, the
+// same way in every form; JSON output never throws on pack contents (it was K9001, exit 3).
+TEST(HostileText, InvalidUtf8InAResealedPackIsEscapedInInfoAndDiff) {
+    ScratchDir dir;
+    const std::string good = dir.path() + "/good.kpack", bad = dir.path() + "/bad.kpack";
+    ASSERT_EQ(RunKiln("compile " + DataPath("../materials/Unlit.shader") + " --no-cache -o " + good)
+                  .exit_code,
+              0);
+    std::string bytes = ReadFile(good);
+    const size_t at = bytes.find("Kiln/Unlit");
+    ASSERT_NE(at, std::string::npos);
+    bytes[at + 5] = '\xff';  // "Kiln/\xffnlit"
+    for (uint32_t i = 0; i < 8; ++i)
+        bytes[pack::kChecksumOffset + i] = 0;
+    const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
+    for (uint32_t i = 0; i < 8; ++i)
+        bytes[pack::kChecksumOffset + i] = char(uint8_t(sum >> (8 * i)));
+    WriteFile(bad, bytes);
+
+    const RunResult json = RunKiln("info --json " + bad);
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    const nlohmann::json doc = nlohmann::json::parse(json.out);
+    EXPECT_EQ(doc["shaders"][0]["name"], "Kiln/\\xffnlit") << json.out.substr(0, 300);
+    const RunResult text = RunKiln("info " + bad);
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("Shader \"Kiln/\\xffnlit\""), std::string::npos) << text.out;
+    EXPECT_EQ(text.out.find('\xff'), std::string::npos) << "no raw byte on the terminal";
+    const RunResult diff = RunKiln("diff --json " + good + " " + bad);
+    ASSERT_EQ(diff.exit_code, 0) << diff.err;
+    EXPECT_NE(diff.out.find("Kiln/\\\\xffnlit"), std::string::npos) << diff.out;
+    const RunResult diff_text = RunKiln("diff " + good + " " + bad);
+    ASSERT_EQ(diff_text.exit_code, 0) << diff_text.err;
+    EXPECT_NE(diff_text.out.find("shader \"Kiln/\\xffnlit\""), std::string::npos) << diff_text.out;
 }
 
 }  // namespace

@@ -101,6 +101,14 @@ const Mistake kMistakes[] = {
      "--ambient and --sky both set the ambient light; give one"},
     {"procedural sky colours", "render {D}/triangle.gltf --ambient sky:1,1,1 -o {T}/out.png", 2,
      "K0003", "", "expected sky or sky:ZENITH:HORIZON:GROUND of R,G,B each"},
+    // Two outputs of one command on one file.
+    {"depfile is the pack", "compile {D}/base.shader -o {T}/x.kpack -MF {T}/x.kpack", 1, "K0002",
+     "x.kpack", "x.kpack' are one file; give each output its own"},
+    {"exr is the png", "render {D}/triangle.gltf -o {T}/x.png --exr {T}/./x.png", 1, "K0002", "",
+     "/x.png' and --exr '"},
+    {"pipeline cache is the png",
+     "render {D}/triangle.gltf -o {T}/x.png --pipeline-cache {T}/x.png", 1, "K0002", "",
+     "/x.png' and --pipeline-cache '"},
     // The command line.
     {"subcommand typo", "compil {D}/base.shader", 2, "K0003", "", "did you mean 'compile'?"},
     {"optimization level", "compile {D}/base.shader -O4 -o {T}/out.kpack", 2, "K0003", "",

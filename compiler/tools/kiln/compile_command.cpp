@@ -430,6 +430,14 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         std::vector<std::string> outputs = {o->output};
         if (o->md || !o->mf.empty())
             outputs.push_back(dep_path);
+        if (Status distinct =
+                base::CheckDistinctOutputs({{"-o", o->output}, {"-MF", outputs.back()}});
+            outputs.size() > 1 && !distinct.ok()) {
+            diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition,
+                        distinct.error().message);
+            PrintDiagnostics(diags, {}, global);
+            return ExitCodeFor(diags);
+        }
         for (const std::string& output : outputs) {
             if (Result<std::string> ok = base::CheckOutputPath(output, inputs); !ok) {
                 diags.Error(DiagCode::kCannotWriteFile, output, kNoPosition, ok.error().message);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "kiln/base/text.h"
 #include "kiln/pack/pass_id.h"
 
 namespace kiln::cli {
@@ -102,17 +103,19 @@ std::function<int()> AddDiffCommand(CLI::App& app, const GlobalOptions& global) 
                                  : a == after.end() ? "removed"
                                  : dv || db         ? "changed"
                                                     : "unchanged";
-            passes.push_back({{"shader", key.first},
-                              {"pass", key.second},
+            // Pack strings are untrusted bytes: escaped as diagnostics escape them.
+            const std::string shader = base::EscapeForTerminal(key.first);
+            const std::string pass = base::EscapeForTerminal(key.second);
+            passes.push_back({{"shader", shader},
+                              {"pass", pass},
                               {"status", status},
                               {"variants", {{"old", was.variants}, {"new", now.variants}}},
                               {"bytes", {{"old", was.bytes}, {"new", now.bytes}}}});
             if (std::string(status) == "unchanged")
                 continue;
-            text += "shader \"" + key.first + "\" pass \"" + key.second +
-                    "\": " + Signed(dv, " variants") + ", " + KiB(db) + " (" + status + ", " +
-                    std::to_string(was.variants) + " -> " + std::to_string(now.variants) +
-                    " variants)\n";
+            text += "shader \"" + shader + "\" pass \"" + pass + "\": " + Signed(dv, " variants") +
+                    ", " + KiB(db) + " (" + status + ", " + std::to_string(was.variants) + " -> " +
+                    std::to_string(now.variants) + " variants)\n";
         }
         const int64_t added_bytes =
             int64_t(new_file.bytes().size()) - int64_t(old_file.bytes().size());

@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "kiln/base/files.h"
+#include "kiln/base/text.h"
 #include "kiln/pack/names.h"
 #include "kiln/pack/pass_id.h"
 #include "kiln/pack/reader.h"
@@ -33,6 +34,27 @@ bool OpenPack(const std::string& path, MappedFile& file, Pack& pack, const Globa
 }
 
 namespace {
+
+// Pack strings are bytes from a file: every string and key of a description is escaped as
+// diagnostics escape text (\xNN for control bytes and invalid UTF-8), so the JSON never throws
+// and the text and JSON forms show the same.
+nlohmann::json Printable(const nlohmann::json& j) {
+    if (j.is_string())
+        return base::EscapeForTerminal(j.get_ref<const std::string&>());
+    if (j.is_array()) {
+        nlohmann::json out = nlohmann::json::array();
+        for (const auto& e : j)
+            out.push_back(Printable(e));
+        return out;
+    }
+    if (j.is_object()) {
+        nlohmann::json out = nlohmann::json::object();
+        for (const auto& [k, v] : j.items())
+            out[base::EscapeForTerminal(k)] = Printable(v);
+        return out;
+    }
+    return j;
+}
 
 nlohmann::json InfoJson(const Pack& p) {
     nlohmann::json shaders = nlohmann::json::array();
@@ -174,7 +196,7 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) 
         Pack pack;
         if (!OpenPack(o->file, file, pack, global))
             return int(kExitInputError);
-        const nlohmann::json j = InfoJson(pack);
+        const nlohmann::json j = Printable(InfoJson(pack));
         if (o->json) {
             std::printf("%s\n", j.dump(2).c_str());
             return int(kExitOk);

@@ -343,6 +343,14 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             return finish(int(kExitUsageError));
         }
         FILE* const summary = to_stdout ? stderr : stdout;
+        if (Status distinct = base::CheckDistinctOutputs({{"-o", a->output},
+                                                          {"--exr", a->exr},
+                                                          {"--usage", a->usage},
+                                                          {"--pipeline-cache", a->pipeline_cache}});
+            !distinct.ok()) {
+            diags.Error(DiagCode::kCannotWriteFile, "", kNoPosition, distinct.error().message);
+            return finish(int(kExitInputError));
+        }
         for (const std::string* out : {&a->output, &a->exr, &a->usage, &a->pipeline_cache}) {
             if (out->empty())
                 continue;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kiln/result.h"
@@ -49,6 +50,11 @@ Status WriteFileAtomically(const std::string& path,
 // output).
 Result<std::string> CheckOutputPath(const std::string& path,
                                     const std::vector<std::string>& inputs);
+
+// Two outputs of one command may not be one file (`-o X -MF X`, `-o X --exr X`): an error naming
+// both when two of `outputs` (flag, path) are the same file, by path after resolving symbolic
+// links or, for files that exist, by device and inode. Empty paths and "-" are skipped.
+Status CheckDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 // "a directory", "a FIFO", "a character device", ... for a path that exists but is no regular
 // file; "" for a regular file or a path that does not exist.
