@@ -295,5 +295,34 @@ TEST(HostileText, InvalidUtf8InAResealedPackIsEscapedInInfoAndDiff) {
     EXPECT_NE(diff_text.out.find("shader \"Kiln/\\xffnlit\""), std::string::npos) << diff_text.out;
 }
 
+// A shader_feature of 200,000 keywords: the keyword-alias merge tried every pair of keywords
+// (quadratic: 100,000 took 12 s, 200,000 ran past 30 s) where --program-timeout does not reach.
+// It now compiles in well under a second on the release build; killed after 60 s it would fail
+// (a hang guard, not a timing target).
+TEST(HostileScale, TwoHundredThousandShaderFeatureKeywordsCompile) {
+    ScratchDir dir;
+    std::string keywords;
+    for (int i = 0; i < 200000; ++i)
+        keywords += " K" + std::to_string(i);
+    const std::string shader = dir.Write("many.shader", R"(Shader "T/Many" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#pragma shader_feature _)" + keywords + R"(
+float4 vert(float4 p : POSITION) : SV_POSITION { return p; }
+float4 frag() : SV_Target { return 1; }
+ENDCG
+} } })");
+    const RunResult r = RunKilnWithin(
+        "compile " + shader + " --no-cache --keywords K199999 -o " + dir.path() + "/many.kpack",
+        60);
+    ASSERT_EQ(r.exit_code, 0) << r.err.substr(0, 2000);
+    // K199999 changes nothing: it is stored as an alias of "no keyword", one variant for both.
+    const RunResult info = RunKiln("info " + dir.path() + "/many.kpack");
+    EXPECT_NE(info.out.find("1 variants, 2 unique modules"), std::string::npos)
+        << info.out.substr(0, 300);
+    EXPECT_NE(info.out.find("K199999=_]"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace kiln::test
