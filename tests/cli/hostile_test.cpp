@@ -11,11 +11,8 @@
 #include <regex>
 #include <string>
 
-#include <xxhash.h>
-
 #include <nlohmann/json.hpp>
 
-#include "kiln/pack/format.h"
 #include "support/compile_support.h"
 #include "support/test_support.h"
 
@@ -272,11 +269,7 @@ TEST(HostileText, InvalidUtf8InAResealedPackIsEscapedInInfoAndDiff) {
     const size_t at = bytes.find("Kiln/Unlit");
     ASSERT_NE(at, std::string::npos);
     bytes[at + 5] = '\xff';  // "Kiln/\xffnlit"
-    for (uint32_t i = 0; i < 8; ++i)
-        bytes[pack::kChecksumOffset + i] = 0;
-    const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
-    for (uint32_t i = 0; i < 8; ++i)
-        bytes[pack::kChecksumOffset + i] = char(uint8_t(sum >> (8 * i)));
+    ResealPack(std::span<uint8_t>(reinterpret_cast<uint8_t*>(bytes.data()), bytes.size()));
     WriteFile(bad, bytes);
 
     const RunResult json = RunKiln("info --json " + bad);

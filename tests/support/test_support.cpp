@@ -11,6 +11,9 @@
 #include <stdexcept>
 
 #include <gtest/gtest.h>
+#include <xxhash.h>
+
+#include "kiln/pack/format.h"
 
 namespace kiln::test {
 
@@ -47,6 +50,14 @@ void WriteFile(const std::string& path, const std::string& text) {
 
 std::string DataPath(const std::string& relative) {
     return std::string(KILN_TEST_DATA_DIR) + "/" + relative;
+}
+
+void ResealPack(std::span<uint8_t> bytes) {
+    for (uint32_t i = 0; i < 8; ++i)
+        bytes[pack::kChecksumOffset + i] = 0;
+    const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
+    for (uint32_t i = 0; i < 8; ++i)
+        bytes[pack::kChecksumOffset + i] = uint8_t(sum >> (8 * i));
 }
 
 RunResult RunKiln(const std::string& args) {

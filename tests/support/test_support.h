@@ -47,6 +47,10 @@ ParseOutcome ParseText(const std::string& text, const std::string& name = "test.
 ::testing::AssertionResult OpenInto(std::span<const uint8_t> bytes, pack::Pack& out);
 ::testing::AssertionResult MapInto(const std::string& path, pack::MappedFile& out);
 
+// Writes a pack's checksum again after its bytes were changed on purpose (XXH64 of the whole file
+// with the checksum field zeroed, docs/pack-format.md): a forged pack the reader accepts.
+void ResealPack(std::span<uint8_t> bytes);
+
 // One line per diagnostic: "K2003 3:5 error: message" (notes indented below).
 std::string Summarize(const DiagnosticList& diags);
 

@@ -2,6 +2,7 @@
 // .shader (compiled for that variant alone): the HLSL glslang compiled, SPIR-V assembly, GLSL,
 // ESSL, MSL and HLSL through SPIRV-Cross, and the reflection. kiln compile -E prints the first of
 // these for every program of a compile.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -32,9 +33,9 @@ struct Options {
     CompilerFlags flags;
 };
 
-bool LooksLikePack(const std::string& path) {
-    Result<std::string> head = base::ReadRegularFile(path, uint64_t{4} << 30);
-    return head && head.value().size() >= 4 && head.value().compare(0, 4, "KPAK") == 0;
+bool IsPack(std::span<const uint8_t> bytes) {
+    return bytes.size() >= pack::kMagic.size() &&
+           std::equal(pack::kMagic.begin(), pack::kMagic.end(), bytes.begin());
 }
 
 // A pack of the one variant asked for, compiled from the .shader with the compile's texts kept
@@ -106,17 +107,16 @@ int Run(const Options& o, const GlobalOptions& global) {
     std::vector<uint8_t> compiled;
     std::vector<ProgramText> programs;
     std::span<const uint8_t> bytes;
-    const bool from_pack = LooksLikePack(o.input);
-    if (from_pack) {
+    // A pack is mapped once and read from the mapping; anything else is a .shader (whose reader
+    // reports a file that cannot be read).
+    if (Result<pack::MappedFile> mapped = pack::MappedFile::Map(o.input);
+        mapped && IsPack(mapped.value().bytes())) {
         if (o.views.hlsl) {
             ReportError(global, DiagCode::kBadCommandLine, o.input,
                         "--hlsl shows the source glslang compiled, which a pack does not keep; "
                         "give the .shader instead of the pack");
             return int(kExitUsageError);
         }
-        Result<pack::MappedFile> mapped = pack::MappedFile::Map(o.input);
-        if (!mapped)
-            return ReportError(global, mapped.error().code, o.input, mapped.error().message);
         file = std::move(mapped).value();
         bytes = file.bytes();
     } else {

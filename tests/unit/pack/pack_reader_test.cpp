@@ -4,8 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <xxhash.h>
-
 #include "support/compile_support.h"
 #include "support/test_support.h"
 
@@ -22,14 +20,6 @@ const std::vector<uint8_t>& CompiledPack() {
         return out.pack;
     }();
     return bytes;
-}
-
-void Reseal(std::vector<uint8_t>& b) {
-    for (int i = 0; i < 8; ++i)
-        b[kChecksumOffset + i] = 0;
-    const uint64_t sum = XXH64(b.data(), b.size(), 0);
-    for (int i = 0; i < 8; ++i)
-        b[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
 }
 
 TEST(PackReader, RoundTripOfACompiledPack) {
@@ -170,7 +160,7 @@ TEST(PackReader, KeywordAliasesAreCheckedLikeEveryOtherIndex) {
          std::vector<std::pair<size_t, uint8_t>>{{8, 2}, {8, 3}, {0, 99}, {4, 0}}) {
         std::vector<uint8_t> b = good;
         b[at + field] = value;
-        Reseal(b);
+        test::ResealPack(b);
         const Result<Pack> p = Pack::Open(b);
         ASSERT_FALSE(p) << field << "=" << int(value);
         EXPECT_EQ(p.error().code, DiagCode::kBadPack);
@@ -183,7 +173,7 @@ TEST(PackReader, ForeignAndOtherVersionFilesGetTypedErrors) {
     EXPECT_EQ(Pack::Open(b).error().code, DiagCode::kNotAPack);
     b = CompiledPack();
     b[4] = 2;  // format major 2
-    Reseal(b);
+    test::ResealPack(b);
     const Result<Pack> other = Pack::Open(b);
     ASSERT_FALSE(other);
     EXPECT_EQ(other.error().code, DiagCode::kPackVersion);
@@ -201,7 +191,7 @@ TEST(PackReader, ValidChecksumDoesNotMakeBadIndicesSafe) {
     for (size_t i = kHeaderSize; i + 4 <= full.size(); i += 4) {
         std::vector<uint8_t> b = full;
         b[i] = b[i + 1] = b[i + 2] = b[i + 3] = 0xff;
-        Reseal(b);
+        test::ResealPack(b);
         Pack p;
         if (!kiln::test::OpenInto(b, p)) {
             ++rejected;
