@@ -4,7 +4,8 @@
 #   2. one clang build with AddressSanitizer + UndefinedBehaviorSanitizer (KILN_SANITIZE) and the
 #      libFuzzer targets (KILN_FUZZ): the same suite under the sanitizers, then each target
 #      (ShaderLab parser, pack reader, material parser, usage-file and diagnostics readers, glTF
-#      loader, compile driver with its worker processes) on its corpus and a bounded fuzz run,
+#      loader, image readers, compile driver with its worker processes) on its corpus and a
+#      bounded fuzz run,
 #   3. the benchmarks' CI subset (scripts/bench.sh --ci), checked against their ratio and count
 #      targets (bench/check_targets.py, bench/compile_suite.py; docs/performance.md).
 # Environment: KILN_FUZZ_SECONDS (default 30; set it higher for a longer run) bounds each fuzz
@@ -62,6 +63,7 @@ fuzz pack 65536 10 "$seconds" tests/fuzz/corpus/pack
 fuzz material 16384 10 "$seconds" tests/fuzz/corpus/material materials
 fuzz usage 65536 10 "$((seconds / 2))" tests/fuzz/corpus/usage
 fuzz gltf 65536 10 "$seconds" tests/fuzz/corpus/gltf
+fuzz image 65536 10 "$seconds" tests/fuzz/corpus/image
 # Each compile input runs glslang in kiln-worker processes, whose own limit is 10 s a program. Its
 # seeds take about 90 s on a 2-core machine before mutation starts: the budget adds them.
 fuzz compile 16384 60 "$((seconds + 90))" tests/fuzz/corpus/compile

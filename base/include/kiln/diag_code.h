@@ -50,6 +50,7 @@ enum class DiagCode : uint16_t {
     kOutsideBounds = 29,         // kiln stability: an error past the documented bound
     kUnsupportedExtension = 30,  // a glTF file requires an extension Kiln does not support
     kCannotShowModule = 31,      // kiln show: a module SPIRV-Cross or the disassembler refuses
+    kBadImage = 32,  // an image (texture, sky, glTF image) that is truncated, damaged or too large
 
     kUnterminatedString = 1001,
     kUnterminatedComment = 1002,

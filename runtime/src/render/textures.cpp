@@ -1,6 +1,5 @@
 #include "render/textures.h"
 
-#include <stb/stb_image.h>
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 #include <cstring>
 #include <vector>
 
+#include "kiln/runtime/image.h"
 #include "render/frame_values.h"
 #include "render/reflection_probe.h"
 
@@ -217,18 +217,14 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
             rgba = si.rgba8;
             name = "image " + std::to_string(binding.image) + " '" + si.name + "'";
         } else {
-            int iw = 0, ih = 0, n = 0;
-            stbi_uc* pixels = stbi_load(binding.file.c_str(), &iw, &ih, &n, 4);
-            if (!pixels) {
+            Result<runtime::Rgba8Image> decoded = runtime::ReadImageRgba8(binding.file);
+            if (!decoded) {
                 return Default(binding, shape,
-                               "cannot decode '" + binding.file + "': " + stbi_failure_reason() +
-                                   "; using the default texture",
-                               out);
+                               decoded.error().message + "; using the default texture", out);
             }
-            w = uint32_t(iw);
-            h = uint32_t(ih);
-            rgba.assign(pixels, pixels + size_t(w) * h * 4);
-            stbi_image_free(pixels);
+            w = decoded.value().width;
+            h = decoded.value().height;
+            rgba = std::move(decoded.value().rgba);
             name = "'" + binding.file + "'";
         }
         const uint32_t limit = s_.context.properties.limits.maxImageDimension2D;

@@ -6,6 +6,7 @@
 
 #include "kiln/base/bytes.h"
 #include "kiln/base/files.h"
+#include "kiln/runtime/image.h"
 #include "scene/gltf_extensions.h"
 
 namespace kiln::runtime {
@@ -47,6 +48,36 @@ bool ReadWholeFile(std::vector<unsigned char>* out,
     return true;
 }
 
+// tinygltf's image loader replaced by Kiln's (kiln/runtime/image.h). An image that does not decode
+// is left empty (the scene loads; the loader warns and binds the default texture) and its reason
+// is kept for that warning.
+bool LoadImage(tinygltf::Image* image,
+               const int index,
+               std::string*,
+               std::string*,
+               int,
+               int,
+               const unsigned char* bytes,
+               int size,
+               void* user) {
+    auto* errors = static_cast<std::map<int, std::string>*>(user);
+    const std::string name = "image " + std::to_string(index) +
+                             (image->name.empty() ? std::string() : " '" + image->name + "'");
+    Result<Rgba8Image> decoded = DecodeImageRgba8(
+        std::string_view(reinterpret_cast<const char*>(bytes), size_t(std::max(size, 0))), name);
+    if (!decoded) {
+        (*errors)[index] = decoded.error().message;
+        return true;
+    }
+    image->width = int(decoded.value().width);
+    image->height = int(decoded.value().height);
+    image->component = 4;
+    image->bits = 8;
+    image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image = std::move(decoded.value().rgba);
+    return true;
+}
+
 }  // namespace
 
 std::vector<std::string> MessageLines(const std::string& text) {
@@ -76,7 +107,10 @@ size_t JsonDepth(std::string_view json, size_t limit) {
     return deepest;
 }
 
-Status LoadGltfModel(const std::string& path, tinygltf::Model& model, std::string& warn) {
+Status LoadGltfModel(const std::string& path,
+                     tinygltf::Model& model,
+                     std::string& warn,
+                     std::map<int, std::string>& image_errors) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
         return Error{DiagCode::kBadScene, path + ": no such file"};
@@ -95,6 +129,7 @@ Status LoadGltfModel(const std::string& path, tinygltf::Model& model, std::strin
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(
         {&FileExists, &ExpandFilePath, &ReadWholeFile, &tinygltf::WriteWholeFile, nullptr});
+    loader.SetImageLoader(&LoadImage, &image_errors);
     const std::string dir = std::filesystem::path(path).parent_path().string();
     std::string err;
     const auto* p = reinterpret_cast<const unsigned char*>(data.data());

@@ -254,7 +254,8 @@ glm::mat4 LocalMatrix(const tinygltf::Node& n) {
 Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
     tinygltf::Model model;
     std::string warn;
-    const Status loaded = LoadGltfModel(path, model, warn);
+    std::map<int, std::string> image_errors;
+    const Status loaded = LoadGltfModel(path, model, warn, image_errors);
     for (const std::string& line : MessageLines(warn)) {
         diags.Warning(DiagCode::kGltfWarning, path, kNoPosition, line);
     }
@@ -264,7 +265,8 @@ Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
     Scene scene;
     scene.id = NewSceneId();
     scene.path = path;
-    for (const tinygltf::Image& img : model.images) {
+    for (size_t i = 0; i < model.images.size(); ++i) {
+        const tinygltf::Image& img = model.images[i];
         SceneImage si;
         si.name = img.name.empty() ? img.uri : img.name;
         if (img.width > 0 && img.height > 0 && img.component == 4 && img.bits == 8 &&
@@ -272,6 +274,9 @@ Result<Scene> LoadGltf(const std::string& path, DiagnosticList& diags) {
             si.width = uint32_t(img.width);
             si.height = uint32_t(img.height);
             si.rgba8 = img.image;
+        } else if (auto why = image_errors.find(int(i)); why != image_errors.end()) {
+            diags.Warning(DiagCode::kTextureFallback, path, kNoPosition,
+                          why->second + "; the default texture is used instead");
         } else {
             diags.Warning(DiagCode::kTextureFallback, path, kNoPosition,
                           "image '" + si.name + "' could not be decoded as 8-bit RGBA; the " +

@@ -2,13 +2,12 @@
 // an equirectangular HDR image, with the values the renderer reads derived once: the SH
 // projection (reference::AddEquirect), the mean radiance, and the means over the caps, the
 // horizon band and the cube faces, each weighted by the texels' solid angles.
-#include <stb/stb_image.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "kiln/reference/sh.h"
+#include "kiln/runtime/image.h"
 #include "kiln/runtime/scene.h"
 
 namespace kiln::runtime {
@@ -24,10 +23,6 @@ int FaceOf(const glm::dvec3& d) {
         return d.y >= 0 ? 2 : 3;
     }
     return d.z >= 0 ? 4 : 5;
-}
-
-double SrgbToLinear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
 }  // namespace
@@ -103,46 +98,32 @@ std::shared_ptr<const Sky> ProceduralSky(const glm::vec3& zenith,
 }
 
 Result<std::shared_ptr<const Sky>> LoadSky(const std::string& path, float scale) {
-    if (!std::filesystem::is_regular_file(path)) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
         return Error{DiagCode::kBadScene, path + ": no such sky image"};
-    }
     if (!(scale >= 0) || !std::isfinite(scale)) {
         return Error{DiagCode::kBadScene, path + ": the sky's scale must be a finite number >= 0"};
     }
-    int w = 0, h = 0, n = 0;
-    const bool hdr = stbi_is_hdr(path.c_str()) != 0;
-    std::vector<float> rgb;
-    if (hdr) {
-        float* data = stbi_loadf(path.c_str(), &w, &h, &n, 3);
-        if (!data) {
-            return Error{DiagCode::kBadScene,
-                         path + ": cannot read the sky image: " + stbi_failure_reason()};
-        }
-        rgb.assign(data, data + size_t(w) * size_t(h) * 3);
-        stbi_image_free(data);
-    } else {
-        stbi_uc* data = stbi_load(path.c_str(), &w, &h, &n, 3);
-        if (!data) {
-            return Error{DiagCode::kBadScene,
-                         path + ": cannot read the sky image: " + stbi_failure_reason()};
-        }
-        rgb.resize(size_t(w) * size_t(h) * 3);
-        for (size_t i = 0; i < rgb.size(); ++i) {
-            rgb[i] = float(SrgbToLinear(data[i] / 255.0));
-        }
-        stbi_image_free(data);
+    Result<LinearRgbImage> image = ReadImageLinearRgb(path);
+    if (!image) {
+        std::string why = image.error().message;
+        if (const std::string named = "'" + path + "': "; why.rfind(named, 0) == 0)
+            why.erase(0, named.size());
+        return Error{DiagCode::kBadImage, path + ": cannot read the sky image: " + why};
     }
-    if (w < 2 || h < 1 || w > 16384 || h > 8192) {
+    LinearRgbImage& sky = image.value();
+    if (sky.width < 2 || sky.height < 1 || sky.width > 16384 || sky.height > 8192) {
         return Error{DiagCode::kBadScene, path +
                                               ": a sky image must be between 2x1 and 16384x8192 "
                                               "texels (it is " +
-                                              std::to_string(w) + "x" + std::to_string(h) + ")"};
+                                              std::to_string(sky.width) + "x" +
+                                              std::to_string(sky.height) + ")"};
     }
-    for (float& c : rgb) {
+    for (float& c : sky.rgb) {
         // Non-finite or negative radiance (a damaged file) would poison every derived value.
         c = std::isfinite(c) ? std::max(c, 0.0f) * scale : 0.0f;
     }
-    return MakeSky(path, uint32_t(w), uint32_t(h), std::move(rgb));
+    return MakeSky(path, sky.width, sky.height, std::move(sky.rgb));
 }
 
 }  // namespace kiln::runtime
