@@ -192,17 +192,20 @@ std::string FormatDiagnosticsJson(const DiagnosticList& diags) {
     for (const Diagnostic& d : diags.all()) {
         nlohmann::ordered_json notes = nlohmann::ordered_json::array();
         for (const DiagnosticNote& n : d.notes) {
-            notes.push_back(
-                {{"file", n.file}, {"range", RangeJson(n.range)}, {"message", n.message}});
+            notes.push_back({{"file", base::EscapeForTerminal(n.file)},
+                             {"range", RangeJson(n.range)},
+                             {"message", base::EscapeForTerminal(n.message)}});
         }
+        // Files and messages escaped as the text form escapes them (invalid UTF-8 and control
+        // bytes from inputs or packs as \xNN), so both forms show the same string.
         arr.push_back({{"severity", SeverityName(d.severity)},
                        {"code", FormatDiagCode(d.code)},
-                       {"file", d.file},
+                       {"file", base::EscapeForTerminal(d.file)},
                        {"range", RangeJson(d.range)},
-                       {"message", d.message},
+                       {"message", base::EscapeForTerminal(d.message)},
                        {"notes", notes}});
     }
-    // Invalid UTF-8 in a message (echoed from bad input) is replaced, never thrown on.
+    // Nothing left to replace, and never thrown on.
     return arr.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 

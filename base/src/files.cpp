@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <random>
@@ -141,7 +142,49 @@ std::string NotRegularFileKind(const std::string& path) {
     return KindOf(st.st_mode);
 }
 
-Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes) {
+namespace {
+
+struct InputGuard {
+    std::mutex mu;
+    bool on = false;
+    std::map<std::pair<dev_t, ino_t>, std::string> files;  // read so far, with a name for each
+};
+
+InputGuard& Guard() {
+    static InputGuard guard;
+    return guard;
+}
+
+void Remember(const struct stat& st, const std::string& path) {
+    InputGuard& g = Guard();
+    std::lock_guard<std::mutex> lock(g.mu);
+    if (g.on)
+        g.files.emplace(std::pair{st.st_dev, st.st_ino}, path);
+}
+
+// The name of a file read under the guard that `st` is; "" for none.
+std::string ReadName(const struct stat& st) {
+    InputGuard& g = Guard();
+    std::lock_guard<std::mutex> lock(g.mu);
+    const auto it = g.files.find({st.st_dev, st.st_ino});
+    return it == g.files.end() ? std::string() : it->second;
+}
+
+}  // namespace
+
+void GuardInputFiles() {
+    InputGuard& g = Guard();
+    std::lock_guard<std::mutex> lock(g.mu);
+    g.on = true;
+}
+
+void NoteInputFile(const std::string& path) {
+    struct stat st {};
+    if (path != kStandardStream && stat(path.c_str(), &st) == 0)
+        Remember(st, path);
+}
+
+Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes, ReadAs as) {
     if (path == kStandardStream)
         return ReadStandardInput(max_bytes);
     // O_NONBLOCK: opening a FIFO for reading must not wait for a writer.
@@ -154,6 +197,8 @@ Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes)
     if (!S_ISREG(st.st_mode))
         return Error{DiagCode::kCannotReadFile,
                      "'" + path + "' is " + KindOf(st.st_mode) + ", not a regular file"};
+    if (as == ReadAs::kInput)
+        Remember(st, path);
     if (static_cast<uint64_t>(st.st_size) > max_bytes) {
         return Error{DiagCode::kCannotReadFile, "'" + path + "' is larger than the limit of " +
                                                     std::to_string(max_bytes) + " bytes"};
@@ -185,8 +230,11 @@ Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes)
     return out;
 }
 
-Result<std::string> CheckOutputPath(const std::string& path,
-                                    const std::vector<std::string>& inputs) {
+namespace {
+
+Result<std::string> CheckOutput(const std::string& path,
+                                const std::vector<std::string>& inputs,
+                                bool check_read_files) {
     if (path == kStandardStream)
         return path;
     Result<std::string> resolved = OutputTarget(path);
@@ -208,8 +256,34 @@ Result<std::string> CheckOutputPath(const std::string& path,
                                                          input + "'; refusing to overwrite it"};
         }
     }
+    if (std::string read = check_read_files ? ReadName(existing) : ""; !read.empty()) {
+        return Error{DiagCode::kCannotWriteFile, "the output '" + path + "' is '" + read +
+                                                     "', which this command reads; refusing to "
+                                                     "overwrite it"};
+    }
     return resolved;
 }
+
+}  // namespace
+
+Result<std::string> CheckOutputPath(const std::string& path,
+                                    const std::vector<std::string>& inputs) {
+    return CheckOutput(path, inputs, true);
+}
+
+namespace {
+
+// The output path itself, for an output that replaces a symbolic link instead of following it:
+// absent, a regular file or a link (a directory, FIFO or device is refused).
+Result<std::string> CheckLinkOutput(const std::string& path) {
+    struct stat st {};
+    if (lstat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode) || S_ISLNK(st.st_mode))
+        return path;
+    return Error{DiagCode::kCannotWriteFile, "the output '" + path + "' is " + KindOf(st.st_mode) +
+                                                 "; kiln writes only regular files"};
+}
+
+}  // namespace
 
 Status CheckDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
     auto same = [](const std::string& a, const std::string& b) {
@@ -246,12 +320,15 @@ Status WriteFileAtomically(const std::string& path,
             return Error{DiagCode::kCannotWriteFile, Errno("cannot write standard output")};
         return {};
     }
-    Result<std::string> checked = CheckOutputPath(path, options.inputs);
+    Result<std::string> checked =
+        options.follow_symlinks ? CheckOutput(path, options.inputs, true) : CheckLinkOutput(path);
     if (!checked)
         return checked.error();
     const std::string& target = checked.value();
     struct stat existing {};
-    const bool exists = stat(target.c_str(), &existing) == 0;
+    const bool exists = (options.follow_symlinks ? stat(target.c_str(), &existing)
+                                                 : lstat(target.c_str(), &existing)) == 0 &&
+                        S_ISREG(existing.st_mode);
     std::string temp;
     int raw = -1;
     for (int attempt = 0; attempt < 100 && raw < 0; ++attempt) {

@@ -37,8 +37,9 @@ std::string_view SourceFile::Line(uint32_t line) const {
     return std::string_view(text_).substr(begin, end - begin);
 }
 
-Result<SourceFile> ReadSourceFile(const std::string& path) {
-    Result<std::string> text = base::ReadRegularFile(path, kMaxSourceFileBytes);
+Result<SourceFile> ReadSourceFile(const std::string& path, uint64_t max_bytes) {
+    Result<std::string> text =
+        base::ReadRegularFile(path, std::min(max_bytes, kMaxSourceFileBytes));
     if (!text)
         return text.error();
     return SourceFile(path, std::move(text).value());

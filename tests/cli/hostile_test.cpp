@@ -170,7 +170,7 @@ const Hostile kRows[] = {
      },
      "render {T}/dir_uri.gltf -o {T}/out.png", 1, "K0007", "is a directory, not a regular file"},
     {"sidecar maps a material to /dev/zero", SceneWithMaterial("/dev/zero"),
-     "render {T}/tri.gltf -o {T}/out.png", 1, "", "is a character device"},
+     "render {T}/tri.gltf -o {T}/out.png", 1, "K0001", "is a character device"},
     {"OpenColorIO config is a FIFO",
      [](const std::string& dir) {
          fs::copy_file(DataPath("cli/mistakes/triangle.gltf"), dir + "/tri.gltf");
@@ -286,6 +286,19 @@ TEST(HostileText, InvalidUtf8InAResealedPackIsEscapedInInfoAndDiff) {
     const RunResult diff_text = RunKiln("diff " + good + " " + bad);
     ASSERT_EQ(diff_text.exit_code, 0) << diff_text.err;
     EXPECT_NE(diff_text.out.find("shader \"Kiln/\\xffnlit\""), std::string::npos) << diff_text.out;
+    // kiln validate names the pack's shaders in K6006 (the closest name): escaped too, in text
+    // and in JSON diagnostics.
+    const std::string material =
+        dir.Write("m.material", "{\"kiln_material\": 1, \"shader\": \"Kiln/Xnlit\"}\n");
+    for (const char* format : {"text", "json"}) {
+        const RunResult v = RunKiln(std::string("--diagnostics-format ") + format +
+                                    " validate --pack " + bad + " " + material);
+        EXPECT_EQ(v.exit_code, 1) << v.err;
+        EXPECT_NE(v.err.find("K6006"), std::string::npos) << v.err;
+        EXPECT_EQ(v.err.find('\xff'), std::string::npos)
+            << "raw byte in " << format << ": " << v.err;
+        EXPECT_NE(v.err.find("xffnlit"), std::string::npos) << v.err;
+    }
 }
 
 // A shader_feature of 200,000 keywords: the keyword-alias merge tried every pair of keywords

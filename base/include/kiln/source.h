@@ -54,8 +54,10 @@ class SourceFile {
 // Largest file Kiln reads; sizes past this are rejected before reading (the offsets are 32-bit).
 inline constexpr uint64_t kMaxSourceFileBytes = 256u * 1024u * 1024u;
 
-// Reads a file from disk. Errors are plain messages (the caller turns them into diagnostics).
-Result<SourceFile> ReadSourceFile(const std::string& path);
+// Reads a file from disk (base::ReadRegularFile: regular files of at most `max_bytes`). Errors are
+// plain messages (the caller turns them into diagnostics).
+Result<SourceFile> ReadSourceFile(const std::string& path,
+                                  uint64_t max_bytes = kMaxSourceFileBytes);
 
 }  // namespace kiln
 

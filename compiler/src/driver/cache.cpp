@@ -90,7 +90,7 @@ std::optional<std::string> Cache::LoadBytes(const std::string& key, const std::s
     struct stat st {};
     if (lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
         return std::nullopt;  // absent, or damaged: a link, a FIFO, a directory
-    Result<std::string> read = base::ReadRegularFile(path, MaxBytes(ext));
+    Result<std::string> read = base::ReadRegularFile(path, MaxBytes(ext), base::ReadAs::kCache);
     if (!read)
         return std::nullopt;
     std::string data = std::move(read).value();

@@ -139,6 +139,11 @@ struct SceneStripFlags {
     bool active() const { return !scenes.empty() || !usage_files.empty(); }
 };
 void AddSceneStripOptions(CLI::App& cmd, SceneStripFlags& flags);
+// The files scene-driven stripping reads: usage files, scenes and the buffers and images each
+// scene's uris name, the sidecars (`sidecars`, else the one beside each scene) and the .material
+// files they map (kiln-render reads those in the dry runs), for the output-safety check.
+std::vector<std::string> SceneStripInputs(const SceneStripFlags& flags,
+                                          const std::vector<std::string>& sidecars);
 // Fills options.requests from the usage files and a dry run of each scene (kiln-render) over a
 // pack of the shaders without variants; `sidecars` are --materials. False after errors.
 bool PlanRequests(const SceneStripFlags& flags,

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -137,7 +138,15 @@ void AddToolOptions(CLI::App& cmd, CompilerFlags& f) {
                  "(for debugging: a crash in them then ends kiln)");
     cmd.add_option("--program-timeout", f.program_timeout,
                    "Seconds one program may take in a worker (default 60)")
-        ->check(CLI::PositiveNumber.description(""))
+        ->check(CLI::Validator(
+            [](std::string& v) -> std::string {
+                char* end = nullptr;
+                const double s = std::strtod(v.c_str(), &end);
+                if (end == v.c_str() || *end != '\0' || !(s > 0) || s > 86400)
+                    return "must be a number of seconds greater than 0, at most 86400";
+                return "";
+            },
+            ""))
         ->option_text("S");
     cmd.add_option("--program-memory", f.program_memory,
                    "MiB of memory one program may use in a worker (default 2048)")
@@ -178,7 +187,7 @@ void ReadMaterialKeywords(const std::string& path,
                           CompileOptions& out,
                           std::vector<std::unique_ptr<SourceFile>>& files,
                           DiagnosticList& diags) {
-    Result<SourceFile> read = ReadSourceFile(path);
+    Result<SourceFile> read = ReadSourceFile(path, material::kMaxFileBytes);
     if (!read) {
         diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, read.error().message);
         return;
@@ -426,6 +435,10 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         // work (and again when written, against every file the compile read).
         std::vector<std::string> inputs = o->flags.materials;
         inputs.insert(inputs.end(), o->files.begin(), o->files.end());
+        for (const std::string& read : SceneStripInputs(o->strip, o->flags.materials)) {
+            base::NoteInputFile(read);  // refused when written, too
+            inputs.push_back(read);
+        }
         const std::string dep_path = o->mf.empty() ? o->output + ".d" : o->mf;
         std::vector<std::string> outputs = {o->output};
         if (o->md || !o->mf.empty())

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "kiln/base/files.h"
 #include "kiln/pack/format.h"
 #include "kiln/pack/names.h"
 
@@ -173,6 +174,8 @@ std::vector<std::string> RewriteArgs(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     using namespace kiln::cli;
+    // No output of any command may replace a file the command reads (docs/runtime.md, "Files").
+    kiln::base::GuardInputFiles();
     try {
 #ifndef KILN_RENDER_TOOL
         const std::string first = FirstWord(std::vector<std::string>(argv + 1, argv + argc));

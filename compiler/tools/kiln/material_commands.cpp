@@ -31,7 +31,7 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
         DiagnosticList diags;
         std::vector<std::unique_ptr<SourceFile>> files;
         for (const std::string& path : args->files) {
-            Result<SourceFile> read = ReadSourceFile(path);
+            Result<SourceFile> read = ReadSourceFile(path, material::kMaxFileBytes);
             if (!read) {
                 diags.Error(DiagCode::kCannotReadFile, path, kNoPosition, read.error().message);
                 continue;

@@ -260,7 +260,17 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                   "Deferred path: store normals octahedrally encoded (keyword "
                   "_GBUFFER_NORMALS_OCT)");
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
-    cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)");
+    cmd->add_option("--time", a->frame.time, "Seconds, for _Time (default 0)")
+        ->check(CLI::Validator(
+            [](std::string& v) -> std::string {
+                char* end = nullptr;
+                const double t = std::strtod(v.c_str(), &end);
+                if (end == v.c_str() || *end != '\0' || !std::isfinite(t) || std::fabs(t) > 1e9)
+                    return "must be a finite number of seconds (at most 1e9 either way)";
+                return "";
+            },
+            ""))
+        ->option_text("SECONDS");
     cmd->add_option("--ambient", a->ambient,
                     "Ambient light, linear: one colour (R,G,B or flat:R,G,B), Unity's gradient "
                     "SKY:EQUATOR:GROUND, Kiln's procedural sky, or a sky image as --sky "
@@ -351,14 +361,21 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
             diags.Error(DiagCode::kCannotWriteFile, "", kNoPosition, distinct.error().message);
             return finish(int(kExitInputError));
         }
-        for (const std::string* out : {&a->output, &a->exr, &a->usage, &a->pipeline_cache}) {
-            if (out->empty())
-                continue;
-            if (Result<std::string> ok = base::CheckOutputPath(*out, inputs); !ok) {
-                diags.Error(DiagCode::kCannotWriteFile, *out, kNoPosition, ok.error().message);
-                return finish(int(kExitInputError));
+        // Checked again once the scene, its sidecar and the sky are read (their buffers, images
+        // and materials are then in the input guard's list), and once more as each is written.
+        auto outputs_refused = [&]() {
+            for (const std::string* out : {&a->output, &a->exr, &a->usage, &a->pipeline_cache}) {
+                if (out->empty())
+                    continue;
+                if (Result<std::string> ok = base::CheckOutputPath(*out, inputs); !ok) {
+                    diags.Error(DiagCode::kCannotWriteFile, *out, kNoPosition, ok.error().message);
+                    return true;
+                }
             }
-        }
+            return false;
+        };
+        if (outputs_refused())
+            return finish(int(kExitInputError));
         if (!a->camera.empty())
             ParseCamera(a->camera, a->frame.camera);  // validated by the option's check
         Result<runtime::Scene> loaded = runtime::LoadGltf(a->scene, diags);
@@ -400,6 +417,8 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         if (!made_color) {
             return fail(made_color.error());
         }
+        if (outputs_refused())
+            return finish(int(kExitInputError));
         const runtime::ColorPipeline color = std::move(made_color).value();
         if (a->packs.empty()) {
             a->packs.push_back(ShippedPackPath());

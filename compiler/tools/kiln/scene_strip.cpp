@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +19,7 @@
 
 #include "commands.h"
 #include "kiln/base/files.h"
+#include "kiln/material/sidecar.h"
 
 extern char** environ;
 
@@ -197,6 +199,64 @@ std::vector<std::string> DryRunPacks(const std::string& first) {
 }
 
 }  // namespace
+
+namespace {
+
+// A sidecar and the .material files it maps, or a .material file.
+void AddMaterialInputs(const std::string& path, std::vector<std::string>& out) {
+    out.push_back(path);
+    if (!path.ends_with(".kiln.json"))
+        return;
+    if (Result<material::MaterialSidecar> sidecar = material::ReadMaterialSidecar(path)) {
+        for (const auto& [name, file] : sidecar.value().materials)
+            out.push_back(file);
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> SceneStripInputs(const SceneStripFlags& flags,
+                                          const std::vector<std::string>& sidecars) {
+    std::vector<std::string> out = flags.usage_files;
+    for (const std::string& sidecar : sidecars)
+        AddMaterialInputs(sidecar, out);
+    for (const std::string& scene : flags.scenes) {
+        out.push_back(scene);
+        // The sidecar the renderer reads beside the scene.
+        const std::string beside =
+            (fs::path(scene).parent_path() / fs::path(scene).stem()).string() + ".kiln.json";
+        if (fs::exists(beside))
+            AddMaterialInputs(beside, out);
+        // The files the scene's buffers and images name (kiln-render reads them in the dry run):
+        // the JSON of a .gltf, or the JSON chunk of a .glb.
+        Result<std::string> bytes = base::ReadRegularFile(scene, uint64_t{1} << 30);
+        if (!bytes)
+            continue;  // the dry run reports it
+        std::string_view json = bytes.value();
+        if (json.size() >= 20 && json.substr(0, 4) == "glTF") {
+            uint32_t length = 0;
+            std::memcpy(&length, json.data() + 12, 4);  // little-endian, as glTF is
+            json = json.substr(20, std::min<size_t>(length, json.size() - 20));
+        }
+        const nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+        if (!doc.is_object())
+            continue;
+        for (const char* list : {"buffers", "images"}) {
+            const auto it = doc.find(list);
+            if (it == doc.end() || !it->is_array())
+                continue;
+            for (const nlohmann::json& item : *it) {
+                const auto uri = item.is_object() ? item.find("uri") : item.end();
+                if (uri == item.end() || !uri->is_string())
+                    continue;
+                const std::string name = uri->get<std::string>();
+                if (name.rfind("data:", 0) != 0 && name.find("://") == std::string::npos)
+                    out.push_back((fs::path(scene).parent_path() / name).string());
+            }
+        }
+    }
+    return out;
+}
 
 void AddSceneStripOptions(CLI::App& cmd, SceneStripFlags& f) {
     cmd.add_option("--scene", f.scenes,

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,8 @@ std::string JoinNames(const std::vector<std::string>& names) {
 
 constexpr const char* kLinear = "Linear Rec.709 (sRGB)";
 constexpr const char* kSrgb = "sRGB - Texture";
+
+constexpr uint64_t kMaxColorConfigBytes = uint64_t{16} << 20;
 
 OCIO::ConstConfigRcPtr BuiltInConfig() {
     OCIO::ConfigRcPtr config = OCIO::Config::Create();
@@ -81,14 +85,23 @@ Result<ColorPipeline> ColorPipeline::Create(const ColorOptions& options) {
             const char* env = std::getenv("OCIO");
             path = env ? env : "";
         }
-        // OpenColorIO reads the file itself: a FIFO or device must not get that far.
-        if (const std::string kind = path.empty() ? "" : base::NotRegularFileKind(path);
-            !kind.empty()) {
-            return Error{DiagCode::kBadColorConfig, "the OpenColorIO config '" + path + "' is " +
-                                                        kind + ", not a regular file"};
+        // The config is read as every input is (bounded, regular files only); OpenColorIO
+        // parses the text, with the config's folder as its working folder for the LUTs it names.
+        OCIO::ConstConfigRcPtr config = builtin;
+        if (!path.empty()) {
+            Result<std::string> text = base::ReadRegularFile(path, kMaxColorConfigBytes);
+            if (!text) {
+                return Error{DiagCode::kBadColorConfig,
+                             "cannot read the OpenColorIO config: " + text.error().message};
+            }
+            std::istringstream in(text.value());
+            OCIO::ConfigRcPtr read = OCIO::Config::CreateFromStream(in)->createEditableCopy();
+            std::error_code ec;
+            const std::filesystem::path dir =
+                std::filesystem::absolute(std::filesystem::path(path), ec).parent_path();
+            read->setWorkingDir(dir.c_str());
+            config = read;
         }
-        OCIO::ConstConfigRcPtr config =
-            path.empty() ? builtin : OCIO::Config::CreateFromFile(path.c_str());
         const std::string display =
             options.display.empty() ? config->getDefaultDisplay() : options.display;
         std::vector<std::string> displays;

@@ -34,7 +34,8 @@ void Attribute(pack::ByteWriter& w,
 Status WritePng(const std::string& path,
                 uint32_t width,
                 uint32_t height,
-                const std::vector<uint8_t>& rgba8) {
+                const std::vector<uint8_t>& rgba8,
+                const base::WriteOptions& options) {
     if (width == 0 || height == 0 || rgba8.size() != size_t{width} * height * 4) {
         return Error{DiagCode::kRenderFailed, "image data does not match its size"};
     }
@@ -48,7 +49,7 @@ Status WritePng(const std::string& path,
                                 int(width * 4))) {
         return Error{DiagCode::kCannotWriteFile, "cannot encode '" + path + "' as PNG"};
     }
-    if (const Status written = base::WriteFileAtomically(path, png); !written.ok()) {
+    if (const Status written = base::WriteFileAtomically(path, png, options); !written.ok()) {
         return written.error();
     }
     return {};

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "kiln/base/files.h"
 #include "material/issue.h"
 #include "material/keywords.h"
 
@@ -50,11 +51,20 @@ void CheckProperty(State& s,
             s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
                   what + " texture, not a number",
                   "write a path string or {\"path\": ..., \"scale\": [x, y], \"offset\": [x, y]}");
-        } else if (!v.texture.empty() && !material_dir.empty() &&
-                   !std::filesystem::exists(std::filesystem::path(material_dir) / v.texture)) {
-            s.Add(Severity::kWarning, DiagCode::kMaterialTextureNotFound, v.pos,
-                  "texture '" + v.texture + "' of property '" + v.name +
-                      "' not found beside the material");
+        } else if (!v.texture.empty() && !material_dir.empty()) {
+            const std::filesystem::path file = std::filesystem::path(material_dir) / v.texture;
+            std::error_code ec;
+            if (!std::filesystem::exists(file, ec)) {
+                s.Add(Severity::kWarning, DiagCode::kMaterialTextureNotFound, v.pos,
+                      "texture '" + v.texture + "' of property '" + v.name +
+                          "' not found beside the material");
+            } else if (std::string kind = base::NotRegularFileKind(file.string()); !kind.empty()) {
+                // The renderer reads regular files only (a FIFO would block it): it binds the
+                // default texture, as for a missing file.
+                s.Add(Severity::kWarning, DiagCode::kMaterialTextureNotFound, v.pos,
+                      "texture '" + v.texture + "' of property '" + v.name + "' is " + kind +
+                          ", not a regular file");
+            }
         }
         return;
     }

@@ -147,6 +147,7 @@ Result<MappedFile> MappedFile::Map(const std::string& path) {
         close(fd);
         return Error{DiagCode::kCannotReadFile, "'" + path + "' is not a regular file"};
     }
+    base::NoteInputFile(path);
     MappedFile out;
     if (st.st_size == 0) {
         close(fd);

@@ -197,17 +197,24 @@ std::string Page(const FrameCapture& capture) {
 }  // namespace
 
 Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
+    // Kiln fills this folder: a symbolic link planted in it (steps/, frame.json, index.html, an
+    // image) is replaced, never written through, so it cannot aim a write at another file.
     std::error_code ec;
-    fs::create_directories(fs::path(dir) / "steps", ec);
-    if (ec) {
+    const fs::path steps_dir = fs::path(dir) / "steps";
+    if (fs::is_symlink(fs::symlink_status(steps_dir, ec)))
+        fs::remove(steps_dir, ec);
+    fs::create_directories(steps_dir, ec);
+    if (ec || !fs::is_directory(fs::symlink_status(steps_dir, ec))) {
         return Error{DiagCode::kCannotWriteFile,
-                     dir + ": cannot create the frame-debug folder: " + ec.message()};
+                     dir + ": cannot create the frame-debug folder" +
+                         (ec ? ": " + ec.message() : std::string(": steps is not a folder"))};
     }
+    const base::WriteOptions replace_links{.follow_symlinks = false};
     nlohmann::json steps = nlohmann::json::array();
     for (size_t n = 0; n < capture.steps.size(); ++n) {
         for (const DebugImage& image : capture.steps[n].images) {
             if (Status e = WritePng((fs::path(dir) / ImageFile(n, image)).string(), image.width,
-                                    image.height, image.rgba8);
+                                    image.height, image.rgba8, replace_links);
                 !e.ok()) {
                 return e;
             }
@@ -220,11 +227,12 @@ Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
                                   {"height", capture.height},
                                   {"steps", steps}};
     if (Status e = base::WriteFileAtomically((fs::path(dir) / "frame.json").string(),
-                                             frame.dump(1) + "\n");
+                                             frame.dump(1) + "\n", replace_links);
         !e.ok()) {
         return e;
     }
-    return base::WriteFileAtomically((fs::path(dir) / "index.html").string(), Page(capture));
+    return base::WriteFileAtomically((fs::path(dir) / "index.html").string(), Page(capture),
+                                     replace_links);
 }
 
 }  // namespace kiln::runtime

@@ -100,7 +100,7 @@ Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
                                 MaterialInstance& out) {
     Result<std::string> text = base::ReadRegularFile(path, material::kMaxFileBytes);
     if (!text) {
-        return Error{DiagCode::kRenderFailed, text.error().message};
+        return Error{DiagCode::kCannotReadFile, text.error().message};
     }
     material::Material mat;
     DiagnosticList issues;

@@ -392,6 +392,13 @@ Result<Renderer> Renderer::Create(const RendererOptions& options) {
         s->notes.Warning(DiagCode::kPipelineCacheIgnored, options.pipeline_cache, kNoPosition,
                          note);
     }
+    if (std::string why = options.pipeline_cache.empty()
+                              ? ""
+                              : vk::PipelineCacheUnsavable(options.pipeline_cache);
+        !why.empty()) {
+        s->notes.Warning(DiagCode::kPipelineCacheIgnored, options.pipeline_cache, kNoPosition,
+                         "the pipeline cache cannot be saved: " + why);
+    }
     if (!options.trust_packs) {
         s->module_checker = std::make_unique<vk::ModuleChecker>(s->context.properties.limits);
     }

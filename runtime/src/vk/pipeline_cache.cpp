@@ -1,7 +1,9 @@
 #include "vk/pipeline_cache.h"
 
+#include <unistd.h>
 #include <xxhash.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -83,7 +85,8 @@ Status CreatePipelineCache(const Context& c,
     std::error_code ec;
     if (!path.empty() && std::filesystem::exists(path, ec)) {
         constexpr uint64_t kMaxPipelineCacheBytes = uint64_t{1} << 30;
-        Result<std::string> read = base::ReadRegularFile(path, kMaxPipelineCacheBytes);
+        Result<std::string> read =
+            base::ReadRegularFile(path, kMaxPipelineCacheBytes, base::ReadAs::kCache);
         if (read)
             file.assign(read.value().begin(), read.value().end());
         note = read ? CheckPipelineCacheFile(c, file, data) : read.error().message;
@@ -99,6 +102,16 @@ Status CreatePipelineCache(const Context& c,
         return VkError("cannot create a pipeline cache", r);
     }
     return {};
+}
+
+std::string PipelineCacheUnsavable(const std::string& path) {
+    if (std::string kind = base::NotRegularFileKind(path); !kind.empty())
+        return "'" + path + "' is " + kind;
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    const std::string folder = dir.empty() ? std::string(".") : dir.string();
+    if (access(folder.c_str(), W_OK | X_OK) != 0)
+        return "its folder '" + folder + "' cannot be written (" + std::strerror(errno) + ")";
+    return "";
 }
 
 Status SavePipelineCache(const Context& c, VkPipelineCache cache, const std::string& path) {

@@ -36,6 +36,10 @@ Status CreatePipelineCache(const Context& c,
                            VkPipelineCache& out,
                            std::string& note);
 Status SavePipelineCache(const Context& c, VkPipelineCache cache, const std::string& path);
+// Why the cache at `path` could not be saved when the renderer ends (its folder is missing or not
+// writable, the path is a folder or device); "" when it can be. Said up front as a warning
+// (K0024): the save itself happens in a destructor, which has no one to tell.
+std::string PipelineCacheUnsavable(const std::string& path);
 std::vector<uint8_t> EncodePipelineCacheFile(const Context& c, std::span<const uint8_t> data);
 
 }  // namespace kiln::vk

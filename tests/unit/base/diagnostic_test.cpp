@@ -74,8 +74,10 @@ TEST(Diagnostics, JsonSurvivesInvalidUtf8InMessages) {
     diags.Error(DiagCode::kUnknownCommand, "x", {}, "unknown command '\xff\xfe'");
     nlohmann::json j;
     ASSERT_NO_THROW(j = nlohmann::json::parse(FormatDiagnosticsJson(diags)));
-    // Invalid bytes become U+FFFD in JSON (it must be UTF-8).
-    EXPECT_EQ(j[0]["message"], "unknown command '\xef\xbf\xbd\xef\xbf\xbd'");
+    // Invalid bytes are escaped as the text form escapes them (issue 37: one form everywhere).
+    EXPECT_EQ(j[0]["message"], "unknown command '\\xff\\xfe'");
+    EXPECT_NE(FormatDiagnosticsText(diags, {}, false).find("unknown command '\\xff\\xfe'"),
+              std::string::npos);
 }
 
 TEST(Diagnostics, ErrorLimitAddsOneTooManyErrorsAndStops) {

@@ -104,6 +104,50 @@ TEST(BaseFiles, AnOutputThatIsALinkIsWrittenThroughAndStaysALink) {
     EXPECT_EQ(ReadFile(dir.path() + "/made.kpack"), "made");
 }
 
+// The input guard (on in the kiln tools) is process-wide: ctest runs each test in its own process.
+TEST(BaseFilesGuard, AFileReadUnderTheGuardIsNeverReplaced) {
+    base::GuardInputFiles();
+    ScratchDir dir;
+    const std::string read = dir.Write("read.txt", "input");
+    ASSERT_TRUE(base::ReadRegularFile(read, 100));
+    Result<std::string> checked = base::CheckOutputPath(read, {});
+    ASSERT_FALSE(checked);
+    EXPECT_NE(checked.error().message.find("which this command reads"), std::string::npos)
+        << checked.error().message;
+    EXPECT_FALSE(base::WriteFileAtomically(read, std::string_view("output")).ok());
+    // The same file by another name (a hard link) is the same input.
+    fs::create_hard_link(read, dir.path() + "/alias.txt");
+    EXPECT_FALSE(base::WriteFileAtomically(dir.path() + "/alias.txt", std::string_view("x")).ok());
+    EXPECT_EQ(ReadFile(read), "input");
+    // A cache read in order to be replaced is not remembered; a file never read is writable.
+    const std::string cache = dir.Write("cache.bin", "old");
+    ASSERT_TRUE(base::ReadRegularFile(cache, 100, base::ReadAs::kCache));
+    EXPECT_TRUE(base::WriteFileAtomically(cache, std::string_view("new")).ok());
+    EXPECT_TRUE(base::WriteFileAtomically(dir.path() + "/fresh.txt", std::string_view("x")).ok());
+    // A mapped pack or a file another library reads is remembered when noted.
+    const std::string noted = dir.Write("noted.txt", "n");
+    base::NoteInputFile(noted);
+    EXPECT_FALSE(base::WriteFileAtomically(noted, std::string_view("x")).ok());
+}
+
+// Files in a folder Kiln fills (--frame-debug): a link there is replaced, not written through.
+TEST(BaseFiles, WithoutFollowingLinksALinkIsReplaced) {
+    ScratchDir dir;
+    const std::string target = dir.Write("target.txt", "keep");
+    const std::string link = dir.path() + "/link.txt";
+    fs::create_symlink(target, link);
+    base::WriteOptions replace_links;
+    replace_links.follow_symlinks = false;
+    ASSERT_TRUE(base::WriteFileAtomically(link, std::string_view("new"), replace_links).ok());
+    EXPECT_EQ(ReadFile(target), "keep");
+    EXPECT_FALSE(fs::is_symlink(link));
+    EXPECT_EQ(ReadFile(link), "new");
+    fs::create_directories(dir.path() + "/folder");
+    EXPECT_FALSE(
+        base::WriteFileAtomically(dir.path() + "/folder", std::string_view("x"), replace_links)
+            .ok());
+}
+
 TEST(BaseFiles, AnUnwritableOutputSaysWhy) {
     const Status r = base::WriteFileAtomically("/nonexistent-dir/out.kpack", std::string_view("x"));
     ASSERT_FALSE(r.ok());

@@ -24,14 +24,33 @@ inline constexpr std::string_view kStandardStream = "-";
 // not a regular file ("is a directory", "is a FIFO"), or that it is over the limit. The path "-"
 // is standard input, read to its end once (later reads of "-" give the same bytes), under the
 // same limit: a pipe is the one stream Kiln reads, and only when asked to by that name.
-Result<std::string> ReadRegularFile(const std::string& path, uint64_t max_bytes);
+// `kCache`: a file the process reads in order to replace it later (a compile-cache entry, the
+// pipeline cache), which the input guard (GuardInputFiles) does not remember.
+enum class ReadAs : uint8_t { kInput, kCache };
+Result<std::string> ReadRegularFile(const std::string& path,
+                                    uint64_t max_bytes,
+                                    ReadAs as = ReadAs::kInput);
 
 struct WriteOptions {
     std::vector<std::string> inputs;  // an output that is one of them is refused
     // fsync the file before the rename and the directory after it. Off only for files whose
     // damage is detected and repaired (compile-cache entries carry a hash).
     bool durable = true;
+    // Off for files in a directory Kiln creates and fills (kiln render --frame-debug): a symbolic
+    // link at the output path is replaced by the new file, never written through, so a link
+    // planted in the directory cannot aim the write at another file.
+    bool follow_symlinks = true;
 };
+
+// The output-safety rule for a whole process, which the kiln tools turn on first thing: from then
+// on every file read through ReadRegularFile (or named to NoteInputFile) is remembered by device
+// and inode, and CheckOutputPath and WriteFileAtomically refuse to replace any of them, whichever
+// reader read it (a scene's buffers and images, a material's textures, a sky image). Off in a
+// library's host by default: an engine may save a file it loaded.
+void GuardInputFiles();
+// Remembers a file read outside ReadRegularFile (a mapped pack, a file a library reads itself)
+// for the guard; nothing when the guard is off or the file does not exist.
+void NoteInputFile(const std::string& path);
 
 // Writes `bytes` to `path` atomically. An output that is one of the inputs (the same file, by
 // device and inode) is refused. An output that is a symbolic link is written through: the file it
@@ -46,8 +65,8 @@ Status WriteFileAtomically(const std::string& path,
 
 // The checks WriteFileAtomically makes before it writes, for a command that wants to refuse a bad
 // output before doing the work: `path` (or the file its symbolic link names) is absent or a
-// regular file, and none of `inputs`. Gives the file that will be replaced ("-" for standard
-// output).
+// regular file, none of `inputs` and none of the files read so far under the input guard. Gives
+// the file that will be replaced ("-" for standard output).
 Result<std::string> CheckOutputPath(const std::string& path,
                                     const std::vector<std::string>& inputs);
 

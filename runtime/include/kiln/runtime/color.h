@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "kiln/base/files.h"
 #include "kiln/result.h"
 
 namespace kiln::runtime {
@@ -59,11 +60,12 @@ struct LinearImage {
     std::vector<float> rgba;  // row-major from the top, 4 floats per pixel
 };
 
-// 8-bit RGBA PNG, written to a temporary file and renamed.
+// 8-bit RGBA PNG, written to a temporary file and renamed (base::WriteFileAtomically, `options`).
 Status WritePng(const std::string& path,
                 uint32_t width,
                 uint32_t height,
-                const std::vector<uint8_t>& rgba8);
+                const std::vector<uint8_t>& rgba8,
+                const base::WriteOptions& options = {});
 // A rendered linear image through `color`'s display transform, quantized to 8 bits and written
 // as an opaque PNG (coverage is not transparency).
 Status WriteDisplayPng(const std::string& path,
