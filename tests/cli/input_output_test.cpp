@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <functional>
 #include <regex>
@@ -39,6 +40,15 @@ void MakeScene(const std::string& dir) {
     fs::copy_file(DataPath("fuzz/corpus/image/png_3x2.png"), dir + "/tex.png");
     fs::copy_file(DataPath("fuzz/corpus/image/hdr_rle_9x3.hdr"), dir + "/sky.hdr");
     WriteFile(dir + "/u.json", "{\"kiln_usage\": 1, \"lookups\": []}");
+}
+
+// A test name from a row's name: every character that is not a letter or digit becomes '_'.
+template <typename Row>
+std::string RowName(const ::testing::TestParamInfo<Row>& info) {
+    std::string n = info.param.name;
+    for (char& ch : n)
+        ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    return n;
 }
 
 struct Collision {
@@ -96,14 +106,10 @@ TEST_P(CollisionTest, AnOutputNeverReplacesAFileTheCommandReads) {
     EXPECT_EQ(ReadFile(dir.path() + "/" + c.victim), before) << c.victim << " was overwritten";
 }
 
-std::string CollisionName(const ::testing::TestParamInfo<Collision>& info) {
-    std::string n = info.param.name;
-    for (char& ch : n)
-        ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-    return n;
-}
-
-INSTANTIATE_TEST_SUITE_P(Outputs, CollisionTest, ::testing::ValuesIn(kCollisions), CollisionName);
+INSTANTIATE_TEST_SUITE_P(Outputs,
+                         CollisionTest,
+                         ::testing::ValuesIn(kCollisions),
+                         RowName<Collision>);
 
 // --frame-debug DIR: links planted in DIR (index.html and frame.json aimed at the scene and the
 // pack, steps/ at another folder) are replaced by the capture's files, never written through.
@@ -192,6 +198,9 @@ const Hole kHoles[] = {
     {"pipeline cache in a missing folder",
      "render {T}/tri.gltf -o {T}/out.png --pipeline-cache {T}/missing/cache.bin", 0, "K0024",
      "the pipeline cache cannot be saved: its folder"},
+    {"compile cache that cannot be created",
+     "compile {S} --cache-dir /dev/null/kiln -o {T}/o.kpack", 0, "K0002",
+     "the compile cache cannot be written (Not a directory); compiling without it"},
     {"sidecar material is a FIFO", "render {T}/fifo_scene.gltf -o {T}/out.png", 1, "K0001",
      "is a FIFO, not a regular file"},
     {"validate of a 17 MiB material", "validate --pack {P} {T}/big.material", 1, "K0001",
@@ -225,14 +234,7 @@ TEST_P(HoleTest, SaysWhatIsWrong) {
     EXPECT_NE(r.err.find(h.text), std::string::npos) << r.err;
 }
 
-std::string HoleName(const ::testing::TestParamInfo<Hole>& info) {
-    std::string n = info.param.name;
-    for (char& ch : n)
-        ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-    return n;
-}
-
-INSTANTIATE_TEST_SUITE_P(Holes, HoleTest, ::testing::ValuesIn(kHoles), HoleName);
+INSTANTIATE_TEST_SUITE_P(Holes, HoleTest, ::testing::ValuesIn(kHoles), RowName<Hole>);
 
 }  // namespace
 }  // namespace kiln::test

@@ -154,6 +154,27 @@ TEST(ImageReaders, RefusedFormatsAndSizesSayWhy) {
         << big.error().message;
 }
 
+// Found by kiln_fuzz_image under the sanitizers: stb_image 2.27 writes past its Huffman arrays on
+// a table of more than 256 codes (also one read past the end of its segment, or after junk that
+// stb_image skips), and allocates a header's whole size before it finds the file too short.
+TEST(ImageReaders, InputsThatReachStbImageDefectsAreRefused) {
+    for (const char* name : {"jpeg_dht_257_codes.jpg", "jpeg_dht_junk_before_tables.jpg",
+                             "jpeg_dht_table_past_segment.jpg"}) {
+        Result<Rgba8Image> image = DecodeImageRgba8(Seed(name), name);
+        ASSERT_FALSE(image) << name;
+        EXPECT_NE(image.error().message.find("damaged: a JPEG Huffman table of"),
+                  std::string::npos)
+            << image.error().message;
+    }
+    // An uncompressed TGA header of 16384 x 8192 texels and 40 bytes in all.
+    std::string tga = Seed("tga_3x2.tga").substr(0, 18) + std::string(22, '\x7f');
+    tga[12] = 0, tga[13] = char(0x40), tga[14] = 0, tga[15] = char(0x20);
+    Result<Rgba8Image> big = DecodeImageRgba8(tga, "big.tga");
+    ASSERT_FALSE(big);
+    EXPECT_NE(big.error().message.find("40 bytes cannot hold that many texels"), std::string::npos)
+        << big.error().message;
+}
+
 TEST(ImageReaders, AFifoIsAnErrorNotAWait) {
     const std::string fifo = testing::TempDir() + "/kiln_image_fifo_" + std::to_string(getpid());
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);

@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -181,6 +183,19 @@ std::optional<int> ParseUnityVersion(const std::string& text) {
 }
 
 namespace {
+
+// Why the compile cache folder `dir` cannot be used (created if missing); "" when it can.
+std::string CacheUnwritable(const std::string& dir) {
+    if (dir.empty())
+        return "";
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec)
+        return ec.message();
+    if (access(dir.c_str(), W_OK | X_OK) != 0)
+        return std::strerror(errno);
+    return "";
+}
 
 // Adds the keyword combination of one .material file to `out` (by shader name).
 void ReadMaterialKeywords(const std::string& path,
@@ -423,6 +438,13 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         options.keyword_aliases = !o->no_aliases;
         options.cache_dir =
             o->no_cache ? "" : (o->cache_dir.empty() ? DefaultCacheDir() : o->cache_dir);
+        if (std::string why = CacheUnwritable(options.cache_dir); !why.empty()) {
+            // Never silence: the build works, only slower, and says so once.
+            diags.Warning(
+                DiagCode::kCannotWriteFile, options.cache_dir, kNoPosition,
+                "the compile cache cannot be written (" + why + "); compiling without it");
+            options.cache_dir.clear();
+        }
         const bool tty = isatty(STDERR_FILENO) && global.diag_format == DiagFormat::kText;
         if (tty) {
             options.progress = [](const char* phase, size_t done, size_t total) {

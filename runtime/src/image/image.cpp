@@ -1,7 +1,5 @@
 #include "kiln/runtime/image.h"
 
-#include <stb/stb_image.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,6 +8,8 @@
 #include <memory>
 
 #include "image/radiance.h"
+#include "image/stb_decoder.h"
+#include "image/stb_guards.h"
 #include "kiln/base/files.h"
 
 namespace kiln::runtime {
@@ -72,13 +72,8 @@ uint32_t Be32(std::string_view b, size_t at) {
            uint32_t(uint8_t(b[at + 2])) << 8 | uint32_t(uint8_t(b[at + 3]));
 }
 
-std::string StbReason() {
-    const char* why = stbi_failure_reason();
-    return why != nullptr ? why : "no reason given";
-}
-
-struct StbFree {
-    void operator()(void* p) const { stbi_image_free(p); }
+struct FreePixels {
+    void operator()(uint8_t* p) const { image::StbFree(p); }
 };
 
 // 8-bit pixels with `channels` channels through stb_image, truncation and size checked.
@@ -94,31 +89,35 @@ Result<std::vector<uint8_t>> DecodeWithStb(std::string_view bytes,
     if (bytes.size() > size_t(std::numeric_limits<int>::max()))
         return Fail(name, "the file is too large");
     int w = 0, h = 0, n = 0;
-    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
     // A PNG's size is read here first: stb_image refuses one past 1 GiB as "unknown image type".
     if (bytes.size() >= 24 && bytes.substr(0, 8) == std::string_view("\x89PNG\r\n\x1a\n", 8) &&
         bytes.substr(12, 4) == "IHDR") {
         if (std::string big = image::TooLarge(name, Be32(bytes, 16), Be32(bytes, 20)); !big.empty())
             return Error{DiagCode::kBadImage, big};
     }
-    if (!stbi_info_from_memory(data, int(bytes.size()), &w, &h, &n)) {
-        return Fail(name, "not an image Kiln can read (" + StbReason() +
+    if (std::string hazard = image::StbHazard(bytes); !hazard.empty())
+        return Fail(name, "the file is damaged: " + hazard);
+    if (!image::StbInfo(data, int(bytes.size()), w, h, n)) {
+        return Fail(name, "not an image Kiln can read (" + std::string(image::StbFailure()) +
                               "); Kiln reads PNG, JPEG, TGA, BMP, PSD, GIF and Radiance HDR");
     }
     if (std::string big = image::TooLarge(name, uint64_t(std::max(w, 0)), uint64_t(std::max(h, 0)));
         !big.empty())
         return Error{DiagCode::kBadImage, big};
+    if (std::string short_file = image::TooShortFor(bytes, uint64_t(w) * uint64_t(h));
+        !short_file.empty())
+        return Fail(name, short_file);
     Cursor cursor{bytes};
-    const stbi_io_callbacks io{&ReadBytes, &SkipBytes, &AtEnd};
-    std::unique_ptr<stbi_uc, StbFree> pixels(
-        stbi_load_from_callbacks(&io, &cursor, &w, &h, &n, channels));
+    std::unique_ptr<uint8_t, FreePixels> pixels(
+        image::StbLoad({&ReadBytes, &SkipBytes, &AtEnd, &cursor}, w, h, channels));
     if (cursor.past_end)  // whether or not stb_image gave up: it ran out of bytes first
         return Fail(name, "the file is truncated: it ends before the image data does");
     if (!pixels)
-        return Fail(name, "cannot decode the image: " + StbReason());
+        return Fail(name, "cannot decode the image: " + std::string(image::StbFailure()));
     width = uint32_t(w);
     height = uint32_t(h);
-    const stbi_uc* p = pixels.get();
+    const uint8_t* p = pixels.get();
     return std::vector<uint8_t>(p, p + size_t(width) * height * size_t(channels));
 }
 
