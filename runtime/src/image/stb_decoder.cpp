@@ -1,5 +1,22 @@
 #include "image/stb_decoder.h"
 
+#include <string.h>
+
+// stb_image 2.27 copies 0 bytes from or to a null pointer (an empty first IDAT chunk of a PNG, found
+// by kiln_fuzz_image): undefined behaviour in C though harmless in practice. Its copies and fills
+// go through these, which skip empty ones. (string.h is included first, so only stb's calls are
+// renamed.)
+namespace {
+void* CopyBytes(void* to, const void* from, size_t n) {
+    return n == 0 ? to : memcpy(to, from, n);
+}
+void* FillBytes(void* to, int value, size_t n) {
+    return n == 0 ? to : memset(to, value, n);
+}
+}  // namespace
+#define memcpy(to, from, n) CopyBytes(to, from, n)
+#define memset(to, value, n) FillBytes(to, value, n)
+
 // The implementation, private to this file (STB_IMAGE_STATIC), for the formats Kiln reads.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
