@@ -47,6 +47,32 @@ Diagnostic MissingEntryPoint(const CompileState& st, const StageTask& t) {
     return d;
 }
 
+// The messages of a variant's own program (reduced to what its entry point reaches), each placed
+// by the unreduced compile's message on the same line where there is one (the reduced text is
+// preprocessed: its lines are the files' own, its columns are not). glslang stops at the first
+// errors of a text, and the unreduced text may fail first in a function nothing calls: those are
+// not the variant's errors and are dropped. Without reduced messages, the unreduced ones.
+std::vector<frontend::GlslangMessage> OwnMessages(const std::string& reduced_log,
+                                                  const std::string& exact_log) {
+    const std::vector<frontend::GlslangMessage> exact = frontend::ParseInfoLog(exact_log);
+    std::vector<frontend::GlslangMessage> own = frontend::ParseInfoLog(reduced_log);
+    if (own.empty())
+        return exact;
+    for (frontend::GlslangMessage& m : own) {
+        const frontend::GlslangMessage* placed = nullptr;
+        for (const frontend::GlslangMessage& e : exact) {
+            if (e.file == m.file && e.line == m.line && e.severity == m.severity &&
+                (placed == nullptr || (e.text == m.text && placed->text != m.text)))
+                placed = &e;
+        }
+        if (placed != nullptr && placed->text == m.text)
+            m = *placed;
+        else
+            m.column = 0;  // the line is right; a column in preprocessed text would not be
+    }
+    return own;
+}
+
 // One job through glslang and SPIRV-Tools in a worker; its diagnostics go to job.diags.
 void CompileJob(CompileState& st, Job& job) {
     const StageTask& task = st.tasks[job.first_task];
@@ -67,6 +93,7 @@ void CompileJob(CompileState& st, Job& job) {
         // Positions in the reduced text are lines of the original files but not their columns:
         // compile the assembled source once more for exact diagnostics (or, when a rewrite was
         // needed, the rewritten text, whose lines are right).
+        const std::string reduced_log = out.info_log;
         request.source = task.rewritten.empty() ? task.source : task.rewritten;
         request.optimize = false;
         o = st.exec->Run(request);
@@ -74,7 +101,7 @@ void CompileJob(CompileState& st, Job& job) {
             job.diags.push_back(std::move(*failure));
             return;
         }
-        AppendGlslangLog(st, o.response.info_log, job.diags, &task.reduced);
+        AppendMessages(st, OwnMessages(reduced_log, o.response.info_log), job.diags, &task.reduced);
         if (o.response.ok || job.diags.empty()) {
             job.diags.push_back({Severity::kInternal,
                                  DiagCode::kInternalError,
@@ -130,6 +157,15 @@ void AppendGlslangLog(CompileState& st,
                       const std::string* program) {
     if (log.empty())
         return;  // the common case: a clean compile
+    AppendMessages(st, frontend::ParseInfoLog(log), out, program);
+}
+
+void AppendMessages(CompileState& st,
+                    const std::vector<frontend::GlslangMessage>& messages,
+                    std::vector<Diagnostic>& out,
+                    const std::string* program) {
+    if (messages.empty())
+        return;
     auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
     frontend::MessageContext context;
     const hlsl::IncludePaths paths = IncludePathsFor(st.options);
@@ -139,7 +175,7 @@ void AppendGlslangLog(CompileState& st,
     context.include_search.push_back(paths.templates_dir + " (Kiln's templates)");
     if (program != nullptr)
         context.identifiers = [program] { return Identifiers(*program); };
-    for (const auto& m : frontend::ParseInfoLog(log))
+    for (const auto& m : messages)
         out.push_back(frontend::ToDiagnostic(m, lookup, context));
 }
 

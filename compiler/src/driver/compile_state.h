@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "driver/shader_passes.h"
+#include "frontend/glslang_messages.h"
 #include "hlsl/file_cache.h"
 #include "kiln/compile.h"
 #include "kiln/pack/variant_key.h"
@@ -107,6 +108,11 @@ void AppendGlslangLog(CompileState& st,
                       const std::string& log,
                       std::vector<Diagnostic>& out,
                       const std::string* program = nullptr);
+// The same for messages parsed already (frontend::ParseInfoLog).
+void AppendMessages(CompileState& st,
+                    const std::vector<frontend::GlslangMessage>& messages,
+                    std::vector<Diagnostic>& out,
+                    const std::string* program = nullptr);
 inline void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
     if (o.progress)
         o.progress(phase, done, total);

@@ -172,6 +172,35 @@ TEST(Compile, TypeErrorInReachedCodePointsIntoTheShader) {
         << "glslang stops at the first error of a declaration; the next line is not reported";
 }
 
+// Issue 38: glslang stops at the first errors of a text. The variant's own program (reduced to
+// what its entry point reaches) fails in frag, but the unreduced text, compiled again for exact
+// columns, failed first in a function nothing calls: that error was reported, the real one never.
+TEST(Compile, AVariantsOwnErrorIsReportedNotOneInAFunctionNothingCalls) {
+    ScratchDir dir;
+    const std::string path =
+        dir.Write("masked.shader",
+                  "Shader \"Test/Masked\" {\n"
+                  "    SubShader { Pass {\n"
+                  "        CGPROGRAM\n"
+                  "        #pragma vertex vert\n"
+                  "        #pragma fragment frag\n"
+                  "        float4 unused(float4 p) { return p +* ; }\n"
+                  "        float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n"
+                  "        float4 frag() : SV_Target {\n"
+                  "            return missing_in_frag;\n"
+                  "        }\n"
+                  "        ENDCG\n"
+                  "    } }\n"
+                  "}\n");
+    CompileRun run = Compile({path});
+    EXPECT_FALSE(run.out.ok);
+    const std::string brief = Brief(run.diags);
+    EXPECT_NE(brief.find("masked.shader:9:20 K5001 unknown variable 'missing_in_frag'"),
+              std::string::npos)
+        << brief;
+    EXPECT_EQ(brief.find("masked.shader:6:"), std::string::npos) << brief;
+}
+
 // Two of glslang's differences from Unity's compiler are reported with what Unity does and how
 // to write the code portably (docs/unity-compat.md explains why they are not rewritten).
 TEST(Compile, WriteToAGlobalExplainsUnitysBehaviour) {
