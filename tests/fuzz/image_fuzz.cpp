@@ -1,7 +1,8 @@
 // libFuzzer target: Kiln's image readers (kiln/runtime/image.h), the paths of material textures
 // (8-bit RGBA), sky images (linear RGB) and glTF images, on arbitrary bytes. Each decode must end
 // (libFuzzer's -timeout catches a hang, as stb_image's run-length Radiance loop was) in an image
-// whose size matches its dimensions within Kiln's limits, or in a K0032 error with a message.
+// whose size matches its dimensions within Kiln's limits, or in a K0032 error with a message; both
+// readers decide alike, and decoding twice gives the same pixels.
 // The corpus in corpus/image (make_image_seeds.py) is replayed by ctest in every build.
 #include <cstddef>
 #include <cstdint>
@@ -40,5 +41,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const auto rgb = kiln::runtime::DecodeImageLinearRgb(bytes, "fuzz");
     CheckResult(rgb, 3, rgb ? rgb.value().rgb.size() : 0);
     Check(bool(rgba) == bool(rgb));  // one decision per file, whichever reader asks
+    // The same bytes decode to the same pixels every time (no read of uninitialised memory).
+    const auto again = kiln::runtime::DecodeImageRgba8(bytes, "fuzz");
+    Check(bool(again) == bool(rgba));
+    if (again)
+        Check(again.value().rgba == rgba.value().rgba);
     return 0;
 }

@@ -96,8 +96,10 @@ Result<std::vector<uint8_t>> DecodeWithStb(std::string_view bytes,
         if (std::string big = image::TooLarge(name, Be32(bytes, 16), Be32(bytes, 20)); !big.empty())
             return Error{DiagCode::kBadImage, big};
     }
-    if (std::string hazard = image::StbHazard(bytes); !hazard.empty())
-        return Fail(name, "the file is damaged: " + hazard);
+    if (std::string hazard = image::StbHazard(bytes); !hazard.empty()) {
+        return Fail(name,
+                    hazard.rfind("the file", 0) == 0 ? hazard : "the file is damaged: " + hazard);
+    }
     if (!image::StbInfo(data, int(bytes.size()), w, h, n)) {
         return Fail(name, "not an image Kiln can read (" + std::string(image::StbFailure()) +
                               "); Kiln reads PNG, JPEG, TGA, BMP, PSD, GIF and Radiance HDR");

@@ -2,10 +2,10 @@
 
 #include <string.h>
 
-// stb_image 2.27 copies 0 bytes from or to a null pointer (an empty first IDAT chunk of a PNG, found
-// by kiln_fuzz_image): undefined behaviour in C though harmless in practice. Its copies and fills
-// go through these, which skip empty ones. (string.h is included first, so only stb's calls are
-// renamed.)
+// stb_image 2.27 copies 0 bytes from or to a null pointer (an empty first IDAT chunk of a PNG,
+// found by kiln_fuzz_image): undefined behaviour in C though harmless in practice. Its copies and
+// fills go through these, which skip empty ones. (string.h is included first, so only stb's calls
+// are renamed.)
 namespace {
 void* CopyBytes(void* to, const void* from, size_t n) {
     return n == 0 ? to : memcpy(to, from, n);
@@ -16,6 +16,15 @@ void* FillBytes(void* to, int value, size_t n) {
 }  // namespace
 #define memcpy(to, from, n) CopyBytes(to, from, n)
 #define memset(to, value, n) FillBytes(to, value, n)
+
+// Every allocation zeroed: stb_image 2.27 reads its JPEG decoder's state before setting all of
+// it (a Huffman table a scan names but no DHT defined), so the same file decoded twice could give
+// different results (found by kiln_fuzz_image; 2.28 zeroes that state). calloc makes every such
+// read a zero, the same each time, and no stale heap bytes can reach an image.
+#include <stdlib.h>
+#define STBI_MALLOC(size) calloc(1, size)
+#define STBI_REALLOC(p, size) realloc(p, size)
+#define STBI_FREE(p) free(p)
 
 // The implementation, private to this file (STB_IMAGE_STATIC), for the formats Kiln reads.
 #define STB_IMAGE_STATIC

@@ -66,6 +66,23 @@ std::string CheckJpeg(std::string_view b, size_t at, bool& progressive) {
     return "";
 }
 
+// PNG chunks: a length past the end of the file is a truncated file, which stb_image would first
+// allocate in full (an IDAT chunk declaring 2 GiB in a 100-byte file).
+std::string CheckPng(std::string_view b) {
+    for (size_t at = 8; at + 8 <= b.size();) {
+        const uint64_t length = uint64_t(At(b, at)) << 24 | uint64_t(At(b, at + 1)) << 16 |
+                                uint64_t(At(b, at + 2)) << 8 | At(b, at + 3);
+        if (length > b.size() - at - 8) {
+            return "the file is truncated: a PNG chunk of " + std::to_string(length) +
+                   " bytes where " + std::to_string(b.size() - at - 8) + " are left";
+        }
+        if (b.substr(at + 4, 4) == "IEND")
+            return "";
+        at += 12 + length;  // length, type, data, CRC
+    }
+    return "";
+}
+
 }  // namespace
 
 size_t JpegStart(std::string_view bytes) {
@@ -80,8 +97,11 @@ size_t JpegStart(std::string_view bytes) {
 
 std::string StbHazard(std::string_view bytes) {
     bool progressive = false;
-    const size_t jpeg = JpegStart(bytes);
-    return jpeg != 0 ? CheckJpeg(bytes, jpeg, progressive) : "";
+    if (const size_t jpeg = JpegStart(bytes); jpeg != 0)
+        return CheckJpeg(bytes, jpeg, progressive);
+    if (bytes.substr(0, 8) == std::string_view("\x89PNG\r\n\x1a\n", 8))
+        return CheckPng(bytes);
+    return "";
 }
 
 std::string TooShortFor(std::string_view bytes, uint64_t texels) {

@@ -16,6 +16,8 @@ namespace kiln::runtime::image {
 // when nothing known. JPEG: a Huffman table (DHT) of more than 256 codes, which
 // stbi__build_huffman writes past its 257-entry array (2.28 checks "bad DHT header"); tables are
 // walked as stb_image reads them, past the end of their segment while its length left is above 0.
+// PNG: a chunk longer than the bytes left, which stb_image allocates before it reads (an IDAT
+// declaring 2 GiB in a 100-byte file): a truncated file.
 std::string StbHazard(std::string_view bytes);
 
 // A file too short for the `texels` its header declares, which stb_image would allocate in full
