@@ -149,8 +149,9 @@ inline fixed UnitySpotAttenuate(unityShadowCoord3 lightCoord) {
 #define UNITY_TRANSFER_LIGHTING(a, coord) COMPUTE_LIGHT_COORDS(a) UNITY_TRANSFER_SHADOW(a, coord)
 
 // Declares `float destName` = the light's attenuation at worldPos times the shadow term.
-// worldPos may be a float3 or a float4 (the lecture passes its float4 world position).
+// worldPos may be a float3 or a float4 (the lecture passes its float4 world position). Ends in
+// `;` as Unity's does, so code that writes the macro without one (which Unity accepts) compiles.
 #define UNITY_LIGHT_ATTENUATION(destName, input, worldPos) \
-    float destName = UnityLightAttenuation((worldPos).xyz) * UNITY_SHADOW_ATTENUATION(input, worldPos)
+    float destName = UnityLightAttenuation((worldPos).xyz) * UNITY_SHADOW_ATTENUATION(input, worldPos);
 
 #endif  // AUTOLIGHT_INCLUDED

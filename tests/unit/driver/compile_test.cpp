@@ -201,6 +201,38 @@ TEST(Compile, AVariantsOwnErrorIsReportedNotOneInAFunctionNothingCalls) {
     EXPECT_EQ(brief.find("masked.shader:6:"), std::string::npos) << brief;
 }
 
+// Issue 38: Unity's UNITY_LIGHT_ATTENUATION ends in `;`, so tutorials write it without one; Kiln's
+// lacked it and the declaration fused with the next statement (16 tutorial shaders failed).
+TEST(Compile, UnityLightAttenuationWithoutASemicolonCompilesAsInUnity) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "atten.shader",
+        "Shader \"Test/Atten\" { SubShader { Pass { Tags { \"LightMode\" = \"ForwardBase\" }\n"
+        "CGPROGRAM\n"
+        "#pragma vertex vert\n"
+        "#pragma fragment frag\n"
+        "#pragma multi_compile_fwdbase\n"
+        "#include \"UnityCG.cginc\"\n"
+        "#include \"Lighting.cginc\"\n"
+        "#include \"AutoLight.cginc\"\n"
+        "struct v2f { float4 pos : SV_POSITION; float3 worldPos : TEXCOORD0; SHADOW_COORDS(1) };\n"
+        "v2f vert(appdata_base v) {\n"
+        "    v2f o;\n"
+        "    o.pos = UnityObjectToClipPos(v.vertex);\n"
+        "    o.worldPos = mul(unity_ObjectToWorld, v.vertex).xyz;\n"
+        "    TRANSFER_SHADOW(o)\n"
+        "    return o;\n"
+        "}\n"
+        "float4 frag(v2f i) : SV_Target {\n"
+        "    UNITY_LIGHT_ATTENUATION(attenuation, i, i.worldPos)\n"
+        "    float3 light = attenuation * _LightColor0.rgb;\n"
+        "    return float4(light, 1);\n"
+        "}\n"
+        "ENDCG } } }\n");
+    CompileRun run = Compile({path});
+    EXPECT_TRUE(run.out.ok) << Brief(run.diags);
+}
+
 // Two of glslang's differences from Unity's compiler are reported with what Unity does and how
 // to write the code portably (docs/unity-compat.md explains why they are not rewritten).
 TEST(Compile, WriteToAGlobalExplainsUnitysBehaviour) {
