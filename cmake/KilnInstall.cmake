@@ -54,7 +54,7 @@ set(_kiln_pc_material_libs "-lkiln_material")
 set(_kiln_pc_material_requires "kiln-pack = ${PROJECT_VERSION}")
 set(_kiln_pc_runtime_libs "-lkiln_runtime -lkiln_reference")
 set(_kiln_pc_runtime_requires
-    "kiln-material = ${PROJECT_VERSION}, glm, vulkan, OpenColorIO, tinygltf")
+    "kiln-material = ${PROJECT_VERSION}, glm, vulkan, OpenColorIO, tinygltf, libjpeg")
 set(_kiln_pc_runtime_private_libs "-lstb -lSPIRV-Tools")
 set(_kiln_pc_compiler_libs "-lkiln_compiler")
 set(_kiln_pc_compiler_requires "kiln-pack = ${PROJECT_VERSION}")

@@ -11,7 +11,7 @@ PACKAGES=(
     glslang-dev glslang-tools spirv-tools spirv-headers libspirv-cross-c-shared-dev
     # runtime
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
-    libopencolorio-dev libglm-dev libtinygltf-dev libstb-dev
+    libopencolorio-dev libglm-dev libtinygltf-dev libstb-dev libjpeg-dev
     # utilities
     nlohmann-json3-dev libcli11-dev libxxhash-dev
     # tests and benchmarks

@@ -154,18 +154,27 @@ TEST(ImageReaders, RefusedFormatsAndSizesSayWhy) {
         << big.error().message;
 }
 
-// Found by kiln_fuzz_image under the sanitizers: stb_image 2.27 writes past its Huffman arrays on
-// a table of more than 256 codes (also one read past the end of its segment, or after junk that
-// stb_image skips), and allocates a header's whole size before it finds the file too short.
+// Found by kiln_fuzz_image under the sanitizers in stb_image 2.27: JPEG Huffman tables of more
+// than 256 codes written past their arrays and decoder state read before it was set (JPEG now goes
+// to libjpeg-turbo, which refuses these files), a PNG chunk allocated at its declared size before
+// it is read (2 GiB in a 100-byte file), and a header's whole size allocated before the file is
+// found too short.
 TEST(ImageReaders, InputsThatReachStbImageDefectsAreRefused) {
     for (const char* name : {"jpeg_dht_257_codes.jpg", "jpeg_dht_junk_before_tables.jpg",
-                             "jpeg_dht_table_past_segment.jpg"}) {
+                             "jpeg_dht_table_past_segment.jpg", "jpeg_undefined_huffman_table.jpg",
+                             "png_idat_2gib.png"}) {
         Result<Rgba8Image> image = DecodeImageRgba8(Seed(name), name);
         ASSERT_FALSE(image) << name;
-        EXPECT_NE(image.error().message.find("damaged: a JPEG Huffman table of"),
-                  std::string::npos)
-            << image.error().message;
+        EXPECT_EQ(image.error().code, DiagCode::kBadImage);
     }
+    EXPECT_NE(DecodeImageRgba8(Seed("png_idat_2gib.png"), "x")
+                  .error()
+                  .message.find("the file is truncated: a PNG chunk of"),
+              std::string::npos);
+    EXPECT_NE(DecodeImageRgba8(Seed("jpeg_dht_257_codes.jpg"), "x")
+                  .error()
+                  .message.find("Bogus Huffman table definition"),
+              std::string::npos);
     // An uncompressed TGA header of 16384 x 8192 texels and 40 bytes in all.
     std::string tga = Seed("tga_3x2.tga").substr(0, 18) + std::string(22, '\x7f');
     tga[12] = 0, tga[13] = char(0x40), tga[14] = 0, tga[15] = char(0x20);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "image/jpeg_decoder.h"
 #include "image/radiance.h"
 #include "image/stb_decoder.h"
 #include "image/stb_guards.h"
@@ -76,38 +77,52 @@ struct FreePixels {
     void operator()(uint8_t* p) const { image::StbFree(p); }
 };
 
-// 8-bit pixels with `channels` channels through stb_image, truncation and size checked.
-Result<std::vector<uint8_t>> DecodeWithStb(std::string_view bytes,
-                                           const std::string& name,
-                                           int channels,
-                                           uint32_t& width,
-                                           uint32_t& height) {
+std::string JpegFits(uint32_t width, uint32_t height, bool progressive, size_t bytes) {
+    if (std::string big = image::SizeProblem(width, height); !big.empty())
+        return big;
+    return image::TooShortFor(bytes, uint64_t(width) * height, true, progressive);
+}
+
+// 8-bit pixels with `channels` channels: JPEG through libjpeg-turbo, the other formats through
+// stb_image; truncation and size checked.
+Result<std::vector<uint8_t>> DecodeEightBit(std::string_view bytes,
+                                            const std::string& name,
+                                            int channels,
+                                            uint32_t& width,
+                                            uint32_t& height) {
     if (std::string refused = RefusedFormat(bytes); !refused.empty()) {
         return Fail(name, "the file is " + refused +
                               "; Kiln reads PNG, JPEG, TGA, BMP, PSD, GIF and Radiance HDR");
     }
     if (bytes.size() > size_t(std::numeric_limits<int>::max()))
         return Fail(name, "the file is too large");
-    int w = 0, h = 0, n = 0;
-    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    if (image::JpegStart(bytes) != 0) {
+        image::JpegImage jpeg;
+        std::string why;
+        if (!image::DecodeJpeg(bytes, channels, &JpegFits, jpeg, why))
+            return Fail(name, why);
+        width = jpeg.width;
+        height = jpeg.height;
+        return std::move(jpeg.pixels);
+    }
     // A PNG's size is read here first: stb_image refuses one past 1 GiB as "unknown image type".
     if (bytes.size() >= 24 && bytes.substr(0, 8) == std::string_view("\x89PNG\r\n\x1a\n", 8) &&
         bytes.substr(12, 4) == "IHDR") {
-        if (std::string big = image::TooLarge(name, Be32(bytes, 16), Be32(bytes, 20)); !big.empty())
-            return Error{DiagCode::kBadImage, big};
+        if (std::string big = image::SizeProblem(Be32(bytes, 16), Be32(bytes, 20)); !big.empty())
+            return Fail(name, big);
     }
-    if (std::string hazard = image::StbHazard(bytes); !hazard.empty()) {
-        return Fail(name,
-                    hazard.rfind("the file", 0) == 0 ? hazard : "the file is damaged: " + hazard);
-    }
-    if (!image::StbInfo(data, int(bytes.size()), w, h, n)) {
+    if (std::string hazard = image::StbHazard(bytes); !hazard.empty())
+        return Fail(name, hazard);
+    int w = 0, h = 0, n = 0;
+    if (!image::StbInfo(reinterpret_cast<const uint8_t*>(bytes.data()), int(bytes.size()), w, h,
+                        n)) {
         return Fail(name, "not an image Kiln can read (" + std::string(image::StbFailure()) +
                               "); Kiln reads PNG, JPEG, TGA, BMP, PSD, GIF and Radiance HDR");
     }
-    if (std::string big = image::TooLarge(name, uint64_t(std::max(w, 0)), uint64_t(std::max(h, 0)));
-        !big.empty())
-        return Error{DiagCode::kBadImage, big};
-    if (std::string short_file = image::TooShortFor(bytes, uint64_t(w) * uint64_t(h));
+    const uint64_t w64 = uint64_t(std::max(w, 0)), h64 = uint64_t(std::max(h, 0));
+    if (std::string big = image::SizeProblem(w64, h64); !big.empty())
+        return Fail(name, big);
+    if (std::string short_file = image::TooShortFor(bytes.size(), w64 * h64, false, false);
         !short_file.empty())
         return Fail(name, short_file);
     Cursor cursor{bytes};
@@ -129,14 +144,6 @@ float SrgbToLinear(float c) {
 
 }  // namespace
 
-std::string image::TooLarge(const std::string& name, uint64_t w, uint64_t h) {
-    if (w >= 1 && h >= 1 && w <= kMaxImageSide && h <= kMaxImageSide && w * h <= kMaxImageTexels)
-        return "";
-    return "'" + name + "': the image is " + std::to_string(w) + "x" + std::to_string(h) +
-           "; Kiln reads images of 1 to " + std::to_string(kMaxImageSide) +
-           " texels a side and at most " + std::to_string(kMaxImageTexels) + " texels";
-}
-
 bool IsRadianceImage(std::string_view bytes) {
     return bytes.substr(0, 10) == "#?RADIANCE" || bytes.substr(0, 6) == "#?RGBE";
 }
@@ -145,7 +152,7 @@ Result<LinearRgbImage> DecodeImageLinearRgb(std::string_view bytes, const std::s
     if (IsRadianceImage(bytes))
         return image::DecodeRadiance(bytes, name);
     LinearRgbImage out;
-    Result<std::vector<uint8_t>> rgb = DecodeWithStb(bytes, name, 3, out.width, out.height);
+    Result<std::vector<uint8_t>> rgb = DecodeEightBit(bytes, name, 3, out.width, out.height);
     if (!rgb)
         return rgb.error();
     std::array<float, 256> table{};
@@ -160,7 +167,7 @@ Result<LinearRgbImage> DecodeImageLinearRgb(std::string_view bytes, const std::s
 Result<Rgba8Image> DecodeImageRgba8(std::string_view bytes, const std::string& name) {
     Rgba8Image out;
     if (!IsRadianceImage(bytes)) {
-        Result<std::vector<uint8_t>> rgba = DecodeWithStb(bytes, name, 4, out.width, out.height);
+        Result<std::vector<uint8_t>> rgba = DecodeEightBit(bytes, name, 4, out.width, out.height);
         if (!rgba)
             return rgba.error();
         out.rgba = std::move(rgba.value());

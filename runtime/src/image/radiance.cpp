@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "image/stb_guards.h"
+
 namespace kiln::runtime::image {
 namespace {
 
@@ -90,8 +92,8 @@ Status ReadHeader(State& s, uint32_t& width, uint32_t& height) {
         return s.Fail("the resolution line is '" + std::string(line.substr(0, 40)) +
                       "'; Kiln reads the standard orientation, '-Y <height> +X <width>'");
     }
-    if (std::string big = TooLarge(s.name, width, height); !big.empty())
-        return Error{DiagCode::kBadImage, big};
+    if (std::string big = SizeProblem(width, height); !big.empty())
+        return s.Fail(big);
     return {};
 }
 

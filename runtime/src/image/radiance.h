@@ -3,7 +3,6 @@
 #ifndef KILN_RUNTIME_IMAGE_RADIANCE_H_
 #define KILN_RUNTIME_IMAGE_RADIANCE_H_
 
-#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -14,10 +13,6 @@ namespace kiln::runtime::image {
 // Linear radiance as stored (FORMAT=32-bit_rle_rgbe, "-Y H +X W" orientation). Errors (K0032)
 // name the image and say what is wrong: a truncated file says in which row its data ends.
 Result<LinearRgbImage> DecodeRadiance(std::string_view bytes, const std::string& name);
-
-// The K0032 message for an image of w x h texels outside Kiln's limits (kiln/runtime/image.h);
-// "" within them. Shared by every format (image.cpp).
-std::string TooLarge(const std::string& name, uint64_t w, uint64_t h);
 
 }  // namespace kiln::runtime::image
 

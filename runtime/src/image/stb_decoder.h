@@ -1,7 +1,8 @@
 // stb_image compiled into Kiln (from Debian's libstb-dev header, not its prebuilt library) for
-// exactly the formats Kiln hands it: PNG, JPEG, BMP, TGA, PSD and GIF, no file I/O, no HDR (Kiln's
-// own, image/radiance.h), at most 16384 texels a side. Compiled with the rest of Kiln, it is under
-// the sanitizers and libFuzzer's coverage in those builds (tests/fuzz/image_fuzz.cpp).
+// exactly the formats Kiln hands it: PNG, BMP, TGA, PSD and GIF, no file I/O, no HDR (Kiln's own,
+// image/radiance.h), no JPEG (libjpeg-turbo, image/jpeg_decoder.h), at most 16384 texels a side.
+// Compiled with the rest of Kiln, it is under the sanitizers and libFuzzer's coverage in those
+// builds (tests/fuzz/image_fuzz.cpp).
 #ifndef KILN_RUNTIME_IMAGE_STB_DECODER_H_
 #define KILN_RUNTIME_IMAGE_STB_DECODER_H_
 

@@ -1,7 +1,7 @@
 // Inputs that reach known defects of the stb_image Kiln builds with (Debian 12's libstb-dev,
-// stb_image 2.27, fixed upstream in 2.28 and later), refused before stb_image sees them. Each
-// was found by kiln_fuzz_image (tests/fuzz/image_fuzz.cpp) under AddressSanitizer and
-// UndefinedBehaviorSanitizer; each check walks the file once.
+// stb_image 2.27), refused before stb_image sees them, and the size checks made before any
+// decoder allocates pixels. Each defect was found by kiln_fuzz_image (tests/fuzz/image_fuzz.cpp)
+// under AddressSanitizer and UndefinedBehaviorSanitizer; each check walks the file once.
 #ifndef KILN_RUNTIME_IMAGE_STB_GUARDS_H_
 #define KILN_RUNTIME_IMAGE_STB_GUARDS_H_
 
@@ -12,22 +12,24 @@
 
 namespace kiln::runtime::image {
 
-// What stb_image 2.27 would mishandle in `bytes` (before any stb_image call, stbi_info too); ""
-// when nothing known. JPEG: a Huffman table (DHT) of more than 256 codes, which
-// stbi__build_huffman writes past its 257-entry array (2.28 checks "bad DHT header"); tables are
-// walked as stb_image reads them, past the end of their segment while its length left is above 0.
-// PNG: a chunk longer than the bytes left, which stb_image allocates before it reads (an IDAT
-// declaring 2 GiB in a 100-byte file): a truncated file.
+// What stb_image 2.27 would mishandle in `bytes` (checked before any stb_image call); "" when
+// nothing known. PNG: a chunk longer than the bytes left, which stb_image allocates before it reads
+// (an IDAT declaring 2 GiB in a 100-byte file): a truncated file.
 std::string StbHazard(std::string_view bytes);
 
-// A file too short for the `texels` its header declares, which stb_image would allocate in full
-// (a 100-byte file asked for 1 GiB) and fill from zeros before the truncation shows; any format
-// but progressive JPEG. "" when the bytes can hold them.
-std::string TooShortFor(std::string_view bytes, uint64_t texels);
-
-// Where a JPEG's data starts after its SOI marker, found as stb_image finds it (0xFF, fill bytes,
-// 0xD8); 0 when `bytes` is no JPEG.
+// Where a JPEG's data starts after its SOI marker (0xFF, any fill bytes 0xFF, then 0xD8); 0 when
+// `bytes` is no JPEG.
 size_t JpegStart(std::string_view bytes);
+
+// "the image is WxH; Kiln reads ..." for a size outside Kiln's limits (kiln/runtime/image.h);
+// "" within them.
+std::string SizeProblem(uint64_t width, uint64_t height);
+
+// A file of `bytes` bytes too short for `texels` texels, which a decoder would allocate in full (a
+// 100-byte file asked for 1 GiB) and fill before the truncation shows. No format Kiln reads holds
+// more than 8,256 texels a byte but progressive JPEG, which codes runs of empty blocks in a few
+// bits (no bound); baseline JPEG holds at most 256 (2 bits an 8x8 block). "" when they fit.
+std::string TooShortFor(size_t bytes, uint64_t texels, bool jpeg, bool progressive);
 
 }  // namespace kiln::runtime::image
 

@@ -3,10 +3,10 @@
 // an error (K0032) that says how far it got, never an image whose missing rows read as zero.
 //
 // Radiance .hdr (RGBE, flat and run-length encoded) is decoded by Kiln itself: stb_image's
-// run-length decoder spins forever on a scanline that ends early. PNG, JPEG, TGA, BMP, PSD and GIF
-// go to stb_image (compiled into Kiln, guarded against the defects of the version Debian ships)
-// through a reader that notes any read past the end of the bytes, which is how truncation is told
-// for every one of them. Softimage PIC and PNM, which Unity does not import either, are refused.
+// run-length decoder spins forever on a scanline that ends early. JPEG goes to libjpeg-turbo; PNG,
+// TGA, BMP, PSD and GIF to stb_image (compiled into Kiln, guarded against the defects of the
+// version Debian ships) through a reader that notes any read past the end of the bytes, which is
+// how truncation is told. Softimage PIC and PNM, which Unity does not import either, are refused.
 // docs/runtime.md, "Images".
 #ifndef KILN_RUNTIME_IMAGE_H_
 #define KILN_RUNTIME_IMAGE_H_
