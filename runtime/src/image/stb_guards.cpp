@@ -9,12 +9,21 @@ uint8_t At(std::string_view b, size_t i) {
     return uint8_t(b[i]);
 }
 
-// PNG chunks: a length past the end of the file is a truncated file, which stb_image would first
+uint32_t Be32(std::string_view b, size_t at) {
+    return uint32_t(At(b, at)) << 24 | uint32_t(At(b, at + 1)) << 16 |
+           uint32_t(At(b, at + 2)) << 8 | At(b, at + 3);
+}
+
+// PNG: the size in IHDR (stb_image refuses one past 1 GiB only as "unknown image type"), then the
+// chunks: a length past the end of the file is a truncated file, which stb_image would first
 // allocate in full.
 std::string CheckPng(std::string_view b) {
+    if (b.size() >= 24 && b.substr(12, 4) == "IHDR") {
+        if (std::string big = SizeProblem(Be32(b, 16), Be32(b, 20)); !big.empty())
+            return big;
+    }
     for (size_t at = 8; at + 8 <= b.size();) {
-        const uint64_t length = uint64_t(At(b, at)) << 24 | uint64_t(At(b, at + 1)) << 16 |
-                                uint64_t(At(b, at + 2)) << 8 | At(b, at + 3);
+        const uint64_t length = Be32(b, at);
         if (length > b.size() - at - 8) {
             return "the file is truncated: a PNG chunk of " + std::to_string(length) +
                    " bytes where " + std::to_string(b.size() - at - 8) + " are left";

@@ -13,8 +13,9 @@
 namespace kiln::runtime::image {
 
 // What stb_image 2.27 would mishandle in `bytes` (checked before any stb_image call); "" when
-// nothing known. PNG: a chunk longer than the bytes left, which stb_image allocates before it reads
-// (an IDAT declaring 2 GiB in a 100-byte file): a truncated file.
+// nothing known. PNG: a size past Kiln's limits in IHDR, and a chunk longer than the bytes left,
+// which stb_image allocates before it reads (an IDAT declaring 2 GiB in a 100-byte file): a
+// truncated file.
 std::string StbHazard(std::string_view bytes);
 
 // Where a JPEG's data starts after its SOI marker (0xFF, any fill bytes 0xFF, then 0xD8); 0 when
