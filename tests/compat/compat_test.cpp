@@ -1,12 +1,14 @@
-// The Unity compatibility corpus: Unity's own hand-written (non-surface) built-in shaders
-// (../shared/unity-builtin-2022.3/Shaders, read in place, skipped when absent) compiled unmodified
-// by the `kiln` binary, once against Unity's CGIncludes (-I) and once against Kiln's templates.
-// Each compile runs in its own process under `timeout`, so a crash or a hang is a result, not the
-// end of the test. Known failures are in allowlist.txt with the code they must fail with.
+// The Unity compatibility corpora, read in place from ../shared (each skipped when absent): the
+// hand-written (non-surface) built-in shaders of three Unity LTS lines (2018.4, 2022.3, 6000.0)
+// and Ronja Böhringer's tutorial shaders, compiled unmodified by the `kiln` binary, once against
+// Unity's CGIncludes (-I; the tutorials against 2022.3's) and once against Kiln's templates, with
+// --unity-version set to the corpus's version. Each compile runs in its own process under
+// `timeout`, so a crash or a hang is a result, not the end of the test. Known failures are in
+// allowlist.txt with the code they must fail with.
 //
 // CI runs the subset in ci_subset.txt; KILN_COMPAT=full runs every non-surface shader. The
-// results table goes to the test log and to compat-<mode>.md in the build tree's tests folder
-// (KILN_TEST_OUTPUT_DIR), never into the checkout.
+// results table goes to the test log and to compat-<corpus>-<mode>.md in the build tree's tests
+// folder (KILN_TEST_OUTPUT_DIR), never into the checkout.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -30,7 +32,33 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kCorpus = fs::path(KILN_SHARED_DIR) / "unity-builtin-2022.3" / "Shaders";
+const fs::path kShared = fs::path(KILN_SHARED_DIR);
+
+struct Corpus {
+    const char* key;      // the prefix of its lines in ci_subset.txt and allowlist.txt
+    fs::path root;        // the shaders
+    fs::path cgincludes;  // Unity's includes for Unity mode
+    const char* unity_version;
+};
+
+const Corpus kCorpora[] = {
+    {"2022.3", kShared / "unity-builtin-2022.3" / "Shaders",
+     kShared / "unity-builtin-2022.3" / "Shaders" / "CGIncludes", "2022.3"},
+    {"2018.4", kShared / "unity-builtin-2018.4" / "Shaders",
+     kShared / "unity-builtin-2018.4" / "Shaders" / "CGIncludes", "2018.4"},
+    {"6000.0", kShared / "unity-builtin-6000.0" / "Shaders",
+     kShared / "unity-builtin-6000.0" / "Shaders" / "CGIncludes", "6000.0"},
+    {"ronja", kShared / "ronja-tutorials" / "Assets",
+     kShared / "unity-builtin-2022.3" / "Shaders" / "CGIncludes", "2022.3"},
+};
+
+const Corpus& CorpusOf(const std::string& key) {
+    for (const Corpus& c : kCorpora) {
+        if (key == c.key)
+            return c;
+    }
+    return kCorpora[0];
+}
 
 enum class Mode { kUnity, kKiln };
 
@@ -79,23 +107,28 @@ bool IsSurfaceShader(const fs::path& file) {
     return false;
 }
 
-// The shaders to compile, relative to the corpus root, sorted.
-std::vector<std::string> CorpusShaders(bool full) {
+// Every non-surface shader of a corpus, relative to its root, sorted.
+std::vector<std::string> AllShaders(const Corpus& corpus) {
     std::vector<std::string> out;
-    if (full) {
-        for (const auto& e : fs::recursive_directory_iterator(kCorpus)) {
-            if (e.is_regular_file() && e.path().extension() == ".shader" &&
-                !IsSurfaceShader(e.path())) {
-                out.push_back(fs::relative(e.path(), kCorpus).generic_string());
-            }
-        }
-    } else {
-        std::istringstream in(ReadFile(DataPath("compat/ci_subset.txt")));
-        for (std::string line; std::getline(in, line);) {
-            line = TrimSpace(line);
-            if (!line.empty() && line[0] != '#')
-                out.push_back(line);
-        }
+    for (const auto& e : fs::recursive_directory_iterator(corpus.root)) {
+        if (e.is_regular_file() && e.path().extension() == ".shader" && !IsSurfaceShader(e.path()))
+            out.push_back(fs::relative(e.path(), corpus.root).generic_string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// The shaders to compile, relative to the corpus root, sorted.
+std::vector<std::string> CorpusShaders(const Corpus& corpus, bool full) {
+    if (full)
+        return AllShaders(corpus);
+    std::vector<std::string> out;
+    const std::string prefix = std::string(corpus.key) + "/";
+    std::istringstream in(ReadFile(DataPath("compat/ci_subset.txt")));
+    for (std::string line; std::getline(in, line);) {
+        line = TrimSpace(line);
+        if (line.rfind(prefix, 0) == 0)
+            out.push_back(line.substr(prefix.size()));
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -118,15 +151,17 @@ struct Outcome {
 // Runs `kiln compile` in its own process, writing into `dir`; a signal or the timeout is a crash
 // or a hang.
 Outcome CompileInProcess(const ScratchDir& dir,
+                         const Corpus& corpus,
                          const std::string& shader,
                          Mode mode,
                          const std::string& extra_args) {
     const std::string log = dir.path() + "/log.txt";
     std::string command = "timeout 600 " + Quote(KILN_BINARY) + " compile " +
-                          Quote((kCorpus / shader).string()) + " -o " +
-                          Quote(dir.path() + "/out.kpack") + " --no-cache " + extra_args;
+                          Quote((corpus.root / shader).string()) + " -o " +
+                          Quote(dir.path() + "/out.kpack") + " --no-cache --unity-version " +
+                          corpus.unity_version + " " + extra_args;
     if (mode == Mode::kUnity)
-        command += " -I " + Quote((kCorpus / "CGIncludes").string());
+        command += " -I " + Quote(corpus.cgincludes.string());
     command += " >" + Quote(log) + " 2>&1 </dev/null";
     const auto start = std::chrono::steady_clock::now();
     const int status = std::system(command.c_str());
@@ -170,18 +205,18 @@ const char* KindName(Outcome::Kind k) {
     return "?";
 }
 
-void RunCorpus(Mode mode) {
-    if (!fs::is_directory(kCorpus)) {
-        GTEST_SKIP() << kCorpus << " is absent (../shared not checked out): corpus skipped";
+void RunCorpus(const Corpus& corpus, Mode mode) {
+    if (!fs::is_directory(corpus.root) || !fs::is_directory(corpus.cgincludes)) {
+        GTEST_SKIP() << corpus.root << " is absent (../shared not checked out): corpus skipped";
     }
     const char* env = std::getenv("KILN_COMPAT");
     const bool full = env && std::string(env) == "full";
-    const std::vector<std::string> shaders = CorpusShaders(full);
+    const std::vector<std::string> shaders = CorpusShaders(corpus, full);
     const std::map<std::string, Allowed> allow = ReadAllowList();
     const char* mode_name = mode == Mode::kUnity ? "unity" : "kiln";
 
     std::ostringstream table;
-    table << "# Unity corpus, "
+    table << "# " << corpus.key << " corpus, "
           << (mode == Mode::kUnity ? "Unity's CGIncludes" : "Kiln's templates") << " ("
           << (full ? "full" : "CI subset") << ", " << shaders.size() << " shaders)\n\n"
           << "| shader | result | seconds | note |\n|---|---|---|---|\n";
@@ -189,9 +224,9 @@ void RunCorpus(Mode mode) {
     double total = 0;
     const ScratchDir dir;
     for (const std::string& shader : shaders) {
-        const Outcome o = CompileInProcess(dir, shader, mode, "");
+        const Outcome o = CompileInProcess(dir, corpus, shader, mode, "");
         total += o.seconds;
-        auto a = allow.find(shader);
+        auto a = allow.find(std::string(corpus.key) + "/" + shader);
         const bool listed =
             a != allow.end() && (mode == Mode::kUnity ? a->second.unity : a->second.kiln);
         std::string note;
@@ -222,29 +257,81 @@ void RunCorpus(Mode mode) {
                   shaders.size(), allowed_failures, total);
     table << summary;
     std::cout << table.str();
-    std::ofstream(std::string(KILN_TEST_OUTPUT_DIR) + "/compat-" + mode_name + ".md")
+    std::ofstream(std::string(KILN_TEST_OUTPUT_DIR) + "/compat-" + corpus.key + "-" + mode_name +
+                  ".md")
         << table.str();
-    if (full) {
-        // The allow-list stays under 10% of the non-surface shaders.
-        EXPECT_LT(allow.size() * 10, shaders.size()) << "allow-list too long";
+}
+
+struct CorpusMode {
+    const Corpus* corpus;
+    Mode mode;
+};
+
+class UnityCorpus : public ::testing::TestWithParam<CorpusMode> {};
+
+TEST_P(UnityCorpus, Compiles) {
+    RunCorpus(*GetParam().corpus, GetParam().mode);
+}
+
+std::vector<CorpusMode> AllCorpusModes() {
+    std::vector<CorpusMode> out;
+    for (const Corpus& c : kCorpora) {
+        out.push_back({&c, Mode::kUnity});
+        out.push_back({&c, Mode::kKiln});
     }
+    return out;
 }
 
-TEST(UnityCorpus, CompilesAgainstUnitysCGIncludes) {
-    RunCorpus(Mode::kUnity);
+INSTANTIATE_TEST_SUITE_P(Corpora,
+                         UnityCorpus,
+                         ::testing::ValuesIn(AllCorpusModes()),
+                         [](const ::testing::TestParamInfo<CorpusMode>& param) {
+                             std::string name = param.param.corpus->key;
+                             std::replace(name.begin(), name.end(), '.', '_');
+                             return "v" + name +
+                                    (param.param.mode == Mode::kUnity ? "_unity" : "_kiln");
+                         });
+
+// The allow-list names shaders that exist, in a corpus it knows, and stays under 3% of the
+// non-surface shaders of the four corpora; every CI-subset line names a shader too.
+TEST(UnityCorpusLists, AllowListIsShortAndNamesRealShaders) {
+    size_t total = 0;
+    for (const Corpus& c : kCorpora) {
+        if (!fs::is_directory(c.root))
+            GTEST_SKIP() << c.root << " is absent (../shared not checked out): lists not checked";
+        total += AllShaders(c).size();
+    }
+    const std::map<std::string, Allowed> allow = ReadAllowList();
+    for (const auto& [path, a] : allow) {
+        const size_t slash = path.find('/');
+        const Corpus& c = CorpusOf(path.substr(0, slash));
+        EXPECT_EQ(path.substr(0, slash), c.key) << "allowlist.txt: unknown corpus in " << path;
+        EXPECT_TRUE(fs::is_regular_file(c.root / path.substr(slash + 1))) << path;
+    }
+    std::istringstream in(ReadFile(DataPath("compat/ci_subset.txt")));
+    for (std::string line; std::getline(in, line);) {
+        line = TrimSpace(line);
+        if (line.empty() || line[0] == '#')
+            continue;
+        const size_t slash = line.find('/');
+        const Corpus& c = CorpusOf(line.substr(0, slash));
+        EXPECT_EQ(line.substr(0, slash), c.key) << "ci_subset.txt: unknown corpus in " << line;
+        EXPECT_TRUE(fs::is_regular_file(c.root / line.substr(slash + 1))) << line;
+    }
+    std::cout << allow.size() << " allow-listed of " << total << " non-surface shaders\n";
+    EXPECT_LT(allow.size() * 100, total * 3) << "allow-list too long";
 }
 
-TEST(UnityCorpus, CompilesAgainstKilnsTemplates) {
-    RunCorpus(Mode::kKiln);
-}
+// Standard and the deferred-lighting shader of each Unity version in every variant Unity builds
+// without materials (above) and with a material that enables _NORMALMAP and _METALLICGLOSSMAP, in
+// both modes; each Standard pack then renders a glTF sample with that material and the
+// validation layer on.
+class UnityStandard : public ::testing::TestWithParam<const Corpus*> {};
 
-// Standard and the deferred-lighting shader in every variant Unity builds without materials
-// (above) and with a material that enables _NORMALMAP and _METALLICGLOSSMAP, in both modes; the
-// Standard pack built against Unity's CGIncludes then renders a glTF sample with that material
-// and the validation layer on.
-TEST(UnityCorpus, StandardWithANormalMappedMetallicMaterialCompilesInBothModesAndRenders) {
-    if (!fs::is_directory(kCorpus)) {
-        GTEST_SKIP() << kCorpus << " is absent (../shared not checked out): corpus skipped";
+TEST_P(UnityStandard, WithANormalMappedMetallicMaterialCompilesInBothModesAndRenders) {
+    const Corpus& corpus = *GetParam();
+    if (!fs::is_directory(corpus.root)) {
+        GTEST_SKIP() << corpus.root << " is absent (../shared not checked out): corpus skipped";
     }
     const ScratchDir dir;
     const fs::path box = fs::path(KILN_SHARED_DIR) / "gltf-samples" / "BoxTextured" / "glTF";
@@ -275,14 +362,15 @@ TEST(UnityCorpus, StandardWithANormalMappedMetallicMaterialCompilesInBothModesAn
                                                          Quote((box / "BoxTextured.gltf").string())
                                                    : "--materials " + Quote(material);
         for (Mode mode : {Mode::kUnity, Mode::kKiln}) {
-            const Outcome o = CompileInProcess(dir, shader, mode, args);
+            const Outcome o = CompileInProcess(dir, corpus, shader, mode, args);
             EXPECT_EQ(o.kind, Outcome::kCompiled)
                 << shader << (mode == Mode::kUnity ? " (unity mode): " : " (kiln mode): ")
                 << o.first_error;
-            std::cout << shader << (mode == Mode::kUnity ? " unity" : " kiln") << " mode with "
+            std::cout << corpus.key << " " << shader << (mode == Mode::kUnity ? " unity" : " kiln")
+                      << " mode with "
                       << "_NORMALMAP _METALLICGLOSSMAP" << (scene && standard ? " (scene)" : "")
                       << ": " << KindName(o.kind) << " in " << o.seconds << " s\n";
-            if (o.kind != Outcome::kCompiled || mode != Mode::kUnity || !standard) {
+            if (o.kind != Outcome::kCompiled || !standard) {
                 continue;
             }
             if (!fs::exists(box / "BoxTextured.gltf") || !fs::exists(normals)) {
@@ -303,6 +391,15 @@ TEST(UnityCorpus, StandardWithANormalMappedMetallicMaterialCompilesInBothModesAn
         }
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Versions,
+                         UnityStandard,
+                         ::testing::Values(&kCorpora[0], &kCorpora[1], &kCorpora[2]),
+                         [](const ::testing::TestParamInfo<const Corpus*>& param) {
+                             std::string name = param.param->key;
+                             std::replace(name.begin(), name.end(), '.', '_');
+                             return "v" + name;
+                         });
 
 }  // namespace
 }  // namespace kiln::test

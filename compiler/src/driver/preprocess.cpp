@@ -199,6 +199,10 @@ void Dedup(CompileState& st, const State* s, CompileStats& stats) {
         if (fresh) {
             Job job = NewJob(st, t, i);
             job.cache_key = t.result_key;
+            // The preprocessor's and the rewrite's warnings (X3206); tasks sharing the job have
+            // the same text, so the same warnings.
+            if (!t.preprocess_log.empty())
+                AppendGlslangLog(st, t.preprocess_log, job.diags, &t.source);
             if (s == nullptr) {
                 job.ok = job.from_cache = true;  // a pack from the cache: no words needed
             } else if (const auto f = s->found.find(t.result_key);

@@ -9,83 +9,10 @@
 #include <vector>
 
 #include "hlsl/identifier.h"
+#include "hlsl/rewrite_steps.h"
 
 namespace kiln::hlsl {
 namespace {
-
-struct Token {
-    size_t begin = 0, end = 0;
-    bool ident = false;
-    std::string_view text;
-};
-
-// Tokens of the preprocessed text; directive lines (#line, #pragma, #extension) are skipped.
-std::vector<Token> Tokenize(const std::string& s) {
-    static const char* const kMulti[] = {"<<=", ">>=", "==", "!=", "<=", ">=", "+=", "-=",
-                                         "*=",  "/=",  "%=", "&=", "|=", "^=", "++", "--",
-                                         "&&",  "||",  "<<", ">>", "::", "->"};
-    std::vector<Token> out;
-    bool line_start = true;
-    for (size_t i = 0; i < s.size();) {
-        const char c = s[i];
-        if (c == '\n') {
-            line_start = true;
-            ++i;
-            continue;
-        }
-        if (std::isspace(static_cast<unsigned char>(c))) {
-            ++i;
-            continue;
-        }
-        if (line_start && c == '#') {
-            while (i < s.size() && s[i] != '\n')
-                ++i;
-            continue;
-        }
-        line_start = false;
-        Token t;
-        t.begin = i;
-        if (IdentStart(c)) {
-            while (i < s.size() && IdentChar(s[i]))
-                ++i;
-            t.ident = true;
-        } else if (std::isdigit(static_cast<unsigned char>(c)) ||
-                   (c == '.' && i + 1 < s.size() &&
-                    std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
-            ++i;
-            while (i < s.size() &&
-                   (IdentChar(s[i]) || s[i] == '.' ||
-                    ((s[i] == '+' || s[i] == '-') && (s[i - 1] == 'e' || s[i - 1] == 'E'))))
-                ++i;
-        } else if (c == '"') {
-            ++i;
-            while (i < s.size() && s[i] != '"' && s[i] != '\n')
-                ++i;
-            if (i < s.size() && s[i] == '"')
-                ++i;
-        } else {
-            size_t len = 1;
-            for (const char* m : kMulti) {
-                const size_t n = std::char_traits<char>::length(m);
-                if (s.compare(i, n, m) == 0) {
-                    len = n;
-                    break;
-                }
-            }
-            i += len;
-        }
-        t.end = i;
-        t.text = std::string_view(s).substr(t.begin, t.end - t.begin);
-        out.push_back(t);
-    }
-    return out;
-}
-
-bool IsAssignment(std::string_view op) {
-    static const std::set<std::string_view> kOps = {
-        "=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="};
-    return kOps.count(op) > 0;
-}
 
 bool IsOneVectorType(std::string_view t) {
     static const std::set<std::string_view> kTypes = {
@@ -98,20 +25,6 @@ bool IsOneVectorType(std::string_view t) {
 bool EndsDeclarator(std::string_view t) {
     return t == ";" || t == "," || t == ":" || t == ")" || t == "=" || t == "[";
 }
-
-// Words that can precede `name ;` without declaring it.
-bool IsStatementWord(std::string_view t) {
-    static const std::set<std::string_view> kWords = {
-        "return", "else",   "case",    "goto",    "typedef",  "struct", "cbuffer", "tbuffer",
-        "in",     "out",    "inout",   "uniform", "static",   "const",  "extern",  "volatile",
-        "inline", "sizeof", "discard", "break",   "continue", "do"};
-    return kWords.count(t) > 0;
-}
-
-struct Edit {
-    size_t begin, end;
-    std::string text;
-};
 
 // Names declared only with a 1-vector type (the `.x` after them is the identity).
 std::set<std::string_view> OneVectorNames(const std::vector<Token>& tok) {
@@ -164,20 +77,6 @@ void InfinityLiterals(const std::vector<Token>& tok, std::vector<Edit>& edits, s
             ++count;
         }
     }
-}
-
-// Index of the bracket that opens the one closing at `close`, or SIZE_MAX.
-size_t MatchBack(const std::vector<Token>& tok, size_t close) {
-    const std::string_view c = tok[close].text;
-    const std::string_view o = c == ")" ? "(" : "[";
-    int depth = 0;
-    for (size_t k = close + 1; k-- > 0;) {
-        if (tok[k].text == c)
-            ++depth;
-        else if (tok[k].text == o && --depth == 0)
-            return k;
-    }
-    return SIZE_MAX;
 }
 
 // First token of the postfix expression that ends at `last` (identifiers joined by '.', calls,
@@ -236,32 +135,77 @@ void MatrixSwizzles(const std::string& s,
     }
 }
 
+// `min16float3x3` -> `float3x3` (and min10float, min16int/min12int -> int, min16uint -> uint):
+// glslang 12 has minimum-precision scalars and vectors but no such matrices. Padded with spaces
+// to the name's length, so the columns after it hold.
+void MinPrecisionMatrices(const std::vector<Token>& tok, std::vector<Edit>& edits, size_t& count) {
+    static const std::regex kMatrix(
+        "(min16float|min10float|min16int|min12int|min16uint)([1-4]x[1-4])");
+    std::match_results<std::string_view::const_iterator> m;
+    for (const Token& t : tok) {
+        if (!t.ident || t.text.size() < 11 || t.text.compare(0, 3, "min") != 0 ||
+            !std::regex_match(t.text.begin(), t.text.end(), m, kMatrix))
+            continue;
+        const std::string base = m[1].str();
+        std::string text = (base == "min16uint"                     ? "uint"
+                            : base.find("int") != std::string::npos ? "int"
+                                                                    : "float") +
+                           m[2].str();
+        text.resize(t.text.size(), ' ');
+        edits.push_back({t.begin, t.end, text});
+        ++count;
+    }
+}
+
 }  // namespace
 
-RewriteResult RewriteForGlslang(const std::string& preprocessed) {
-    RewriteResult r;
-    const std::vector<Token> tok = Tokenize(preprocessed);
-    std::vector<Edit> edits;
-    OneVectorSwizzles(tok, edits, r.one_vector_swizzles);
-    MatrixSwizzles(preprocessed, tok, edits, r.matrix_swizzles);
-    InfinityLiterals(tok, edits, r.infinity_literals);
-    if (edits.empty()) {
-        r.text = preprocessed;
-        return r;
-    }
-    // Non-overlapping by construction (a matrix swizzle never ends in `.x`); apply in order.
+std::string ApplyEdits(const std::string& text, std::vector<Edit> edits) {
     std::sort(edits.begin(), edits.end(),
               [](const Edit& a, const Edit& b) { return a.begin < b.begin; });
-    r.text.reserve(preprocessed.size() + edits.size() * 16);
+    std::string out;
+    out.reserve(text.size() + edits.size() * 16);
     size_t at = 0;
     for (const Edit& e : edits) {
         if (e.begin < at)
             continue;
-        r.text.append(preprocessed, at, e.begin - at);
-        r.text += e.text;
+        out.append(text, at, e.begin - at);
+        out += e.text;
         at = e.end;
     }
-    r.text.append(preprocessed, at, std::string::npos);
+    out.append(text, at, std::string::npos);
+    return out;
+}
+
+RewriteResult RewriteForGlslang(const std::string& preprocessed) {
+    RewriteResult r;
+    std::vector<Token> tok = Tokenize(preprocessed);
+    std::vector<Edit> edits;
+    // Token-local rewrites first, in one pass: non-overlapping by construction (a matrix swizzle
+    // never ends in `.x`, and a matrix type name is not an expression).
+    OneVectorSwizzles(tok, edits, r.one_vector_swizzles);
+    MatrixSwizzles(preprocessed, tok, edits, r.matrix_swizzles);
+    InfinityLiterals(tok, edits, r.infinity_literals);
+    MinPrecisionMatrices(tok, edits, r.min_precision_matrices);
+    std::string text = edits.empty() ? preprocessed : ApplyEdits(preprocessed, std::move(edits));
+    // Then each step that reads declarations, on the text the one before produced.
+    using Step = size_t (*)(const std::string&, const std::vector<Token>&, std::vector<Edit>&,
+                            std::vector<RewriteWarning>&);
+    static constexpr Step kSteps[] = {
+        [](const std::string& t, const std::vector<Token>& k, std::vector<Edit>& e,
+           std::vector<RewriteWarning>&) { return PrivateGlobals(t, k, e); },
+        TruncatedArguments};
+    size_t* const counts[] = {&r.private_globals, &r.truncated_arguments};
+    bool stale = r.changed();
+    for (size_t step = 0; step < 2; ++step) {
+        if (stale)
+            tok = Tokenize(text);
+        std::vector<Edit> more;
+        *counts[step] = kSteps[step](text, tok, more, r.warnings);
+        stale = !more.empty();
+        if (stale)
+            text = ApplyEdits(text, std::move(more));
+    }
+    r.text = std::move(text);
     return r;
 }
 

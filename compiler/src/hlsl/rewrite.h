@@ -14,19 +14,39 @@
 //   `float3((M)._14, (M)._24, (M)._34)`. Writes through such swizzles are left alone.
 // - fxc's infinity literal `1.#INF`, which glslang reads but its preprocessor prints as `1.INF`,
 //   is put back as it was written.
+// - Minimum-precision matrices (`min16float3x3`, what Unity 2018's HLSLSupport.cginc makes of
+//   `half3x3` on Vulkan), which glslang 12 lacks, become 32-bit matrices (`float3x3`), as
+//   `--precision full` makes every half matrix; the name is padded so columns hold.
+// - Writes to a global (rewrite_globals.cpp): fxc keeps the written value private to the
+//   invocation. A global that the text writes gets a `static` copy initialized from it, and
+//   every use outside declarations is renamed to the copy.
+// - A vector argument to a scalar `in` parameter (rewrite_calls.cpp), which fxc truncates with
+//   warning X3206: where the call has one candidate function of that name and arity, and the
+//   argument is known to be a vector, it becomes `(argument).x`, with Unity's warning.
 #ifndef KILN_HLSL_REWRITE_H_
 #define KILN_HLSL_REWRITE_H_
 
 #include <string>
+#include <vector>
+
+#include "hlsl/tokens.h"
 
 namespace kiln::hlsl {
 
 struct RewriteResult {
     std::string text;
-    size_t one_vector_swizzles = 0;  // `.x` dropped after a 1-vector
-    size_t matrix_swizzles = 0;      // multi-element matrix swizzles expanded
-    size_t infinity_literals = 0;    // `1.INF` from the preprocessor put back as `1.#INF`
-    bool changed() const { return one_vector_swizzles + matrix_swizzles + infinity_literals > 0; }
+    size_t one_vector_swizzles = 0;     // `.x` dropped after a 1-vector
+    size_t matrix_swizzles = 0;         // multi-element matrix swizzles expanded
+    size_t infinity_literals = 0;       // `1.INF` from the preprocessor put back as `1.#INF`
+    size_t min_precision_matrices = 0;  // `min16float3x3` -> `float3x3`
+    size_t private_globals = 0;         // globals given a private copy because the text writes them
+    size_t truncated_arguments = 0;     // vector arguments to scalar parameters
+    std::vector<RewriteWarning> warnings;  // Unity's warnings for what was rewritten (X3206)
+    bool changed() const {
+        return one_vector_swizzles + matrix_swizzles + infinity_literals + min_precision_matrices +
+                   private_globals + truncated_arguments >
+               0;
+    }
 };
 
 RewriteResult RewriteForGlslang(const std::string& preprocessed);

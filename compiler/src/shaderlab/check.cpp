@@ -67,12 +67,17 @@ void State::CheckProperties() {
             d.notes.push_back({file, it->second->name_range, "first declared here"});
         }
         if (p.type == PropertyType::kRange) {
+            // Unity accepts a Range whose minimum is above its maximum (its slider runs from
+            // one to the other): a warning, and the range is the interval between the two.
+            const double lo = std::min(p.range_min, p.range_max);
+            const double hi = std::max(p.range_min, p.range_max);
             if (p.range_min > p.range_max) {
-                Error(DiagCode::kBadRange, p.type_range,
-                      "range minimum " + Num(p.range_min) + " is greater than its maximum " +
-                          Num(p.range_max));
-            } else if (!p.default_value.empty() &&
-                       (p.default_value[0] < p.range_min || p.default_value[0] > p.range_max)) {
+                Warning(DiagCode::kBadRange, p.type_range,
+                        "range minimum " + Num(p.range_min) + " is greater than its maximum " +
+                            Num(p.range_max) + "; Unity accepts it, and values between the two " +
+                            "are in range");
+            }
+            if (!p.default_value.empty() && (p.default_value[0] < lo || p.default_value[0] > hi)) {
                 Warning(DiagCode::kDefaultOutOfRange, p.default_range,
                         "default " + Num(p.default_value[0]) + " of '" + p.name +
                             "' is outside its Range(" + Num(p.range_min) + ", " + Num(p.range_max) +

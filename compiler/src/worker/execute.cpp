@@ -44,6 +44,12 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     // Kiln's own steps run here too: the worker then answers with the (smaller) reduced text.
     Enter(context, Component::kKilnReduction);
     hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(out.text);
+    // Unity's warnings for what the rewrite changed, in glslang's form: the one place that maps
+    // messages to .shader positions (frontend/glslang_messages.h) places them.
+    for (const hlsl::RewriteWarning& w : rewritten.warnings) {
+        resp.info_log += "WARNING: " + w.file + ":" + std::to_string(w.line) + ": '" + w.token +
+                         "' : " + w.message + "\n";
+    }
     hlsl::Reduced reduced = hlsl::ReduceToEntryPoint(rewritten.text, r.entry);
     if (!r.second_entry.empty() && StageFree(r, context, includer)) {
         hlsl::Reduced second = hlsl::ReduceToEntryPoint(rewritten.text, r.second_entry);

@@ -96,7 +96,9 @@ void CheckProperty(State& s,
                 s.Add(Severity::kError, DiagCode::kMaterialPropertyValueType, v.pos,
                       what + ": give one number");
             } else if (type == PropertyType::kRange &&
-                       (v.numbers[0] < rec.range_min || v.numbers[0] > rec.range_max)) {
+                       // Range(10, 0.1) is the interval between the two, as in Unity
+                       (v.numbers[0] < std::min(rec.range_min, rec.range_max) ||
+                        v.numbers[0] > std::max(rec.range_min, rec.range_max))) {
                 s.Add(
                     Severity::kError, DiagCode::kMaterialOutOfRange, v.pos,
                     "value " + Number(v.numbers[0]) + " of property '" + v.name +

@@ -1,5 +1,6 @@
 #include "render/draw_builder.h"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
@@ -376,8 +377,13 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
         light_values.merge(render::ProbeValues(scene_, request.sh, request.center));
         ++stats_.sh_lit;
     }
+    glm::mat4 view(1.0f);
+    if (const auto v_it = frame_values_.find("unity_MatrixV");
+        v_it != frame_values_.end() && v_it->second.size() == 16) {
+        view = glm::make_mat4(v_it->second.data());
+    }
     const Values object =
-        render::ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f));
+        render::ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f), view);
     const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
         for (const Values* table : std::initializer_list<const Values*>{
                  request.values, &object, &light_values, &frame_values_, &binding.texel_sizes}) {

@@ -151,7 +151,9 @@ Values FrameValues(const runtime::Scene& scene,
     v["unity_MatrixV"] = Mat(camera.view);
     v["unity_MatrixInvV"] = Mat(glm::inverse(camera.view));
     v["unity_MatrixVP"] = Mat(camera.projection * camera.view);
-    v["glstate_matrix_projection"] = Mat(camera.projection);
+    v[pack::kGlobalMatrixProjection] = Mat(camera.projection);
+    v[pack::kGlobalLightSplitsNear] = {0, 1e30f, 1e30f, 1e30f};
+    v[pack::kGlobalLightSplitsFar] = {1e30f, 1e30f, 1e30f, 1e30f};
     for (const auto& [name, value] : CameraValues(camera)) {
         v[name] = value;
     }
@@ -170,7 +172,7 @@ Values FrameValues(const runtime::Scene& scene,
                                    : trilight ? glm::vec4(scene.ambient_ground, 1)
                                               : sky);
     v["unity_IndirectSpecColor"] = Vec(glm::vec4(MeanAmbient(scene), 1));
-    v["glstate_lightmodel_ambient"] = Vec(sky * 0.5f);
+    v[pack::kGlobalLightModelAmbient] = Vec(sky * 0.5f);
     // The reflection probe is the ambient itself (render/reflection_probe.h): a linear float
     // cube (DecodeHDR multiplier 1, exponent 1), one probe (blend weight BoxMin.w = 1), no box
     // projection (ProbePosition.w = 0).
@@ -294,12 +296,13 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
     return v;
 }
 
-Values ObjectValues(const glm::mat4& world) {
+Values ObjectValues(const glm::mat4& world, const glm::mat4& view) {
     // w: -1 for a mirroring transform, so tangent-space bitangents keep their handedness.
     const float mirror = glm::determinant(glm::mat3(world)) < 0 ? -1.0f : 1.0f;
     return {{"unity_ObjectToWorld", Mat(world)},
             {"unity_WorldToObject", Mat(glm::inverse(world))},
-            {"unity_WorldTransformParams", {0, 0, 0, mirror}}};
+            {"unity_WorldTransformParams", {0, 0, 0, mirror}},
+            {pack::kGlobalMatrixTransposeModelView0, Mat(glm::transpose(view * world))}};
 }
 
 const runtime::Light* MainLight(const std::vector<runtime::Light>& lights) {

@@ -40,8 +40,8 @@ Values FrameValues(const runtime::Scene& scene,
 // UnityLighting for one pixel light (nullptr: none, colour 0) and up to four vertex lights.
 Values LightValues(const runtime::Light* light, const std::vector<const runtime::Light*>& vertex);
 
-// UnityPerDraw.
-Values ObjectValues(const glm::mat4& world);
+// UnityPerDraw, and Unity 2018's transposed model-view matrix (`view`: the camera's).
+Values ObjectValues(const glm::mat4& world, const glm::mat4& view);
 
 // The light probe unity_SH* of an object at `center`: the scene's ambient (flat: a constant sky
 // of that radiance, so ShadeSH9 returns it; trilight: the gradient's projection) plus each of

@@ -52,8 +52,6 @@ std::vector<ErrorCase> Cases() {
          DiagCode::kBadPropertyDefault, 3, 16},
         {"range_missing_comma", InProperties("_A (\"A\", Range(0 1)) = 0"),
          DiagCode::kExpectedToken, 3, 18},
-        {"range_min_above_max", InProperties("_A (\"A\", Range(1, 0)) = 0.5"), DiagCode::kBadRange,
-         3, 10},
         {"property_missing_paren", InProperties("_A \"A\", Float) = 1"), DiagCode::kExpectedToken,
          3, 4},
         {"property_missing_default", InProperties("_A (\"A\", Float)\n_B (\"B\", Float) = 1"),

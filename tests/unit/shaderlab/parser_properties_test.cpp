@@ -119,6 +119,19 @@ TEST(Properties, WarningsForOutOfRangeDefaultAndUnknownTexture) {
     EXPECT_EQ(diags.all()[1].code, DiagCode::kUnknownTextureDefault);
 }
 
+// Unity accepts Range(10, 0.1) (Ronja's HSV tutorial): a warning, and a default between the two
+// is in range; one outside both is still reported.
+TEST(Properties, ARangeWhoseMinimumIsAboveItsMaximumIsAWarningAsInUnity) {
+    DiagnosticList diags;
+    ParseProps("_A (\"A\", Range(10, 0.1)) = 1\n_B (\"B\", Range(1, 0)) = 2", &diags);
+    ASSERT_EQ(diags.all().size(), 3u) << Summarize(diags);
+    EXPECT_EQ(diags.all()[0].code, DiagCode::kBadRange);
+    EXPECT_EQ(diags.all()[0].severity, Severity::kWarning);
+    EXPECT_EQ(diags.all()[1].code, DiagCode::kBadRange);
+    EXPECT_EQ(diags.all()[2].code, DiagCode::kDefaultOutOfRange);
+    EXPECT_FALSE(diags.has_errors());
+}
+
 TEST(Properties, UnityAnyAndRectTypesAndDottedAttributes) {
     ParseOutcome out = ParseText(R"(Shader "x" { Properties {
     [TextureStack.Stack] _A ("A", Any) = "white" {}

@@ -101,6 +101,17 @@ inline constexpr const char* kGlobalLightProjectionParams = "_LightProjectionPar
 inline constexpr const char* kGlobalLightMatrix0 = "_LightMatrix0";
 inline constexpr const char* kGlobalSpecColor = "_SpecColor";
 
+// Older UnityShaderVariables.cginc (2018) names, which Unity's engine still sets: the camera's
+// projection (UNITY_MATRIX_P), the ambient (UNITY_LIGHTMODEL_AMBIENT / 2), the transposed
+// model-view matrix per draw (UNITY_MATRIX_T_MV), and the directional shadow cascades' view-depth
+// splits (Kiln's one cascade covers the scene: near (0, inf, inf, inf), far all inf).
+inline constexpr const char* kGlobalMatrixProjection = "glstate_matrix_projection";
+inline constexpr const char* kGlobalLightModelAmbient = "glstate_lightmodel_ambient";
+inline constexpr const char* kGlobalMatrixTransposeModelView0 =
+    "glstate_matrix_transpose_modelview0";
+inline constexpr const char* kGlobalLightSplitsNear = "_LightSplitsNear";
+inline constexpr const char* kGlobalLightSplitsFar = "_LightSplitsFar";
+
 inline constexpr const char* kEngineGlobals[] = {
     kGlobalLightColor0,
     kGlobalWorldSpaceLightPos0,
@@ -116,6 +127,11 @@ inline constexpr const char* kEngineGlobals[] = {
     kGlobalLightShadowData,
     kGlobalLightProjectionParams,
     kGlobalSpecColor,
+    kGlobalMatrixProjection,
+    kGlobalLightModelAmbient,
+    kGlobalMatrixTransposeModelView0,
+    kGlobalLightSplitsNear,
+    kGlobalLightSplitsFar,
     kTextureGBuffer0,
     kTextureGBuffer1,
     kTextureGBuffer2,

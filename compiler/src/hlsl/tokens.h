@@ -1,0 +1,54 @@
+// Tokens of preprocessed HLSL text, for the source rewrites (rewrite.h): identifiers, numbers,
+// strings and operators with their byte ranges; directive lines (#line, #pragma) are skipped.
+// Also the helpers the rewrites share: bracket matching, replacement edits, and the place
+// (#line file and line) of an offset, for the warnings a rewrite gives.
+#ifndef KILN_HLSL_TOKENS_H_
+#define KILN_HLSL_TOKENS_H_
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kiln::hlsl {
+
+struct Token {
+    size_t begin = 0, end = 0;
+    bool ident = false;
+    std::string_view text;
+};
+
+std::vector<Token> Tokenize(const std::string& s);
+
+// A replacement of bytes [begin, end) of the text.
+struct Edit {
+    size_t begin, end;
+    std::string text;
+};
+
+// A warning a rewrite gives, placed by the text's #line directives.
+struct RewriteWarning {
+    std::string file;
+    unsigned line = 0;
+    std::string token;  // the word the message is about (its column on the line)
+    std::string message;
+};
+
+bool IsAssignment(std::string_view op);
+
+// Words that can precede `name ;` without declaring it (return, in, out, static, ...).
+bool IsStatementWord(std::string_view t);
+
+// Index of the bracket that opens the one closing at `close` (`)` or `]` or `}`), or SIZE_MAX.
+size_t MatchBack(const std::vector<Token>& tok, size_t close);
+
+// Index of the bracket that closes the one opening at `open` (`(`, `[` or `{`), or SIZE_MAX.
+size_t MatchForward(const std::vector<Token>& tok, size_t open);
+
+// The file and line of byte `offset` of preprocessed text, from its last `#line N "file"` before
+// the offset and the newlines since.
+RewriteWarning PlaceOf(const std::string& text, size_t offset);
+
+}  // namespace kiln::hlsl
+
+#endif  // KILN_HLSL_TOKENS_H_
