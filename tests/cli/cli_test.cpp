@@ -260,14 +260,14 @@ TEST(Cli, ValidateReportsMaterialErrorsAtTheirPositions) {
 
 TEST(Cli, VariantsReportsExpansionErrorsWithoutCrashing) {
     // Used to segfault: analysis mode merged job diagnostics when no job had been made.
-    const std::string geometry = WriteTemp("geometry.shader", R"(Shader "T/G" { SubShader { Pass {
+    const std::string kernel = WriteTemp("kernel.shader", R"(Shader "T/G" { SubShader { Pass {
     CGPROGRAM
     #pragma vertex v
-    #pragma geometry g
+    #pragma kernel g
     #pragma fragment f
     ENDCG
 } } })");
-    RunResult r = RunKiln("variants " + geometry);
+    RunResult r = RunKiln("variants " + kernel);
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_NE(r.err.find("[K4002]"), std::string::npos) << r.err;
     const std::string many = WriteTemp("many.shader", R"(Shader "T/M" { SubShader { Pass {

@@ -85,7 +85,10 @@ void FillReports(const CompileState& st, CompileOutput& out) {
         }
         std::set<size_t> vs, fs;
         for (size_t t : pu.tasks) {
-            (st.tasks[t].stage == pack::Stage::kVertex ? vs : fs).insert(st.tasks[t].job);
+            if (st.tasks[t].stage == pack::Stage::kVertex)
+                vs.insert(st.tasks[t].job);
+            else if (st.tasks[t].stage == pack::Stage::kFragment)
+                fs.insert(st.tasks[t].job);
         }
         r.unique_vertex = vs.size();
         r.unique_fragment = fs.size();

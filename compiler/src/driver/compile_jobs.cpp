@@ -35,13 +35,13 @@ std::vector<std::string> Identifiers(const std::string& text) {
 // The `#pragma vertex|fragment` of a stage whose function does not exist, with the closest name.
 Diagnostic MissingEntryPoint(const CompileState& st, const StageTask& t) {
     const auto& pr = st.passes[t.pass].pragmas;
-    const variants::EntryPoint& e = t.stage == pack::Stage::kVertex ? *pr.vertex : *pr.fragment;
+    const variants::EntryPoint& e = *pr.Entry(t.stage);
     Diagnostic d{Severity::kError,
                  DiagCode::kEntryPointNotFound,
                  st.shaders[st.passes[t.pass].shader].file->path(),
                  e.range,
-                 std::string(t.stage == pack::Stage::kVertex ? "vertex" : "fragment") +
-                     " entry point '" + e.name + "' is not a function of this program",
+                 std::string(pack::StageName(t.stage)) + " entry point '" + e.name +
+                     "' is not a function of this program",
                  {}};
     d.message += pack::DidYouMean(e.name, t.functions_if_entry_missing);
     return d;
@@ -147,8 +147,7 @@ std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
 }
 
 const std::string& EntryOf(const CompileState& st, const StageTask& t) {
-    const auto& pr = st.passes[t.pass].pragmas;
-    return t.stage == pack::Stage::kVertex ? pr.vertex->name : pr.fragment->name;
+    return st.passes[t.pass].pragmas.Entry(t.stage)->name;
 }
 
 void AppendGlslangLog(CompileState& st,

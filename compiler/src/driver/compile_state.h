@@ -37,7 +37,13 @@ struct PassUnit {
     size_t flat = 0;  // index into ShaderUnit::passes
     variants::PassPragmas pragmas;
     variants::Expansion expansion;
-    std::vector<size_t> tasks;  // StageTask indices, variant-major (vertex, fragment)
+    // StageTask indices, variant-major: per variant one per stage of pragmas.Stages() (vertex,
+    // fragment, then geometry, hull, domain where the program has them).
+    std::vector<size_t> tasks;
+    size_t stride() const { return pragmas.Stages().size(); }
+    size_t TaskOf(size_t variant, size_t stage_slot) const {
+        return tasks[variant * stride() + stage_slot];
+    }
     // A stripped compile's lookups of this pass, and those it does not build (requests.cpp).
     std::vector<const pack::UsageEntry*> requests;
     std::vector<variants::ExcludedRequest> excluded;

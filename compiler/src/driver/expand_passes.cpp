@@ -117,7 +117,7 @@ void CreateTasks(CompileState& st) {
         const ShaderUnit& unit = st.shaders[pu.shader];
         const FlatPass& fp = unit.passes[pu.flat];
         for (pack::VariantKey key : pu.expansion.keys) {
-            for (pack::Stage stage : {pack::Stage::kVertex, pack::Stage::kFragment}) {
+            for (pack::Stage stage : pu.pragmas.Stages()) {
                 hlsl::AssembleInput in;
                 in.file_name = LineName(unit.file->path());
                 in.blocks = fp.blocks;
@@ -129,9 +129,12 @@ void CreateTasks(CompileState& st) {
                 in.undefines = st.options.undefines;
                 in.forced_includes = st.options.forced_includes;
                 in.light_mode = fp.light_mode;
-                const uint32_t skip_flag = stage == pack::Stage::kVertex
-                                               ? pack::kKeywordSetFragmentOnly
-                                               : pack::kKeywordSetVertexOnly;
+                // Unity's _vertex/_fragment keyword sets: the other stages (geometry,
+                // tessellation) see every keyword, as Unity compiles them.
+                const uint32_t skip_flag =
+                    stage == pack::Stage::kVertex     ? pack::kKeywordSetFragmentOnly
+                    : stage == pack::Stage::kFragment ? pack::kKeywordSetVertexOnly
+                                                      : 0u;
                 for (size_t i = 0; i < pu.pragmas.sets.size(); ++i) {
                     const auto& set = pu.pragmas.sets[i];
                     const auto& layout = pu.expansion.layout[i];

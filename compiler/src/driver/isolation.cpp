@@ -39,9 +39,8 @@ std::string Seconds(double s) {
 std::string StageOfPass(const CompileState& st, const StageTask& task) {
     const PassUnit& pu = st.passes[task.pass];
     const ShaderUnit& unit = st.shaders[pu.shader];
-    return std::string(task.stage == pack::Stage::kVertex ? "the vertex" : "the fragment") +
-           " stage of shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label +
-           "\"";
+    return std::string("the ") + pack::StageName(task.stage) + " stage of shader \"" +
+           unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label + "\"";
 }
 
 }  // namespace
@@ -81,8 +80,7 @@ worker::Request StageRequest(const CompileState& st,
     r.kind = kind;
     r.stage = task.stage;
     r.name = st.shaders[pu.shader].file->path();
-    r.entry =
-        task.stage == pack::Stage::kVertex ? pu.pragmas.vertex->name : pu.pragmas.fragment->name;
+    r.entry = pu.pragmas.Entry(task.stage)->name;
     r.include_dirs = paths.dirs;
     r.templates_dir = paths.templates_dir;
     r.debug_info = st.options.debug_info;

@@ -21,7 +21,7 @@ std::map<uint64_t, Ids> ModulesOf(const CompileState& st,
         Ids m{};
         for (size_t stage = 0; stage < 2; ++stage) {
             const std::vector<uint32_t>& words =
-                st.finals[p].at(st.tasks[pu.tasks[2 * v + stage]].job).words;
+                st.finals[p].at(st.tasks[pu.TaskOf(v, stage)].job).words;
             m[stage] = ids.emplace(words, ids.size()).first->second;
         }
         out[pu.expansion.keys[v].bits()] = m;

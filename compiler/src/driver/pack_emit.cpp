@@ -109,7 +109,7 @@ void FinishModules(CompileState& st) {
                          fm.internal ? DiagCode::kInternalError : DiagCode::kSpirvInvalid,
                          unit.file->path(), unit.passes[pu.flat].program->range,
                          fm.error + " (" + VariantName(st, p, t.key) + ", " +
-                             (t.stage == Stage::kVertex ? "vertex" : "fragment") + " stage)");
+                             pack::StageName(t.stage) + " stage)");
         }
     }
 }
@@ -120,9 +120,20 @@ void CheckInterfaces(CompileState& st) {
         const ShaderUnit& unit = st.shaders[pu.shader];
         const FlatPass& fp = unit.passes[pu.flat];
         std::set<std::string> reported;
+        // The fragment stage reads what the last stage before rasterization writes: geometry,
+        // else domain (tessellation evaluation), else vertex.
+        const std::vector<Stage> stages = pu.pragmas.Stages();
+        size_t pre = 0;
+        for (size_t slot = 2; slot < stages.size(); ++slot) {
+            if (stages[slot] == Stage::kGeometry ||
+                (stages[slot] == Stage::kTessEval && stages[pre] != Stage::kGeometry))
+                pre = slot;
+        }
+        const std::string pre_name = pack::StageName(stages[pre]);
+        const variants::EntryPoint& pre_entry = *pu.pragmas.Entry(stages[pre]);
         for (size_t v = 0; v < pu.expansion.keys.size(); ++v) {
-            const spirv::Reflection& vs = FinalFor(st, p, pu.tasks[2 * v]).reflection;
-            const spirv::Reflection& fs = FinalFor(st, p, pu.tasks[2 * v + 1]).reflection;
+            const spirv::Reflection& vs = FinalFor(st, p, pu.TaskOf(v, pre)).reflection;
+            const spirv::Reflection& fs = FinalFor(st, p, pu.TaskOf(v, 1)).reflection;
             for (const spirv::InterfaceVar& in : fs.interface) {
                 if (in.direction != 0 || in.location == ~0u)
                     continue;
@@ -134,23 +145,24 @@ void CheckInterfaces(CompileState& st) {
                 std::string msg;
                 if (!match) {
                     msg = "fragment input " + (in.semantic.empty() ? in.name : in.semantic) +
-                          " (location " + std::to_string(in.location) +
-                          ") is not written by the vertex shader";
+                          " (location " + std::to_string(in.location) + ") is not written by the " +
+                          pre_name + " shader";
                 } else if (!in.semantic.empty() && !match->semantic.empty() &&
                            in.semantic != match->semantic) {
-                    msg = "fragment input " + in.semantic + " and vertex output " +
+                    msg = "fragment input " + in.semantic + " and " + pre_name + " output " +
                           match->semantic + " share location " + std::to_string(in.location) +
-                          "; declare the vertex outputs and fragment inputs in the same order";
+                          "; declare the " + pre_name +
+                          " outputs and fragment inputs in the same order";
                 } else if (match->vecsize < in.vecsize) {
                     msg = "fragment input " + in.semantic + " has " + std::to_string(in.vecsize) +
-                          " components but the vertex shader writes " +
+                          " components but the " + pre_name + " shader writes " +
                           std::to_string(match->vecsize);
                 }
                 if (!msg.empty() && reported.insert(msg).second) {
                     st.diags
                         .Error(DiagCode::kStageInterfaceMismatch, unit.file->path(),
                                pu.pragmas.fragment->range, msg)
-                        .notes.push_back({unit.file->path(), pu.pragmas.vertex->range,
+                        .notes.push_back({unit.file->path(), pre_entry.range,
                                           "in " + VariantName(st, p, pu.expansion.keys[v])});
                 }
             }
@@ -168,8 +180,9 @@ void CheckInterfaces(CompileState& st) {
                         }
                     }
                     const std::string msg = "uniform block '" + a.name +
-                                            "' has a different layout in the vertex and fragment "
-                                            "stages; declare the same globals for both stages";
+                                            "' has a different layout in the " + pre_name +
+                                            " and fragment stages; declare the same globals for "
+                                            "both stages";
                     if (!same && reported.insert(msg).second) {
                         st.diags.Error(DiagCode::kBlockLayoutMismatch, unit.file->path(),
                                        fp.program->range, msg);
@@ -370,13 +383,23 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
             const uint32_t pass_index = static_cast<uint32_t>(b.passes.size());
             std::vector<pack::VariantRec> pass_variants;
             for (size_t v = 0; v < pu.expansion.keys.size(); ++v) {
-                const FinalModule& vs = FinalFor(st, p, pu.tasks[2 * v]);
-                const FinalModule& fs = FinalFor(st, p, pu.tasks[2 * v + 1]);
+                const FinalModule& vs = FinalFor(st, p, pu.TaskOf(v, 0));
+                const FinalModule& fs = FinalFor(st, p, pu.TaskOf(v, 1));
                 pack::VariantRec vr;
                 vr.pass = pass_index;
                 vr.key = pu.expansion.keys[v].bits();
                 vr.vertex_module = b.AddModule(Stage::kVertex, vs.words, vs.reflection);
                 vr.fragment_module = b.AddModule(Stage::kFragment, fs.words, fs.reflection);
+                pack::VariantStagesRec extra;
+                const std::vector<Stage> stages = pu.pragmas.Stages();
+                for (size_t slot = 2; slot < stages.size(); ++slot) {
+                    const FinalModule& m = FinalFor(st, p, pu.TaskOf(v, slot));
+                    const uint32_t index = b.AddModule(stages[slot], m.words, m.reflection);
+                    (stages[slot] == Stage::kGeometry      ? extra.geometry_module
+                     : stages[slot] == Stage::kTessControl ? extra.tess_control_module
+                                                           : extra.tess_eval_module) = index;
+                }
+                vr.stages = b.AddStages(extra);
                 pass_variants.push_back(vr);
             }
             std::vector<variants::KeywordAlias> aliases;

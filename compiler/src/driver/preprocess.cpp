@@ -36,7 +36,7 @@ std::vector<std::string> KeyParts(const CompileState& st, const StageTask& t) {
                 (o.precision == Precision::kRelaxed ? "r"
                  : o.precision == Precision::kHalf  ? "h"
                                                     : ""),
-            t.stage == pack::Stage::kVertex ? "vert" : "frag", EntryOf(st, t)};
+            pack::StageName(t.stage), EntryOf(st, t)};
 }
 
 const std::string& ShaderOf(const CompileState& st, const StageTask& t) {
@@ -160,8 +160,7 @@ std::vector<size_t> Leaders(const CompileState& st) {
     std::vector<std::string> keys(st.tasks.size());
     ParallelFor(st.tasks.size(), st.options.jobs, [&](size_t i) {
         const StageTask& t = st.tasks[i];
-        keys[i] = HashKey({ShaderOf(st, t), t.stage == pack::Stage::kVertex ? "vert" : "frag",
-                           EntryOf(st, t), t.source});
+        keys[i] = HashKey({ShaderOf(st, t), pack::StageName(t.stage), EntryOf(st, t), t.source});
     });
     std::vector<size_t> leader(st.tasks.size());
     std::unordered_map<std::string, size_t> first;

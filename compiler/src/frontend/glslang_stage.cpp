@@ -15,7 +15,19 @@ namespace {
 constexpr int kDefaultVersion = 100;
 
 EShLanguage Language(pack::Stage stage) {
-    return stage == pack::Stage::kVertex ? EShLangVertex : EShLangFragment;
+    switch (stage) {
+        case pack::Stage::kVertex:
+            return EShLangVertex;
+        case pack::Stage::kFragment:
+            return EShLangFragment;
+        case pack::Stage::kGeometry:
+            return EShLangGeometry;
+        case pack::Stage::kTessControl:
+            return EShLangTessControl;
+        case pack::Stage::kTessEval:
+            return EShLangTessEvaluation;
+    }
+    return EShLangVertex;
 }
 
 EShMessages Messages() {

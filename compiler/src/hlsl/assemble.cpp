@@ -8,6 +8,23 @@
 namespace kiln::hlsl {
 namespace {
 
+// Unity's SHADER_STAGE_* macro of the stage being compiled.
+const char* StageMacro(pack::Stage stage) {
+    switch (stage) {
+        case pack::Stage::kVertex:
+            return "SHADER_STAGE_VERTEX";
+        case pack::Stage::kFragment:
+            return "SHADER_STAGE_FRAGMENT";
+        case pack::Stage::kGeometry:
+            return "SHADER_STAGE_GEOMETRY";
+        case pack::Stage::kTessControl:
+            return "SHADER_STAGE_HULL";
+        case pack::Stage::kTessEval:
+            return "SHADER_STAGE_DOMAIN";
+    }
+    return "SHADER_STAGE_VERTEX";
+}
+
 using Macros = std::vector<std::pair<std::string, std::string>>;
 
 bool IsCgProgram(const AssembleInput& in) {
@@ -61,7 +78,7 @@ Macros PredefinedMacros(const AssembleInput& in) {
         {"SHADER_API_DESKTOP", "1"},
         {"UNITY_VERSION", std::to_string(in.unity_version)},
         {"SHADER_TARGET", std::to_string(in.shader_target)},
-        {in.stage == pack::Stage::kVertex ? "SHADER_STAGE_VERTEX" : "SHADER_STAGE_FRAGMENT", "1"},
+        {StageMacro(in.stage), "1"},
         // Unity's graphics settings for desktop (tier 3) defaults, which its compiler passes as
         // macros: Standard shader quality High, reflection-probe box projection and blending,
         // detail normal maps, deferred reflections, light probe proxy volumes, RGBM lightmaps.

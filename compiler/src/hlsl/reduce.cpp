@@ -82,8 +82,15 @@ std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& dire
             continue;
         }
         if (c == '"') {
+            const size_t start = i + 1;
             while (i + 1 < s.size() && s[i + 1] != '"' && s[i + 1] != '\n')
                 ++i;
+            // A string naming a function keeps it: a hull shader's
+            // [patchconstantfunc("PatchConstants")] is its only reference.
+            const std::string word = s.substr(start, i + 1 - start);
+            if (!word.empty() && IdentStart(word[0]) &&
+                std::all_of(word.begin(), word.end(), IdentChar))
+                cur.idents.insert(word);
             ++i;
             continue;
         }

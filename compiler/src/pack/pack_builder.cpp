@@ -91,6 +91,21 @@ SectionData Records(SectionTag tag, const std::vector<Rec>& recs) {
 
 }  // namespace
 
+uint32_t PackBuilder::AddStages(const VariantStagesRec& r) {
+    if (r.geometry_module == kNoModule && r.tess_control_module == kNoModule &&
+        r.tess_eval_module == kNoModule)
+        return 0;
+    for (size_t i = 0; i < stages_.size(); ++i) {
+        const VariantStagesRec& o = stages_[i];
+        if (o.geometry_module == r.geometry_module &&
+            o.tess_control_module == r.tess_control_module &&
+            o.tess_eval_module == r.tess_eval_module)
+            return static_cast<uint32_t>(i + 1);
+    }
+    stages_.push_back(r);
+    return static_cast<uint32_t>(stages_.size());
+}
+
 std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
     meta.module_count = module_count();
     meta.variant_count = static_cast<uint32_t>(variants.size());
@@ -107,6 +122,8 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
     sections.push_back(Records(SectionTag::kVariants, variants));
     if (!aliases.empty())
         sections.push_back(Records(SectionTag::kKeywordAliases, aliases));
+    if (!stages_.empty())
+        sections.push_back(Records(SectionTag::kVariantStages, stages_));
     sections.push_back(Records(SectionTag::kModules, modules_));
     sections.push_back(Records(SectionTag::kInterface, interface_));
     sections.push_back(Records(SectionTag::kBlocks, blocks_));

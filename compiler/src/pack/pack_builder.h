@@ -37,6 +37,10 @@ class PackBuilder {
     std::vector<pack::VariantRec> variants;      // must be sorted by (pass, key) before Finish
     std::vector<pack::KeywordAliasRec> aliases;  // sorted by (set, from); written when any
 
+    // VariantRec::stages for a variant with these geometry/tessellation modules: 0 when it has
+    // none, else 1 + the index of an identical record (added unless one exists).
+    uint32_t AddStages(const pack::VariantStagesRec& stages);
+
     uint32_t module_count() const { return static_cast<uint32_t>(modules_.size()); }
 
     // Serializes everything, with the checksum filled in.
@@ -53,6 +57,7 @@ class PackBuilder {
     std::vector<pack::BlockRec> blocks_;
     std::vector<pack::MemberRec> members_;
     std::vector<pack::ResourceRec> resources_;
+    std::vector<pack::VariantStagesRec> stages_;
 };
 
 }  // namespace kiln::pack_builder

@@ -49,8 +49,7 @@ std::string ProgramView(const ProgramText& p) {
                          (p.keywords.empty() ? "(none)" : pack::JoinKeywords(p.keywords));
     if (p.variants > 1)
         header += " (and " + std::to_string(p.variants - 1) + " more variants)";
-    header += std::string(", ") + (p.stage == pack::Stage::kVertex ? "vertex" : "fragment") +
-              " stage, entry " + p.entry + "\n";
+    header += std::string(", ") + pack::StageName(p.stage) + " stage, entry " + p.entry + "\n";
     return header + CompactProgramText(p.text);
 }
 

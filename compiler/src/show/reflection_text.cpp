@@ -70,7 +70,7 @@ const char* DimName(uint32_t dim) {
 nlohmann::ordered_json ReflectionJson(const pack::Pack& pack, const pack::ModuleRec& m) {
     using pack::SectionTag;
     nlohmann::ordered_json j;
-    j["stage"] = m.stage == uint32_t(pack::Stage::kVertex) ? "vertex" : "fragment";
+    j["stage"] = m.stage < pack::kStageCount ? pack::StageName(pack::Stage(m.stage)) : "?";
     j["inputs"] = nlohmann::ordered_json::array();
     j["outputs"] = nlohmann::ordered_json::array();
     for (uint32_t i = 0; i < m.interface_count; ++i) {

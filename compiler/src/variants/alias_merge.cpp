@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace kiln::variants {
 namespace {
 
-using Modules = std::pair<uint32_t, uint32_t>;  // (vertex, fragment)
+// (vertex, fragment, the pack's record of the other stages: equal records are equal modules)
+using Modules = std::tuple<uint32_t, uint32_t, uint32_t>;
 // A variant seen from one keyword set: its key with that set's choice cleared, and its modules.
 using Entry = std::pair<uint64_t, Modules>;
 
@@ -24,7 +26,7 @@ std::vector<KeywordAlias> MergeRedundantKeywords(const std::vector<KeywordSet>& 
                                                  std::vector<pack::VariantRec>& variants) {
     std::map<uint64_t, Modules> by_key;
     for (const pack::VariantRec& v : variants)
-        by_key[v.key] = {v.vertex_module, v.fragment_module};
+        by_key[v.key] = {v.vertex_module, v.fragment_module, v.stages};
     std::vector<KeywordAlias> aliases;
     for (size_t s = 0; s < sets.size() && s < layout.size(); ++s) {
         const SetLayout& l = layout[s];

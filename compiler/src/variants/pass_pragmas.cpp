@@ -43,8 +43,7 @@ const char* const kShortcutNames[] = {
     "multi_compile_particles"};
 
 // Entry-point pragmas of stages Kiln does not compile.
-const std::set<std::string> kOtherStages = {"geometry", "hull",   "domain",
-                                            "surface",  "kernel", "raytracing"};
+const std::set<std::string> kOtherStages = {"surface", "kernel", "raytracing"};
 
 bool IsIdentifier(const std::string& s) {
     if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) {
@@ -222,6 +221,16 @@ struct State {
             return Entry(p, out.vertex);
         if (p.name == "fragment")
             return Entry(p, out.fragment);
+        // As in Unity, a geometry stage needs shader model 4.0 and tessellation 4.6: the pragma
+        // raises SHADER_TARGET to it.
+        if (p.name == "geometry") {
+            required_target = std::max(required_target, 40);
+            return Entry(p, out.geometry);
+        }
+        if (p.name == "hull" || p.name == "domain") {
+            required_target = std::max(required_target, 46);
+            return Entry(p, p.name == "hull" ? out.hull : out.domain);
+        }
         if (p.name == "target")
             return Target(p);
         if (p.name == "require")
@@ -235,9 +244,11 @@ struct State {
         if (p.name == "exclude_renderers")
             return Renderers(p, out.exclude_renderers);
         if (kOtherStages.count(p.name)) {
-            diags.Error(DiagCode::kUnsupportedStage, file, p.range,
-                        "'#pragma " + p.name +
-                            "' is not supported: Kiln compiles vertex and fragment stages only");
+            diags.Error(
+                DiagCode::kUnsupportedStage, file, p.range,
+                "'#pragma " + p.name +
+                    "' is not supported: Kiln compiles vertex, fragment, geometry, hull and "
+                    "domain stages");
             return;
         }
         if (KeywordPragma(p) || kIgnoredPragmas.count(p.name))
@@ -257,9 +268,9 @@ struct State {
     // Every pragma name Kiln reads, for the typo check.
     static const std::vector<std::string>& KnownPragmas() {
         static const std::vector<std::string> names = [] {
-            std::vector<std::string> n = {"vertex",           "fragment",      "target",
-                                          "require",          "skip_variants", "only_renderers",
-                                          "exclude_renderers"};
+            std::vector<std::string> n = {
+                "vertex", "fragment", "geometry",      "hull",           "domain",
+                "target", "require",  "skip_variants", "only_renderers", "exclude_renderers"};
             n.insert(n.end(), kIgnoredPragmas.begin(), kIgnoredPragmas.end());
             n.insert(n.end(), kOtherStages.begin(), kOtherStages.end());
             for (const char* base : {"multi_compile", "shader_feature"}) {
@@ -427,6 +438,13 @@ PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& b
     if (!st.out.fragment) {
         diags.Error(DiagCode::kMissingEntryPoint, file, where,
                     "program has no '#pragma fragment' naming its fragment shader");
+    }
+    if (st.out.hull.has_value() != st.out.domain.has_value()) {
+        const EntryPoint& given = st.out.hull ? *st.out.hull : *st.out.domain;
+        diags.Error(DiagCode::kMissingEntryPoint, file, given.range,
+                    std::string("tessellation needs both stages: program has '#pragma ") +
+                        (st.out.hull ? "hull" : "domain") + "' but no '#pragma " +
+                        (st.out.hull ? "domain" : "hull") + "'");
     }
     for (const auto& a : st.out.skip_variants) {
         if (!st.keyword_origin.count(a.text)) {

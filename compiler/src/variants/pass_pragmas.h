@@ -50,6 +50,27 @@ struct EntryPoint {
 
 struct PassPragmas {
     std::optional<EntryPoint> vertex, fragment;
+    // `#pragma geometry`, `#pragma hull` and `#pragma domain` (hull and domain come together).
+    std::optional<EntryPoint> geometry, hull, domain;
+
+    // The entry point of a stage (nullptr: the program has none).
+    const EntryPoint* Entry(pack::Stage s) const {
+        const std::optional<EntryPoint>* slots[] = {&vertex, &fragment, &geometry, &hull, &domain};
+        const std::optional<EntryPoint>& e = *slots[static_cast<size_t>(s)];
+        return e ? &*e : nullptr;
+    }
+    // The stages the program compiles, in the order of a variant's tasks: vertex, fragment, then
+    // geometry, hull and domain where given.
+    std::vector<pack::Stage> Stages() const {
+        std::vector<pack::Stage> out = {pack::Stage::kVertex, pack::Stage::kFragment};
+        if (geometry)
+            out.push_back(pack::Stage::kGeometry);
+        if (hull && domain) {
+            out.push_back(pack::Stage::kTessControl);
+            out.push_back(pack::Stage::kTessEval);
+        }
+        return out;
+    }
     int shader_target = 25;  // SHADER_TARGET: 25 unless `#pragma target`
     std::vector<KeywordSet> sets;
     std::vector<KeywordRule> rules;  // from built-in shortcuts

@@ -230,7 +230,7 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
                 r.kind = static_cast<RequestKind>(x);
                 return true;
             case kStage:
-                if (!ToU8(b, x) || x > uint8_t(pack::Stage::kFragment))
+                if (!ToU8(b, x) || x >= pack::kStageCount)
                     return false;
                 r.stage = static_cast<pack::Stage>(x);
                 return true;

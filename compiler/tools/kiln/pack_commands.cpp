@@ -114,10 +114,20 @@ nlohmann::json InfoJson(const Pack& p) {
             nlohmann::json variants = nlohmann::json::array();
             for (uint32_t v = pr.first_variant; v < pr.first_variant + pr.variant_count; ++v) {
                 const VariantRec vr = p.Variant(v).value();
-                variants.push_back({{"key", vr.key},
-                                    {"keywords", p.KeywordsOf(i, VariantKey(vr.key))},
-                                    {"vertex_module", vr.vertex_module},
-                                    {"fragment_module", vr.fragment_module}});
+                nlohmann::json variant = {{"key", vr.key},
+                                          {"keywords", p.KeywordsOf(i, VariantKey(vr.key))},
+                                          {"vertex_module", vr.vertex_module},
+                                          {"fragment_module", vr.fragment_module}};
+                if (const Result<VariantStagesRec> st = p.Stages(vr); st && vr.stages != 0) {
+                    const auto put = [&](const char* name, uint32_t m) {
+                        if (m != kNoModule)
+                            variant[name] = m;
+                    };
+                    put("geometry_module", st.value().geometry_module);
+                    put("hull_module", st.value().tess_control_module);
+                    put("domain_module", st.value().tess_eval_module);
+                }
+                variants.push_back(std::move(variant));
             }
             passes.push_back({{"pass", PassLabel(p, i)},
                               {"name", p.String(pr.name)},

@@ -23,17 +23,18 @@ namespace kiln::pack {
 namespace {
 
 constexpr SectionTag kAllTags[] = {
-    SectionTag::kStrings,    SectionTag::kMeta,       SectionTag::kShaders,
-    SectionTag::kProperties, SectionTag::kAttributes, SectionTag::kPasses,
-    SectionTag::kTags,       SectionTag::kStates,     SectionTag::kKeywordSets,
-    SectionTag::kKeywords,   SectionTag::kVariants,   SectionTag::kModules,
-    SectionTag::kSpirv,      SectionTag::kInterface,  SectionTag::kBlocks,
-    SectionTag::kMembers,    SectionTag::kResources,  SectionTag::kKeywordAliases,
+    SectionTag::kStrings,       SectionTag::kMeta,       SectionTag::kShaders,
+    SectionTag::kProperties,    SectionTag::kAttributes, SectionTag::kPasses,
+    SectionTag::kTags,          SectionTag::kStates,     SectionTag::kKeywordSets,
+    SectionTag::kKeywords,      SectionTag::kVariants,   SectionTag::kModules,
+    SectionTag::kSpirv,         SectionTag::kInterface,  SectionTag::kBlocks,
+    SectionTag::kMembers,       SectionTag::kResources,  SectionTag::kKeywordAliases,
+    SectionTag::kVariantStages,
 };
 
 // Sections a pack may leave out (later minor versions' additions); absent means empty.
 bool Optional(SectionTag tag) {
-    return tag == SectionTag::kKeywordAliases;
+    return tag == SectionTag::kKeywordAliases || tag == SectionTag::kVariantStages;
 }
 
 // Encoded record size per section; 0 for raw byte sections.
@@ -74,6 +75,8 @@ size_t RecordSizeOf(SectionTag tag) {
             return RecordSize<ResourceRec>();
         case SectionTag::kKeywordAliases:
             return RecordSize<KeywordAliasRec>();
+        case SectionTag::kVariantStages:
+            return RecordSize<VariantStagesRec>();
     }
     return 0;
 }
@@ -265,6 +268,7 @@ Status Pack::Validate() {
         kHeaderSize + uint64_t{header_.section_count} * kSectionEntrySize > size) {
         return Corrupt("section table does not fit in the file");
     }
+    static_assert(std::size(kAllTags) == kSectionSlots, "a slot for every section tag");
     bool seen[kSectionSlots] = {};
     for (uint32_t i = 0; i < header_.section_count; ++i) {
         ByteReader r(
@@ -389,9 +393,27 @@ Status Pack::Validate() {
                 return fail("PASS", i);
         }
     }
+    // A module of the stage a slot names, or (where `optional`) none.
+    const auto stage_ok = [&](uint32_t module, Stage stage, bool optional) {
+        if (module == kNoModule)
+            return optional;
+        return module < n_mods &&
+               Record<ModuleRec>(SectionTag::kModules, module).stage == uint32_t(stage);
+    };
+    const uint32_t n_stages = Count(SectionTag::kVariantStages);
+    for (uint32_t i = 0; i < n_stages; ++i) {
+        const auto r = Record<VariantStagesRec>(SectionTag::kVariantStages, i);
+        if (!stage_ok(r.geometry_module, Stage::kGeometry, true) ||
+            !stage_ok(r.tess_control_module, Stage::kTessControl, true) ||
+            !stage_ok(r.tess_eval_module, Stage::kTessEval, true) ||
+            (r.tess_control_module == kNoModule) != (r.tess_eval_module == kNoModule)) {
+            return fail("VSTG", i);
+        }
+    }
     for (uint32_t i = 0; i < n_vars; ++i) {
         const VariantRec v = Record<VariantRec>(SectionTag::kVariants, i);
-        if (v.pass >= n_passes || v.vertex_module >= n_mods || v.fragment_module >= n_mods) {
+        if (v.pass >= n_passes || !stage_ok(v.vertex_module, Stage::kVertex, false) ||
+            !stage_ok(v.fragment_module, Stage::kFragment, false) || v.stages > n_stages) {
             return fail("VARI", i);
         }
         if (i > 0) {
@@ -406,8 +428,7 @@ Status Pack::Validate() {
         const ModuleRec m = Record<ModuleRec>(SectionTag::kModules, i);
         if (m.spirv_offset % 4 != 0 || m.spirv_size % 4 != 0 || m.spirv_size == 0 ||
             m.spirv_offset > spirv_size || m.spirv_size > spirv_size - m.spirv_offset ||
-            m.stage > uint32_t(Stage::kFragment) ||
-            !RangeOk(m.first_interface, m.interface_count, n_io) ||
+            m.stage >= kStageCount || !RangeOk(m.first_interface, m.interface_count, n_io) ||
             !RangeOk(m.first_block, m.block_count, n_blocks) ||
             !RangeOk(m.first_resource, m.resource_count, n_res)) {
             return fail("MODL", i);

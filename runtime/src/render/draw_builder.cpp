@@ -164,7 +164,7 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
                              int shadow_map,
                              Binding& out) {
     const pack::Pack& pack = s_.packs[m.pack]->pack;
-    for (uint32_t module : {v.vertex_module, v.fragment_module}) {
+    for (uint32_t module : pack.ModulesOf(v)) {
         const pack::ModuleRec mod = pack.Module(module).value();
         for (uint32_t r = 0; r < mod.resource_count; ++r) {
             const auto res =
@@ -264,7 +264,7 @@ void DrawBuilder::Uniforms(const pack::Pack& pack,
                            const pack::VariantRec& v,
                            const render::ValueLookup& lookup,
                            Draw& d) {
-    for (uint32_t module : {v.vertex_module, v.fragment_module}) {
+    for (uint32_t module : pack.ModulesOf(v)) {
         const pack::ModuleRec mod = pack.Module(module).value();
         for (uint32_t b = 0; b < mod.block_count; ++b) {
             const auto block =

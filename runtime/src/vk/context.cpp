@@ -207,6 +207,11 @@ Status CreateContext(const ContextOptions& options, Context& out) {
     c.image_cube_array = supported.imageCubeArray == VK_TRUE;
     features.logicOp = supported.logicOp;  // BlendOp LogicalXor and the other logical ops
     c.logic_op = supported.logicOp == VK_TRUE;
+    // Unity's #pragma geometry / hull / domain stages (lavapipe and desktop GPUs have both).
+    features.geometryShader = supported.geometryShader;
+    features.tessellationShader = supported.tessellationShader;
+    c.geometry_shader = supported.geometryShader == VK_TRUE;
+    c.tessellation_shader = supported.tessellationShader == VK_TRUE;
     // VK_KHR_maintenance4 relaxes vertex-output/fragment-input matching: a variant whose
     // fragment stage does not read every interpolator the shared vertex stage writes is valid
     // without it, but the validation layer reports it as a performance warning.

@@ -37,10 +37,12 @@ struct Context {
     VkQueue queue = VK_NULL_HANDLE;
     VkCommandPool command_pool = VK_NULL_HANDLE;
     bool validation = false;
-    bool image_cube_array = false;  // the imageCubeArray feature is enabled
-    bool logic_op = false;          // the logicOp feature is enabled
-    bool shader_float16 = false;    // shaderFloat16 is enabled (--precision half packs)
-    ValidationLog* log = nullptr;   // owned; the messenger's user data
+    bool image_cube_array = false;     // the imageCubeArray feature is enabled
+    bool logic_op = false;             // the logicOp feature is enabled
+    bool shader_float16 = false;       // shaderFloat16 is enabled (--precision half packs)
+    bool geometry_shader = false;      // the geometryShader feature is enabled
+    bool tessellation_shader = false;  // the tessellationShader feature is enabled
+    ValidationLog* log = nullptr;      // owned; the messenger's user data
 };
 
 // Picks a discrete GPU, then an integrated or virtual one, then a CPU device (lavapipe).

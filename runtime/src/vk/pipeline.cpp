@@ -33,8 +33,19 @@ std::optional<Stream> StreamFor(std::string_view semantic) {
 }
 
 VkShaderStageFlags StageBit(uint32_t stage) {
-    return stage == uint32_t(pack::Stage::kVertex) ? VK_SHADER_STAGE_VERTEX_BIT
-                                                   : VK_SHADER_STAGE_FRAGMENT_BIT;
+    switch (pack::Stage(stage)) {
+        case pack::Stage::kVertex:
+            return VK_SHADER_STAGE_VERTEX_BIT;
+        case pack::Stage::kFragment:
+            return VK_SHADER_STAGE_FRAGMENT_BIT;
+        case pack::Stage::kGeometry:
+            return VK_SHADER_STAGE_GEOMETRY_BIT;
+        case pack::Stage::kTessControl:
+            return VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
+        case pack::Stage::kTessEval:
+            return VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
+    }
+    return VK_SHADER_STAGE_VERTEX_BIT;
 }
 
 VkDescriptorType DescriptorType(pack::ResourceKind kind) {
@@ -55,9 +66,9 @@ VkDescriptorType DescriptorType(pack::ResourceKind kind) {
 
 Status CreateLayout(const Context& c,
                     const pack::Pack& pack,
-                    const std::array<pack::ModuleRec, 2>& modules,
+                    const std::vector<pack::ModuleRec>& modules,
                     VariantLayout& out) {
-    // (set, binding) -> layout binding, stages OR-ed across the two modules.
+    // (set, binding) -> layout binding, stages OR-ed across the modules.
     std::map<std::pair<uint32_t, uint32_t>, VkDescriptorSetLayoutBinding> bindings;
     auto add = [&](uint32_t set, uint32_t binding, VkDescriptorType type, uint32_t count,
                    VkShaderStageFlags stage) {
@@ -188,13 +199,35 @@ Status CreatePipeline(const Context& c,
                       ModuleChecker* checker,
                       Pipeline& out) {
     const pack::VariantRec v = pack.Variant(variant).value();
-    const std::array<pack::ModuleRec, 2> modules = {pack.Module(v.vertex_module).value(),
-                                                    pack.Module(v.fragment_module).value()};
+    std::vector<pack::ModuleRec> modules = {pack.Module(v.vertex_module).value(),
+                                            pack.Module(v.fragment_module).value()};
     Pipeline p;
     auto fail = [&](Error e) {
         DestroyPipeline(c, p);
         return Status(std::move(e));
     };
+    // Geometry and tessellation stages (the reader checked each module's stage).
+    const Result<pack::VariantStagesRec> extra = pack.Stages(v);
+    if (!extra)
+        return fail(extra.error());
+    for (uint32_t m : {extra.value().geometry_module, extra.value().tess_control_module,
+                       extra.value().tess_eval_module}) {
+        if (m != pack::kNoModule)
+            modules.push_back(pack.Module(m).value());
+    }
+    const bool tessellated = extra.value().tess_control_module != pack::kNoModule;
+    if (extra.value().geometry_module != pack::kNoModule && !c.geometry_shader) {
+        return fail(Error{DiagCode::kRenderFailed,
+                          std::string("the variant has a geometry stage (#pragma geometry) and "
+                                      "device '") +
+                              c.properties.deviceName + "' has no geometryShader feature"});
+    }
+    if (tessellated && !c.tessellation_shader) {
+        return fail(Error{DiagCode::kRenderFailed,
+                          std::string("the variant has tessellation stages (#pragma hull and "
+                                      "domain) and device '") +
+                              c.properties.deviceName + "' has no tessellationShader feature"});
+    }
     if (Status e = CreateLayout(c, pack, modules, p.layout); !e.ok()) {
         return fail(e.error());
     }
@@ -203,8 +236,8 @@ Status CreatePipeline(const Context& c,
         for (const VkDescriptorSetLayoutBinding& b : p.layout.bindings[s])
             layout.insert({s, b.binding});
     }
-    std::array<std::string, 2> entry_points;
-    for (size_t i = 0; i < 2; ++i) {
+    std::vector<std::string> entry_points(modules.size());
+    for (size_t i = 0; i < modules.size(); ++i) {
         const std::span<const uint8_t> spirv = pack.Spirv(modules[i]);
         std::vector<uint32_t> words(spirv.size() / 4);
         std::memcpy(words.data(), spirv.data(), words.size() * 4);
@@ -263,8 +296,8 @@ Status CreatePipeline(const Context& c,
     input.vertexAttributeDescriptionCount = uint32_t(attributes.size());
     input.pVertexAttributeDescriptions = attributes.data();
 
-    VkPipelineShaderStageCreateInfo stages[2]{};
-    for (size_t i = 0; i < 2; ++i) {
+    std::vector<VkPipelineShaderStageCreateInfo> stages(modules.size());
+    for (size_t i = 0; i < modules.size(); ++i) {
         stages[i].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
         stages[i].stage = VkShaderStageFlagBits(StageBit(modules[i].stage));
         stages[i].module = p.modules[i];
@@ -273,6 +306,13 @@ Status CreatePipeline(const Context& c,
     VkPipelineInputAssemblyStateCreateInfo assembly{
         VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    // Unity tessellates the mesh's triangles: each is a patch of three control points (a hull
+    // shader's InputPatch<T, 3>).
+    VkPipelineTessellationStateCreateInfo tessellation{
+        VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+    tessellation.patchControlPoints = 3;
+    if (tessellated)
+        assembly.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
     VkPipelineViewportStateCreateInfo viewport{
         VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
@@ -335,8 +375,9 @@ Status CreatePipeline(const Context& c,
     dynamic.pDynamicStates = dynamic_states;
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.stageCount = 2;
-    info.pStages = stages;
+    info.stageCount = uint32_t(stages.size());
+    info.pStages = stages.data();
+    info.pTessellationState = tessellated ? &tessellation : nullptr;
     info.pVertexInputState = &input;
     info.pInputAssemblyState = &assembly;
     info.pViewportState = &viewport;

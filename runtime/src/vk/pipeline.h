@@ -80,7 +80,7 @@ struct VariantLayout {
 struct Pipeline {
     VkPipeline pipeline = VK_NULL_HANDLE;
     VariantLayout layout;
-    std::array<VkShaderModule, 2> modules{};
+    std::array<VkShaderModule, pack::kStageCount> modules{};
 };
 
 struct PipelineTargets {

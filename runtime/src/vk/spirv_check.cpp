@@ -13,7 +13,8 @@ constexpr uint32_t kSpirvMagic = 0x07230203;
 constexpr uint32_t kMaxIdBound = 0x3FFFFF;  // SPIR-V's universal limit
 constexpr uint32_t kOpEntryPoint = 15, kOpDecorate = 71;
 constexpr uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34;
-constexpr uint32_t kModelVertex = 0, kModelFragment = 4;
+constexpr uint32_t kModelVertex = 0, kModelTessControl = 1, kModelTessEval = 2, kModelGeometry = 3,
+                   kModelFragment = 4;
 
 Error Bad(const std::string& what) {
     return Error{DiagCode::kBadPack,
@@ -87,10 +88,12 @@ Status ModuleChecker::Check(std::span<const uint32_t> words,
     Interface in;
     if (Status e = ReadInterface(words, in); !e.ok())
         return e;
-    const uint32_t model = stage == pack::Stage::kVertex ? kModelVertex : kModelFragment;
+    // SPIR-V's execution models, by pack::Stage.
+    constexpr uint32_t kModels[pack::kStageCount] = {kModelVertex, kModelFragment, kModelGeometry,
+                                                     kModelTessControl, kModelTessEval};
+    const uint32_t model = kModels[static_cast<uint32_t>(stage)];
     if (in.models.size() != 1 || *in.models.begin() != model) {
-        return Bad(std::string("the module is not one ") +
-                   (stage == pack::Stage::kVertex ? "vertex" : "fragment") + " entry point");
+        return Bad(std::string("the module is not one ") + pack::StageName(stage) + " entry point");
     }
     for (const auto& [id, sb] : in.bindings) {
         if (sb.first >= limits_.maxBoundDescriptorSets) {

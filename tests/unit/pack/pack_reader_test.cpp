@@ -136,12 +136,12 @@ TEST(PackReader, EveryBitFlipIsRejected) {
     }
 }
 
-// Bytes of the KALI section of `b` (the section table read by hand), or b.size() when absent.
-size_t AliasSection(const std::vector<uint8_t>& b) {
+// Bytes of section `tag` of `b` (the section table read by hand), or b.size() when absent.
+size_t SectionAt(const std::vector<uint8_t>& b, const char* tag) {
     const uint32_t sections = b[12] | b[13] << 8 | b[14] << 16 | uint32_t(b[15]) << 24;
     for (uint32_t i = 0; i < sections; ++i) {
         const uint8_t* e = b.data() + kHeaderSize + i * kSectionEntrySize;
-        if (std::equal(e, e + 4, "KALI")) {
+        if (std::equal(e, e + 4, tag)) {
             uint64_t offset = 0;
             for (int k = 7; k >= 0; --k)
                 offset = offset << 8 | e[8 + k];
@@ -151,9 +151,66 @@ size_t AliasSection(const std::vector<uint8_t>& b) {
     return b.size();
 }
 
+// A geometry pass and a tessellated pass: their variants' other stages are in VSTG.
+const std::vector<uint8_t>& StagesPack() {
+    static const std::vector<uint8_t> bytes = [] {
+        DiagnosticList diags;
+        CompileOutput out = CompileShaders({test::DataPath("data/stages/geometry.shader"),
+                                            test::DataPath("data/stages/tessellation.shader")},
+                                           {}, diags);
+        EXPECT_TRUE(out.ok) << test::Brief(diags);
+        return out.pack;
+    }();
+    return bytes;
+}
+
+TEST(PackReader, GeometryAndTessellationModulesAreReadAndChecked) {
+    Pack p;
+    ASSERT_TRUE(kiln::test::OpenInto(StagesPack(), p));
+    ASSERT_EQ(p.Count(SectionTag::kVariantStages), 2u);
+    const auto stages_of = [&](const char* shader) {
+        const PassRec pass = p.Pass(p.Shader(*p.FindShader(shader)).value().first_pass).value();
+        return p.Stages(p.Variant(pass.first_variant).value()).value();
+    };
+    const VariantStagesRec g = stages_of("Test/Geometry");
+    ASSERT_NE(g.geometry_module, kNoModule);
+    EXPECT_EQ(p.Module(g.geometry_module).value().stage, uint32_t(Stage::kGeometry));
+    EXPECT_EQ(g.tess_control_module, kNoModule);
+    const VariantStagesRec t = stages_of("Test/Tessellation");
+    EXPECT_EQ(t.geometry_module, kNoModule);
+    EXPECT_EQ(p.Module(t.tess_control_module).value().stage, uint32_t(Stage::kTessControl));
+    EXPECT_EQ(p.Module(t.tess_eval_module).value().stage, uint32_t(Stage::kTessEval));
+
+    // A VSTG slot naming a module of another stage, half a tessellation pair, a variant naming a
+    // record past the table: each is a corrupt pack.
+    const size_t at = SectionAt(StagesPack(), "VSTG");
+    ASSERT_LT(at + 32, StagesPack().size());
+    for (const auto& [field, value] :
+         std::vector<std::pair<size_t, uint8_t>>{{0, 0}, {16 + 4, 0xff}, {16 + 8, 0xff}}) {
+        std::vector<uint8_t> b = StagesPack();
+        if (value == 0xff) {
+            for (size_t k = 0; k < 4; ++k)
+                b[at + field + k] = 0xff;  // kNoModule for one of the pair
+        } else {
+            for (size_t k = 0; k < 4; ++k)
+                b[at + field + k] = 0;  // module 0: a vertex or fragment module
+        }
+        test::ResealPack(b);
+        const Result<Pack> bad = Pack::Open(b);
+        ASSERT_FALSE(bad) << field;
+        EXPECT_EQ(bad.error().code, DiagCode::kBadPack);
+        EXPECT_NE(bad.error().message.find("VSTG"), std::string::npos) << bad.error().message;
+    }
+    std::vector<uint8_t> b = StagesPack();
+    const size_t vari = SectionAt(b, "VARI");
+    b[vari + 4] = 9;  // VariantRec::stages of the first variant: past the 2 records
+    test::ResealPack(b);
+    ASSERT_FALSE(Pack::Open(b));
+}
+
 TEST(PackReader, KeywordAliasesAreCheckedLikeEveryOtherIndex) {
     const std::vector<uint8_t> good = CompiledPack();
-    const size_t at = AliasSection(good);
+    const size_t at = SectionAt(good, "KALI");
     ASSERT_LT(at + 16, good.size());
     // {set, from, to, reserved}: to == from, to past the set, an unknown set, to an alias.
     for (const auto& [field, value] :
@@ -177,7 +234,8 @@ TEST(PackReader, ForeignAndOtherVersionFilesGetTypedErrors) {
     const Result<Pack> other = Pack::Open(b);
     ASSERT_FALSE(other);
     EXPECT_EQ(other.error().code, DiagCode::kPackVersion);
-    EXPECT_EQ(other.error().message, "pack format 2.1 is not supported (reader knows 1.x)");
+    EXPECT_EQ(other.error().message, "pack format 2." + std::to_string(kFormatMinor) +
+                                         " is not supported (reader knows 1.x)");
     b = CompiledPack();
     b.push_back(0);
     EXPECT_EQ(Pack::Open(b).error().code, DiagCode::kBadPack);

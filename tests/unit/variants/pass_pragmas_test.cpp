@@ -117,9 +117,12 @@ TEST(PassPragmas, RenderersAreRecordedAndWarnWithoutVulkan) {
 }
 
 TEST(PassPragmas, Problems) {
-    EXPECT_EQ(test::Summarize(ReadPragmas("#pragma geometry geom").diags),
-              "K4002 5:1 error: '#pragma geometry' is not supported: Kiln compiles vertex and "
-              "fragment stages only\n");
+    EXPECT_EQ(test::Summarize(ReadPragmas("#pragma kernel k").diags),
+              "K4002 5:1 error: '#pragma kernel' is not supported: Kiln compiles vertex, "
+              "fragment, geometry, hull and domain stages\n");
+    EXPECT_EQ(test::Summarize(ReadPragmas("#pragma hull h").diags),
+              "K4003 5:14 error: tessellation needs both stages: program has '#pragma hull' but "
+              "no '#pragma domain'\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma frobnicate").diags),
               "K4001 5:1 warning: unknown pragma 'frobnicate' is ignored\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma target 9.9").diags),

@@ -17,7 +17,7 @@ namespace kiln::pack {
 
 inline constexpr std::array<char, 4> kMagic = {'K', 'P', 'A', 'K'};
 inline constexpr uint16_t kFormatMajor = 1;  // readers reject another major
-inline constexpr uint16_t kFormatMinor = 1;  // additions readers may ignore (1: KALI)
+inline constexpr uint16_t kFormatMinor = 2;  // additions readers may ignore (1: KALI, 2: VSTG)
 inline constexpr uint32_t kHeaderSize = 32;
 inline constexpr uint32_t kSectionEntrySize = 24;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -48,6 +48,10 @@ enum class SectionTag : uint32_t {
     kResources = FourCC('R', 'S', 'R', 'C'),    // ResourceRec
     // Optional (format 1.1): keyword aliases, KeywordAliasRec sorted by (keyword_set, from).
     kKeywordAliases = FourCC('K', 'A', 'L', 'I'),
+    // Optional (format 1.2): the geometry and tessellation modules of variants that have them,
+    // VariantStagesRec; VariantRec::stages is 1 + an index into it. A reader of format 1.1
+    // refuses these packs (their modules have a stage it does not know), never draws without them.
+    kVariantStages = FourCC('V', 'S', 'T', 'G'),
 };
 
 struct Header {  // 32 bytes
@@ -280,12 +284,40 @@ struct KeywordAliasRec {        // 16 bytes
 
 struct VariantRec {  // 24 bytes
     uint32_t pass = 0;
-    uint32_t reserved = 0;
-    uint64_t key = 0;  // VariantKey bits
+    uint32_t stages = 0;  // 0: vertex and fragment only; n: VSTG record n - 1 has the others
+    uint64_t key = 0;     // VariantKey bits
     uint32_t vertex_module = 0, fragment_module = 0;
 };
 
-enum class Stage : uint32_t { kVertex, kFragment };
+// Unity's stage pragmas: vertex, fragment, geometry, hull (tessellation control), domain
+// (tessellation evaluation).
+enum class Stage : uint32_t { kVertex, kFragment, kGeometry, kTessControl, kTessEval };
+inline constexpr uint32_t kStageCount = 5;
+
+// Unity's pragma name of a stage ("vertex", "fragment", "geometry", "hull", "domain").
+constexpr const char* StageName(Stage s) {
+    switch (s) {
+        case Stage::kVertex:
+            return "vertex";
+        case Stage::kFragment:
+            return "fragment";
+        case Stage::kGeometry:
+            return "geometry";
+        case Stage::kTessControl:
+            return "hull";
+        case Stage::kTessEval:
+            return "domain";
+    }
+    return "?";
+}
+
+inline constexpr uint32_t kNoModule = ~0u;
+
+struct VariantStagesRec {  // 16 bytes
+    uint32_t geometry_module = kNoModule;
+    uint32_t tess_control_module = kNoModule, tess_eval_module = kNoModule;  // both or neither
+    uint32_t reserved = 0;
+};
 
 struct ModuleRec {              // 48 bytes
     uint32_t spirv_offset = 0;  // within SPRV, 4-aligned

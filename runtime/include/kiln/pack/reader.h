@@ -66,6 +66,27 @@ class Pack {
     Result<ShaderRec> Shader(uint32_t i) const { return Get<ShaderRec>(SectionTag::kShaders, i); }
     Result<PassRec> Pass(uint32_t i) const { return Get<PassRec>(SectionTag::kPasses, i); }
     Result<ModuleRec> Module(uint32_t i) const { return Get<ModuleRec>(SectionTag::kModules, i); }
+    // The geometry and tessellation modules of a variant (kNoModule where it has none).
+    Result<VariantStagesRec> Stages(const VariantRec& v) const {
+        if (v.stages == 0)
+            return VariantStagesRec{};
+        return Get<VariantStagesRec>(SectionTag::kVariantStages, v.stages - 1);
+    }
+    // Every module of a variant: vertex, fragment, then geometry, hull and domain where it has
+    // them (an empty list when the stages record cannot be read).
+    std::vector<uint32_t> ModulesOf(const VariantRec& v) const {
+        std::vector<uint32_t> out = {v.vertex_module, v.fragment_module};
+        if (const Result<VariantStagesRec> s = Stages(v); s) {
+            for (uint32_t m : {s.value().geometry_module, s.value().tess_control_module,
+                               s.value().tess_eval_module}) {
+                if (m != kNoModule)
+                    out.push_back(m);
+            }
+        } else {
+            out.clear();
+        }
+        return out;
+    }
     Result<VariantRec> Variant(uint32_t i) const {
         return Get<VariantRec>(SectionTag::kVariants, i);
     }
@@ -106,7 +127,7 @@ class Pack {
     }
 
   private:
-    static constexpr size_t kSectionSlots = 18;
+    static constexpr size_t kSectionSlots = 19;  // every SectionTag (reader.cpp checks)
     template <class Rec>
     Rec Record(SectionTag tag, uint32_t index) const {  // index < Count(tag)
         const SectionEntry& s = sections_[Index(tag)];

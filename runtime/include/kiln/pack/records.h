@@ -120,10 +120,17 @@ constexpr void Visit(V& v, KeywordAliasRec& r) {
 template <class V>
 constexpr void Visit(V& v, VariantRec& r) {
     v(r.pass);
-    v(r.reserved);
+    v(r.stages);
     v(r.key);
     v(r.vertex_module);
     v(r.fragment_module);
+}
+template <class V>
+constexpr void Visit(V& v, VariantStagesRec& r) {
+    v(r.geometry_module);
+    v(r.tess_control_module);
+    v(r.tess_eval_module);
+    v(r.reserved);
 }
 template <class V>
 constexpr void Visit(V& v, ModuleRec& r) {
@@ -207,6 +214,7 @@ static_assert(RecordSize<TagRec>() == 16);
 static_assert(RecordSize<StateRec>() == 24);
 static_assert(RecordSize<KeywordSetRec>() == 24);
 static_assert(RecordSize<KeywordAliasRec>() == 16);
+static_assert(RecordSize<VariantStagesRec>() == 16);
 static_assert(RecordSize<VariantRec>() == 24);
 static_assert(RecordSize<ModuleRec>() == 48);
 static_assert(RecordSize<InterfaceVarRec>() == 32);
