@@ -110,6 +110,23 @@
 #define UNITY_DITHER_CROSSFADE_COORDS_IDX(idx)
 #define UNITY_TRANSFER_DITHER_CROSSFADE(o, v)
 #define UNITY_TRANSFER_DITHER_CROSSFADE_HPOS(o, hpos)
+
+// LOD cross-fade (Unity's LOD_FADE_CROSSFADE keyword, a LOD Group's "Cross Fade" mode): the
+// pixel is kept or clipped by comparing the fade amount unity_LODFade.x with a 4x4 dither mask
+// tiled over the screen (`vpos`: the pixel position, VPOS), as UnityCG.cginc does; a negative
+// fade is the incoming LOD, whose mask is inverted. unity_DitherMask is an engine texture (Kiln's
+// runtime draws no LOD groups, so it never asks for the keyword).
+#ifdef LOD_FADE_CROSSFADE
+#define UNITY_APPLY_DITHER_CROSSFADE(vpos) UnityApplyDitherCrossFade(vpos)
+sampler2D unity_DitherMask;
+void UnityApplyDitherCrossFade(float2 vpos) {
+    vpos /= 4;  // the dither mask texture is 4x4
+    float mask = tex2D(unity_DitherMask, vpos).a;
+    float sgn = unity_LODFade.x > 0 ? 1.0f : -1.0f;
+    clip(unity_LODFade.x - mask * sgn);
+}
+#else
 #define UNITY_APPLY_DITHER_CROSSFADE(vpos)
+#endif
 
 #endif  // UNITY_CG_FOG_INCLUDED

@@ -2,6 +2,7 @@
 // worker (or taken from the cache once spirv-val accepts the entry), and glslang's messages
 // turned into diagnostics.
 #include <atomic>
+#include <regex>
 #include <set>
 
 #include "driver/cache.h"
@@ -14,6 +15,21 @@
 
 namespace kiln::driver {
 namespace {
+
+// The names the program declares as functions (`type name(` where the type is a word other than
+// a statement keyword), for an unknown function's message.
+std::vector<std::string> FunctionNames(const std::string& text) {
+    static const std::regex kDeclaration(R"(\b([A-Za-z_]\w*)\s+([A-Za-z_]\w*)\s*\()");
+    static const std::set<std::string> kNotTypes = {"return", "else", "case", "new", "delete",
+                                                    "throw",  "do",   "in",   "out", "inout"};
+    std::set<std::string> names;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), kDeclaration);
+         it != std::sregex_iterator(); ++it) {
+        if (!kNotTypes.count((*it)[1].str()))
+            names.insert((*it)[2].str());
+    }
+    return {names.begin(), names.end()};
+}
 
 // The distinct identifiers of a program text, for "did you mean" on an unknown name.
 std::vector<std::string> Identifiers(const std::string& text) {
@@ -101,7 +117,8 @@ void CompileJob(CompileState& st, Job& job) {
             job.diags.push_back(std::move(*failure));
             return;
         }
-        AppendMessages(st, OwnMessages(reduced_log, o.response.info_log), job.diags, &task.reduced);
+        AppendMessages(st, OwnMessages(reduced_log, o.response.info_log), job.diags, &task.reduced,
+                       &request.source);
         if (o.response.ok || job.diags.empty()) {
             job.diags.push_back({Severity::kInternal,
                                  DiagCode::kInternalError,
@@ -162,7 +179,8 @@ void AppendGlslangLog(CompileState& st,
 void AppendMessages(CompileState& st,
                     const std::vector<frontend::GlslangMessage>& messages,
                     std::vector<Diagnostic>& out,
-                    const std::string* program) {
+                    const std::string* program,
+                    const std::string* unreduced) {
     if (messages.empty())
         return;
     auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
@@ -172,8 +190,17 @@ void AppendMessages(CompileState& st,
     for (const std::string& dir : paths.dirs)
         context.include_search.push_back(dir + " (-I)");
     context.include_search.push_back(paths.templates_dir + " (Kiln's templates)");
-    if (program != nullptr)
+    if (program != nullptr) {
         context.identifiers = [program] { return Identifiers(*program); };
+        context.functions = [program, unreduced] {
+            std::vector<std::string> names = FunctionNames(*program);
+            if (unreduced != nullptr) {  // functions the reduction left out, too
+                const std::vector<std::string> more = FunctionNames(*unreduced);
+                names.insert(names.end(), more.begin(), more.end());
+            }
+            return names;
+        };
+    }
     for (const auto& m : messages)
         out.push_back(frontend::ToDiagnostic(m, lookup, context));
 }

@@ -115,10 +115,13 @@ void AppendGlslangLog(CompileState& st,
                       std::vector<Diagnostic>& out,
                       const std::string* program = nullptr);
 // The same for messages parsed already (frontend::ParseInfoLog).
+// `unreduced`, when given, is the program before reduction (its functions feed the suggestion for
+// an unknown function).
 void AppendMessages(CompileState& st,
                     const std::vector<frontend::GlslangMessage>& messages,
                     std::vector<Diagnostic>& out,
-                    const std::string* program = nullptr);
+                    const std::string* program = nullptr,
+                    const std::string* unreduced = nullptr);
 inline void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
     if (o.progress)
         o.progress(phase, done, total);

@@ -82,8 +82,14 @@ void ReportJobDiagnostics(CompileState& st) {
                 d.message +=
                     " (" + where + ", variant " + variants::DescribeKeywords(smallest) + ")";
             }
-            if (total <= 1)
+            if (total <= 1) {
+                // One variant: no counts, but which pass fails, where that is not plain from the
+                // place (the error is in an include file, or the shader has several passes).
+                if (d.file != unit.file->path() || unit.passes.size() > 1)
+                    d.notes.push_back(
+                        {unit.file->path(), fp.program->range, verb + " in " + where});
                 continue;
+            }
             std::string note;
             if (keys.size() == total) {
                 note = verb + " in all " + std::to_string(total) + " variants of " + where;

@@ -93,6 +93,135 @@ uint32_t AssignedGlobal(const GlslangMessage& m, std::string_view line, uint32_t
     return col;
 }
 
+// HLSL's intrinsic functions (Microsoft's "Intrinsic Functions" list, the ones glslang's HLSL front
+// end knows), plus the legacy sampler functions Unity's shaders call.
+const char* const kHlslIntrinsics[] = {"abort",
+                                       "abs",
+                                       "acos",
+                                       "all",
+                                       "AllMemoryBarrier",
+                                       "AllMemoryBarrierWithGroupSync",
+                                       "any",
+                                       "asdouble",
+                                       "asfloat",
+                                       "asin",
+                                       "asint",
+                                       "asuint",
+                                       "atan",
+                                       "atan2",
+                                       "ceil",
+                                       "clamp",
+                                       "clip",
+                                       "cos",
+                                       "cosh",
+                                       "countbits",
+                                       "cross",
+                                       "ddx",
+                                       "ddx_coarse",
+                                       "ddx_fine",
+                                       "ddy",
+                                       "ddy_coarse",
+                                       "ddy_fine",
+                                       "degrees",
+                                       "determinant",
+                                       "DeviceMemoryBarrier",
+                                       "DeviceMemoryBarrierWithGroupSync",
+                                       "distance",
+                                       "dot",
+                                       "dst",
+                                       "EvaluateAttributeAtCentroid",
+                                       "EvaluateAttributeAtSample",
+                                       "EvaluateAttributeSnapped",
+                                       "exp",
+                                       "exp2",
+                                       "f16tof32",
+                                       "f32tof16",
+                                       "faceforward",
+                                       "firstbithigh",
+                                       "firstbitlow",
+                                       "floor",
+                                       "fma",
+                                       "fmod",
+                                       "frac",
+                                       "frexp",
+                                       "fwidth",
+                                       "GetRenderTargetSampleCount",
+                                       "GetRenderTargetSamplePosition",
+                                       "GroupMemoryBarrier",
+                                       "GroupMemoryBarrierWithGroupSync",
+                                       "InterlockedAdd",
+                                       "InterlockedAnd",
+                                       "InterlockedCompareExchange",
+                                       "InterlockedCompareStore",
+                                       "InterlockedExchange",
+                                       "InterlockedMax",
+                                       "InterlockedMin",
+                                       "InterlockedOr",
+                                       "InterlockedXor",
+                                       "isfinite",
+                                       "isinf",
+                                       "isnan",
+                                       "ldexp",
+                                       "length",
+                                       "lerp",
+                                       "lit",
+                                       "log",
+                                       "log10",
+                                       "log2",
+                                       "mad",
+                                       "max",
+                                       "min",
+                                       "modf",
+                                       "msad4",
+                                       "mul",
+                                       "noise",
+                                       "normalize",
+                                       "pow",
+                                       "radians",
+                                       "rcp",
+                                       "reflect",
+                                       "refract",
+                                       "reversebits",
+                                       "round",
+                                       "rsqrt",
+                                       "saturate",
+                                       "sign",
+                                       "sin",
+                                       "sincos",
+                                       "sinh",
+                                       "smoothstep",
+                                       "sqrt",
+                                       "step",
+                                       "tan",
+                                       "tanh",
+                                       "tex1D",
+                                       "tex1Dbias",
+                                       "tex1Dgrad",
+                                       "tex1Dlod",
+                                       "tex1Dproj",
+                                       "tex2D",
+                                       "tex2Dbias",
+                                       "tex2Dgrad",
+                                       "tex2Dlod",
+                                       "tex2Dproj",
+                                       "tex3D",
+                                       "tex3Dbias",
+                                       "tex3Dgrad",
+                                       "tex3Dlod",
+                                       "tex3Dproj",
+                                       "texCUBE",
+                                       "texCUBEbias",
+                                       "texCUBEgrad",
+                                       "texCUBElod",
+                                       "texCUBEproj",
+                                       "transpose",
+                                       "trunc"};
+
+bool IsHlslIntrinsic(const std::string& name) {
+    return std::find(std::begin(kHlslIntrinsics), std::end(kHlslIntrinsics), name) !=
+           std::end(kHlslIntrinsics);
+}
+
 // Where glslang's HLSL front end rejects what Unity's compiler (FXC) accepts, and a source
 // rewrite would not be safe, the diagnostic says what Unity does and how to write it portably.
 void ExplainUnityDifference(const GlslangMessage& m, Diagnostic& d) {
@@ -287,9 +416,23 @@ void Improve(const GlslangMessage& m,
         }
         return;
     }
+    // A call of a name that is neither a function of the program nor an HLSL intrinsic: an
+    // unknown function, whose suggestion is the closest function (never a variable), and no
+    // overload note.
+    if (d.message.find("no matching overloaded function") != std::string::npos &&
+        IsIdentifier(m.token) && context.functions) {
+        std::vector<std::string> names = context.functions();
+        const bool declared = std::find(names.begin(), names.end(), m.token) != names.end();
+        if (!declared && !IsHlslIntrinsic(m.token)) {
+            d.message = "unknown function '" + m.token + "'";
+            d.notes.clear();
+            names.insert(names.end(), std::begin(kHlslIntrinsics), std::end(kHlslIntrinsics));
+            d.message += pack::DidYouMean(m.token, names);
+        }
+        return;
+    }
     const bool unknown_name = d.message.find("unknown variable") != std::string::npos ||
-                              d.message.find("undeclared identifier") != std::string::npos ||
-                              d.message.find("no matching overloaded function") != std::string::npos;
+                              d.message.find("undeclared identifier") != std::string::npos;
     if (unknown_name && IsIdentifier(m.token) && context.identifiers) {
         std::vector<std::string> names = context.identifiers();
         names.erase(std::remove(names.begin(), names.end(), m.token), names.end());

@@ -37,6 +37,9 @@ struct MessageContext {
     // The identifiers of the program, for the "did you mean" of an unknown name; called only
     // when a message needs them.
     std::function<std::vector<std::string>()> identifiers;
+    // The functions the program declares, for a call to no such function (which glslang reports
+    // as "no matching overloaded function" too); called only when a message needs them.
+    std::function<std::vector<std::string>()> functions;
 };
 
 // Converts to a Kiln diagnostic (K5001 error / K5002 warning) in Kiln's message style, with a

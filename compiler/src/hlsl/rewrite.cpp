@@ -157,6 +157,37 @@ void MinPrecisionMatrices(const std::vector<Token>& tok, std::vector<Edit>& edit
     }
 }
 
+// fxc's `VPOS` pixel-shader input (the pixel position; Unity's UNITY_VPOS_TYPE screenPos : VPOS)
+// is SV_Position to glslang, which otherwise makes it a user varying no stage writes.
+void VposSemantics(const std::vector<Token>& tok, std::vector<Edit>& edits, size_t& count) {
+    for (size_t i = 1; i < tok.size(); ++i) {
+        if (tok[i].ident && tok[i - 1].text == ":" &&
+            (tok[i].text == "VPOS" || tok[i].text == "vpos")) {
+            edits.push_back({tok[i].begin, tok[i].end, "SV_Position"});
+            ++count;
+        }
+    }
+}
+
+// fxc converts a `switch` selector to int (a float selector truncates); glslang requires an
+// integer. `switch (x)` becomes `switch ((int)(x))`, which is the identity for an int selector
+// and the same bits for a uint one (glslang converts the case labels alike).
+void SwitchSelectors(const std::vector<Token>& tok, std::vector<Edit>& edits, size_t& count) {
+    for (size_t i = 0; i + 1 < tok.size(); ++i) {
+        if (tok[i].text != "switch" || tok[i + 1].text != "(")
+            continue;
+        const size_t close = MatchForward(tok, i + 1);
+        if (close == SIZE_MAX || close == i + 2)
+            continue;
+        if (tok[i + 2].text == "(" && i + 4 < close && tok[i + 3].text == "int" &&
+            tok[i + 4].text == ")")
+            continue;  // already (int)
+        edits.push_back({tok[i + 1].end, tok[i + 1].end, "(int)("});
+        edits.push_back({tok[close].begin, tok[close].begin, ")"});
+        ++count;
+    }
+}
+
 }  // namespace
 
 std::string ApplyEdits(const std::string& text, std::vector<Edit> edits) {
@@ -181,11 +212,14 @@ RewriteResult RewriteForGlslang(const std::string& preprocessed) {
     std::vector<Token> tok = Tokenize(preprocessed);
     std::vector<Edit> edits;
     // Token-local rewrites first, in one pass: non-overlapping by construction (a matrix swizzle
-    // never ends in `.x`, and a matrix type name is not an expression).
+    // never ends in `.x`, a matrix type name is not an expression, a semantic is neither, and a
+    // switch's insertions touch only its parentheses).
     OneVectorSwizzles(tok, edits, r.one_vector_swizzles);
     MatrixSwizzles(preprocessed, tok, edits, r.matrix_swizzles);
     InfinityLiterals(tok, edits, r.infinity_literals);
     MinPrecisionMatrices(tok, edits, r.min_precision_matrices);
+    VposSemantics(tok, edits, r.vpos_semantics);
+    SwitchSelectors(tok, edits, r.switch_selectors);
     std::string text = edits.empty() ? preprocessed : ApplyEdits(preprocessed, std::move(edits));
     // Then each step that reads declarations, on the text the one before produced.
     using Step = size_t (*)(const std::string&, const std::vector<Token>&, std::vector<Edit>&,

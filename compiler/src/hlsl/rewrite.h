@@ -17,6 +17,9 @@
 // - Minimum-precision matrices (`min16float3x3`, what Unity 2018's HLSLSupport.cginc makes of
 //   `half3x3` on Vulkan), which glslang 12 lacks, become 32-bit matrices (`float3x3`), as
 //   `--precision full` makes every half matrix; the name is padded so columns hold.
+// - fxc's `VPOS` pixel-shader input semantic becomes `SV_Position` (glslang would make it a
+//   varying no stage writes), and a `switch` selector is converted to int as fxc converts it
+//   (`switch ((int)(x))`: glslang requires an integer, and fxc truncates a float).
 // - Writes to a global (rewrite_globals.cpp): fxc keeps the written value private to the
 //   invocation. A global that the text writes gets a `static` copy initialized from it, and
 //   every use outside declarations is renamed to the copy.
@@ -39,12 +42,14 @@ struct RewriteResult {
     size_t matrix_swizzles = 0;         // multi-element matrix swizzles expanded
     size_t infinity_literals = 0;       // `1.INF` from the preprocessor put back as `1.#INF`
     size_t min_precision_matrices = 0;  // `min16float3x3` -> `float3x3`
+    size_t vpos_semantics = 0;          // `: VPOS` -> `: SV_Position`
+    size_t switch_selectors = 0;        // `switch (x)` -> `switch ((int)(x))`
     size_t private_globals = 0;         // globals given a private copy because the text writes them
     size_t truncated_arguments = 0;     // vector arguments to scalar parameters
     std::vector<RewriteWarning> warnings;  // Unity's warnings for what was rewritten (X3206)
     bool changed() const {
         return one_vector_swizzles + matrix_swizzles + infinity_literals + min_precision_matrices +
-                   private_globals + truncated_arguments >
+                   vpos_semantics + switch_selectors + private_globals + truncated_arguments >
                0;
     }
 };

@@ -254,6 +254,62 @@ TEST(Compile, WriteToAGlobalIsPrivateToTheInvocationAsInUnity) {
     EXPECT_EQ(pack.find("kiln_private__Tint"), std::string::npos) << "the copy is not a uniform";
 }
 
+// A call of a function the program does not have is an unknown function: the suggestion is the
+// closest function, not a variable (it was "did you mean 's'?" for a local), and there is no note
+// about vector truncation (glslang reports both as "no matching overloaded function").
+TEST(Compile, AnUnknownFunctionSuggestsTheClosestFunctionNotAVariable) {
+    ScratchDir dir;
+    const std::string path = dir.Write(
+        "unknown.shader",
+        Replace(PassShader("",
+                           "            float Square(float x) { return x * x; }\n"
+                           "            float4 Use() { float s = 2; return Sqare(s); }\n"),
+                "SV_Target { return _Tint; }", "SV_Target { return Use(); }"));
+    CompileRun run = Compile({path});
+    EXPECT_FALSE(run.out.ok);
+    EXPECT_EQ(Brief(run.diags),
+              "unknown.shader:14:48 K5001 unknown function 'Sqare'; did you mean 'Square'?\n");
+}
+
+// fxc's VPOS fragment input (the pixel position) with Unity's LOD cross-fade, which reads it,
+// and a float switch selector, which fxc converts to int: each used to fail (a varying nothing
+// writes, K5004; "condition must be a scalar integer expression").
+TEST(Compile, VposCrossFadeAndAFloatSwitchCompileAsInUnity) {
+    ScratchDir dir;
+    const std::string path = dir.Write("vpos.shader", R"(Shader "Test/Vpos" {
+    Properties { _Band ("Band", Float) = 3 }
+    SubShader { Pass {
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        #pragma multi_compile _ LOD_FADE_CROSSFADE
+        #include "UnityCG.cginc"
+        float _Band;
+        struct v2f { float2 uv : TEXCOORD0; };
+        v2f vert(float4 p : POSITION, float2 uv : TEXCOORD0, out float4 pos : SV_POSITION) {
+            v2f o;
+            o.uv = uv;
+            pos = UnityObjectToClipPos(p);
+            return o;
+        }
+        float4 frag(v2f i, UNITY_VPOS_TYPE screenPos : VPOS) : SV_Target {
+            UNITY_APPLY_DITHER_CROSSFADE(screenPos.xy);
+            float4 c = 0;
+            switch (i.uv.x * _Band) {
+                case 0: c = 1; break;
+                case 1: c = 0.5; break;
+                default: c = frac(screenPos.x / 8); break;
+            }
+            return c;
+        }
+        ENDCG
+    } }
+})");
+    CompileRun run = Compile({path});
+    EXPECT_TRUE(run.out.ok) << Brief(run.diags);
+    EXPECT_EQ(Brief(run.diags), "");
+}
+
 // Unity 2018's HLSLSupport.cginc defines half3x3 as min16float3x3 on Vulkan (Standard's
 // CreateTangentToWorldPerVertex); glslang 12 has no minimum-precision matrices.
 TEST(Compile, MinimumPrecisionMatricesCompileAsUnity2018DefinesHalfMatrices) {
@@ -342,7 +398,10 @@ TEST(Compile, ErrorInIncludedFileIsReportedInThatFile) {
                            "\"lib/helpers.cginc\""),
                 "return _Tint; }", "return float4(Shade(_Tint.xyz), 1); }"));
     CompileRun run = Compile({path});
-    EXPECT_EQ(Brief(run.diags), "helpers.cginc:5:17 K5001 unknown variable 'not_declared'\n");
+    // The pass has one variant: no counts, but the note names the pass that includes the file.
+    EXPECT_EQ(Brief(run.diags),
+              "helpers.cginc:5:17 K5001 unknown variable 'not_declared'\n"
+              "  note: fails in shader \"Test/Pass\" pass \"FORWARD\"\n");
     EXPECT_EQ(run.diags.all()[0].file, dir.path() + "/lib/helpers.cginc");
 }
 

@@ -165,3 +165,33 @@ TEST(Rewrite, AnAmbiguousCallIsLeftToGlslang) {
 
 }  // namespace
 }  // namespace kiln::hlsl
+
+namespace kiln::hlsl {
+namespace {
+
+// Unity's `UNITY_VPOS_TYPE screenPos : VPOS` fragment input is the pixel position.
+TEST(Rewrite, VposIsTheFragmentPosition) {
+    const std::string in =
+        "float4 frag(v2f i, float4 screenPos : VPOS) : SV_Target { return screenPos; }\n";
+    const RewriteResult r = RewriteForGlslang(in);
+    EXPECT_EQ(r.vpos_semantics, 1u);
+    EXPECT_EQ(r.text,
+              "float4 frag(v2f i, float4 screenPos : SV_Position) : SV_Target { return "
+              "screenPos; }\n");
+}
+
+// fxc converts a switch selector to int; glslang wants an integer.
+TEST(Rewrite, ASwitchSelectorIsConvertedToIntAsFxcDoes) {
+    const std::string in =
+        "float f(float x) { switch (x * 3) { case 0: return 1; default: return 0; } }\n"
+        "int g(int k) { switch ((int)k) { case 1: return 2; } return 0; }\n";
+    const RewriteResult r = RewriteForGlslang(in);
+    EXPECT_EQ(r.switch_selectors, 1u);
+    EXPECT_EQ(r.text,
+              "float f(float x) { switch ((int)(x * 3)) { case 0: return 1; default: return 0; } "
+              "}\n"
+              "int g(int k) { switch ((int)k) { case 1: return 2; } return 0; }\n");
+}
+
+}  // namespace
+}  // namespace kiln::hlsl
