@@ -413,5 +413,39 @@ TEST(Cli, RenderRunsKilnRenderBesideKilnAndSaysWhenItIsMissing) {
     EXPECT_FALSE(std::filesystem::exists(dir.path() + "/out.png"));
 }
 
+// Unity resolves `#include "Assets/..."` from the project's root folder. Kiln finds the root
+// above the Assets folder the shader is in; a shader outside one gets a note naming
+// --project-root, and with it compiles.
+TEST(Cli, AssetsIncludesResolveFromTheProjectRoot) {
+    const std::string root = FreshTempDir("project_root");
+    const std::string shader = R"(Shader "T/Project" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex v
+    #pragma fragment f
+    #include "Assets/Shared/Common.cginc"
+    float4 v(float4 p : POSITION) : SV_POSITION { return p; }
+    float4 f() : SV_Target { return SharedColour(); }
+    ENDCG
+} } })";
+    std::filesystem::create_directories(root + "/Project/Assets/Shared");
+    std::filesystem::create_directories(root + "/Project/Assets/Shaders");
+    WriteFile(root + "/Project/Assets/Shared/Common.cginc",
+              "float4 SharedColour() { return float4(1, 0, 0, 1); }\n");
+    WriteFile(root + "/Project/Assets/Shaders/in.shader", shader);
+    WriteFile(root + "/out.shader", shader);
+    RunResult r =
+        RunKiln("compile " + root + "/Project/Assets/Shaders/in.shader -o " + root + "/in.kpack");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    r = RunKiln("compile " + root + "/out.shader -o " + root + "/out.kpack");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("cannot find include file 'Assets/Shared/Common.cginc'"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("otherwise pass --project-root DIR"), std::string::npos) << r.err;
+    r = RunKiln("compile " + root + "/out.shader --project-root " + root + "/Project -o " + root +
+                "/out.kpack");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 }  // namespace
 }  // namespace kiln::test

@@ -408,6 +408,13 @@ void Improve(const GlslangMessage& m,
                 d.range.end = file->LocAt(start + static_cast<uint32_t>(found + name.size()));
             }
         }
+        if (name.rfind("Assets/", 0) == 0 || name.rfind("Packages/", 0) == 0) {
+            d.notes.push_back({d.file, kNoPosition,
+                               "Unity resolves \"" + name.substr(0, name.find('/')) +
+                                   "/...\" from the project's root folder: Kiln finds it above "
+                                   "the Assets folder the including file is in; otherwise pass "
+                                   "--project-root DIR"});
+        }
         if (!context.include_search.empty()) {
             std::string dirs;
             for (const std::string& dir : context.include_search)

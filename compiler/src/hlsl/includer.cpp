@@ -13,6 +13,21 @@ std::string Join(const fs::path& dir, const std::string& name) {
     return (dir / name).lexically_normal().string();
 }
 
+// Unity resolves `#include "Assets/..."` and `"Packages/..."` from the project's root folder:
+// the folder above the Assets folder the including file is in, if it is in one.
+std::string ProjectRootOf(const std::string& includer) {
+    for (fs::path dir = fs::path(includer).parent_path(); !dir.empty() && dir != dir.parent_path();
+         dir = dir.parent_path()) {
+        if (dir.filename() == "Assets")
+            return dir.parent_path().string();
+    }
+    return "";
+}
+
+bool IsProjectPath(const std::string& header) {
+    return header.rfind("Assets/", 0) == 0 || header.rfind("Packages/", 0) == 0;
+}
+
 }  // namespace
 
 std::string Includer::Resolve(const std::string& header,
@@ -28,6 +43,10 @@ std::string Includer::Resolve(const std::string& header,
             candidates.push_back(Join(fs::path(includer).parent_path(), header));
         for (const std::string& dir : paths_.dirs)
             candidates.push_back(Join(dir, header));
+        if (IsProjectPath(header)) {
+            if (const std::string root = ProjectRootOf(includer); !root.empty())
+                candidates.push_back(Join(root, header));
+        }
         if (!paths_.templates_dir.empty()) {
             candidates.push_back(Join(paths_.templates_dir, header));
         }

@@ -88,6 +88,7 @@ std::optional<pack::VariantRec> ResolveVariant(const pack::Pack& pack,
 // Flags shared by `compile` and `variants`.
 struct CompilerFlags {
     std::vector<std::string> include_dirs;
+    std::string project_root;
     std::vector<std::string> defines;
     std::vector<std::string> undefines;
     std::vector<std::string> forced_includes;

@@ -89,6 +89,10 @@ void AddToolOptions(CLI::App& cmd, CompilerFlags& f);
 
 void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f, bool variant_choice) {
     cmd.add_option("-I", f.include_dirs, "Add an include directory (searched in order)");
+    cmd.add_option("--project-root", f.project_root,
+                   "The Unity project folder that \"Assets/...\" and \"Packages/...\" includes "
+                   "start from (default: found above the including file's Assets folder)")
+        ->check(CLI::ExistingDirectory);
     cmd.add_option("-D", f.defines, "Define a preprocessor macro NAME or NAME=VALUE");
     cmd.add_option("-U", f.undefines,
                    "Leave a macro of Unity's compile environment undefined (docs/unity-compat.md)");
@@ -229,6 +233,9 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
                                 DiagnosticList& diags) {
     CompileOptions o;
     o.include_dirs = f.include_dirs;
+    // Searched after the -I folders: an "Assets/..." include names a file under it.
+    if (!f.project_root.empty())
+        o.include_dirs.push_back(f.project_root);
     for (const std::string& d : f.defines) {
         const size_t eq = d.find('=');
         o.defines.push_back(eq == std::string::npos
