@@ -99,5 +99,64 @@ TEST(Stages, AHullWithoutADomainIsAnErrorNamingTheMissingPragma) {
     EXPECT_FALSE(fs::exists(dir + "/h.kpack"));
 }
 
+// Pixels of exactly colour (r, g, b).
+size_t PixelsOf(const std::string& png_path, unsigned char r, unsigned char g, unsigned char b) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* pixels = stbi_load(png_path.c_str(), &w, &h, &n, 3);
+    if (!pixels)
+        return 0;
+    size_t count = 0;
+    for (int i = 0; i < w * h; ++i) {
+        const unsigned char* p = pixels + 3 * i;
+        count += p[0] == r && p[1] == g && p[2] == b;
+    }
+    stbi_image_free(pixels);
+    return count;
+}
+
+// UsePass copies another shader's pass into the pack: here from a .shader beside the using one
+// (not itself compiled); the copied pass draws (a green shell around the orange box).
+TEST(Stages, UsePassCopiesTheNamedPassWhichDraws) {
+    const std::string dir = FreshTempDir("stages_usepass");
+    const std::string pack = dir + "/out.kpack";
+    RunResult r =
+        RunKiln("compile " + DataPath("data/usepass/uses_outline.shader") + " -o " + pack);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = RunKiln("info " + pack);
+    EXPECT_NE(r.out.find("Shader \"Test/UsesOutline\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("pass \"Outline\" (LightMode Always)"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("Test/Outlined"), std::string::npos) << "only the using shader is packed";
+    r = RunKiln("test " + pack + " --keep-failures " + dir + "/failures");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    if (!fs::exists(kBox))
+        GTEST_SKIP() << kBox << " is absent (../shared not checked out): render skipped";
+    WriteFile(dir + "/m.material",
+              R"({"kiln_material": 1, "shader": "Test/UsesOutline", "properties": {}})");
+    WriteFile(dir + "/box.kiln.json",
+              R"({"kiln_materials": 1, "materials": {"Red": ")" + dir + R"(/m.material"}})");
+    const std::string png = dir + "/box.png";
+    r = RunKiln("render " + kBox.string() + " --pack " + pack + " --materials " + dir +
+                "/box.kiln.json --validation --width 160 --height 120 -o " + png);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
+    EXPECT_GT(PixelsOf(png, 0, 255, 0), 50u) << "the used pass's green shell";
+    EXPECT_GT(PixelsOf(png, 255, 188, 0), 1000u) << "the own pass's orange (0.5 in sRGB)";
+}
+
+TEST(Stages, AUsePassOfNoSuchPassNamesTheClosestOne) {
+    const std::string dir = FreshTempDir("stages_usepass_typo");
+    std::string text = ReadFile(DataPath("data/usepass/uses_outline.shader"));
+    text.replace(text.find("OUTLINE"), 7, "OUTLNE");
+    WriteFile(dir + "/typo.shader", text);
+    const RunResult r =
+        RunKiln("compile " + dir + "/typo.shader " + DataPath("data/usepass/outlined.shader") +
+                " -o " + dir + "/out.kpack");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("error: UsePass names pass \"OUTLNE\" of shader \"Test/Outlined\", "
+                         "which has no pass of that Name; did you mean 'Outline'? [K3015]"),
+              std::string::npos)
+        << r.err;
+}
+
 }  // namespace
 }  // namespace kiln::test

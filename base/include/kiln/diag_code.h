@@ -89,6 +89,7 @@ enum class DiagCode : uint16_t {
     kDuplicatePassName = 3012,
     kUnknownLightMode = 3013,
     kMisspelledLightMode = 3014,
+    kUnknownUsePass = 3015,
 
     kUnknownPragma = 4001,
     kUnsupportedStage = 4002,

@@ -15,6 +15,7 @@
 #include "driver/isolation.h"
 #include "driver/lint.h"
 #include "driver/parallel.h"
+#include "driver/use_pass.h"
 #include "frontend/glslang_stage.h"
 #include "hlsl/precheck.h"
 #include "kiln/shaderlab/parse.h"
@@ -49,6 +50,7 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
             precheck.CheckPass(fp.blocks);
         st.shaders.push_back(std::move(unit));
     }
+    driver::ResolveUsePasses(st);
 }
 
 void FillReports(const CompileState& st, CompileOutput& out) {
@@ -180,7 +182,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
                   DiagnosticList& diags,
                   Mode mode) {
     frontend::InitializeGlslang();  // before any thread starts
-    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
     PhaseClock clock, whole;
     CompileStats::Phases& ms = out.stats.ms;

@@ -2,6 +2,7 @@
 #ifndef KILN_DRIVER_COMPILE_STATE_H_
 #define KILN_DRIVER_COMPILE_STATE_H_
 
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -94,6 +95,9 @@ struct CompileState {
     worker::Executor* exec = nullptr;  // where glslang and SPIRV-Tools run (driver/isolation.h)
     hlsl::FileCache files;
     std::vector<ShaderUnit> shaders;
+    // Shaders read only for the passes a UsePass copies (driver/use_pass.h); a deque, so the
+    // units' addresses hold.
+    std::deque<ShaderUnit> libraries;
     std::vector<PassUnit> passes;
     std::vector<StageTask> tasks;
     std::vector<Job> jobs;

@@ -119,7 +119,7 @@ void CreateTasks(CompileState& st) {
         for (pack::VariantKey key : pu.expansion.keys) {
             for (pack::Stage stage : pu.pragmas.Stages()) {
                 hlsl::AssembleInput in;
-                in.file_name = LineName(unit.file->path());
+                in.file_name = LineName((fp.source ? fp.source : unit.file)->path());
                 in.blocks = fp.blocks;
                 in.stage = stage;
                 in.shader_target = pu.pragmas.shader_target;

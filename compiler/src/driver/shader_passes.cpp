@@ -141,8 +141,10 @@ struct Walker {
         const int ss_lod = ss.lod.value_or(lod);
         for (const PassEntry& entry : ss.passes) {
             if (const auto* use = std::get_if<UsePass>(&entry)) {
-                diags.Warning(DiagCode::kMisplacedCommand, file, use->range,
-                              "UsePass is not supported yet; the pass is skipped");
+                FlatPass fp;
+                fp.use_pass = use;
+                fp.subshader = subshader_index;
+                out.push_back(std::move(fp));
                 continue;
             }
             if (const auto* grab = std::get_if<GrabPass>(&entry)) {
@@ -226,19 +228,25 @@ std::vector<FlatPass> FlattenPasses(const Shader& shader,
     Walker w{file, diags, shader.properties, {}, {}, {}, {}, {}, 0, 0};
     Walker::AddIncludes(w.includes, shader.programs);
     w.Entries(shader.subshaders);
+    LabelPasses(w.out);
+    return std::move(w.out);
+}
+
+void LabelPasses(std::vector<FlatPass>& passes) {
     // Each pass's one name (kiln/pack/pass_id.h), as the runtime computes it from the pack.
     bool several = false;
-    for (const FlatPass& fp : w.out)
-        several = several || fp.subshader != w.out.front().subshader;
-    for (size_t i = 0; i < w.out.size(); ++i) {
-        FlatPass& fp = w.out[i];
+    for (const FlatPass& fp : passes)
+        several = several || fp.subshader != passes.front().subshader;
+    for (size_t i = 0; i < passes.size(); ++i) {
+        FlatPass& fp = passes[i];
+        if (fp.pass == nullptr)
+            continue;  // a UsePass not resolved yet
         uint32_t index = 0;
         for (size_t j = 0; j < i; ++j)
-            index += w.out[j].subshader == fp.subshader;
+            index += passes[j].subshader == fp.subshader;
         fp.light_mode = TagValue(fp, pack::kTagLightMode);
         fp.label = pack::PassId({fp.pass->name, fp.light_mode, fp.subshader, index, several});
     }
-    return std::move(w.out);
 }
 
 std::string TagValue(const FlatPass& pass, const std::string& key) {

@@ -28,6 +28,10 @@ struct StateSetting {
 
 struct FlatPass {
     const shaderlab::Pass* pass = nullptr;
+    // `UsePass "Shader/PASS"`: set (and nothing else) until the compile resolves it to a copy of
+    // that pass (driver/use_pass.cpp), whose blocks are in `source`'s file.
+    const shaderlab::UsePass* use_pass = nullptr;
+    std::shared_ptr<const SourceFile> source;  // null: the pass's own shader file
     uint32_t subshader = 0;
     int lod = 0;
     std::string light_mode;  // the LightMode tag, "" when untagged
@@ -41,11 +45,15 @@ struct FlatPass {
     std::vector<StateSetting> state;
 };
 
-// Passes in source order. UsePass/GrabPass are reported (warning) and skipped; a pass without a
-// program gets one generated from its fixed-function commands, as in Unity.
+// Passes in source order. A UsePass is a placeholder the compile resolves; GrabPass is reported
+// (warning) and skipped; a pass without a program gets one generated from its fixed-function
+// commands, as in Unity.
 std::vector<FlatPass> FlattenPasses(const shaderlab::Shader& shader,
                                     const std::string& file,
                                     DiagnosticList& diags);
+
+// Names each pass (FlatPass::label) by its Name, LightMode and place in its SubShader.
+void LabelPasses(std::vector<FlatPass>& passes);
 
 std::string TagValue(const FlatPass& pass, const std::string& key);
 

@@ -1,0 +1,139 @@
+#include "driver/use_pass.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "kiln/pack/names.h"
+#include "kiln/shaderlab/parse.h"
+
+namespace kiln::driver {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Upper(std::string s) {
+    for (char& c : s)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+const ShaderUnit* FindLoaded(const CompileState& st, const std::string& name) {
+    for (const ShaderUnit& u : st.shaders) {
+        if (u.ast && u.ast->name == name)
+            return &u;
+    }
+    for (const ShaderUnit& u : st.libraries) {
+        if (u.ast && u.ast->name == name)
+            return &u;
+    }
+    return nullptr;
+}
+
+// A .shader file beside `using_file` or in an -I folder that declares Shader "name", loaded into
+// st.libraries (parsed and flattened, never compiled on its own), or nullptr.
+const ShaderUnit* LoadFromPath(CompileState& st,
+                               const std::string& using_file,
+                               const std::string& name) {
+    std::vector<fs::path> dirs = {fs::path(using_file).parent_path()};
+    for (const std::string& d : st.options.include_dirs)
+        dirs.emplace_back(d);
+    const std::string quoted = "\"" + name + "\"";
+    for (const fs::path& dir : dirs) {
+        std::error_code ec;
+        std::vector<fs::path> files;
+        for (const auto& e : fs::directory_iterator(dir.empty() ? "." : dir, ec)) {
+            if (e.is_regular_file(ec) && e.path().extension() == ".shader")
+                files.push_back(e.path());
+        }
+        std::sort(files.begin(), files.end());
+        for (const fs::path& f : files) {
+            Result<SourceFile> read = ReadSourceFile(f.string());
+            if (!read || read.value().text().find(quoted) == std::string_view::npos)
+                continue;
+            ShaderUnit unit;
+            unit.file = std::make_shared<const SourceFile>(std::move(read).value());
+            DiagnosticList ignored;  // its own problems are reported when it is compiled
+            unit.ast = shaderlab::ParseAndCheck(*unit.file, ignored);
+            if (!unit.ast || unit.ast->name != name)
+                continue;
+            st.files.Put(unit.file);
+            unit.passes = FlattenPasses(*unit.ast, unit.file->path(), ignored);
+            unit.emit = false;
+            st.libraries.push_back(std::move(unit));
+            return &st.libraries.back();
+        }
+    }
+    return nullptr;
+}
+
+// Resolves one placeholder of `unit`; false when it is reported and must be dropped.
+bool Resolve(CompileState& st, const ShaderUnit& unit, FlatPass& fp) {
+    const shaderlab::UsePass& use = *fp.use_pass;
+    const size_t slash = use.target.rfind('/');
+    const std::string shader = slash == std::string::npos ? "" : use.target.substr(0, slash);
+    const std::string pass = slash == std::string::npos ? use.target : use.target.substr(slash + 1);
+    const std::string& file = unit.file->path();
+    if (shader.empty() || pass.empty()) {
+        st.diags.Error(
+            DiagCode::kUnknownUsePass, file, use.range,
+            "UsePass needs \"Shader/PASSNAME\", the shader's name and a pass Name; got \"" +
+                use.target + "\"");
+        return false;
+    }
+    const ShaderUnit* from = FindLoaded(st, shader);
+    if (from == nullptr)
+        from = LoadFromPath(st, file, shader);
+    if (from == nullptr) {
+        std::vector<std::string> names;
+        for (const ShaderUnit& u : st.shaders) {
+            if (u.ast)
+                names.push_back(u.ast->name);
+        }
+        st.diags.Error(DiagCode::kUnknownUsePass, file, use.range,
+                       "UsePass names shader \"" + shader +
+                           "\", which is neither in this compile nor a .shader file beside this "
+                           "one or in an -I folder" +
+                           pack::DidYouMean(shader, names));
+        return false;
+    }
+    std::vector<std::string> pass_names;
+    for (const FlatPass& other : from->passes) {
+        if (other.pass == nullptr || other.pass->name.empty())
+            continue;
+        pass_names.push_back(other.pass->name);
+        if (Upper(other.pass->name) != Upper(pass))
+            continue;
+        const uint32_t subshader = fp.subshader;
+        fp = other;
+        fp.subshader = subshader;
+        if (!fp.source)
+            fp.source = from->file;
+        return true;
+    }
+    st.diags.Error(DiagCode::kUnknownUsePass, file, use.range,
+                   "UsePass names pass \"" + pass + "\" of shader \"" + shader +
+                       "\", which has no pass of that Name" + pack::DidYouMean(pass, pass_names));
+    return false;
+}
+
+}  // namespace
+
+void ResolveUsePasses(CompileState& st) {
+    for (ShaderUnit& unit : st.shaders) {
+        bool any = false;
+        for (const FlatPass& fp : unit.passes)
+            any = any || fp.use_pass != nullptr;
+        if (!any)
+            continue;
+        std::vector<FlatPass> kept;
+        for (FlatPass& fp : unit.passes) {
+            if (fp.use_pass == nullptr || Resolve(st, unit, fp))
+                kept.push_back(std::move(fp));
+        }
+        unit.passes = std::move(kept);
+        LabelPasses(unit.passes);
+    }
+}
+
+}  // namespace kiln::driver
