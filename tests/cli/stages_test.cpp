@@ -36,6 +36,23 @@ size_t LitColours(const std::string& png_path) {
     return colours.size();
 }
 
+// Renders the Box sample at 160x120 with `shader` on its material, the validation layer on;
+// expects success and no validation message.
+void RenderBox(const std::string& dir,
+               const std::string& pack,
+               const std::string& shader,
+               const std::string& png) {
+    WriteFile(dir + "/m.material",
+              R"({"kiln_material": 1, "shader": ")" + shader + R"(", "properties": {}})");
+    WriteFile(dir + "/box.kiln.json",
+              R"({"kiln_materials": 1, "materials": {"Red": ")" + dir + R"(/m.material"}})");
+    const RunResult r =
+        RunKiln("render " + kBox.string() + " --pack " + pack + " --materials " + dir +
+                "/box.kiln.json --validation --width 160 --height 120 -o " + png);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
+}
+
 class StagesTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(StagesTest, CompileIntoThePackAndDrawWithoutValidationMessages) {
@@ -62,16 +79,8 @@ TEST_P(StagesTest, CompileIntoThePackAndDrawWithoutValidationMessages) {
 
     if (!fs::exists(kBox))
         GTEST_SKIP() << kBox << " is absent (../shared not checked out): render skipped";
-    const std::string name = geometry ? "Test/Geometry" : "Test/Tessellation";
-    WriteFile(dir + "/m.material",
-              R"({"kiln_material": 1, "shader": ")" + name + R"(", "properties": {}})");
-    WriteFile(dir + "/box.kiln.json",
-              R"({"kiln_materials": 1, "materials": {"Red": ")" + dir + R"(/m.material"}})");
     const std::string png = dir + "/box.png";
-    r = RunKiln("render " + kBox.string() + " --pack " + pack + " --materials " + dir +
-                "/box.kiln.json --validation --width 160 --height 120 -o " + png);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
+    RenderBox(dir, pack, geometry ? "Test/Geometry" : "Test/Tessellation", png);
     // Three visible faces of one flat colour each would be three colours; interpolated weights
     // give thousands (measured on lavapipe at 160x120: geometry 1,982, tessellation 5,883).
     EXPECT_GT(LitColours(png), 200u);
@@ -130,15 +139,8 @@ TEST(Stages, UsePassCopiesTheNamedPassWhichDraws) {
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
     if (!fs::exists(kBox))
         GTEST_SKIP() << kBox << " is absent (../shared not checked out): render skipped";
-    WriteFile(dir + "/m.material",
-              R"({"kiln_material": 1, "shader": "Test/UsesOutline", "properties": {}})");
-    WriteFile(dir + "/box.kiln.json",
-              R"({"kiln_materials": 1, "materials": {"Red": ")" + dir + R"(/m.material"}})");
     const std::string png = dir + "/box.png";
-    r = RunKiln("render " + kBox.string() + " --pack " + pack + " --materials " + dir +
-                "/box.kiln.json --validation --width 160 --height 120 -o " + png);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
+    RenderBox(dir, pack, "Test/UsesOutline", png);
     EXPECT_GT(PixelsOf(png, 0, 255, 0), 50u) << "the used pass's green shell";
     EXPECT_GT(PixelsOf(png, 255, 188, 0), 1000u) << "the own pass's orange (0.5 in sRGB)";
 }

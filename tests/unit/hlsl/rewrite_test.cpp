@@ -65,12 +65,6 @@ TEST(Rewrite, DirectivesStringsAndOrdinaryCodeAreUntouched) {
     EXPECT_EQ(r.text, in);
 }
 
-}  // namespace
-}  // namespace kiln::hlsl
-
-namespace kiln::hlsl {
-namespace {
-
 // Unity 2018's HLSLSupport.cginc makes half3x3 a min16float3x3 on Vulkan; glslang 12 has no such
 // type. The name is padded, so what follows it keeps its column.
 TEST(Rewrite, MinimumPrecisionMatricesBecome32BitMatrices) {
@@ -162,12 +156,6 @@ TEST(Rewrite, AnAmbiguousCallIsLeftToGlslang) {
     EXPECT_EQ(r.truncated_arguments, 0u);
     EXPECT_EQ(r.text, in);
 }
-
-}  // namespace
-}  // namespace kiln::hlsl
-
-namespace kiln::hlsl {
-namespace {
 
 // Unity's `UNITY_VPOS_TYPE screenPos : VPOS` fragment input is the pixel position.
 TEST(Rewrite, VposIsTheFragmentPosition) {
