@@ -6,8 +6,10 @@
 // whose nearest declaration before the call has a vector type, a multi-component swizzle
 // (`v.xy`), or a vector constructor (`float3(...)`). The argument becomes `(argument).x`. Other
 // shapes keep glslang's error, whose note says how to pass the component.
+#include <algorithm>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <string_view>
@@ -129,24 +131,44 @@ std::map<std::string_view, std::vector<Candidate>> Functions(const std::string& 
     return out;
 }
 
-// The type name of the nearest declaration of `name` before token `before`, or "".
-std::string_view DeclaredType(const std::vector<Token>& tok, size_t before, std::string_view name) {
-    for (size_t m = before; m-- > 1;) {
-        if (tok[m].text != name || m + 1 >= tok.size())
-            continue;
+// Every declaration `Type name` followed by ; , = : ) or [ (a local, parameter, global or member),
+// by name, in text order: the nearest one before a use is its type, found by binary search so
+// the rewrite stays n log n on any input.
+using Declarations = std::map<std::string_view, std::vector<std::pair<size_t, std::string_view>>>;
+
+Declarations AllDeclarations(const std::vector<Token>& tok) {
+    Declarations out;
+    for (size_t m = 1; m + 1 < tok.size(); ++m) {
         const std::string_view next = tok[m + 1].text;
-        if (next != ";" && next != "," && next != "=" && next != ":" && next != ")" && next != "[")
+        if (!tok[m].ident || (next != ";" && next != "," && next != "=" && next != ":" &&
+                              next != ")" && next != "["))
             continue;
         if (tok[m - 1].ident && !IsStatementWord(tok[m - 1].text))
-            return tok[m - 1].text;
+            out[tok[m].text].push_back({m, tok[m - 1].text});
     }
-    return {};
+    return out;
+}
+
+// The type name of the nearest declaration of `name` before token `before`, or "".
+std::string_view DeclaredType(const Declarations& decls, size_t before, std::string_view name) {
+    const auto it = decls.find(name);
+    if (it == decls.end())
+        return {};
+    const auto& list = it->second;
+    auto after = std::lower_bound(list.begin(), list.end(), before,
+                                  [](const auto& d, size_t k) { return d.first < k; });
+    if (after == list.begin())
+        return {};
+    return std::prev(after)->second;
 }
 
 // The vector type of argument [b, e) when it is known without type checking, or "".
-std::string KnownVector(const std::vector<Token>& tok, size_t b, size_t e) {
+std::string KnownVector(const std::vector<Token>& tok,
+                        const Declarations& decls,
+                        size_t b,
+                        size_t e) {
     if (e == b + 1 && tok[b].ident) {
-        const std::string_view type = DeclaredType(tok, b, tok[b].text);
+        const std::string_view type = DeclaredType(decls, b, tok[b].text);
         return VectorSize(type) ? std::string(type) : "";
     }
     static const std::regex kSwizzle("[xyzw]{2,4}|[rgba]{2,4}");
@@ -167,6 +189,9 @@ size_t TruncatedArguments(const std::string& text,
                           std::vector<Edit>& edits,
                           std::vector<RewriteWarning>& warnings) {
     const auto functions = Functions(text, tok);
+    if (functions.empty())
+        return 0;
+    std::optional<Declarations> decls;  // built on the first argument that needs it
     size_t count = 0;
     for (size_t k = 1; k + 1 < tok.size(); ++k) {
         if (!tok[k].ident || tok[k + 1].text != "(" ||
@@ -196,7 +221,9 @@ size_t TruncatedArguments(const std::string& text,
             const auto [b, e] = args[a];
             if (!only->params[a].scalar_in)
                 continue;
-            const std::string vector = KnownVector(tok, b, e);
+            if (!decls)
+                decls = AllDeclarations(tok);
+            const std::string vector = KnownVector(tok, *decls, b, e);
             if (vector.empty())
                 continue;
             edits.push_back({tok[b].begin, tok[b].begin, "("});

@@ -161,14 +161,6 @@ void ScanTopLevel(State& s) {
     }
 }
 
-bool InDeclarationsOnly(const State& s, size_t k) {
-    for (const auto& [b, e] : s.declarations_only) {
-        if (k > b && k < e)
-            return true;
-    }
-    return false;
-}
-
 // True when token k (a use of a global) is written: assigned, incremented, or passed to an out
 // or inout parameter.
 bool IsWrite(const State& s, size_t k) {
@@ -225,30 +217,37 @@ bool IsWrite(const State& s, size_t k) {
 size_t PrivateGlobals(const std::string& text,
                       const std::vector<Token>& tok,
                       std::vector<Edit>& edits) {
-    // Cheap test first: no assignment to anything declared at the top level, no work.
     State s{text, tok, {}, {}, {}, {}};
     ScanTopLevel(s);
     if (s.globals.empty())
         return 0;
+    // The tokens that may be renamed: not a declaration of a global, not a member access, not in
+    // a struct or cbuffer body (a mask, so the passes below stay linear in the text).
+    std::vector<bool> use(tok.size(), false);
+    for (size_t k = 1; k < tok.size(); ++k) {
+        use[k] = tok[k].ident && s.globals.count(tok[k].text) && !s.declaration_tokens.count(k) &&
+                 tok[k - 1].text != "." && tok[k - 1].text != "->";
+    }
+    for (const auto& [b, e] : s.declarations_only) {
+        for (size_t k = b + 1; k < e && k < tok.size(); ++k)
+            use[k] = false;
+    }
     std::set<std::string_view> written;
     for (size_t k = 1; k < tok.size(); ++k) {
-        if (!tok[k].ident || !s.globals.count(tok[k].text) || s.declaration_tokens.count(k) ||
-            tok[k - 1].text == "." || tok[k - 1].text == "->" || InDeclarationsOnly(s, k))
-            continue;
-        if (!written.count(tok[k].text) && IsWrite(s, k))
+        if (use[k] && !written.count(tok[k].text) && IsWrite(s, k))
             written.insert(tok[k].text);
     }
+    if (written.empty())
+        return 0;
     for (std::string_view name : written) {
         const Global& g = s.globals.at(name);
-        const std::string copy = "kiln_private_" + std::string(name);
-        edits.push_back(
-            {g.insert_at, g.insert_at,
-             " static " + g.type + " " + copy + g.array + " = " + std::string(name) + ";"});
-        for (size_t k = 1; k < tok.size(); ++k) {
-            if (tok[k].text == name && !s.declaration_tokens.count(k) && tok[k - 1].text != "." &&
-                tok[k - 1].text != "->" && !InDeclarationsOnly(s, k))
-                edits.push_back({tok[k].begin, tok[k].end, copy});
-        }
+        edits.push_back({g.insert_at, g.insert_at,
+                         " static " + g.type + " kiln_private_" + std::string(name) + g.array +
+                             " = " + std::string(name) + ";"});
+    }
+    for (size_t k = 1; k < tok.size(); ++k) {
+        if (use[k] && written.count(tok[k].text))
+            edits.push_back({tok[k].begin, tok[k].end, "kiln_private_" + std::string(tok[k].text)});
     }
     return written.size();
 }
