@@ -191,8 +191,11 @@ void SwitchSelectors(const std::vector<Token>& tok, std::vector<Edit>& edits, si
 }  // namespace
 
 std::string ApplyEdits(const std::string& text, std::vector<Edit> edits) {
-    std::sort(edits.begin(), edits.end(),
-              [](const Edit& a, const Edit& b) { return a.begin < b.begin; });
+    // By start, an insertion before a replacement that starts where it does (`switch (` then a
+    // matrix swizzle right after it), so neither is dropped.
+    std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
+        return a.begin != b.begin ? a.begin < b.begin : a.end < b.end;
+    });
     std::string out;
     out.reserve(text.size() + edits.size() * 16);
     size_t at = 0;

@@ -179,6 +179,9 @@ TEST(Rewrite, ASwitchSelectorIsConvertedToIntAsFxcDoes) {
               "float f(float x) { switch ((int)(x * 3)) { case 0: return 1; default: return 0; } "
               "}\n"
               "int g(int k) { switch ((int)k) { case 1: return 2; } return 0; }\n");
+    // The selector's own rewrite and the conversion's insertion start at the same place.
+    const RewriteResult both = RewriteForGlslang("void h(float4x4 M) { switch (M._11_22.x) {} }\n");
+    EXPECT_EQ(both.text, "void h(float4x4 M) { switch ((int)(float2((M)._11, (M)._22).x)) {} }\n");
 }
 
 }  // namespace
