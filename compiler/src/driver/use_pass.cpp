@@ -18,13 +18,23 @@ std::string Upper(std::string s) {
     return s;
 }
 
+// Whether Shader "declared" answers to `name`: the same, or, as Unity finds the built-in shaders
+// it moved under "Legacy Shaders/" by their old names (Reflect-BumpVertexLit's
+// `UsePass "Reflective/Bumped Unlit/BASE"`), that prefix and the name.
+bool Answers(const std::string& declared, const std::string& name) {
+    static const std::string kLegacy = "Legacy Shaders/";
+    return declared == name || (declared.size() == kLegacy.size() + name.size() &&
+                                declared.compare(0, kLegacy.size(), kLegacy) == 0 &&
+                                declared.compare(kLegacy.size(), std::string::npos, name) == 0);
+}
+
 const ShaderUnit* FindLoaded(const CompileState& st, const std::string& name) {
     for (const ShaderUnit& u : st.shaders) {
-        if (u.ast && u.ast->name == name)
+        if (u.ast && Answers(u.ast->name, name))
             return &u;
     }
     for (const ShaderUnit& u : st.libraries) {
-        if (u.ast && u.ast->name == name)
+        if (u.ast && Answers(u.ast->name, name))
             return &u;
     }
     return nullptr;
@@ -38,7 +48,7 @@ const ShaderUnit* LoadFromPath(CompileState& st,
     std::vector<fs::path> dirs = {fs::path(using_file).parent_path()};
     for (const std::string& d : st.options.include_dirs)
         dirs.emplace_back(d);
-    const std::string quoted = "\"" + name + "\"";
+    const std::string quoted = name + "\"";  // the end of Shader "[Legacy Shaders/]name"
     for (const fs::path& dir : dirs) {
         std::error_code ec;
         std::vector<fs::path> files;
@@ -55,7 +65,7 @@ const ShaderUnit* LoadFromPath(CompileState& st,
             unit.file = std::make_shared<const SourceFile>(std::move(read).value());
             DiagnosticList ignored;  // its own problems are reported when it is compiled
             unit.ast = shaderlab::ParseAndCheck(*unit.file, ignored);
-            if (!unit.ast || unit.ast->name != name)
+            if (!unit.ast || !Answers(unit.ast->name, name))
                 continue;
             st.files.Put(unit.file);
             unit.passes = FlattenPasses(*unit.ast, unit.file->path(), ignored);

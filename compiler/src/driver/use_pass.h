@@ -1,6 +1,7 @@
 // UsePass: `UsePass "Shader/PASSNAME"` inserts a copy of another shader's pass (its program,
 // tags and render state), as Unity does. The named shader is one of the compile, or else a
-// .shader file beside the using shader or in an -I folder (read only for its passes); the pass is
+// .shader file beside the using shader or in an -I folder (read only for its passes), by its name
+// or, as Unity finds its built-ins, by the name after "Legacy Shaders/"; the pass is
 // the first of that shader whose Name matches, case-insensitively (Unity upper-cases pass names).
 #ifndef KILN_DRIVER_USE_PASS_H_
 #define KILN_DRIVER_USE_PASS_H_
