@@ -41,7 +41,10 @@ struct PassUnit {
     // StageTask indices, variant-major: per variant one per stage of pragmas.Stages() (vertex,
     // fragment, then geometry, hull, domain where the program has them).
     std::vector<size_t> tasks;
-    size_t stride() const { return pragmas.Stages().size(); }
+    // pragmas.Stages().size(), without building the list (TaskOf is on every variant's path).
+    size_t stride() const {
+        return 2 + (pragmas.geometry ? 1 : 0) + (pragmas.hull && pragmas.domain ? 2 : 0);
+    }
     size_t TaskOf(size_t variant, size_t stage_slot) const {
         return tasks[variant * stride() + stage_slot];
     }

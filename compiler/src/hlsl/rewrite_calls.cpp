@@ -31,21 +31,13 @@ struct Candidate {
 };
 
 bool IsScalarType(std::string_view t) {
-    static const std::regex kType(
-        "(float|half|fixed|int|uint|bool|double|min16float|min10float|min16int|min12int|"
-        "min16uint)1?");
-    return std::regex_match(t.begin(), t.end(), kType);
+    return NumericShape(t) == 1;
 }
 
 // The component count of a vector type name (float3 -> 3), or 0.
 int VectorSize(std::string_view t) {
-    static const std::regex kType(
-        "(float|half|fixed|int|uint|bool|double|min16float|min10float|min16int|min12int|"
-        "min16uint)([2-4])");
-    std::match_results<std::string_view::const_iterator> m;
-    if (!std::regex_match(t.begin(), t.end(), m, kType))
-        return 0;
-    return m[2].str()[0] - '0';
+    const int shape = NumericShape(t);
+    return shape >= 2 && shape <= 4 ? shape : 0;
 }
 
 bool IsQualifier(std::string_view t) {

@@ -18,10 +18,7 @@ namespace kiln::hlsl {
 namespace {
 
 bool IsNumericType(std::string_view t) {
-    static const std::regex kType(
-        "(float|half|fixed|int|uint|bool|double|min16float|min10float|min16int|min12int|"
-        "min16uint)([1-4](x[1-4])?)?");
-    return std::regex_match(t.begin(), t.end(), kType);
+    return NumericShape(t) != 0;
 }
 
 struct Global {

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <regex>
 #include <set>
 
 #include "hlsl/identifier.h"
@@ -73,6 +74,18 @@ bool IsAssignment(std::string_view op) {
     static const std::set<std::string_view> kOps = {
         "=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="};
     return kOps.count(op) > 0;
+}
+
+int NumericShape(std::string_view t) {
+    static const std::regex kType(
+        "(float|half|fixed|int|uint|bool|double|min16float|min10float|min16int|min12int|"
+        "min16uint)([1-4](x[1-4])?)?");
+    std::match_results<std::string_view::const_iterator> m;
+    if (!std::regex_match(t.begin(), t.end(), m, kType))
+        return 0;
+    if (m[3].matched)
+        return 5;
+    return m[2].matched ? m[2].str()[0] - '0' : 1;
 }
 
 bool IsStatementWord(std::string_view t) {

@@ -36,6 +36,11 @@ struct RewriteWarning {
 
 bool IsAssignment(std::string_view op);
 
+// The shape of an HLSL numeric type name (float, half, fixed, int, uint, bool, double and the
+// min16/min10/min12 kinds): 0 not one, 1 a scalar (or a 1-vector), 2-4 a vector of that size,
+// 5 a matrix. The one reading of type names the rewrites share.
+int NumericShape(std::string_view t);
+
 // Words that can precede `name ;` without declaring it (return, in, out, static, ...).
 bool IsStatementWord(std::string_view t);
 
