@@ -406,9 +406,11 @@ inline float4 ComputeNonStereoScreenPos(float4 pos) {
 inline float4 ComputeScreenPos(float4 pos) {
     return ComputeNonStereoScreenPos(pos);
 }
+// A GrabPass texture's row 0 is the top of the frame (as Unity's where UNITY_UV_STARTS_AT_TOP),
+// while clip-space +y is up: y flips.
 inline float4 ComputeGrabScreenPos(float4 pos) {
     float4 o = pos * 0.5f;
-    o.xy = float2(o.x, o.y) + o.w;
+    o.xy = float2(o.x, -o.y) + o.w;
     o.zw = pos.zw;
     return o;
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "support/test_support.h"
@@ -41,14 +42,15 @@ size_t LitColours(const std::string& png_path) {
 void RenderBox(const std::string& dir,
                const std::string& pack,
                const std::string& shader,
-               const std::string& png) {
+               const std::string& png,
+               const std::string& options = "") {
     WriteFile(dir + "/m.material",
               R"({"kiln_material": 1, "shader": ")" + shader + R"(", "properties": {}})");
     WriteFile(dir + "/box.kiln.json",
               R"({"kiln_materials": 1, "materials": {"Red": ")" + dir + R"(/m.material"}})");
     const RunResult r =
         RunKiln("render " + kBox.string() + " --pack " + pack + " --materials " + dir +
-                "/box.kiln.json --validation --width 160 --height 120 -o " + png);
+                "/box.kiln.json --validation --width 160 --height 120 -o " + png + " " + options);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
 }
@@ -143,6 +145,89 @@ TEST(Stages, UsePassCopiesTheNamedPassWhichDraws) {
     RenderBox(dir, pack, "Test/UsesOutline", png);
     EXPECT_GT(PixelsOf(png, 0, 255, 0), 50u) << "the used pass's green shell";
     EXPECT_GT(PixelsOf(png, 255, 188, 0), 1000u) << "the own pass's orange (0.5 in sRGB)";
+}
+
+// GrabPass: the pack records it in its place (no variants), and the runtime copies the colour
+// drawn so far into _GrabTexture between the passes around it. Test/GrabInvert draws the box red,
+// grabs, then draws 1 - the grabbed colour: cyan where the copy holds the red, anything else where
+// it is missing, stale or mirrored. On the forward path, with MSAA (the copy reads the resolved
+// target) and on the deferred path (drawn after the G-buffer), 0 validation messages each.
+TEST(Stages, GrabPassCopiesTheColourDrawnSoFarBeforeTheNextPass) {
+    const std::string dir = FreshTempDir("stages_grabpass");
+    const std::string pack = dir + "/out.kpack";
+    RunResult r = RunKiln("compile " + DataPath("data/grabpass/invert.shader") + " -o " + pack);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    r = RunKiln("info " + pack);
+    EXPECT_NE(r.out.find("  pass \"RED\": 1 variants\n"
+                         "  pass \"#2\": GrabPass into _GrabTexture\n"
+                         "  pass \"INVERT\": 1 variants\n"),
+              std::string::npos)
+        << r.out;
+    r = RunKiln("test " + pack + " --keep-failures " + dir + "/failures");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    if (!fs::exists(kBox))
+        GTEST_SKIP() << kBox << " is absent (../shared not checked out): render skipped";
+    for (const std::string options : {"", "--msaa 4", "--path deferred"}) {
+        const std::string png = dir + "/box.png";
+        RenderBox(dir, pack, "Test/GrabInvert", png, options);
+        // Exact colours: the copy is sampled at texel centres (nearest and bilinear agree), and
+        // both passes cover the same pixels (same vertex program, ZTest LEqual).
+        EXPECT_GT(PixelsOf(png, 0, 255, 255), 1000u) << options << ": the inverted red";
+        EXPECT_EQ(PixelsOf(png, 255, 0, 0), 0u) << options << ": red left uncovered";
+        EXPECT_EQ(PixelsOf(png, 255, 255, 255), 0u) << options << ": inverted background";
+    }
+}
+
+// A named GrabPass is copied once per frame, by the first object that has it; `GrabPass { }` is
+// copied before every object (Unity's documented behaviour). Two boxes of the demo scene use each
+// shader; the frame debugger records every copy as a step of its own.
+TEST(Stages, ANamedGrabPassIsCopiedOncePerFrameAndAnUnnamedOnePerObject) {
+    const std::string demo = DataPath("../scenes/demo/demo.gltf");
+    const std::string dir = FreshTempDir("stages_grab_count");
+    const std::string pack = dir + "/out.kpack";
+    WriteFile(dir + "/red.shader", R"(Shader "Test/Red" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex v
+    #pragma fragment f
+    #include "UnityCG.cginc"
+    float4 v(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
+    float4 f() : SV_Target { return float4(1, 0, 0, 1); }
+    ENDCG
+} } })");
+    RunResult r = RunKiln("compile " + DataPath("data/grabpass/named.shader") + " " +
+                          DataPath("data/grabpass/each.shader") + " " + dir + "/red.shader -o " +
+                          pack);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const auto& [shader, copies, step] :
+         {std::tuple{"Test/GrabNamed", 1, "\"color -> grab _Behind\""},
+          std::tuple{"Test/GrabEach", 2, "\"color -> grab _GrabTexture\""}}) {
+        WriteFile(dir + "/grab.material", std::string(R"({"kiln_material": 1, "shader": ")") +
+                                              shader + R"(", "properties": {}})");
+        WriteFile(dir + "/opaque.material",
+                  R"({"kiln_material": 1, "shader": "Test/Red", "properties": {}})");
+        std::string sidecar = R"({"kiln_materials": 1, "materials": {)";
+        for (const char* m : {"Unlit", "Lambert", "LambertAmbient", "BlinnPhong",
+                              "BlinnPhongTextured", "EnergyConserving", "Standard",
+                              "StandardMetallic", "MultiLight", "Deferred", "Floor"}) {
+            const bool grab = std::string(m) == "Lambert" || std::string(m) == "Standard";
+            sidecar += std::string(m == std::string("Unlit") ? "" : ", ") + "\"" + m + "\": \"" +
+                       dir + (grab ? "/grab.material\"" : "/opaque.material\"");
+        }
+        WriteFile(dir + "/demo.kiln.json", sidecar + "}}");
+        r = RunKiln("render " + demo + " --pack " + pack + " --materials " + dir +
+                    "/demo.kiln.json --validation --width 96 --height 54 -o " + dir +
+                    "/demo.png --frame-debug " + dir + "/debug");
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find(std::to_string(copies) + " GrabPass cop"), std::string::npos)
+            << shader << ": " << r.out;
+        const std::string page = ReadFile(dir + "/debug/frame.json");
+        size_t found = 0;
+        for (size_t at = page.find(step); at != std::string::npos; at = page.find(step, at + 1))
+            ++found;
+        EXPECT_EQ(found, size_t(copies)) << shader;
+    }
 }
 
 TEST(Stages, AUsePassOfNoSuchPassNamesTheClosestOne) {

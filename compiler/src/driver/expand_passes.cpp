@@ -93,6 +93,8 @@ void ExpandPasses(CompileState& st) {
         }
         for (size_t f = 0; f < unit.passes.size(); ++f) {
             const FlatPass& fp = unit.passes[f];
+            if (fp.grab)
+                continue;  // no program: pack_emit.cpp records it in its place
             std::optional<PassUnit> read = ReadPass(st, s, f);
             if (!read)
                 continue;

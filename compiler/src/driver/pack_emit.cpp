@@ -292,9 +292,15 @@ void CheckInterfaces(CompileState& st) {
                                      " but the shader does not declare it as " + want);
             }
         }
-        // Globals the runtime fills (kiln/pack/engine_names.h); not material properties.
+        // Globals the runtime fills (kiln/pack/engine_names.h, and the texel size of a named
+        // GrabPass's texture); not material properties.
+        std::set<std::string> grabbed;
+        for (const FlatPass& fp : unit.passes) {
+            if (fp.grab && !fp.grab->texture_name.empty())
+                grabbed.insert(fp.grab->texture_name + "_TexelSize");
+        }
         for (const auto& [name, mem] : members) {
-            if (declared.count(name) || pack::IsEngineGlobal(name)) {
+            if (declared.count(name) || pack::IsEngineGlobal(name) || grabbed.count(name)) {
                 continue;
             }
             st.diags.Warning(
@@ -303,6 +309,51 @@ void CheckInterfaces(CompileState& st) {
         }
     }
 }
+
+namespace {
+
+// A shader's passes in source order: each a compiled pass (its index into st.passes) or, with
+// none, a GrabPass.
+std::vector<std::pair<size_t, std::optional<size_t>>> PassOrder(const CompileState& st, size_t s) {
+    std::vector<std::pair<size_t, std::optional<size_t>>> out;
+    const std::vector<FlatPass>& flats = st.shaders[s].passes;
+    size_t p = 0;
+    for (size_t f = 0; f < flats.size(); ++f) {
+        while (p < st.passes.size() && (st.passes[p].shader < s ||
+                                        (st.passes[p].shader == s && st.passes[p].flat < f)))
+            ++p;
+        if (p < st.passes.size() && st.passes[p].shader == s && st.passes[p].flat == f)
+            out.emplace_back(f, p);
+        else if (flats[f].grab)
+            out.emplace_back(f, std::nullopt);
+    }
+    return out;
+}
+
+void AddTags(pack_builder::PackBuilder& b, const FlatPass& fp, pack::PassRec& rec) {
+    rec.first_tag = static_cast<uint32_t>(b.tags.size());
+    for (const PassTag& t : fp.tags)
+        b.tags.push_back({b.Str(t.key), b.Str(t.value)});
+    rec.tag_count = static_cast<uint32_t>(fp.tags.size());
+}
+
+// A GrabPass: its name, tags and texture; no state, keyword sets or variants.
+void EmitGrabPass(pack_builder::PackBuilder& b, const FlatPass& fp, uint32_t shader) {
+    pack::PassRec rec;
+    rec.name = b.Str(fp.grab->name);
+    rec.shader = shader;
+    rec.subshader = fp.subshader;
+    rec.lod = static_cast<uint32_t>(std::max(0, fp.lod));
+    AddTags(b, fp, rec);
+    rec.first_state = static_cast<uint32_t>(b.states.size());
+    rec.first_keyword_set = static_cast<uint32_t>(b.keyword_sets.size());
+    rec.first_variant = static_cast<uint32_t>(b.variants.size());
+    rec.flags = pack::kPassGrab;
+    b.grabs.push_back({static_cast<uint32_t>(b.passes.size()), b.Str(fp.grab->texture_name), 0});
+    b.passes.push_back(rec);
+}
+
+}  // namespace
 
 std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
     pack_builder::PackBuilder b;
@@ -335,20 +386,20 @@ std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats) {
         }
         sr.property_count = static_cast<uint32_t>(ast.properties.size());
         sr.first_pass = static_cast<uint32_t>(b.passes.size());
-        for (size_t p = 0; p < st.passes.size(); ++p) {
-            const PassUnit& pu = st.passes[p];
-            if (pu.shader != s)
+        for (const auto& [flat, compiled] : PassOrder(st, s)) {
+            if (!compiled) {
+                EmitGrabPass(b, unit.passes[flat], static_cast<uint32_t>(b.shaders.size()));
                 continue;
+            }
+            const size_t p = *compiled;
+            const PassUnit& pu = st.passes[p];
             const FlatPass& fp = unit.passes[pu.flat];
             pack::PassRec rec;
             rec.name = b.Str(fp.pass->name);
             rec.shader = static_cast<uint32_t>(b.shaders.size());
             rec.subshader = fp.subshader;
             rec.lod = static_cast<uint32_t>(std::max(0, fp.lod));
-            rec.first_tag = static_cast<uint32_t>(b.tags.size());
-            for (const PassTag& t : fp.tags)
-                b.tags.push_back({b.Str(t.key), b.Str(t.value)});
-            rec.tag_count = static_cast<uint32_t>(fp.tags.size());
+            AddTags(b, fp, rec);
             rec.first_state = static_cast<uint32_t>(b.states.size());
             for (const StateSetting& ss : fp.state) {
                 pack::StateRec r;

@@ -67,6 +67,8 @@ void ExpandRequestedPasses(CompileState& st, bool skeleton) {
         const std::string& path = unit.file->path();
         for (size_t f = 0; f < unit.passes.size(); ++f) {
             const FlatPass& fp = unit.passes[f];
+            if (fp.grab)
+                continue;  // no program: pack_emit.cpp records it in its place
             std::optional<PassUnit> read = ReadPass(st, s, f);
             if (!read)
                 continue;

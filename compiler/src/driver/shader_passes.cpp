@@ -148,8 +148,15 @@ struct Walker {
                 continue;
             }
             if (const auto* grab = std::get_if<GrabPass>(&entry)) {
-                diags.Warning(DiagCode::kMisplacedCommand, file, grab->range,
-                              "GrabPass is not supported yet; the pass is skipped");
+                FlatPass fp;
+                fp.grab = grab;
+                fp.subshader = subshader_index;
+                fp.lod = ss_lod;
+                AddTags(fp.tags, grab->tags);
+                AddTags(fp.tags, ss.tags);
+                for (auto it = outer_tags.rbegin(); it != outer_tags.rend(); ++it)
+                    AddTags(fp.tags, **it);
+                out.push_back(std::move(fp));
                 continue;
             }
             const Pass& p = std::get<Pass>(entry);
@@ -239,13 +246,14 @@ void LabelPasses(std::vector<FlatPass>& passes) {
         several = several || fp.subshader != passes.front().subshader;
     for (size_t i = 0; i < passes.size(); ++i) {
         FlatPass& fp = passes[i];
-        if (fp.pass == nullptr)
+        if (fp.pass == nullptr && fp.grab == nullptr)
             continue;  // a UsePass not resolved yet
         uint32_t index = 0;
         for (size_t j = 0; j < i; ++j)
             index += passes[j].subshader == fp.subshader;
         fp.light_mode = TagValue(fp, pack::kTagLightMode);
-        fp.label = pack::PassId({fp.pass->name, fp.light_mode, fp.subshader, index, several});
+        const std::string& name = fp.pass ? fp.pass->name : fp.grab->name;
+        fp.label = pack::PassId({name, fp.light_mode, fp.subshader, index, several});
     }
 }
 

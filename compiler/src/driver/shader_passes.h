@@ -31,6 +31,8 @@ struct FlatPass {
     // `UsePass "Shader/PASS"`: set (and nothing else) until the compile resolves it to a copy of
     // that pass (driver/use_pass.cpp), whose blocks are in `source`'s file.
     const shaderlab::UsePass* use_pass = nullptr;
+    // A GrabPass: no program; the pack records it (kPassGrab) with its texture, in its place.
+    const shaderlab::GrabPass* grab = nullptr;
     std::shared_ptr<const SourceFile> source;  // null: the pass's own shader file
     uint32_t subshader = 0;
     int lod = 0;
@@ -45,9 +47,9 @@ struct FlatPass {
     std::vector<StateSetting> state;
 };
 
-// Passes in source order. A UsePass is a placeholder the compile resolves; GrabPass is reported
-// (warning) and skipped; a pass without a program gets one generated from its fixed-function
-// commands, as in Unity.
+// Passes in source order. A UsePass is a placeholder the compile resolves; a GrabPass has no
+// program (it is compiled into nothing: the runtime copies the colour target); a pass without a
+// program gets one generated from its fixed-function commands, as in Unity.
 std::vector<FlatPass> FlattenPasses(const shaderlab::Shader& shader,
                                     const std::string& file,
                                     DiagnosticList& diags);

@@ -124,6 +124,8 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
         sections.push_back(Records(SectionTag::kKeywordAliases, aliases));
     if (!stages_.empty())
         sections.push_back(Records(SectionTag::kVariantStages, stages_));
+    if (!grabs.empty())
+        sections.push_back(Records(SectionTag::kGrabPasses, grabs));
     sections.push_back(Records(SectionTag::kModules, modules_));
     sections.push_back(Records(SectionTag::kInterface, interface_));
     sections.push_back(Records(SectionTag::kBlocks, blocks_));

@@ -36,6 +36,7 @@ class PackBuilder {
     std::vector<pack::StrRef> keywords;
     std::vector<pack::VariantRec> variants;      // must be sorted by (pass, key) before Finish
     std::vector<pack::KeywordAliasRec> aliases;  // sorted by (set, from); written when any
+    std::vector<pack::GrabRec> grabs;            // sorted by pass; written when any
 
     // VariantRec::stages for a variant with these geometry/tessellation modules: 0 when it has
     // none, else 1 + the index of an identical record (added unless one exists).

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/base/text.h"
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/names.h"
 #include "kiln/pack/pass_id.h"
 #include "kiln/pack/reader.h"
@@ -129,13 +130,16 @@ nlohmann::json InfoJson(const Pack& p) {
                 }
                 variants.push_back(std::move(variant));
             }
-            passes.push_back({{"pass", PassLabel(p, i)},
-                              {"name", p.String(pr.name)},
-                              {"subshader", pr.subshader},
-                              {"tags", tags},
-                              {"state", state},
-                              {"keyword_sets", sets},
-                              {"variants", variants}});
+            nlohmann::json pass = {{"pass", PassLabel(p, i)},
+                                   {"name", p.String(pr.name)},
+                                   {"subshader", pr.subshader},
+                                   {"tags", tags},
+                                   {"state", state},
+                                   {"keyword_sets", sets},
+                                   {"variants", variants}};
+            if (const std::optional<std::string_view> grab = p.GrabTexture(i))
+                pass["grab"] = grab->empty() ? std::string(kTextureGrab) : std::string(*grab);
+            passes.push_back(std::move(pass));
         }
         shaders.push_back({{"name", p.String(sr.name)}, {"properties", props}, {"passes", passes}});
     }
@@ -224,6 +228,12 @@ std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) 
             std::printf("Shader \"%s\": %zu properties\n", s["name"].get<std::string>().c_str(),
                         s["properties"].size());
             for (const auto& p : s["passes"]) {
+                if (p.contains("grab")) {
+                    std::printf("  pass \"%s\": GrabPass into %s\n",
+                                p["pass"].get<std::string>().c_str(),
+                                p["grab"].get<std::string>().c_str());
+                    continue;
+                }
                 std::string sets;
                 for (const auto& k : p["keyword_sets"]) {
                     std::string words;

@@ -486,6 +486,10 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
         if (stats.shadow_draws > 0) {
             deferred += std::to_string(stats.shadow_draws) + " shadow draws, ";
         }
+        if (stats.grab_copies > 0) {
+            deferred += std::to_string(stats.grab_copies) + " GrabPass cop" +
+                        (stats.grab_copies == 1 ? "y, " : "ies, ");
+        }
         std::fprintf(
             summary,
             "%s: %ux%u, camera '%s', %u objects, %s%u base + %u additive passes (%u with vertex "

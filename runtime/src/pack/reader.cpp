@@ -29,12 +29,13 @@ constexpr SectionTag kAllTags[] = {
     SectionTag::kKeywords,      SectionTag::kVariants,   SectionTag::kModules,
     SectionTag::kSpirv,         SectionTag::kInterface,  SectionTag::kBlocks,
     SectionTag::kMembers,       SectionTag::kResources,  SectionTag::kKeywordAliases,
-    SectionTag::kVariantStages,
+    SectionTag::kVariantStages, SectionTag::kGrabPasses,
 };
 
 // Sections a pack may leave out (later minor versions' additions); absent means empty.
 bool Optional(SectionTag tag) {
-    return tag == SectionTag::kKeywordAliases || tag == SectionTag::kVariantStages;
+    return tag == SectionTag::kKeywordAliases || tag == SectionTag::kVariantStages ||
+           tag == SectionTag::kGrabPasses;
 }
 
 // Encoded record size per section; 0 for raw byte sections.
@@ -77,6 +78,8 @@ size_t RecordSizeOf(SectionTag tag) {
             return RecordSize<KeywordAliasRec>();
         case SectionTag::kVariantStages:
             return RecordSize<VariantStagesRec>();
+        case SectionTag::kGrabPasses:
+            return RecordSize<GrabRec>();
     }
     return 0;
 }
@@ -392,6 +395,27 @@ Status Pack::Validate() {
             if (Record<VariantRec>(SectionTag::kVariants, v).pass != i)
                 return fail("PASS", i);
         }
+        // A GrabPass draws nothing: no keyword sets, no variants, no render state.
+        if ((p.flags & kPassGrab) &&
+            (p.keyword_set_count != 0 || p.variant_count != 0 || p.state_count != 0)) {
+            return fail("PASS", i);
+        }
+    }
+    // One texture per GrabPass, sorted by pass, naming only flagged passes.
+    const uint32_t n_grabs = Count(SectionTag::kGrabPasses);
+    uint32_t flagged = 0;
+    for (uint32_t i = 0; i < n_passes; ++i)
+        flagged += (Record<PassRec>(SectionTag::kPasses, i).flags & kPassGrab) != 0;
+    if (flagged != n_grabs)
+        return Corrupt("GRAB holds " + std::to_string(n_grabs) + " records for " +
+                       std::to_string(flagged) + " GrabPass passes");
+    for (uint32_t i = 0; i < n_grabs; ++i) {
+        const GrabRec g = Record<GrabRec>(SectionTag::kGrabPasses, i);
+        if (g.pass >= n_passes || !(Record<PassRec>(SectionTag::kPasses, g.pass).flags & kPassGrab) ||
+            !str_ok(g.texture) ||
+            (i > 0 && Record<GrabRec>(SectionTag::kGrabPasses, i - 1).pass >= g.pass)) {
+            return fail("GRAB", i);
+        }
     }
     // A module of the stage a slot names, or (where `optional`) none.
     const auto stage_ok = [&](uint32_t module, Stage stage, bool optional) {
@@ -486,6 +510,22 @@ std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) c
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
         if (equal_ci(LightModeOf(*this, i), name))
             return i;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string_view> Pack::GrabTexture(uint32_t pass) const {
+    uint32_t lo = 0, hi = Count(SectionTag::kGrabPasses);  // sorted by pass
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        const GrabRec g = Record<GrabRec>(SectionTag::kGrabPasses, mid);
+        if (g.pass == pass)
+            return String(g.texture);
+        if (g.pass < pass) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
     }
     return std::nullopt;
 }

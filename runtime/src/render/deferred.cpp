@@ -17,6 +17,7 @@
 #include "kiln/pack/engine_names.h"
 #include "render/deferred_plan.h"
 #include "render/draw_builder.h"
+#include "render/grab_pass.h"
 #include "render/frame.h"
 #include "render/frame_values.h"
 #include "render/renderer_state.h"
@@ -194,13 +195,13 @@ Status DrawDeferred(Renderer::State& s,
     }
 
     if (!plan.forward.empty()) {
-        FramePass& forward = frame.passes.emplace_back();
+        FramePass forward;
         forward.name = "forward";
         forward.colors = {kRT3};
         forward.depth = kDepth;
         forward.clear = false;
-        builder.BeginPass(frame, forward);
-        if (Status e = builder.BuildForward(plan.forward, forward.draws); !e.ok()) {
+        if (Status e = BuildForwardPasses(builder, frame, forward, kRT3, plan.forward, stats);
+            !e.ok()) {
             return e;
         }
     }

@@ -137,14 +137,15 @@ Status DrawBuilder::Pipeline(const MaterialInstance& m,
     return {};
 }
 
-// A frame target sampled by name (the light pass's G-buffer and depth): nearest texels, clamped.
+// A frame target sampled by name (the light pass's G-buffer and depth): nearest texels, clamped
+// (a grab texture: bilinear).
 // A shadow map: with the depth-comparison sampler.
 Status DrawBuilder::TargetTexture(uint32_t target, pack::ResourceKind kind, Draw::Write& out) {
     VkSampler sampler = VK_NULL_HANDLE;
     if (Status e = frame_->targets[target].shadow_map
                        ? s_.ShadowSampler(sampler)
-                       : s_.Sampler(TextureWrap::kClampToEdge, TextureWrap::kClampToEdge, true,
-                                    sampler, true);
+                       : s_.Sampler(TextureWrap::kClampToEdge, TextureWrap::kClampToEdge,
+                                    !frame_->targets[target].filtered, sampler, true);
         !e.ok()) {
         return e;
     }
@@ -289,7 +290,7 @@ void DrawBuilder::Uniforms(const pack::Pack& pack,
     }
 }
 
-Status DrawBuilder::BuildForward(const std::vector<render::DrawRequest>& requests,
+Status DrawBuilder::BuildForward(std::span<const render::DrawRequest> requests,
                                  std::vector<Draw>& draws) {
     for (const render::DrawRequest& r : requests) {
         if (Status e = Build(r, draws); !e.ok()) {

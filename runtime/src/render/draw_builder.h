@@ -8,6 +8,7 @@
 #define KILN_RUNTIME_RENDER_DRAW_BUILDER_H_
 
 #include <map>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -38,7 +39,7 @@ class DrawBuilder {
     // One draw of a request's pass for its primitive, appended to `draws`.
     Status Build(const render::DrawRequest& request, std::vector<Draw>& draws);
     // The forward path's requests in order, counted as base and additive passes in the stats.
-    Status BuildForward(const std::vector<render::DrawRequest>& requests, std::vector<Draw>& draws);
+    Status BuildForward(std::span<const render::DrawRequest> requests, std::vector<Draw>& draws);
 
     // Every draw's uniform blocks, at the offsets their writes name.
     std::vector<uint8_t> TakeUniforms() { return std::move(uniforms_); }

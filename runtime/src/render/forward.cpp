@@ -11,6 +11,7 @@
 #include "render/forward_plan.h"
 #include "render/frame.h"
 #include "render/frame_values.h"
+#include "render/grab_pass.h"
 #include "render/renderer_state.h"
 #include "render/shadow_passes.h"
 
@@ -172,7 +173,7 @@ Status DrawPlan(Renderer::State& s,
             return e;
         }
     }
-    FramePass& forward = frame.passes.emplace_back();
+    FramePass forward;
     forward.name = "forward";
     forward.colors = {0};
     forward.depth = 1;
@@ -180,24 +181,22 @@ Status DrawPlan(Renderer::State& s,
         forward.resolves = {2};
     }
     forward.sampled = shadows.sampled;
-    builder.BeginPass(frame, forward);
-    if (!shadowed) {
-        if (Status e = builder.BuildForward(plan.draws, forward.draws); !e.ok()) {
-            return e;
-        }
-    } else {
-        // Each receiver binds its light's shadow and reads its values.
-        std::vector<render::DrawRequest> requests = plan.draws;
-        for (render::DrawRequest& r : requests) {
+    // Each receiver binds its light's shadow and reads its values.
+    std::vector<render::DrawRequest> shadowed_requests;
+    if (shadowed) {
+        shadowed_requests = plan.draws;
+        for (render::DrawRequest& r : shadowed_requests) {
             if (auto it = shadows.receivers.find(r.light);
                 r.light && it != shadows.receivers.end()) {
                 r.shadow_map = int(it->second.target);
                 r.values = it->second.values;
             }
         }
-        if (Status e = builder.BuildForward(requests, forward.draws); !e.ok()) {
-            return e;
-        }
+    }
+    if (Status e = BuildForwardPasses(builder, frame, forward, frame.output,
+                                      shadowed ? shadowed_requests : plan.draws, stats);
+        !e.ok()) {
+        return e;
     }
     stats.shadow_draws = shadows.draws;
     stats.objects = plan.objects;

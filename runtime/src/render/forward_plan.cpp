@@ -114,6 +114,14 @@ bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
                                           settings.pixel_lights, settings.light_mode);
     const std::string who = Requester(scene, item);
     for (uint32_t pass : passes.base) {
+        if (const std::optional<std::string_view> grab = packs[m.pack]->GrabTexture(pass)) {
+            DrawRequest r = ObjectRequest(item, pass);
+            r.grab = std::string(*grab);
+            r.reason = who + "GrabPass into " +
+                       (grab->empty() ? std::string(pack::kTextureGrab) : std::string(*grab));
+            out.push_back(std::move(r));
+            continue;
+        }
         DrawRequest r{item.instance, item.primitive, &m, pass, false,      lights.main,
                       lights.vertex, lights.sh,      {}, {},   item.center};
         r.keywords = DrawKeywords(m, false, lights.main, !lights.vertex.empty());

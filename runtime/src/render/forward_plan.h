@@ -26,7 +26,8 @@
 namespace kiln::render {
 
 // The passes of a shader the paths draw: of its first SubShader, every ForwardBase, Always or
-// untagged pass in order, the first ForwardAdd pass, and the first Deferred pass.
+// untagged pass in order (GrabPasses among them), the first ForwardAdd pass, and the first
+// Deferred pass.
 struct ShaderPasses {
     std::vector<uint32_t> base;
     std::optional<uint32_t> add;
@@ -54,6 +55,9 @@ struct DrawRequest {
     int shadow_map = -1;
     bool mirrored_view = false;
     bool depth_only = false;  // colour writes masked off (a shadow pass's unused target)
+    // A GrabPass of the object (no draw): the texture the colour drawn so far is copied into,
+    // "" for `GrabPass { }` (_GrabTexture, before every object that has one).
+    std::optional<std::string> grab;
 };
 
 // The shadows of a forward frame (render/shadow_plan.h).

@@ -205,12 +205,13 @@ void Layouts::To(VkCommandBuffer cmd, uint32_t t, VkImageLayout want) {
         return;
     }
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask =
-        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    b.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
                       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
+                      VK_ACCESS_TRANSFER_WRITE_BIT;
     b.oldLayout = current[t];
     b.newLayout = want;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -218,12 +219,18 @@ void Layouts::To(VkCommandBuffer cmd, uint32_t t, VkImageLayout want) {
     b.subresourceRange = {AspectsOf(frame.targets[t]), 0, 1, 0, frame.targets[t].cube ? 6u : 1u};
     const VkPipelineStageFlags stages =
         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-        VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+        VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+        VK_PIPELINE_STAGE_TRANSFER_BIT;
     vkCmdPipelineBarrier(cmd, stages, stages, 0, 0, nullptr, 0, nullptr, 1, &b);
     current[t] = want;
 }
 
 void Layouts::Before(VkCommandBuffer cmd, const FramePass& pass) {
+    if (pass.copy_from) {
+        To(cmd, *pass.copy_from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        To(cmd, pass.colors[0], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        return;
+    }
     for (uint32_t t : pass.sampled) {
         if (!(pass.depth_read_only && pass.depth == t)) {  // else the attachment's layout below
             To(cmd, t, SampledLayout(frame, pass, t));
@@ -268,7 +275,9 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
         const VkImageUsageFlags usage =
             (t.depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
                      : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
-            (multisampled ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+            (multisampled ? 0
+                          : VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                (t.depth ? 0 : VK_IMAGE_USAGE_TRANSFER_DST_BIT));
         const VkExtent2D extent = ExtentOf(frame, t);
         if (Status e = vk::CreateImage(c, extent.width, extent.height, t.format, usage,
                                        AspectsOf(t), image, 1, t.samples);
@@ -292,6 +301,11 @@ Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
         }
     }
     for (const FramePass& pass : frame.passes) {
+        if (pass.copy_from) {  // no render pass
+            f.render_passes.push_back(VK_NULL_HANDLE);
+            f.framebuffers.push_back(VK_NULL_HANDLE);
+            continue;
+        }
         VkRenderPass rp = VK_NULL_HANDLE;
         if (Status e = s.RenderPass(FormatsOf(frame, pass), pass.clear, pass.depth_read_only, rp);
             !e.ok()) {
@@ -383,6 +397,17 @@ void BeginPass(VkCommandBuffer cmd,
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
+void RecordCopy(VkCommandBuffer cmd, const Frame& frame, const FrameObjects& f, const FramePass& pass) {
+    VkImageCopy region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    const VkExtent2D extent = ExtentOf(frame, frame.targets[*pass.copy_from]);
+    region.extent = {extent.width, extent.height, 1};
+    vkCmdCopyImage(cmd, f.targets[*pass.copy_from].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                   f.targets[pass.colors[0]].image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                   &region);
+}
+
 void RecordDraws(VkCommandBuffer cmd,
                  std::span<const Draw> draws,
                  std::span<const std::vector<VkDescriptorSet>> sets,
@@ -449,6 +474,10 @@ Status RecordFrame(Renderer::State& s,
     for (uint32_t p = 0; p < passes; ++p) {
         layouts.Before(cmd, frame.passes[p]);
         timer.Mark(cmd, p, p > 0);
+        if (frame.passes[p].copy_from) {
+            RecordCopy(cmd, frame, f, frame.passes[p]);
+            continue;
+        }
         BeginPass(cmd, frame, f, p, f.render_passes[p]);
         RecordDraws(cmd, frame.passes[p].draws, f.sets[p],
                     {{0, 0}, ExtentOf(frame, frame.passes[p])});

@@ -54,6 +54,8 @@ struct FrameTarget {
     // How the frame debugger shows it: through the display transform (light), or as stored
     // (G-buffer data). Depth targets are linearised.
     bool display = true;
+    // Sampled with bilinear filtering (a GrabPass's texture, as in Unity); else nearest texels.
+    bool filtered = false;
     // Samples per pixel (MSAA). A multisampled target is only an attachment: a pass resolves it
     // (FramePass::resolves) into a single-sample target that is read back or sampled.
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
@@ -80,6 +82,9 @@ struct FramePass {
     // The layer of a cube shadow map (FrameTarget::cube) the pass draws into.
     uint32_t layer = 0;
     std::vector<Draw> draws;
+    // A copy pass (a GrabPass): no render pass and no draws; the single-sample colour target
+    // `copy_from` is copied into colors[0], a target of the same format and size.
+    std::optional<uint32_t> copy_from;
 };
 
 struct Frame {

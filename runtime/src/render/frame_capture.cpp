@@ -48,6 +48,24 @@ Status RecordFrameSteps(Renderer::State& s,
     };
     for (size_t p = 0; p < frame.passes.size(); ++p) {
         const FramePass& pass = frame.passes[p];
+        if (pass.copy_from) {  // one step: the copy, and the target it fills
+            VkCommandBuffer cmd = vk::BeginOneShot(c);
+            if (cmd == VK_NULL_HANDLE) {
+                return Error{DiagCode::kRenderFailed, "cannot allocate a command buffer"};
+            }
+            timer.Reset(cmd);
+            layouts.Before(cmd, pass);
+            timer.Mark(cmd, 0, false);
+            RecordCopy(cmd, frame, f, pass);
+            timer.Mark(cmd, 1, true);
+            if (Status e = vk::SubmitAndWait(c, cmd); !e.ok()) {
+                return e;
+            }
+            if (Status e = capture(p, -1, StepMilliseconds(timer)); !e.ok()) {
+                return e;
+            }
+            continue;
+        }
         VkRenderPass load = VK_NULL_HANDLE;
         if (Status e = s.RenderPass(FormatsOf(frame, pass), false, pass.depth_read_only, load);
             !e.ok()) {

@@ -66,6 +66,9 @@ std::string ImageFile(size_t step, const DebugImage& image) {
 }
 
 std::string StepTitle(size_t n, const DebugStep& s) {
+    if (!s.copy.empty()) {
+        return "#" + std::to_string(n) + " copy " + s.copy;
+    }
     if (s.draw < 0) {
         return "#" + std::to_string(n) + " clear";
     }
@@ -90,7 +93,8 @@ nlohmann::json Record(size_t n, const DebugStep& s) {
                         {"keywords", s.keywords},
                         {"state", s.state},
                         {"light", s.light},
-                        {"object", s.object}};
+                        {"object", s.object},
+                        {"copy", s.copy}};
     j["gpu_ms"] = s.gpu_ms >= 0 ? nlohmann::json(s.gpu_ms) : nlohmann::json(nullptr);
     nlohmann::json images = nlohmann::json::array();
     for (const DebugImage& image : s.images) {

@@ -67,6 +67,9 @@ void BeginPass(VkCommandBuffer cmd,
                size_t p,
                VkRenderPass render_pass);
 
+// A copy pass (FramePass::copy_from), after Layouts::Before.
+void RecordCopy(VkCommandBuffer cmd, const Frame& frame, const FrameObjects& f, const FramePass& pass);
+
 void RecordDraws(VkCommandBuffer cmd,
                  std::span<const Draw> draws,
                  std::span<const std::vector<VkDescriptorSet>> sets,

@@ -72,6 +72,9 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     }
     std::set<std::string> reported;
     for (const render::DrawRequest* r : requests) {
+        if (r->grab) {
+            continue;  // a copy, no variant
+        }
         const Result<pack::VariantChoice> chosen =
             selectors[r->material->pack]->Select(r->pass, r->keywords, r->reason);
         if (!chosen && reported.insert(chosen.error().message).second) {

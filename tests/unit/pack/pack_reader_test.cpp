@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "kiln/pack/pass_id.h"
+
 #include "support/compile_support.h"
 #include "support/test_support.h"
 
@@ -206,6 +208,70 @@ TEST(PackReader, GeometryAndTessellationModulesAreReadAndChecked) {
     b[vari + 4] = 9;  // VariantRec::stages of the first variant: past the 2 records
     test::ResealPack(b);
     ASSERT_FALSE(Pack::Open(b));
+}
+
+// Three shaders with GrabPasses: unnamed (Test/GrabInvert, Test/GrabEach) and named.
+const std::vector<uint8_t>& GrabPack() {
+    static const std::vector<uint8_t> bytes = [] {
+        DiagnosticList diags;
+        CompileOutput out = CompileShaders({test::DataPath("data/grabpass/invert.shader"),
+                                            test::DataPath("data/grabpass/named.shader")},
+                                           {}, diags);
+        EXPECT_TRUE(out.ok) << test::Brief(diags);
+        return out.pack;
+    }();
+    return bytes;
+}
+
+TEST(PackReader, GrabPassesAreReadInTheirPlaceAndChecked) {
+    Pack p;
+    ASSERT_TRUE(kiln::test::OpenInto(GrabPack(), p));
+    ASSERT_EQ(p.Count(SectionTag::kGrabPasses), 2u);
+    const ShaderRec invert = p.Shader(*p.FindShader("Test/GrabInvert")).value();
+    ASSERT_EQ(invert.pass_count, 3u);
+    EXPECT_FALSE(p.GrabTexture(invert.first_pass));
+    ASSERT_TRUE(p.GrabTexture(invert.first_pass + 1));
+    EXPECT_EQ(*p.GrabTexture(invert.first_pass + 1), "");
+    const PassRec grab = p.Pass(invert.first_pass + 1).value();
+    EXPECT_EQ(grab.flags, uint32_t(kPassGrab));
+    EXPECT_EQ(grab.variant_count, 0u);
+    EXPECT_EQ(grab.keyword_set_count, 0u);
+    EXPECT_EQ(PassLabel(p, invert.first_pass + 2), "INVERT");
+    const ShaderRec named = p.Shader(*p.FindShader("Test/GrabNamed")).value();
+    ASSERT_TRUE(p.GrabTexture(named.first_pass));
+    EXPECT_EQ(*p.GrabTexture(named.first_pass), "_Behind");
+    EXPECT_EQ(PassLabel(p, named.first_pass + 1), "#2") << "a GrabPass counts, as in Unity";
+
+    // {pass, texture offset, texture length, reserved}: a record naming a pass that is no
+    // GrabPass, a pass past the table, a texture past the strings; records out of order.
+    const size_t at = SectionAt(GrabPack(), "GRAB");
+    ASSERT_LT(at + 32, GrabPack().size());
+    for (const auto& [field, value] : std::vector<std::pair<size_t, uint32_t>>{
+             {0, 0}, {0, 999}, {4, 0xfffffff0u}, {16, 0}}) {
+        std::vector<uint8_t> b = GrabPack();
+        for (size_t k = 0; k < 4; ++k)
+            b[at + field + k] = uint8_t(value >> (8 * k));
+        test::ResealPack(b);
+        const Result<Pack> bad = Pack::Open(b);
+        ASSERT_FALSE(bad) << field << "=" << value;
+        EXPECT_EQ(bad.error().code, DiagCode::kBadPack);
+    }
+    // A pass with variants flagged as a GrabPass: the first pass of Test/GrabInvert ("RED").
+    std::vector<uint8_t> b = GrabPack();
+    const size_t pass = SectionAt(b, "PASS") + size_t(invert.first_pass) * 56 + 52;
+    b[pass] = uint8_t(kPassGrab);
+    test::ResealPack(b);
+    const Result<Pack> flagged = Pack::Open(b);
+    ASSERT_FALSE(flagged);
+    EXPECT_EQ(flagged.error().message, "PASS record " + std::to_string(invert.first_pass) +
+                                           " is out of bounds");
+    // A GrabPass whose flag is cleared: its record names a pass that is no GrabPass.
+    b = GrabPack();
+    b[SectionAt(b, "PASS") + size_t(invert.first_pass + 1) * 56 + 52] = 0;
+    test::ResealPack(b);
+    const Result<Pack> unflagged = Pack::Open(b);
+    ASSERT_FALSE(unflagged);
+    EXPECT_EQ(unflagged.error().message, "GRAB holds 2 records for 1 GrabPass passes");
 }
 
 TEST(PackReader, KeywordAliasesAreCheckedLikeEveryOtherIndex) {

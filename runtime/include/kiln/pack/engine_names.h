@@ -79,6 +79,8 @@ inline constexpr const char* kTextureCameraDepth = "_CameraDepthTexture";
 // a depth map (SHADOWS_DEPTH) or a depth cube (SHADOWS_CUBE); the collector samples the light's
 // depth map by this name.
 inline constexpr const char* kTextureShadowMap = "_ShadowMapTexture";
+// What `GrabPass { }` copies the colour drawn so far into (a named GrabPass uses its own name).
+inline constexpr const char* kTextureGrab = "_GrabTexture";
 
 // Built-in globals the renderer fills per frame, light or draw that are not named unity_* or
 // UNITY_* (every such name is the engine's too: IsEngineGlobal). docs/shader-library.md.
@@ -137,6 +139,7 @@ inline constexpr const char* kEngineGlobals[] = {
     kTextureGBuffer2,
     kTextureCameraDepth,
     kTextureShadowMap,
+    kTextureGrab,
 };
 
 // Whether the engine, not a material, sets the global `name` (an engine texture's

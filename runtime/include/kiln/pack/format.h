@@ -17,7 +17,7 @@ namespace kiln::pack {
 
 inline constexpr std::array<char, 4> kMagic = {'K', 'P', 'A', 'K'};
 inline constexpr uint16_t kFormatMajor = 1;  // readers reject another major
-inline constexpr uint16_t kFormatMinor = 2;  // additions readers may ignore (1: KALI, 2: VSTG)
+inline constexpr uint16_t kFormatMinor = 3;  // additions readers may ignore (1: KALI, 2: VSTG, 3: GRAB)
 inline constexpr uint32_t kHeaderSize = 32;
 inline constexpr uint32_t kSectionEntrySize = 24;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -52,6 +52,9 @@ enum class SectionTag : uint32_t {
     // VariantStagesRec; VariantRec::stages is 1 + an index into it. A reader of format 1.1
     // refuses these packs (their modules have a stage it does not know), never draws without them.
     kVariantStages = FourCC('V', 'S', 'T', 'G'),
+    // Optional (format 1.3): the texture of each GrabPass (a pass flagged kPassGrab), GrabRec
+    // sorted by pass. A reader of format 1.2 sees a pass without variants, which it never draws.
+    kGrabPasses = FourCC('G', 'R', 'A', 'B'),
 };
 
 struct Header {  // 32 bytes
@@ -196,6 +199,17 @@ struct AttributeRec {  // 16 bytes: [Name(args)]
 enum PassFlags : uint32_t {
     kPassOnlyRenderers = 1u << 0,     // `#pragma only_renderers` present
     kPassExcludeRenderers = 1u << 1,  // `#pragma exclude_renderers` present
+    // A GrabPass: no program, no keyword sets and no variants; the runtime copies the colour
+    // target into a texture (its GrabRec) where the pass stands in the object's passes.
+    kPassGrab = 1u << 2,
+};
+
+struct GrabRec {  // 16 bytes
+    uint32_t pass = 0;  // a pass flagged kPassGrab
+    // `GrabPass { "_Name" }`: grabbed once per frame, by the first object drawing the pass, into
+    // _Name. Empty: `GrabPass { }`, grabbed before every object's draw into _GrabTexture.
+    StrRef texture;
+    uint32_t reserved = 0;
 };
 
 struct PassRec {  // 56 bytes

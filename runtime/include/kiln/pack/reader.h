@@ -107,6 +107,9 @@ class Pack {
     // Binary search of the sorted variant table: O(log n). Keyword aliases (KALI) are applied
     // first: a key that enables an aliased keyword finds the variant of the keyword it aliases.
     std::optional<uint32_t> FindVariant(uint32_t pass, VariantKey key) const;
+    // A GrabPass's texture (GrabRec): its name, "" for `GrabPass { }` (into _GrabTexture before
+    // each object); none when `pass` is not a GrabPass. O(log n).
+    std::optional<std::string_view> GrabTexture(uint32_t pass) const;
     // The keyword index that `index` of keyword set `keyword_set` aliases, or `index` itself.
     uint32_t AliasOf(uint32_t keyword_set, uint32_t index) const;
 
@@ -127,7 +130,7 @@ class Pack {
     }
 
   private:
-    static constexpr size_t kSectionSlots = 19;  // every SectionTag (reader.cpp checks)
+    static constexpr size_t kSectionSlots = 20;  // every SectionTag (reader.cpp checks)
     template <class Rec>
     Rec Record(SectionTag tag, uint32_t index) const {  // index < Count(tag)
         const SectionEntry& s = sections_[Index(tag)];

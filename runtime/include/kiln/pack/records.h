@@ -133,6 +133,12 @@ constexpr void Visit(V& v, VariantStagesRec& r) {
     v(r.reserved);
 }
 template <class V>
+constexpr void Visit(V& v, GrabRec& r) {
+    v(r.pass);
+    Visit(v, r.texture);
+    v(r.reserved);
+}
+template <class V>
 constexpr void Visit(V& v, ModuleRec& r) {
     v(r.spirv_offset);
     v(r.spirv_size);
@@ -215,6 +221,7 @@ static_assert(RecordSize<StateRec>() == 24);
 static_assert(RecordSize<KeywordSetRec>() == 24);
 static_assert(RecordSize<KeywordAliasRec>() == 16);
 static_assert(RecordSize<VariantStagesRec>() == 16);
+static_assert(RecordSize<GrabRec>() == 16);
 static_assert(RecordSize<VariantRec>() == 24);
 static_assert(RecordSize<ModuleRec>() == 48);
 static_assert(RecordSize<InterfaceVarRec>() == 32);

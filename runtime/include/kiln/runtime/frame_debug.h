@@ -25,7 +25,9 @@ struct DebugImage {
 
 struct DebugStep {
     std::string pass;  // the frame pass: "forward", "gbuffer", "lighting"
-    int draw = -1;     // index of the draw within the pass; -1: the pass's clear
+    int draw = -1;     // index of the draw within the pass; -1: the pass's clear or copy
+    // A copy step (a GrabPass): "color -> _GrabTexture"; empty otherwise.
+    std::string copy;
     // What was drawn (empty for a clear).
     std::string shader, shader_pass, light_mode, keywords, state, light, object;
     double gpu_ms = -1;  // timestamp queries around the draw; negative: not supported

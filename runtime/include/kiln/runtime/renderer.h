@@ -90,6 +90,7 @@ struct FrameStats {
     uint32_t gbuffer_draws = 0;  // deferred path: Deferred passes into the G-buffer
     uint32_t light_passes = 0;   // deferred path: light passes over the G-buffer
     uint32_t shadow_draws = 0;   // ShadowCaster draws into maps and the camera depth, collectors
+    uint32_t grab_copies = 0;    // GrabPass copies of the colour target into a texture
     uint32_t pipelines_created = 0;
     // Device uploads this frame: vertex and index buffers, and material instances resolved. A
     // scene with an id (Scene::id) uploads them on its first frame only.
