@@ -140,7 +140,8 @@ def standard_input(shared):
         return 0
 
     return Input("Unity Standard, _NORMALMAP material", setup,
-                 ["--materials", "{work}/normal.material", "-I", "{work}/CGIncludes"],
+                 ["--materials", "{work}/normal.material", "-I", "{work}/CGIncludes",
+                  "--strict-variants"],
                  [("UnityStandardBRDF.cginc: 3 lines inserted", shift)], j1=False)
 
 

@@ -71,7 +71,7 @@ env -u KILN_TEMPLATES_DIR -u KILN_WORKER PATH=/usr/bin:/bin PKG_CONFIG_LIBDIR="$
 cmake --build "$dir" >>"$dir.log" 2>&1 || { cat "$dir.log"; echo "FAIL: build COMPONENTS pack"; exit 1; }
 out=$("$dir/pick_variant" "$dir/packs/nested/consumer.kpack")
 echo "COMPONENTS pack: $out"
-[[ "$out" == "pass ForwardBase variant FOG_LINEAR: "* ]] || { echo "FAIL: COMPONENTS pack output"; exit 1; }
+[[ "$out" == "pass ForwardBase variant HALF_TINT: "* ]] || { echo "FAIL: COMPONENTS pack output"; exit 1; }
 
 # pkg-config from the prefix: the same loader compiled with nothing but kiln-pack's flags.
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
@@ -85,7 +85,7 @@ done
 c++ -std=c++20 -o "$work/pick_variant_pc" "$consumer/pick_variant.cpp" \
     $(pkg-config --cflags --libs kiln-pack) || { echo "FAIL: build with pkg-config"; exit 1; }
 out=$("$work/pick_variant_pc" "$dir/packs/nested/consumer.kpack")
-[[ "$out" == "pass ForwardBase variant FOG_LINEAR: "* ]] || { echo "FAIL: pkg-config build output"; exit 1; }
+[[ "$out" == "pass ForwardBase variant HALF_TINT: "* ]] || { echo "FAIL: pkg-config build output"; exit 1; }
 unset PKG_CONFIG_PATH
 
 for gen in Ninja "Unix Makefiles"; do
@@ -101,7 +101,7 @@ for gen in Ninja "Unix Makefiles"; do
     pack="$dir/packs/nested/consumer.kpack"
     out=$("$dir/pick_variant" "$pack")
     echo "$out"
-    expected="pass ForwardBase variant FOG_LINEAR: "
+    expected="pass ForwardBase variant HALF_TINT: "
     [[ "$out" == "$expected"* && "$out" == *"(magic 07230203), alpha blend yes, zwrite off" ]] ||
         { echo "FAIL: unexpected output with $gen"; exit 1; }
     # An unchanged build does not run kiln; a newer kiln binary rebuilds the pack.

@@ -64,6 +64,10 @@ struct CompileOptions {
     std::map<std::string, std::vector<MaterialRequest>> materials;
     std::optional<std::set<std::string>> keywords;
     bool all_features = false;
+    // Every multi_compile combination (--strict-variants). Default: Unity's stripping of engine
+    // keywords no scene uses (lightmap modes, fog modes, instancing: variants/strip_profile.h),
+    // as a Unity build with Graphics Settings at their defaults; --scene strips by lookups.
+    bool strict_variants = false;
     // Per pass; a pass (or its SubShader) tagged "KilnMaxVariants" = "N" has the smaller of both.
     uint64_t max_variants = 4096;
     std::string cache_dir;  // empty: no cache
@@ -91,6 +95,7 @@ struct CompileOptions {
 struct CompileStats {
     uint64_t permutations = 0;    // product of keyword-set sizes, all passes
     size_t variants = 0;          // after shader_feature narrowing and skip_variants
+    uint64_t profile_stripped = 0;  // left out by the default stripping profile, all passes
     size_t stage_programs = 0;    // variants x 2 stages
     size_t unique_programs = 0;   // distinct reduced stage texts (what dedup leaves)
     size_t glslang_compiles = 0;  // unique programs compiled by glslang in this run
@@ -144,6 +149,10 @@ struct PassReport {
     uint64_t budget = 0;        // the most variants the pass may have (--max-variants, its tag)
     size_t variants = 0;
     size_t aliased = 0;  // of `variants`, those stored as another keyword's (an alias)
+    // Variants the default stripping profile left out (CompileOptions::strict_variants), and
+    // the keywords it stripped.
+    uint64_t profile_stripped = 0;
+    std::vector<std::string> profile_keywords;
     size_t unique_vertex = 0, unique_fragment = 0;
     // Stripped compiles: the variants built (in key order) and those asked for but not built.
     std::vector<RequestedVariantReport> kept, excluded;

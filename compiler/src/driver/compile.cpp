@@ -73,6 +73,8 @@ void FillReports(const CompileState& st, CompileOutput& out) {
             r.sets.push_back(std::move(k));
         }
         r.permutations = pu.expansion.permutations;
+        r.profile_stripped = pu.expansion.profile_stripped;
+        r.profile_keywords = pu.expansion.profile_keywords;
         r.formula = pu.expansion.formula;
         r.budget = driver::VariantBudget(fp, st.options.max_variants, "", ignored);
         r.variants = pu.expansion.keys.size();
@@ -97,6 +99,7 @@ void FillReports(const CompileState& st, CompileOutput& out) {
         out.passes.push_back(std::move(r));
         out.stats.permutations += pu.expansion.permutations;
         out.stats.variants += pu.expansion.keys.size();
+        out.stats.profile_stripped += pu.expansion.profile_stripped;
     }
     out.stats.stage_programs = st.tasks.size();
     out.stats.unique_programs = st.jobs.size();

@@ -83,6 +83,7 @@ void ExpandPasses(CompileState& st) {
         const std::string& path = unit.file->path();
         variants::VariantRequest request;
         request.all_features = st.options.all_features;
+        request.strict_variants = st.options.strict_variants;
         request.max_variants = st.options.max_variants;
         if (st.options.keywords)
             request.feature_combinations.push_back(*st.options.keywords);

@@ -64,6 +64,7 @@ std::string OptionsText(const CompileOptions& o) {
         field("keywords-end", "");
     }
     field("all-features", o.all_features ? "1" : "0");
+    field("strict-variants", o.strict_variants ? "1" : "0");
     field("max-variants", std::to_string(o.max_variants));
     if (o.requests)
         field("requests", pack::UsageFileText(*o.requests));

@@ -1,6 +1,9 @@
 #include "variants/expand.h"
 
 #include <algorithm>
+#include <set>
+
+#include "variants/strip_profile.h"
 
 namespace kiln::variants {
 
@@ -142,6 +145,45 @@ std::string DescribeKeywords(const std::vector<std::string>& keywords) {
     return s;
 }
 
+namespace {
+
+// Per keyword set, per choice: whether the default profile (variants/strip_profile.h) strips it.
+// Only multi_compile choices (shader_feature ones come from materials, which ask for them), never
+// a keyword a feature combination names, and never every choice of a set. Records the stripped
+// keywords in `ex`.
+template <class IsFeature>
+std::vector<std::vector<bool>> ProfileChoices(const PassPragmas& pragmas,
+                                              const VariantRequest& request,
+                                              IsFeature is_feature,
+                                              Expansion& ex) {
+    std::vector<std::vector<bool>> out(pragmas.sets.size());
+    if (request.strict_variants)
+        return out;
+    for (size_t s = 0; s < pragmas.sets.size(); ++s) {
+        if (is_feature(s))
+            continue;
+        const std::vector<std::string>& kws = pragmas.sets[s].keywords;
+        std::vector<bool> strip(kws.size(), false);
+        for (size_t i = 0; i < kws.size(); ++i) {
+            strip[i] = !kws[i].empty() && StrippedByDefault(kws[i]) != nullptr &&
+                       std::none_of(request.feature_combinations.begin(),
+                                    request.feature_combinations.end(),
+                                    [&](const std::set<std::string>& c) { return c.count(kws[i]); });
+        }
+        if (std::all_of(strip.begin(), strip.end(), [](bool b) { return b; }))
+            continue;  // a set keeps a choice
+        for (size_t i = 0; i < kws.size(); ++i) {
+            if (strip[i] && std::find(ex.profile_keywords.begin(), ex.profile_keywords.end(),
+                                      kws[i]) == ex.profile_keywords.end())
+                ex.profile_keywords.push_back(kws[i]);
+        }
+        out[s] = std::move(strip);
+    }
+    return out;
+}
+
+}  // namespace
+
 std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
                                         const VariantRequest& request,
                                         const std::string& pass_label,
@@ -245,6 +287,7 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
     std::set<std::string> skip;
     for (const auto& a : pragmas.skip_variants)
         skip.insert(a.text);
+    const std::vector<std::vector<bool>> profile = ProfileChoices(pragmas, request, is_feature, ex);
     // The multi_compile product (features fixed per combination), odometer order. Past the limit
     // keys are only counted, for the message.
     uint64_t built = 0;
@@ -253,19 +296,23 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
         std::vector<size_t> index(n, 0);
         while (true) {
             pack::VariantKey key;
-            bool skipped = false;
+            bool skipped = false, stripped = false;
             enabled.clear();
             for (size_t s = 0; s < n; ++s) {
                 const uint32_t k = is_feature(s) ? combo[s] : choices[s][index[s]];
                 key.Set(ex.layout[s].shift, ex.layout[s].bits, k);
                 const std::string& kw = pragmas.sets[s].keywords[k];
                 skipped = skipped || skip.count(kw) > 0;
+                stripped = stripped || (!profile[s].empty() && profile[s][k]);
                 if (!kw.empty())
                     enabled.push_back(kw);
             }
             if (!skipped && SatisfiesRules(pragmas.rules, enabled)) {
-                if (++built <= request.max_variants)
+                if (stripped) {
+                    ++ex.profile_stripped;
+                } else if (++built <= request.max_variants) {
                     ex.keys.push_back(key);
+                }
             }
             size_t s = 0;
             for (; s < n; ++s) {
@@ -287,7 +334,11 @@ std::optional<Expansion> ExpandVariants(const PassPragmas& pragmas,
     ex.keys.erase(std::unique(ex.keys.begin(), ex.keys.end()), ex.keys.end());
     if (ex.keys.empty()) {
         diags.Error(DiagCode::kNoVariantsLeft, file, pass_range,
-                    "skip_variants removes every variant of pass " + pass_label);
+                    std::string(ex.profile_stripped > 0
+                                    ? "skip_variants and the default stripping profile remove "
+                                      "(--strict-variants keeps the profile's)"
+                                    : "skip_variants removes") +
+                        " every variant of pass " + pass_label);
         return std::nullopt;
     }
     return ex;

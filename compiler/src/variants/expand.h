@@ -29,6 +29,10 @@ struct VariantRequest {
     // shader_feature combination. The all-off combination is always built.
     std::vector<std::set<std::string>> feature_combinations;
     uint64_t max_variants = 4096;
+    // Build every multi_compile combination (--strict-variants); false: leave out those Unity's
+    // default stripping leaves out (variants/strip_profile.h), unless a feature combination asks
+    // for the keyword.
+    bool strict_variants = false;
 };
 
 struct Expansion {
@@ -39,6 +43,10 @@ struct Expansion {
     // multi_compile product x feature_combinations, before rules and skip_variants.
     uint64_t permutations = 0;
     std::string formula;  // the product as written: "3 x 2 x 4 shader_feature combinations"
+    // Variants the default stripping profile left out (none with strict_variants), and the
+    // declared keywords it strips, in declaration order.
+    uint64_t profile_stripped = 0;
+    std::vector<std::string> profile_keywords;
 };
 
 // Bit layout of the sets (see kiln/pack/variant_key.h); nullopt when wider than 64 bits.

@@ -97,6 +97,7 @@ struct CompilerFlags {
     std::vector<std::string> keywords;
     std::vector<std::string> materials;  // .material files and <scene>.kiln.json sidecars
     bool all_features = false;
+    bool strict_variants = false;
     uint64_t max_variants = 4096;
     std::string templates_dir;
     unsigned jobs = 0;

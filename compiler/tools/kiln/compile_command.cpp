@@ -41,6 +41,7 @@ void PrintStats(const CompileStats& s, bool json, FILE* to) {
     if (json) {
         const nlohmann::ordered_json j = {{"permutations", s.permutations},
                                           {"variants", s.variants},
+                                          {"profile_stripped", s.profile_stripped},
                                           {"stage_programs", s.stage_programs},
                                           {"unique_programs", s.unique_programs},
                                           {"glslang_compiles", s.glslang_compiles},
@@ -64,10 +65,15 @@ void PrintStats(const CompileStats& s, bool json, FILE* to) {
     }
     std::fprintf(
         to,
-        "permutations %llu, variants %zu, stage programs %zu, unique programs %zu, glslang "
+        "permutations %llu, variants %zu%s, stage programs %zu, unique programs %zu, glslang "
         "compiles %zu, cache hits %zu (direct %zu), shared preprocesses %zu, modules %zu, aliased "
         "variants %zu\n",
-        static_cast<unsigned long long>(s.permutations), s.variants, s.stage_programs,
+        static_cast<unsigned long long>(s.permutations), s.variants,
+        s.profile_stripped == 0 ? ""
+                                : (" (" + std::to_string(s.profile_stripped) +
+                                   " more left out by the stripping profile)")
+                                      .c_str(),
+        s.stage_programs,
         s.unique_programs, s.glslang_compiles, s.cache_hits, s.direct_hits, s.shared_preprocesses,
         s.modules, s.aliased_variants);
     std::fprintf(
@@ -127,6 +133,10 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f, bool variant_choice) {
     cmd.add_flag("--all-features", f.all_features,
                  "Build every shader_feature combination (default: the all-off one and those "
                  "the materials enable, as Unity does)");
+    cmd.add_flag("--strict-variants", f.strict_variants,
+                 "Build every multi_compile combination, also those Unity strips when no scene "
+                 "uses their feature (lightmaps, fog, instancing), and fail on any of them "
+                 "(default: leave those out, as a Unity build with default Graphics Settings)");
     cmd.add_option("--max-variants", f.max_variants,
                    "Largest number of variants a pass may have (default 4096)")
         ->check(CLI::PositiveNumber.description(""))
@@ -258,6 +268,7 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
     if (!f.keywords.empty())
         o.keywords = std::set<std::string>(f.keywords.begin(), f.keywords.end());
     o.all_features = f.all_features;
+    o.strict_variants = f.strict_variants;
     for (const std::string& path : f.materials) {
         if (path.size() >= 10 && path.compare(path.size() - 10, 10, ".kiln.json") == 0) {
             const Result<material::MaterialSidecar> sidecar = material::ReadMaterialSidecar(path);
@@ -299,9 +310,9 @@ std::string CheckStripFlags(const SceneStripFlags& strip, const CompilerFlags& f
             return "--explain, --explain-json and --verify-scene need --scene or --usage";
         return "";
     }
-    if (flags.all_features || !flags.keywords.empty())
-        return "--all-features and --keywords do not apply with --scene or --usage: the scene's "
-               "lookups decide every variant";
+    if (flags.all_features || !flags.keywords.empty() || flags.strict_variants)
+        return "--all-features, --keywords and --strict-variants do not apply with --scene or "
+               "--usage: the scene's lookups decide every variant";
     if (strip.verify && strip.scenes.empty())
         return "--verify-scene needs --scene (a usage file has no scene to replay)";
     if (flags.materials.size() > 1)

@@ -46,6 +46,8 @@ std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& glob
                                   {"keyword_sets", sets},
                                   {"permutations", p.permutations},
                                   {"variants", p.variants},
+                                  {"profile_stripped", p.profile_stripped},
+                                  {"profile_keywords", p.profile_keywords},
                                   {"unique_vertex", p.unique_vertex},
                                   {"unique_fragment", p.unique_fragment}});
             }
@@ -74,6 +76,15 @@ std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& glob
                     "fragment %zu\n",
                     static_cast<unsigned long long>(p.permutations), p.variants, p.unique_vertex,
                     p.unique_fragment);
+                if (p.profile_stripped > 0) {
+                    std::string words;
+                    for (const std::string& k : p.profile_keywords)
+                        words += (words.empty() ? "" : " ") + k;
+                    std::printf("  %llu more left out by the default stripping profile (%s; "
+                                "--strict-variants builds them)\n",
+                                static_cast<unsigned long long>(p.profile_stripped),
+                                words.c_str());
+                }
             }
             const CompileStats& s = out.stats;
             std::printf("total: %zu variants, %zu stage programs, %zu unique compiles\n",

@@ -11,12 +11,12 @@ Shader "Consumer/Lit" {
             CGPROGRAM
             #pragma vertex vert
             #pragma fragment frag
-            #pragma multi_compile _ FOG_LINEAR
+            #pragma multi_compile _ HALF_TINT
             #include "UnityCG.cginc"
             float4 _Color;
             float4 vert(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
             float4 frag() : SV_Target {
-            #ifdef FOG_LINEAR
+            #ifdef HALF_TINT
                 return _Color * 0.5;  // the keyword changes the code, so it is no alias
             #endif
                 return _Color;

@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     VariantSelector selector(pack, MissingVariantPolicy::kError);
-    const kiln::Result<VariantChoice> choice = selector.Select(*pass, {"FOG_LINEAR"});
+    const kiln::Result<VariantChoice> choice = selector.Select(*pass, {"HALF_TINT"});
     if (!choice) {
         std::fprintf(stderr, "%s\n", choice.error().message.c_str());
         return 1;

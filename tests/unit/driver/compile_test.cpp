@@ -570,6 +570,7 @@ TEST(Compile, UnitysCompileEnvironmentIsReproduced) {
     CompileOptions o;
     o.defines = {{"EXPECTED_VERSION", "202230"}};
     o.forced_includes = {forced};
+    o.strict_variants = true;  // INSTANCING_ON too, which the default profile leaves out
     CompileRun ok = Compile({shader}, o);
     EXPECT_TRUE(ok.out.ok) << Brief(ok.diags);
     EXPECT_EQ(ok.out.stats.variants, 2u);

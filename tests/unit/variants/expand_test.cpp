@@ -78,21 +78,29 @@ TEST(Expand, ShaderFeatureCombinationsComeFromMaterialsAsInUnity) {
     EXPECT_EQ(described(all).size(), 8u);
 }
 
+// The variants a shortcut gives (--strict-variants: every combination its rules allow; else the
+// default stripping profile's).
+std::set<std::string> ExpandShortcut(const std::string& pragma,
+                                     bool strict,
+                                     DiagnosticList& diags) {
+    PassPragmas p;
+    auto shortcut = BuiltinShortcut(pragma);
+    EXPECT_TRUE(shortcut) << pragma;
+    for (const auto& kws : shortcut->sets)
+        p.sets.push_back(Set(kws));
+    p.rules = shortcut->rules;
+    VariantRequest request;
+    request.strict_variants = strict;
+    std::set<std::string> out;
+    const auto ex = ExpandVariants(p, request, "P", "t", {}, diags);
+    for (auto k : ex->keys)
+        out.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+    return out;
+}
+
 TEST(Expand, ShortcutRulesLeaveUnitysVariantList) {
     DiagnosticList diags;
-    auto expand = [&](const std::string& pragma) {
-        PassPragmas p;
-        auto shortcut = BuiltinShortcut(pragma);
-        EXPECT_TRUE(shortcut) << pragma;
-        for (const auto& kws : shortcut->sets)
-            p.sets.push_back(Set(kws));
-        p.rules = shortcut->rules;
-        std::set<std::string> out;
-        const auto ex = ExpandVariants(p, {}, "P", "t", {}, diags);
-        for (auto k : ex->keys)
-            out.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
-        return out;
-    };
+    auto expand = [&](const std::string& pragma) { return ExpandShortcut(pragma, true, diags); };
     const auto fullshadows = expand("multi_compile_fwdadd_fullshadows");
     EXPECT_EQ(fullshadows.size(), 47u);  // 5 lights x 3 + 8 shadowed x 4 mixing choices
     EXPECT_TRUE(fullshadows.count("SPOT SHADOWS_DEPTH SHADOWS_SOFT"));
@@ -113,6 +121,39 @@ TEST(Expand, ShortcutRulesLeaveUnitysVariantList) {
               (std::set<std::string>{"SHADOWS_DEPTH", "SHADOWS_CUBE"}));
     EXPECT_EQ(expand("multi_compile_prepassfinal").size(), 88u);
     EXPECT_FALSE(diags.has_errors());
+}
+
+// Unity's stripping with default Graphics Settings and no scene (variants/strip_profile.h): no
+// lightmap, mixed-lighting, fog or instancing variant; what the runtime asks for stays.
+TEST(Expand, TheDefaultProfileLeavesOutWhatUnityStripsWithoutAScene) {
+    DiagnosticList diags;
+    const auto base = ExpandShortcut("multi_compile_fwdbase", false, diags);
+    EXPECT_EQ(base, (std::set<std::string>{
+                        "DIRECTIONAL", "DIRECTIONAL LIGHTPROBE_SH",
+                        "DIRECTIONAL LIGHTPROBE_SH VERTEXLIGHT_ON", "DIRECTIONAL SHADOWS_SCREEN",
+                        "DIRECTIONAL SHADOWS_SCREEN LIGHTPROBE_SH",
+                        "DIRECTIONAL SHADOWS_SCREEN LIGHTPROBE_SH VERTEXLIGHT_ON",
+                        "DIRECTIONAL SHADOWS_SCREEN VERTEXLIGHT_ON", "DIRECTIONAL VERTEXLIGHT_ON"}));
+    // 5 lights without shadows, and 8 shadowed ones: no SHADOWS_SHADOWMASK, no mixing.
+    const auto add = ExpandShortcut("multi_compile_fwdadd_fullshadows", false, diags);
+    EXPECT_EQ(add.size(), 13u);
+    EXPECT_TRUE(add.count("SPOT SHADOWS_DEPTH SHADOWS_SOFT"));
+    EXPECT_EQ(ExpandShortcut("multi_compile_fog", false, diags),
+              (std::set<std::string>{"(no keywords)"}));
+    EXPECT_EQ(ExpandShortcut("multi_compile_instancing", false, diags),
+              (std::set<std::string>{"(no keywords)"}));
+    EXPECT_FALSE(diags.has_errors());
+
+    // A set that would keep no choice keeps them all; a keyword a material asks for is kept.
+    PassPragmas p;
+    p.sets = {Set({"FOG_LINEAR", "FOG_EXP"}), Set({"", "LIGHTMAP_ON"}), Set({"", "INSTANCING_ON"})};
+    VariantRequest request;
+    request.feature_combinations = {{"INSTANCING_ON"}};
+    const auto ex = ExpandVariants(p, request, "P", "t", {}, diags);
+    ASSERT_TRUE(ex);
+    EXPECT_EQ(ex->keys.size(), 4u);  // 2 fog modes x (_, INSTANCING_ON)
+    EXPECT_EQ(ex->profile_stripped, 4u);
+    EXPECT_EQ(ex->profile_keywords, (std::vector<std::string>{"LIGHTMAP_ON"}));
 }
 
 TEST(Expand, SkipVariantsRemovesEveryVariantWithTheKeyword) {
