@@ -101,6 +101,19 @@ inline void LightingBlinnPhong_GI(SurfaceOutput s, UnityGIInput data, inout Unit
     gi = UnityGlobalIllumination(data, 1.0, s.Normal);
 }
 
+#if UNITY_VERSION < 201910
+// The legacy deferred (light pre-pass) path's forms, which Unity 2018 and earlier ship
+// (hlsl/unity_versions.h): `light` is the accumulated light buffer, rgb the diffuse light and
+// a the specular term (the lecture's sum over lights, done by the light pass).
+inline fixed4 LightingLambert_PrePass(SurfaceOutput s, half4 light) {
+    return fixed4(s.Albedo * light.rgb, s.Alpha);
+}
+inline fixed4 LightingBlinnPhong_PrePass(SurfaceOutput s, half4 light) {
+    const fixed specular = light.a * s.Gloss;
+    return fixed4(s.Albedo * light.rgb + light.rgb * _SpecColor.rgb * specular, s.Alpha);
+}
+#endif
+
 // Legacy directional lightmaps (Unity 4's three-basis form).
 #define UNITY_DIRBASIS \
     const half3x3 unity_DirBasis = half3x3(half3(0.81649658, 0.0, 0.57735027), \

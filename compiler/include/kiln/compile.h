@@ -41,6 +41,10 @@ enum class Isolation { kWorkers, kInProcess };
 // (docs/unity-compat.md).
 inline constexpr int kDefaultUnityVersion = 202230;
 
+// What half and fixed are when --precision is not given, as that Unity release's Vulkan back end
+// makes them on desktop: relaxed (min16float) before 2019.1, full (32-bit) from it.
+pack::Precision DefaultPrecisionFor(int unity_version);
+
 struct CompileOptions {
     std::vector<std::string> include_dirs;                     // -I, searched in order
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]

@@ -18,6 +18,7 @@
 #include "driver/use_pass.h"
 #include "frontend/glslang_stage.h"
 #include "hlsl/precheck.h"
+#include "hlsl/unity_versions.h"
 #include "kiln/shaderlab/parse.h"
 #include "spirv/optimize.h"
 
@@ -304,6 +305,10 @@ CompileOutput LintShaders(const std::vector<std::string>& paths,
     every.materials.clear();
     every.requests.reset();
     return Run(paths, every, diags, Mode::kLint);
+}
+
+pack::Precision DefaultPrecisionFor(int unity_version) {
+    return hlsl::DefaultPrecision(unity_version);
 }
 
 std::string DefaultTemplatesDir() {

@@ -11,6 +11,7 @@
 #include "driver/parallel.h"
 #include "frontend/glslang_messages.h"
 #include "hlsl/identifier.h"
+#include "hlsl/unity_versions.h"
 #include "kiln/pack/names.h"
 
 namespace kiln::driver {
@@ -189,7 +190,9 @@ void AppendMessages(CompileState& st,
     context.include_search.push_back("the including file's folder");
     for (const std::string& dir : paths.dirs)
         context.include_search.push_back(dir + " (-I)");
-    context.include_search.push_back(paths.templates_dir + " (Kiln's templates)");
+    context.include_search.push_back(paths.templates_dir + " (Kiln's templates, Unity " +
+                                     hlsl::ReleaseName(paths.unity_version) + "'s files)");
+    context.unity_version = paths.unity_version;
     if (program != nullptr) {
         context.identifiers = [program] { return Identifiers(*program); };
         context.functions = [program, unreduced] {

@@ -68,7 +68,8 @@ std::unique_ptr<worker::Executor> MakeExecutor(CompileState& st) {
 }
 
 hlsl::IncludePaths IncludePathsFor(const CompileOptions& o) {
-    return {o.include_dirs, o.templates_dir.empty() ? DefaultTemplatesDir() : o.templates_dir};
+    return {o.include_dirs, o.templates_dir.empty() ? DefaultTemplatesDir() : o.templates_dir,
+            o.unity_version};
 }
 
 worker::Request StageRequest(const CompileState& st,
@@ -83,6 +84,7 @@ worker::Request StageRequest(const CompileState& st,
     r.entry = pu.pragmas.Entry(task.stage)->name;
     r.include_dirs = paths.dirs;
     r.templates_dir = paths.templates_dir;
+    r.unity_version = paths.unity_version;
     r.debug_info = st.options.debug_info;
     r.half_arithmetic = st.options.precision == Precision::kHalf;
     switch (st.options.opt_level) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "hlsl/identifier.h"
+#include "hlsl/unity_versions.h"
 #include "kiln/pack/names.h"
 
 namespace kiln::frontend {
@@ -414,6 +415,12 @@ void Improve(const GlslangMessage& m,
                                    "/...\" from the project's root folder: Kiln finds it above "
                                    "the Assets folder the including file is in; otherwise pass "
                                    "--project-root DIR"});
+        }
+        if (context.unity_version != 0) {
+            if (std::optional<std::string> note =
+                    hlsl::MissingIncludeNote(name, context.unity_version)) {
+                d.notes.push_back({d.file, kNoPosition, *note});
+            }
         }
         if (!context.include_search.empty()) {
             std::string dirs;

@@ -34,6 +34,9 @@ using SourceLookup = std::function<std::shared_ptr<const SourceFile>(const std::
 struct MessageContext {
     // Where #include looked, in order (a note on "cannot find include file").
     std::vector<std::string> include_search;
+    // --unity-version (UNITY_VERSION; 0: none): a missing include of a file only some releases
+    // ship gets a note naming them (hlsl/unity_versions.h).
+    int unity_version = 0;
     // The identifiers of the program, for the "did you mean" of an unknown name; called only
     // when a message needs them.
     std::function<std::vector<std::string>()> identifiers;

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string_view>
 
+#include "hlsl/unity_versions.h"
+
 namespace kiln::hlsl {
 namespace fs = std::filesystem;
 
@@ -47,7 +49,8 @@ std::string Includer::Resolve(const std::string& header,
             if (const std::string root = ProjectRootOf(includer); !root.empty())
                 candidates.push_back(Join(root, header));
         }
-        if (!paths_.templates_dir.empty()) {
+        if (!paths_.templates_dir.empty() &&
+            (paths_.unity_version == 0 || UnityShips(header, paths_.unity_version))) {
             candidates.push_back(Join(paths_.templates_dir, header));
         }
     }

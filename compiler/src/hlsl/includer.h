@@ -1,5 +1,5 @@
 // Resolves `#include` for glslang: relative to the including file, then each -I directory in
-// order, then the built-in templates/ directory. Include guards and `#pragma once` are handled by
+// order, then the built-in templates/ directory (the files of the --unity-version release). Include guards and `#pragma once` are handled by
 // glslang's preprocessor; this class only finds and serves files (read once via FileCache).
 #ifndef KILN_HLSL_INCLUDER_H_
 #define KILN_HLSL_INCLUDER_H_
@@ -17,6 +17,9 @@ namespace kiln::hlsl {
 struct IncludePaths {
     std::vector<std::string> dirs;  // -I, in order
     std::string templates_dir;      // the built-in library
+    // UNITY_VERSION: the library serves only the files that release ships
+    // (hlsl/unity_versions.h); 0: every file.
+    int unity_version = 0;
 };
 
 class Includer : public glslang::TShader::Includer {

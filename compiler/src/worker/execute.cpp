@@ -115,7 +115,8 @@ Response Validate(const Request& r, ExecuteContext& context) {
 
 Response Execute(const Request& request, ExecuteContext& context) {
     frontend::InitializeGlslang();
-    const hlsl::IncludePaths paths{request.include_dirs, request.templates_dir};
+    const hlsl::IncludePaths paths{request.include_dirs, request.templates_dir,
+                                   request.unity_version};
     hlsl::Includer includer(paths, context.files);
     Response resp;
     switch (request.kind) {

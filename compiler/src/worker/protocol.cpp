@@ -3,6 +3,7 @@
 #include <sys/socket.h>
 
 #include <cerrno>
+#include <charconv>
 
 #include "kiln/base/bytes.h"
 
@@ -38,6 +39,7 @@ enum Tag : uint8_t {
     kSecondOk,
     kSecondText,
     kSecondFunction,
+    kUnityVersion,
 };
 
 // Builds a whole frame: the length is patched in when it is taken.
@@ -169,6 +171,8 @@ std::string EncodeRequest(const Request& r) {
     for (const std::string& d : r.include_dirs)
         w.Bytes(kIncludeDir, d);
     w.Bytes(kTemplatesDir, r.templates_dir);
+    if (r.unity_version != 0)
+        w.Bytes(kUnityVersion, std::to_string(r.unity_version));
     w.U8(kDebugInfo, r.debug_info);
     w.U8(kOptLevel, r.opt_level);
     w.U8(kOptimize, r.optimize);
@@ -252,6 +256,12 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
             case kTemplatesDir:
                 r.templates_dir = b;
                 return true;
+            case kUnityVersion: {
+                const auto [end, error] =
+                    std::from_chars(b.data(), b.data() + b.size(), r.unity_version);
+                return error == std::errc() && end == b.data() + b.size() &&
+                       r.unity_version > 0;
+            }
             case kDebugInfo:
                 return ToBool(b, r.debug_info);
             case kOptLevel:

@@ -93,7 +93,7 @@ struct CompilerFlags {
     std::vector<std::string> undefines;
     std::vector<std::string> forced_includes;
     std::string unity_version;
-    std::string precision = "full";  // --precision
+    std::string precision;  // --precision; empty: the --unity-version release's
     std::vector<std::string> keywords;
     std::vector<std::string> materials;  // .material files and <scene>.kiln.json sidecars
     bool all_features = false;

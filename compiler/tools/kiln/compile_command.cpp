@@ -115,9 +115,11 @@ void AddCompilerOptions(CLI::App& cmd, CompilerFlags& f, bool variant_choice) {
             ""))
         ->option_text("VERSION");
     cmd.add_option("--precision", f.precision,
-                   "What half and fixed are: full (32-bit, the default, as Unity on desktop), "
-                   "relaxed (min16float, RelaxedPrecision: the driver may use 16 bits) or half "
-                   "(binary16 arithmetic; the device needs shaderFloat16)")
+                   "What half and fixed are: full (32-bit, as Unity on desktop Vulkan since "
+                   "2019), relaxed (min16float, RelaxedPrecision: the driver may use 16 bits; "
+                   "as Unity 2018 on Vulkan) or half (binary16 arithmetic; the device needs "
+                   "shaderFloat16). Default: what --unity-version's release gives on desktop "
+                   "Vulkan (relaxed before 2019.1, else full)")
         ->check(CLI::IsMember({"full", "relaxed", "half"}))
         ->option_text("full|relaxed|half");
     if (!variant_choice) {
@@ -264,7 +266,8 @@ CompileOptions ToCompileOptions(const CompilerFlags& f,
     }
     if (auto v = ParseUnityVersion(f.unity_version))
         o.unity_version = *v;
-    o.precision = pack::PrecisionFromName(f.precision);
+    o.precision = f.precision.empty() ? DefaultPrecisionFor(o.unity_version)
+                                      : pack::PrecisionFromName(f.precision);
     if (!f.keywords.empty())
         o.keywords = std::set<std::string>(f.keywords.begin(), f.keywords.end());
     o.all_features = f.all_features;

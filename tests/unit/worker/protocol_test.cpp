@@ -29,6 +29,7 @@ Request SampleRequest() {
     r.second_entry = "vert";
     r.include_dirs = {"inc1", "inc2"};
     r.templates_dir = "/t";
+    r.unity_version = 201840;
     r.debug_info = true;
     r.opt_level = 2;
     r.optimize = false;
@@ -53,6 +54,7 @@ TEST(WorkerProtocol, RequestsRoundTrip) {
     EXPECT_EQ(back->second_entry, r.second_entry);
     EXPECT_EQ(back->include_dirs, r.include_dirs);
     EXPECT_EQ(back->templates_dir, r.templates_dir);
+    EXPECT_EQ(back->unity_version, r.unity_version);
     EXPECT_EQ(back->debug_info, r.debug_info);
     EXPECT_EQ(back->opt_level, r.opt_level);
     EXPECT_EQ(back->optimize, r.optimize);
@@ -108,10 +110,10 @@ TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
     size_t accepted = 0;
     for (size_t n = 0; n < full->payload.size(); ++n)
         accepted += DecodeRequest(full->payload.substr(0, n)) ? 1 : 0;
-    // Fields: kind, stage, name, source, entry, second entry, 2 include dirs, templates, debug,
-    // opt level, optimize, half arithmetic, words: 14 boundaries before the end, the empty prefix
-    // included.
-    EXPECT_EQ(accepted, 14u);
+    // Fields: kind, stage, name, source, entry, second entry, 2 include dirs, templates, Unity
+    // version, debug, opt level, optimize, half arithmetic, words: 15 boundaries before the end,
+    // the empty prefix included.
+    EXPECT_EQ(accepted, 15u);
     for (size_t n = 0; n < 4; ++n)
         EXPECT_FALSE(SplitFrame(Payload(bytes).substr(0, n)));
 }
