@@ -93,8 +93,8 @@ TEST(Profile, MaterialsKeepTheirKeywordsAndStrictVariantsIsNoSceneOption) {
                 "/b.kpack --stats");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("permutations 2, variants 2,"), std::string::npos) << r.out;
-    r = RunKiln("compile " + dir + "/fog.shader --usage " + dir + "/none.json --strict-variants -o " +
-                dir + "/c.kpack");
+    r = RunKiln("compile " + dir + "/fog.shader --usage " + dir +
+                "/none.json --strict-variants -o " + dir + "/c.kpack");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("--strict-variants do not apply with --scene or --usage"),
               std::string::npos)

@@ -195,9 +195,9 @@ TEST(Stages, ANamedGrabPassIsCopiedOncePerFrameAndAnUnnamedOnePerObject) {
     float4 f() : SV_Target { return float4(1, 0, 0, 1); }
     ENDCG
 } } })");
-    RunResult r = RunKiln("compile " + DataPath("data/grabpass/named.shader") + " " +
-                          DataPath("data/grabpass/each.shader") + " " + dir + "/red.shader -o " +
-                          pack);
+    RunResult r =
+        RunKiln("compile " + DataPath("data/grabpass/named.shader") + " " +
+                DataPath("data/grabpass/each.shader") + " " + dir + "/red.shader -o " + pack);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     for (const auto& [shader, copies, step] :
          {std::tuple{"Test/GrabNamed", 1, "\"color -> grab _Behind\""},

@@ -16,10 +16,12 @@ std::string Program(const std::string& includes, const std::string& fragment_bod
     #pragma vertex v
     #pragma fragment f
     #include "UnityCG.cginc"
-)" + includes + R"(
+)" + includes +
+           R"(
     float4 v(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
     fixed4 f() : SV_Target {
-)" + fragment_body + R"(
+)" + fragment_body +
+           R"(
     }
     ENDCG
 } } })";
@@ -85,7 +87,8 @@ TEST(UnityVersion, HalfIsWhatTheReleaseMadeItOnDesktopVulkan) {
           {"", "full"},
           {"--unity-version 2018.4 --precision full", "full"},
           {"--unity-version 6000.0 --precision relaxed", "relaxed"}}) {
-        RunResult r = RunKiln("compile " + dir + "/p.shader " + options + " -o " + dir + "/p.kpack");
+        RunResult r =
+            RunKiln("compile " + dir + "/p.shader " + options + " -o " + dir + "/p.kpack");
         ASSERT_EQ(r.exit_code, 0) << options << ": " << r.err;
         r = RunKiln("info " + dir + "/p.kpack");
         EXPECT_NE(r.out.find("precision " + precision + "\n"), std::string::npos)

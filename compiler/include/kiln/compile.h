@@ -97,13 +97,13 @@ struct CompileOptions {
 };
 
 struct CompileStats {
-    uint64_t permutations = 0;    // product of keyword-set sizes, all passes
-    size_t variants = 0;          // after shader_feature narrowing and skip_variants
+    uint64_t permutations = 0;      // product of keyword-set sizes, all passes
+    size_t variants = 0;            // after shader_feature narrowing and skip_variants
     uint64_t profile_stripped = 0;  // left out by the default stripping profile, all passes
-    size_t stage_programs = 0;    // variants x 2 stages
-    size_t unique_programs = 0;   // distinct reduced stage texts (what dedup leaves)
-    size_t glslang_compiles = 0;  // unique programs compiled by glslang in this run
-    size_t cache_hits = 0;        // unique programs taken from the cache
+    size_t stage_programs = 0;      // variants x 2 stages
+    size_t unique_programs = 0;     // distinct reduced stage texts (what dedup leaves)
+    size_t glslang_compiles = 0;    // unique programs compiled by glslang in this run
+    size_t cache_hits = 0;          // unique programs taken from the cache
     // Stage programs not preprocessed: the cache's direct mode knew their result (every file
     // they read unchanged) and held its SPIR-V.
     size_t direct_hits = 0;

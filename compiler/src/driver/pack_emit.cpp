@@ -319,8 +319,8 @@ std::vector<std::pair<size_t, std::optional<size_t>>> PassOrder(const CompileSta
     const std::vector<FlatPass>& flats = st.shaders[s].passes;
     size_t p = 0;
     for (size_t f = 0; f < flats.size(); ++f) {
-        while (p < st.passes.size() && (st.passes[p].shader < s ||
-                                        (st.passes[p].shader == s && st.passes[p].flat < f)))
+        while (p < st.passes.size() &&
+               (st.passes[p].shader < s || (st.passes[p].shader == s && st.passes[p].flat < f)))
             ++p;
         if (p < st.passes.size() && st.passes[p].shader == s && st.passes[p].flat == f)
             out.emplace_back(f, p);

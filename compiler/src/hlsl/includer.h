@@ -1,6 +1,7 @@
 // Resolves `#include` for glslang: relative to the including file, then each -I directory in
-// order, then the built-in templates/ directory (the files of the --unity-version release). Include guards and `#pragma once` are handled by
-// glslang's preprocessor; this class only finds and serves files (read once via FileCache).
+// order, then the built-in templates/ directory (the files of the --unity-version release). Include
+// guards and `#pragma once` are handled by glslang's preprocessor; this class only finds and serves
+// files (read once via FileCache).
 #ifndef KILN_HLSL_INCLUDER_H_
 #define KILN_HLSL_INCLUDER_H_
 

@@ -39,8 +39,8 @@ const VersionedFile* FindVersionedFile(std::string_view header) {
 
 bool UnityShips(std::string_view header, int version) {
     const VersionedFile* f = FindVersionedFile(header);
-    return f == nullptr || ((f->first == 0 || version >= f->first) &&
-                            (f->last == 0 || version <= f->last));
+    return f == nullptr ||
+           ((f->first == 0 || version >= f->first) && (f->last == 0 || version <= f->last));
 }
 
 std::string ReleaseName(int version) {
@@ -55,8 +55,8 @@ std::optional<std::string> MissingIncludeNote(std::string_view header, int versi
     std::string releases = "Unity " + ReleaseName(f->first);
     releases += f->last == 0 ? " and later" : " to " + ReleaseName(f->last);
     if (!UnityShips(header, version)) {
-        return "Unity " + ReleaseName(version) + " does not ship '" + std::string(f->name) +
-               "' (" + releases + " do; --unity-version selects the release)";
+        return "Unity " + ReleaseName(version) + " does not ship '" + std::string(f->name) + "' (" +
+               releases + " do; --unity-version selects the release)";
     }
     return "'" + std::string(f->name) + "' is part of " + releases +
            ", not of Kiln's include layer: compile against Unity's own CGIncludes (-I) for it";

@@ -22,8 +22,8 @@ inline constexpr int kUnity2023 = 202310;
 // A Unity include file that not every release ships.
 struct VersionedFile {
     std::string_view name;
-    int first = 0;  // first UNITY_VERSION that ships it (0: every release Kiln knows)
-    int last = 0;   // last UNITY_VERSION that ships it (0: still shipped)
+    int first = 0;               // first UNITY_VERSION that ships it (0: every release Kiln knows)
+    int last = 0;                // last UNITY_VERSION that ships it (0: still shipped)
     bool in_kiln_layer = false;  // templates/ has it
 };
 

@@ -166,9 +166,9 @@ std::vector<std::vector<bool>> ProfileChoices(const PassPragmas& pragmas,
         std::vector<bool> strip(kws.size(), false);
         for (size_t i = 0; i < kws.size(); ++i) {
             strip[i] = !kws[i].empty() && StrippedByDefault(kws[i]) != nullptr &&
-                       std::none_of(request.feature_combinations.begin(),
-                                    request.feature_combinations.end(),
-                                    [&](const std::set<std::string>& c) { return c.count(kws[i]); });
+                       std::none_of(
+                           request.feature_combinations.begin(), request.feature_combinations.end(),
+                           [&](const std::set<std::string>& c) { return c.count(kws[i]); });
         }
         if (std::all_of(strip.begin(), strip.end(), [](bool b) { return b; }))
             continue;  // a set keeps a choice

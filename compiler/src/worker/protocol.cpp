@@ -259,8 +259,7 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
             case kUnityVersion: {
                 const auto [end, error] =
                     std::from_chars(b.data(), b.data() + b.size(), r.unity_version);
-                return error == std::errc() && end == b.data() + b.size() &&
-                       r.unity_version > 0;
+                return error == std::errc() && end == b.data() + b.size() && r.unity_version > 0;
             }
             case kDebugInfo:
                 return ToBool(b, r.debug_info);

@@ -57,12 +57,12 @@ struct Request {
     std::string second_entry;
     std::vector<std::string> include_dirs;  // -I, in order
     std::string templates_dir;              // the built-in include library
-    int unity_version = 0;  // --unity-version: the layer serves that release's files (0: any)
-    bool debug_info = false;                // kCompile/kFinish: keep debug info (-g)
-    uint8_t opt_level = 1;                  // kCompile: spirv::OptLevel
-    bool optimize = true;                   // kCompile: run SPIRV-Tools after glslang
-    bool half_arithmetic = false;           // kCompile: RelaxedPrecision arithmetic as binary16
-    std::vector<uint32_t> words;            // kFinish/kValidate
+    int unity_version = 0;    // --unity-version: the layer serves that release's files (0: any)
+    bool debug_info = false;  // kCompile/kFinish: keep debug info (-g)
+    uint8_t opt_level = 1;    // kCompile: spirv::OptLevel
+    bool optimize = true;     // kCompile: run SPIRV-Tools after glslang
+    bool half_arithmetic = false;  // kCompile: RelaxedPrecision arithmetic as binary16
+    std::vector<uint32_t> words;   // kFinish/kValidate
 };
 
 struct Response {

@@ -73,9 +73,8 @@ void PrintStats(const CompileStats& s, bool json, FILE* to) {
                                 : (" (" + std::to_string(s.profile_stripped) +
                                    " more left out by the stripping profile)")
                                       .c_str(),
-        s.stage_programs,
-        s.unique_programs, s.glslang_compiles, s.cache_hits, s.direct_hits, s.shared_preprocesses,
-        s.modules, s.aliased_variants);
+        s.stage_programs, s.unique_programs, s.glslang_compiles, s.cache_hits, s.direct_hits,
+        s.shared_preprocesses, s.modules, s.aliased_variants);
     std::fprintf(
         to,
         "ms: load %.1f, expand %.1f, preprocess %.1f, compile %.1f, finish %.1f, emit %.1f, total "

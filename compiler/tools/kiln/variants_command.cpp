@@ -80,10 +80,10 @@ std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& glob
                     std::string words;
                     for (const std::string& k : p.profile_keywords)
                         words += (words.empty() ? "" : " ") + k;
-                    std::printf("  %llu more left out by the default stripping profile (%s; "
-                                "--strict-variants builds them)\n",
-                                static_cast<unsigned long long>(p.profile_stripped),
-                                words.c_str());
+                    std::printf(
+                        "  %llu more left out by the default stripping profile (%s; "
+                        "--strict-variants builds them)\n",
+                        static_cast<unsigned long long>(p.profile_stripped), words.c_str());
                 }
             }
             const CompileStats& s = out.stats;

@@ -411,7 +411,8 @@ Status Pack::Validate() {
                        std::to_string(flagged) + " GrabPass passes");
     for (uint32_t i = 0; i < n_grabs; ++i) {
         const GrabRec g = Record<GrabRec>(SectionTag::kGrabPasses, i);
-        if (g.pass >= n_passes || !(Record<PassRec>(SectionTag::kPasses, g.pass).flags & kPassGrab) ||
+        if (g.pass >= n_passes ||
+            !(Record<PassRec>(SectionTag::kPasses, g.pass).flags & kPassGrab) ||
             !str_ok(g.texture) ||
             (i > 0 && Record<GrabRec>(SectionTag::kGrabPasses, i - 1).pass >= g.pass)) {
             return fail("GRAB", i);

@@ -94,8 +94,8 @@ StepObserver CaptureObserver(const glm::mat4& projection,
         step.draw = draw;
         step.gpu_ms = gpu_ms;
         if (pass.copy_from) {
-            step.copy = frame.targets[*pass.copy_from].name + " -> " +
-                        frame.targets[pass.colors[0]].name;
+            step.copy =
+                frame.targets[*pass.copy_from].name + " -> " + frame.targets[pass.colors[0]].name;
         }
         if (draw >= 0) {
             const Draw::Info& info = pass.draws[size_t(draw)].info;

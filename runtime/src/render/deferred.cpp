@@ -17,9 +17,9 @@
 #include "kiln/pack/engine_names.h"
 #include "render/deferred_plan.h"
 #include "render/draw_builder.h"
-#include "render/grab_pass.h"
 #include "render/frame.h"
 #include "render/frame_values.h"
+#include "render/grab_pass.h"
 #include "render/renderer_state.h"
 
 namespace kiln::runtime {

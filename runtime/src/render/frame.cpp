@@ -397,7 +397,10 @@ void BeginPass(VkCommandBuffer cmd,
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-void RecordCopy(VkCommandBuffer cmd, const Frame& frame, const FrameObjects& f, const FramePass& pass) {
+void RecordCopy(VkCommandBuffer cmd,
+                const Frame& frame,
+                const FrameObjects& f,
+                const FramePass& pass) {
     VkImageCopy region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

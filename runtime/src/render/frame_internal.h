@@ -68,7 +68,10 @@ void BeginPass(VkCommandBuffer cmd,
                VkRenderPass render_pass);
 
 // A copy pass (FramePass::copy_from), after Layouts::Before.
-void RecordCopy(VkCommandBuffer cmd, const Frame& frame, const FrameObjects& f, const FramePass& pass);
+void RecordCopy(VkCommandBuffer cmd,
+                const Frame& frame,
+                const FrameObjects& f,
+                const FramePass& pass);
 
 void RecordDraws(VkCommandBuffer cmd,
                  std::span<const Draw> draws,

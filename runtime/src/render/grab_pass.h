@@ -17,9 +17,9 @@
 namespace kiln::runtime {
 
 // Appends `first` (its targets, clear and sampled targets; no draws) to the frame with the draws of
-// `requests`, then, after each GrabPass, a copy pass from `source` (the pass's single-sample colour:
-// the attachment, or its resolve target with MSAA) and a pass like `first` that loads its targets.
-// Grab targets are added to the frame (bilinear, the colour's format).
+// `requests`, then, after each GrabPass, a copy pass from `source` (the pass's single-sample
+// colour: the attachment, or its resolve target with MSAA) and a pass like `first` that loads its
+// targets. Grab targets are added to the frame (bilinear, the colour's format).
 Status BuildForwardPasses(DrawBuilder& builder,
                           Frame& frame,
                           const FramePass& first,

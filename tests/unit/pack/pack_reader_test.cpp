@@ -12,15 +12,17 @@
 namespace kiln::pack {
 namespace {
 
+// The pack of two test shaders (compiled once per fixture).
+std::vector<uint8_t> PackOf(const std::string& a, const std::string& b) {
+    DiagnosticList diags;
+    CompileOutput out = CompileShaders({test::DataPath(a), test::DataPath(b)}, {}, diags);
+    EXPECT_TRUE(out.ok) << test::Brief(diags);
+    return out.pack;
+}
+
 const std::vector<uint8_t>& CompiledPack() {
-    static const std::vector<uint8_t> bytes = [] {
-        DiagnosticList diags;
-        CompileOutput out = CompileShaders({test::DataPath("data/compile/multi_light.shader"),
-                                            test::DataPath("../materials/Unlit.shader")},
-                                           {}, diags);
-        EXPECT_TRUE(out.ok) << test::Brief(diags);
-        return out.pack;
-    }();
+    static const std::vector<uint8_t> bytes =
+        PackOf("data/compile/multi_light.shader", "../materials/Unlit.shader");
     return bytes;
 }
 
@@ -155,14 +157,8 @@ size_t SectionAt(const std::vector<uint8_t>& b, const char* tag) {
 
 // A geometry pass and a tessellated pass: their variants' other stages are in VSTG.
 const std::vector<uint8_t>& StagesPack() {
-    static const std::vector<uint8_t> bytes = [] {
-        DiagnosticList diags;
-        CompileOutput out = CompileShaders({test::DataPath("data/stages/geometry.shader"),
-                                            test::DataPath("data/stages/tessellation.shader")},
-                                           {}, diags);
-        EXPECT_TRUE(out.ok) << test::Brief(diags);
-        return out.pack;
-    }();
+    static const std::vector<uint8_t> bytes =
+        PackOf("data/stages/geometry.shader", "data/stages/tessellation.shader");
     return bytes;
 }
 
@@ -212,14 +208,8 @@ TEST(PackReader, GeometryAndTessellationModulesAreReadAndChecked) {
 
 // Three shaders with GrabPasses: unnamed (Test/GrabInvert, Test/GrabEach) and named.
 const std::vector<uint8_t>& GrabPack() {
-    static const std::vector<uint8_t> bytes = [] {
-        DiagnosticList diags;
-        CompileOutput out = CompileShaders({test::DataPath("data/grabpass/invert.shader"),
-                                            test::DataPath("data/grabpass/named.shader")},
-                                           {}, diags);
-        EXPECT_TRUE(out.ok) << test::Brief(diags);
-        return out.pack;
-    }();
+    static const std::vector<uint8_t> bytes =
+        PackOf("data/grabpass/invert.shader", "data/grabpass/named.shader");
     return bytes;
 }
 
@@ -246,8 +236,8 @@ TEST(PackReader, GrabPassesAreReadInTheirPlaceAndChecked) {
     // GrabPass, a pass past the table, a texture past the strings; records out of order.
     const size_t at = SectionAt(GrabPack(), "GRAB");
     ASSERT_LT(at + 32, GrabPack().size());
-    for (const auto& [field, value] : std::vector<std::pair<size_t, uint32_t>>{
-             {0, 0}, {0, 999}, {4, 0xfffffff0u}, {16, 0}}) {
+    for (const auto& [field, value] :
+         std::vector<std::pair<size_t, uint32_t>>{{0, 0}, {0, 999}, {4, 0xfffffff0u}, {16, 0}}) {
         std::vector<uint8_t> b = GrabPack();
         for (size_t k = 0; k < 4; ++k)
             b[at + field + k] = uint8_t(value >> (8 * k));
@@ -263,8 +253,8 @@ TEST(PackReader, GrabPassesAreReadInTheirPlaceAndChecked) {
     test::ResealPack(b);
     const Result<Pack> flagged = Pack::Open(b);
     ASSERT_FALSE(flagged);
-    EXPECT_EQ(flagged.error().message, "PASS record " + std::to_string(invert.first_pass) +
-                                           " is out of bounds");
+    EXPECT_EQ(flagged.error().message,
+              "PASS record " + std::to_string(invert.first_pass) + " is out of bounds");
     // A GrabPass whose flag is cleared: its record names a pass that is no GrabPass.
     b = GrabPack();
     b[SectionAt(b, "PASS") + size_t(invert.first_pass + 1) * 56 + 52] = 0;

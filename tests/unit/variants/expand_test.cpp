@@ -128,12 +128,13 @@ TEST(Expand, ShortcutRulesLeaveUnitysVariantList) {
 TEST(Expand, TheDefaultProfileLeavesOutWhatUnityStripsWithoutAScene) {
     DiagnosticList diags;
     const auto base = ExpandShortcut("multi_compile_fwdbase", false, diags);
-    EXPECT_EQ(base, (std::set<std::string>{
-                        "DIRECTIONAL", "DIRECTIONAL LIGHTPROBE_SH",
-                        "DIRECTIONAL LIGHTPROBE_SH VERTEXLIGHT_ON", "DIRECTIONAL SHADOWS_SCREEN",
-                        "DIRECTIONAL SHADOWS_SCREEN LIGHTPROBE_SH",
-                        "DIRECTIONAL SHADOWS_SCREEN LIGHTPROBE_SH VERTEXLIGHT_ON",
-                        "DIRECTIONAL SHADOWS_SCREEN VERTEXLIGHT_ON", "DIRECTIONAL VERTEXLIGHT_ON"}));
+    EXPECT_EQ(
+        base,
+        (std::set<std::string>{
+            "DIRECTIONAL", "DIRECTIONAL LIGHTPROBE_SH", "DIRECTIONAL LIGHTPROBE_SH VERTEXLIGHT_ON",
+            "DIRECTIONAL SHADOWS_SCREEN", "DIRECTIONAL SHADOWS_SCREEN LIGHTPROBE_SH",
+            "DIRECTIONAL SHADOWS_SCREEN LIGHTPROBE_SH VERTEXLIGHT_ON",
+            "DIRECTIONAL SHADOWS_SCREEN VERTEXLIGHT_ON", "DIRECTIONAL VERTEXLIGHT_ON"}));
     // 5 lights without shadows, and 8 shadowed ones: no SHADOWS_SHADOWMASK, no mixing.
     const auto add = ExpandShortcut("multi_compile_fwdadd_fullshadows", false, diags);
     EXPECT_EQ(add.size(), 13u);

@@ -17,7 +17,8 @@ namespace kiln::pack {
 
 inline constexpr std::array<char, 4> kMagic = {'K', 'P', 'A', 'K'};
 inline constexpr uint16_t kFormatMajor = 1;  // readers reject another major
-inline constexpr uint16_t kFormatMinor = 3;  // additions readers may ignore (1: KALI, 2: VSTG, 3: GRAB)
+inline constexpr uint16_t kFormatMinor =
+    3;  // additions readers may ignore (1: KALI, 2: VSTG, 3: GRAB)
 inline constexpr uint32_t kHeaderSize = 32;
 inline constexpr uint32_t kSectionEntrySize = 24;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -204,7 +205,7 @@ enum PassFlags : uint32_t {
     kPassGrab = 1u << 2,
 };
 
-struct GrabRec {  // 16 bytes
+struct GrabRec {        // 16 bytes
     uint32_t pass = 0;  // a pass flagged kPassGrab
     // `GrabPass { "_Name" }`: grabbed once per frame, by the first object drawing the pass, into
     // _Name. Empty: `GrabPass { }`, grabbed before every object's draw into _GrabTexture.
