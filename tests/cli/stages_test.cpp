@@ -73,6 +73,33 @@ TEST_P(StagesTest, CompileIntoThePackAndDrawWithoutValidationMessages) {
                  : std::vector<std::string>{"\"hull_module\"", "\"domain_module\""};
     for (const std::string& field : fields)
         EXPECT_NE(r.out.find(field), std::string::npos) << field << " in " << r.out;
+    EXPECT_NE(r.out.find(geometry ? "\"stage\": \"geometry\"" : "\"stage\": \"domain\""),
+              std::string::npos)
+        << "each module's stage by name: " << r.out;
+
+    // kiln extract and kiln show reach every stage of the variant, and name the stages it has
+    // when asked for one it lacks.
+    const std::string shader_name = geometry ? "Test/Geometry" : "Test/Tessellation";
+    const std::string extra = geometry ? "geometry" : "domain";
+    r = RunKiln("extract " + pack + " --shader " + shader_name + " --pass ForwardBase --stage " +
+                extra + " -o " + dir + "/extra.spv");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(ReadFile(dir + "/extra.spv").substr(0, 4), std::string("\x03\x02\x23\x07", 4));
+    r = RunKiln("show " + pack + " --shader " + shader_name + " --pass ForwardBase --stage " +
+                extra + " --spirv");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(
+        r.out.find(geometry ? "OpEntryPoint Geometry" : "OpEntryPoint TessellationEvaluation"),
+        std::string::npos);
+    r = RunKiln("extract " + pack + " --shader " + shader_name + " --pass ForwardBase --stage " +
+                (geometry ? "hull" : "geometry") + " -o " + dir + "/none.spv");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find(geometry ? "the variant has no hull stage (it has vertex, fragment, "
+                                    "geometry) [K0006]"
+                                  : "the variant has no geometry stage (it has vertex, fragment, "
+                                    "hull, domain) [K0006]"),
+              std::string::npos)
+        << r.err;
 
     // kiln test draws every variant with the validation layer on; a message fails the variant.
     r = RunKiln("test " + pack + " --keep-failures " + dir + "/failures");

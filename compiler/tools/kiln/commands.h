@@ -85,6 +85,18 @@ std::optional<pack::VariantRec> ResolveVariant(const pack::Pack& pack,
                                                const VariantName& name,
                                                const GlobalOptions& global);
 
+// --stage of kiln extract and kiln show: vert, frag (or vertex, fragment), geometry, hull,
+// domain.
+void AddStageOption(CLI::Option* option);
+pack::Stage StageOf(const std::string& option);
+// The module of `variant` at `stage`; where it has none, an error naming the stages it has
+// (K0006) and nullopt.
+std::optional<uint32_t> ModuleAt(const pack::Pack& pack,
+                                 const pack::VariantRec& variant,
+                                 pack::Stage stage,
+                                 const std::string& file,
+                                 const GlobalOptions& global);
+
 // Flags shared by `compile` and `variants`.
 struct CompilerFlags {
     std::vector<std::string> include_dirs;

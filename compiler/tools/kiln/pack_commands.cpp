@@ -1,4 +1,4 @@
-// kiln info PACK [--json] and kiln extract PACK --shader S --pass P --stage vert|frag -o x.spv.
+// kiln info PACK [--json] and kiln extract PACK --shader S --pass P --stage STAGE -o x.spv.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -179,7 +179,7 @@ nlohmann::json InfoJson(const Pack& p) {
                           {"direction", v.direction == 0 ? "in" : "out"},
                           {"vecsize", v.vecsize}});
         }
-        modules.push_back({{"stage", mr.stage == 0 ? "vertex" : "fragment"},
+        modules.push_back({{"stage", pack::StageName(pack::Stage(mr.stage))},
                            {"bytes", mr.spirv_size},
                            {"interface", io},
                            {"blocks", blocks},
@@ -340,9 +340,8 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
     CLI::App* cmd = app.add_subcommand("extract", "Write one variant's SPIR-V module to a file");
     cmd->add_option("pack", o->file, "A .kpack file (- reads standard input)")->required();
     AddVariantNameOptions(*cmd, o->name);
-    cmd->add_option("--stage", o->stage, "vert or frag")
-        ->required()
-        ->check(CLI::IsMember({"vert", "frag", "vertex", "fragment"}));
+    AddStageOption(cmd->add_option("--stage", o->stage, "vert, frag, geometry, hull or domain")
+                       ->required());
     cmd->add_option("-o,--output", o->output, "Output .spv (- writes standard output)")->required();
     return [o, &global]() {
         MappedFile file;
@@ -352,9 +351,11 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
         const std::optional<pack::VariantRec> v = ResolveVariant(pack, o->file, o->name, global);
         if (!v)
             return int(kExitInputError);
-        const bool vert = o->stage[0] == 'v';
-        const auto bytes =
-            pack.Spirv(pack.Module(vert ? v->vertex_module : v->fragment_module).value());
+        const std::optional<uint32_t> module =
+            ModuleAt(pack, *v, StageOf(o->stage), o->file, global);
+        if (!module)
+            return int(kExitInputError);
+        const auto bytes = pack.Spirv(pack.Module(*module).value());
         Status written = base::WriteFileAtomically(
             o->output, std::span<const uint8_t>(bytes.data(), bytes.size()), {{o->file}});
         if (!written.ok())
@@ -362,6 +363,38 @@ std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& globa
                                written.error().message);
         return int(kExitOk);
     };
+}
+
+void AddStageOption(CLI::Option* option) {
+    option->check(
+        CLI::IsMember({"vert", "frag", "vertex", "fragment", "geometry", "hull", "domain"}));
+}
+
+pack::Stage StageOf(const std::string& option) {
+    for (uint32_t s = 0; s < pack::kStageCount; ++s) {
+        const std::string name = pack::StageName(pack::Stage(s));
+        if (option == name || option == name.substr(0, 4))
+            return pack::Stage(s);
+    }
+    return pack::Stage::kFragment;
+}
+
+std::optional<uint32_t> ModuleAt(const Pack& pack,
+                                 const pack::VariantRec& variant,
+                                 pack::Stage stage,
+                                 const std::string& file,
+                                 const GlobalOptions& global) {
+    std::string stages;
+    for (uint32_t m : pack.ModulesOf(variant)) {
+        const pack::ModuleRec rec = pack.Module(m).value();
+        if (rec.stage == uint32_t(stage))
+            return m;
+        stages += std::string(stages.empty() ? "" : ", ") + pack::StageName(pack::Stage(rec.stage));
+    }
+    ReportError(global, DiagCode::kMissingVariant, file,
+                std::string("the variant has no ") + pack::StageName(stage) + " stage (it has " +
+                    stages + ")");
+    return std::nullopt;
 }
 
 void AddVariantNameOptions(CLI::App& cmd, VariantName& name) {

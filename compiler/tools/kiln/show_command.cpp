@@ -102,7 +102,7 @@ int Run(const Options& o, const GlobalOptions& global) {
                     "--cross-hlsl or --reflect");
         return int(kExitUsageError);
     }
-    const pack::Stage stage = o.stage[0] == 'v' ? pack::Stage::kVertex : pack::Stage::kFragment;
+    const pack::Stage stage = StageOf(o.stage);
     pack::MappedFile file;
     std::vector<uint8_t> compiled;
     std::vector<ProgramText> programs;
@@ -131,8 +131,10 @@ int Run(const Options& o, const GlobalOptions& global) {
     const std::optional<pack::VariantRec> v = ResolveVariant(pack, o.input, o.name, global);
     if (!v)
         return int(kExitInputError);
-    const pack::ModuleRec module =
-        pack.Module(stage == pack::Stage::kVertex ? v->vertex_module : v->fragment_module).value();
+    const std::optional<uint32_t> at = ModuleAt(pack, *v, stage, o.input, global);
+    if (!at)
+        return int(kExitInputError);
+    const pack::ModuleRec module = pack.Module(*at).value();
     const std::span<const uint32_t> words = pack.SpirvWords(module);
 
     std::string text;
@@ -183,8 +185,8 @@ std::function<int()> AddShowCommand(CLI::App& app, const GlobalOptions& global) 
                     "input)")
         ->required();
     AddVariantNameOptions(*cmd, o->name);
-    cmd->add_option("--stage", o->stage, "vert or frag (default frag)")
-        ->check(CLI::IsMember({"vert", "frag", "vertex", "fragment"}));
+    AddStageOption(cmd->add_option("--stage", o->stage,
+                                   "vert, frag, geometry, hull or domain (default frag)"));
     cmd->add_flag("--hlsl", o->views.hlsl,
                   "The preprocessed HLSL glslang compiled, reduced to the entry point, with #line "
                   "back to the .shader (a .shader input only; kiln compile -E for every program)");
