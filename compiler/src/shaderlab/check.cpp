@@ -41,6 +41,9 @@ struct State {
     const std::string& file;
     DiagnosticList& diags;
     std::map<std::string, const Property*, std::less<>> props;
+    // Enclosing levels (Shader, Category) whose CGINCLUDE declares `#pragma surface`: their
+    // SubShader-level CGPROGRAMs are that surface shader's programs, not misplaced ones.
+    int surface_includes = 0;
 
     Diagnostic& Error(DiagCode code, SourceRange range, std::string message) {
         return diags.Error(code, file, range, std::move(message));
@@ -52,7 +55,8 @@ struct State {
     void CheckProperties();
     void CheckValue(const StateValue& value);
     void CheckState(const RenderState& state);
-    void CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pass);
+    // Returns whether an include block of `programs` declares `#pragma surface`.
+    bool CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pass);
     void CheckEntries(const std::vector<SubShaderEntry>& entries);
     void CheckSubShader(const SubShader& sub);
     void CheckLightMode(const std::vector<Tag>& tags);
@@ -172,8 +176,12 @@ void State::CheckState(const RenderState& s) {
     }
 }
 
-void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pass) {
+bool State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pass) {
     const ProgramBlock* first_program = nullptr;
+    const bool surface_include =
+        std::any_of(programs.begin(), programs.end(), [](const ProgramBlock& b) {
+            return IsIncludeBlock(b.kind) && FindPragma(b, "surface") != nullptr;
+        });
     for (const ProgramBlock& block : programs) {
         if (block.kind == ProgramKind::kGlslProgram || block.kind == ProgramKind::kGlslInclude) {
             Error(
@@ -191,6 +199,9 @@ void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
         if (IsIncludeBlock(block.kind)) {
             continue;
         }
+        if (!in_pass && (surface_include || surface_includes > 0)) {
+            continue;  // a program of the surface shader reported above (K3008)
+        }
         if (!in_pass) {
             Error(DiagCode::kProgramOutsidePass, MarkerRange(block),
                   "'" + std::string(ProgramKindName(block.kind)) +
@@ -203,6 +214,7 @@ void State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
             first_program = &block;
         }
     }
+    return surface_include;
 }
 
 // A LightMode no pipeline knows means the pass is never drawn. One spelled like a known value is a
@@ -265,8 +277,10 @@ void State::CheckEntries(const std::vector<SubShaderEntry>& entries) {
             CheckSubShader(*sub);
         } else if (const auto* cat = std::get_if<std::unique_ptr<Category>>(&entry)) {
             CheckState((*cat)->state);
-            CheckPrograms((*cat)->programs, false);
+            const int surface = CheckPrograms((*cat)->programs, false) ? 1 : 0;
+            surface_includes += surface;
             CheckEntries((*cat)->children);  // depth bounded by ParseOptions::max_nesting
+            surface_includes -= surface;
         }
     }
 }
@@ -276,7 +290,7 @@ void State::CheckEntries(const std::vector<SubShaderEntry>& entries) {
 void Check(const Shader& shader, const std::string& file, DiagnosticList& diags) {
     State s{shader, file, diags, {}};
     s.CheckProperties();
-    s.CheckPrograms(shader.programs, false);
+    s.surface_includes = s.CheckPrograms(shader.programs, false) ? 1 : 0;
     s.CheckEntries(shader.subshaders);
 }
 
