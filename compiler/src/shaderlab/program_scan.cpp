@@ -3,10 +3,7 @@
 #include <string>
 
 namespace kiln::shaderlab {
-namespace {
 
-// A copy of `body` with comments and string literals blanked out; newlines and length kept, so
-// offsets into the copy are offsets into the body.
 std::string BlankComments(std::string_view body) {
     std::string out(body);
     size_t i = 0;
@@ -39,6 +36,8 @@ std::string BlankComments(std::string_view body) {
     }
     return out;
 }
+
+namespace {
 
 bool IsBlank(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';

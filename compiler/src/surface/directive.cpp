@@ -13,7 +13,7 @@ using shaderlab::PragmaArg;
 
 // `name:value` options, in the manual's order.
 constexpr std::array<std::string_view, 10> kValued = {
-    "alpha",      "alphatest",    "decal",         "vertex",    "finalcolor",
+    "alpha",        "alphatest",    "decal",        "vertex",     "finalcolor",
     "finalgbuffer", "finalprepass", "exclude_path", "tessellate", "tessphong"};
 
 struct State {
@@ -46,13 +46,13 @@ struct State {
                 const PragmaArg& value,
                 std::initializer_list<std::string_view> choices) {
         std::vector<std::string> names(choices.begin(), choices.end());
-        Fail(DiagCode::kMisspelledPragma, value.range,
-             "'" + arg.text + "': expected " + [&] {
-                 std::string s;
-                 for (size_t i = 0; i < names.size(); ++i)
-                     s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-                 return s;
-             }() + pack::DidYouMean(value.text, names));
+        Fail(
+            DiagCode::kMisspelledPragma, value.range, "'" + arg.text + "': expected " + [&] {
+                std::string s;
+                for (size_t i = 0; i < names.size(); ++i)
+                    s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+                return s;
+            }() + pack::DidYouMean(value.text, names));
     }
 
     void Valued(const PragmaArg& arg, const std::string& name, const PragmaArg& value) {
@@ -126,12 +126,13 @@ bool SurfaceDirective::PhysicallyBased() const {
 
 const std::set<std::string>& SurfaceFlags() {
     static const std::set<std::string> flags = {
-        "keepalpha",      "addshadow",       "fullforwardshadows", "noshadow",
-        "noambient",      "novertexlights",  "nolightmap",         "nodynlightmap",
-        "nodirlightmap",  "nofog",           "nometa",             "noforwardadd",
-        "nolppv",         "noshadowmask",    "noinstancing",       "halfasview",
-        "interpolateview", "approxview",     "dualforward",        "softvegetation",
-        "dithercrossfade"};
+        "keepalpha",   "addshadow",       "fullforwardshadows",
+        "noshadow",    "noambient",       "novertexlights",
+        "nolightmap",  "nodynlightmap",   "nodirlightmap",
+        "nofog",       "nometa",          "noforwardadd",
+        "nolppv",      "noshadowmask",    "noinstancing",
+        "halfasview",  "interpolateview", "approxview",
+        "dualforward", "softvegetation",  "dithercrossfade"};
     return flags;
 }
 
