@@ -11,6 +11,7 @@ namespace kiln::variants {
 namespace {
 
 using shaderlab::Pragma;
+using shaderlab::PragmaArg;
 
 // Unity pragmas Kiln accepts and ignores: they change nothing for Vulkan.
 const std::set<std::string> kIgnoredPragmas = {"fragmentoption",
@@ -162,6 +163,35 @@ struct State {
         out.sets.push_back(std::move(set));
     }
 
+    // The keywords a shortcut's modifiers remove (`#pragma multi_compile_fwdbase nolightmap`, as
+    // Unity's generated surface passes and some built-in shaders write it); an unknown modifier is
+    // a warning naming the closest one, and is ignored.
+    std::set<std::string> ShortcutModifiers(const Pragma& p) {
+        static const std::map<std::string, std::vector<std::string>> kModifiers = {
+            {"nolightmap", {"LIGHTMAP_ON"}},
+            {"nodirlightmap", {"DIRLIGHTMAP_COMBINED"}},
+            {"nodynlightmap", {"DYNAMICLIGHTMAP_ON"}},
+            {"novertexlight", {pack::kKeywordVertexLight}},
+            {"novertexlights", {pack::kKeywordVertexLight}},
+            {"noshadowmask", {"SHADOWS_SHADOWMASK"}},
+            {"noshadow", {"SHADOWS_SCREEN", "SHADOWS_DEPTH", "SHADOWS_CUBE", "SHADOWS_SOFT"}},
+        };
+        std::set<std::string> removed;
+        for (const PragmaArg& a : p.args) {
+            if (auto it = kModifiers.find(a.text); it != kModifiers.end()) {
+                removed.insert(it->second.begin(), it->second.end());
+                continue;
+            }
+            std::vector<std::string> names;
+            for (const auto& [modifier, keywords] : kModifiers)
+                names.push_back(modifier);
+            diags.Warning(DiagCode::kUnknownPragma, file, a.range,
+                          "'#pragma " + p.name + "' has no modifier '" + a.text +
+                              "'; it is ignored" + pack::DidYouMean(a.text, names));
+        }
+        return removed;
+    }
+
     // multi_compile[_local][_vertex|_fragment], shader_feature[...]: true when handled.
     bool KeywordPragma(const Pragma& p) {
         std::string name = p.name;
@@ -169,9 +199,15 @@ struct State {
         set.pragma = p.name;
         set.range = p.range;
         if (const auto shortcut = BuiltinShortcut(name)) {
+            const std::set<std::string> removed = ShortcutModifiers(p);
             for (const auto& keywords : shortcut->sets) {
                 KeywordSet s = set;
-                s.keywords = keywords;
+                for (const std::string& k : keywords) {
+                    if (!removed.count(k))
+                        s.keywords.push_back(k);
+                }
+                if (s.keywords.empty() || (s.keywords.size() == 1 && s.keywords[0].empty()))
+                    continue;  // every keyword of the set removed
                 AddSet(std::move(s), Pragma{p.name, {}, p.range});
             }
             for (KeywordRule rule : shortcut->rules) {

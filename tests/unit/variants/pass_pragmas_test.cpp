@@ -107,6 +107,26 @@ TEST(PassPragmas, BuiltinShortcutsExpandToDocumentedSets) {
     EXPECT_FALSE(BuiltinShortcut("multi_compile_fwdadd_nope"));
 }
 
+// `#pragma multi_compile_fwdbase nolightmap ...` (Unity's TreeCreatorLeavesFast, and the passes
+// Unity generates for surface shaders) removes those keywords; an unknown modifier is a warning.
+TEST(PassPragmas, ShortcutModifiersRemoveTheirKeywords) {
+    const Read base = ReadPragmas(
+        "#pragma multi_compile_fwdbase nolightmap nodynlightmap nodirlightmap novertexlight "
+        "noshadowmask");
+    EXPECT_EQ(Sets(base.pragmas),
+              "multi: DIRECTIONAL\nmulti: _ SHADOWS_SCREEN\nmulti: _ LIGHTMAP_SHADOW_MIXING\n"
+              "multi: _ LIGHTPROBE_SH\n");
+    EXPECT_TRUE(base.diags.all().empty()) << test::Summarize(base.diags);
+    EXPECT_EQ(Sets(ReadPragmas("#pragma multi_compile_fwdadd_fullshadows noshadow").pragmas),
+              "multi: POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE\n"
+              "multi: _ SHADOWS_SHADOWMASK\nmulti: _ LIGHTMAP_SHADOW_MIXING\n");
+    const Read typo = ReadPragmas("#pragma multi_compile_fwdbase nolightmaps");
+    EXPECT_EQ(typo.pragmas.sets.size(), 9u);
+    EXPECT_EQ(test::Summarize(typo.diags),
+              "K4001 5:31 warning: '#pragma multi_compile_fwdbase' has no modifier "
+              "'nolightmaps'; it is ignored; did you mean 'nolightmap'?\n");
+}
+
 TEST(PassPragmas, RenderersAreRecordedAndWarnWithoutVulkan) {
     Read r = ReadPragmas("#pragma only_renderers d3d11 glcore");
     EXPECT_EQ(r.pragmas.only_renderers, (std::vector<std::string>{"d3d11", "glcore"}));
