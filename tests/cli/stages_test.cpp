@@ -257,6 +257,32 @@ TEST(Stages, ANamedGrabPassIsCopiedOncePerFrameAndAnUnnamedOnePerObject) {
     }
 }
 
+// A GrabPass tagged with a LightMode the forward path does not draw as a base pass is no step of
+// the object's passes: no copy, and no variant looked up for it.
+TEST(Stages, AGrabPassOutsideTheBasePassesIsNotCopied) {
+    if (!fs::exists(kBox))
+        GTEST_SKIP() << kBox << " is absent (../shared not checked out)";
+    const std::string dir = FreshTempDir("stages_grab_tagged");
+    WriteFile(dir + "/g.shader", R"(Shader "Test/GrabTagged" { SubShader {
+    GrabPass { Tags { "LightMode" = "Deferred" } }
+    Pass {
+        CGPROGRAM
+        #pragma vertex v
+        #pragma fragment f
+        #include "UnityCG.cginc"
+        float4 v(float4 p : POSITION) : SV_POSITION { return UnityObjectToClipPos(p); }
+        float4 f() : SV_Target { return float4(0, 0, 1, 1); }
+        ENDCG
+    }
+} })");
+    const RunResult r = RunKiln("compile " + dir + "/g.shader -o " + dir + "/g.kpack");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string png = dir + "/box.png";
+    // On the deferred path the object, which has no Deferred pass to draw, is drawn forward.
+    RenderBox(dir, dir + "/g.kpack", "Test/GrabTagged", png, "--path deferred");
+    EXPECT_GT(PixelsOf(png, 0, 0, 255), 1000u);
+}
+
 TEST(Stages, AUsePassOfNoSuchPassNamesTheClosestOne) {
     const std::string dir = FreshTempDir("stages_usepass_typo");
     std::string text = ReadFile(DataPath("data/usepass/uses_outline.shader"));

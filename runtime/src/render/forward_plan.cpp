@@ -51,7 +51,17 @@ ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader) {
             continue;  // the first SubShader is the one that runs
         }
         const std::string_view mode = pack::LightModeOf(pack, p);
-        if (mode.empty() || mode == pack::kLightModeForwardBase || mode == pack::kLightModeAlways) {
+        const bool base_mode =
+            mode.empty() || mode == pack::kLightModeForwardBase || mode == pack::kLightModeAlways;
+        if (rec.flags & pack::kPassGrab) {
+            // A GrabPass copies where it stands among the object's base passes; under another
+            // LightMode it has no place in the path (and no variant to draw).
+            if (base_mode) {
+                out.base.push_back(p);
+            }
+            continue;
+        }
+        if (base_mode) {
             out.base.push_back(p);
         } else if (mode == pack::kLightModeForwardAdd && !out.add) {
             out.add = p;
