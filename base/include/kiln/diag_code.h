@@ -82,7 +82,7 @@ enum class DiagCode : uint16_t {
     kDefaultOutOfRange = 3005,
     kMultiplePrograms = 3006,
     kUnsupportedGlsl = 3007,
-    kUnsupportedSurfaceShader = 3008,
+    kBadSurfaceShader = 3008,  // a surface shader whose passes cannot be generated
     kProgramOutsidePass = 3009,
     kDuplicateTag = 3010,
     kUnknownTextureDefault = 3011,

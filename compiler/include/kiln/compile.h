@@ -192,6 +192,10 @@ struct CompileOutput {
     StripReport strip;
     // Every file read (shaders and includes), for diagnostics output and depfiles.
     std::vector<std::shared_ptr<const SourceFile>> files;
+    // The ShaderLab generated for surface shaders, one per `#pragma surface`, named
+    // "<shader> (generated)" (no file of that name exists; diagnostics in generated code name
+    // it, and kiln compile --emit-generated writes it).
+    std::vector<std::shared_ptr<const SourceFile>> generated;
 };
 
 // Compiles to a pack. Diagnostics go to `diags`; `ok` is false when there are errors.

@@ -44,8 +44,11 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
         unit.file = std::make_shared<const SourceFile>(std::move(read).value());
         st.files.Put(unit.file);
         unit.ast = shaderlab::ParseAndCheck(*unit.file, st.diags);
-        if (unit.ast)
+        if (unit.ast) {
+            driver::ExpandSurfaceShaders(*unit.ast, *unit.file, driver::IncludePathsFor(st.options),
+                                         st.files, st.generated, st.diags);
             unit.passes = driver::FlattenPasses(*unit.ast, path, st.diags);
+        }
         hlsl::Prechecker precheck(*unit.file, {}, st.diags);
         for (const driver::FlatPass& fp : unit.passes)
             precheck.CheckPass(fp.blocks);
@@ -175,6 +178,8 @@ CompileOutput Finish(CompileState& st,
     whole.Into(out.stats.ms.total);
     RecordPeakMemory(out.stats);
     out.files = st.files.Files();
+    for (const driver::GeneratedSource& g : st.generated)
+        out.generated.push_back(g.file);
     out.ok = !st.diags.has_errors();
     if (!out.ok)
         out.pack.clear();
@@ -186,7 +191,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
                   DiagnosticList& diags,
                   Mode mode) {
     frontend::InitializeGlslang();  // before any thread starts
-    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
     PhaseClock clock, whole;
     CompileStats::Phases& ms = out.stats.ms;
@@ -208,6 +213,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
             out.pack = driver::EmitPack(st, out.stats);
         FillReports(st, out);
         out.files = st.files.Files();
+        for (const driver::GeneratedSource& g : st.generated)
+            out.generated.push_back(g.file);
         out.ok = !diags.has_errors();
         if (!out.ok)
             out.pack.clear();

@@ -184,7 +184,10 @@ void AppendMessages(CompileState& st,
                     const std::string* unreduced) {
     if (messages.empty())
         return;
-    auto lookup = [&st](const std::string& name) { return st.files.Get(name); };
+    auto lookup = [&st](const std::string& name) {
+        const GeneratedSource* g = FindGenerated(st.generated, name);
+        return g ? g->file : st.files.Get(name);
+    };
     frontend::MessageContext context;
     const hlsl::IncludePaths paths = IncludePathsFor(st.options);
     context.include_search.push_back("the including file's folder");
@@ -204,8 +207,10 @@ void AppendMessages(CompileState& st,
             return names;
         };
     }
-    for (const auto& m : messages)
+    for (const auto& m : messages) {
         out.push_back(frontend::ToDiagnostic(m, lookup, context));
+        NoteGenerated(st.generated, out.back());
+    }
 }
 
 void CompileJobs(CompileState& st, CompileStats& stats) {

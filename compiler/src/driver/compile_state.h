@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "driver/shader_passes.h"
+#include "driver/surface_passes.h"
 #include "frontend/glslang_messages.h"
 #include "hlsl/file_cache.h"
 #include "kiln/compile.h"
@@ -97,6 +98,8 @@ struct CompileState {
     DiagnosticList& diags;
     worker::Executor* exec = nullptr;  // where glslang and SPIRV-Tools run (driver/isolation.h)
     hlsl::FileCache files;
+    // The text generated for surface shaders (driver/surface_passes.h), which `#line` names.
+    std::vector<GeneratedSource> generated;
     std::vector<ShaderUnit> shaders;
     // Shaders read only for the passes a UsePass copies (driver/use_pass.h); a deque, so the
     // units' addresses hold.

@@ -170,6 +170,13 @@ struct Walker {
                 if (!IsIncludeBlock(b.kind) && !fp.program)
                     fp.program = &b;
             }
+            if (p.surface) {  // its blocks are all it compiles, in order
+                fp.blocks.clear();
+                for (const ProgramBlock& b : p.programs)
+                    fp.blocks.push_back(&b);
+                fp.program = fp.blocks.back();
+                fp.blocks.pop_back();
+            }
             if (!fp.program) {
                 // A fixed-function pass: Unity generates its programs, and so does Kiln (without
                 // the CGINCLUDE blocks, which belong to the hand-written programs).

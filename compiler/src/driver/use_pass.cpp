@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "driver/isolation.h"
 #include "kiln/pack/names.h"
 #include "kiln/shaderlab/parse.h"
 
@@ -68,6 +69,8 @@ const ShaderUnit* LoadFromPath(CompileState& st,
             if (!unit.ast || !Answers(unit.ast->name, name))
                 continue;
             st.files.Put(unit.file);
+            ExpandSurfaceShaders(*unit.ast, *unit.file, IncludePathsFor(st.options), st.files,
+                                 st.generated, ignored);
             unit.passes = FlattenPasses(*unit.ast, unit.file->path(), ignored);
             unit.emit = false;
             st.libraries.push_back(std::move(unit));

@@ -138,7 +138,9 @@ std::string Prelude(const AssembleInput& in) {
 std::string AssembleSource(const AssembleInput& in) {
     std::string s = Prelude(in);
     for (const shaderlab::ProgramBlock* b : in.blocks) {
-        s += "#line " + std::to_string(b->body_begin.line) + " \"" + in.file_name + "\"\n";
+        const std::string& name =
+            b->file.empty() || !IsLineSafeName(b->file) ? in.file_name : b->file;
+        s += "#line " + std::to_string(b->body_begin.line) + " \"" + name + "\"\n";
         s.append(b->body_begin.column - 1, ' ');
         s += b->text;
         s += '\n';

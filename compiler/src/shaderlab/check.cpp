@@ -191,16 +191,20 @@ bool State::CheckPrograms(const std::vector<ProgramBlock>& programs, bool in_pas
             continue;
         }
         if (const Pragma* surface = FindPragma(block, "surface")) {
-            Error(DiagCode::kUnsupportedSurfaceShader, surface->range,
-                  "surface shaders ('#pragma surface') are not supported; write vertex and "
-                  "fragment programs in a Pass");
+            // The generator (driver/surface_passes.h) turns a SubShader's surface program into
+            // passes; inside a Pass, Unity refuses it too.
+            if (in_pass) {
+                Error(DiagCode::kBadSurfaceShader, surface->range,
+                      "a surface shader's program belongs in a SubShader, not in a Pass; Unity "
+                      "generates its passes");
+            }
             continue;
         }
         if (IsIncludeBlock(block.kind)) {
             continue;
         }
         if (!in_pass && (surface_include || surface_includes > 0)) {
-            continue;  // a program of the surface shader reported above (K3008)
+            continue;  // a program of the surface shader declared in the CGINCLUDE
         }
         if (!in_pass) {
             Error(DiagCode::kProgramOutsidePass, MarkerRange(block),

@@ -37,7 +37,7 @@ void Classify(InputMember& m) {
         if (n.rfind(prefix, 0) == 0 && n.size() > prefix.size()) {
             m.kind = InputKind::kTexcoord;
             m.uv_set = set;
-            m.texture = n.substr(prefix.size());
+            m.texture = n.substr(prefix.size() - 1);  // uv_MainTex reads _MainTex
             return;
         }
     }
@@ -59,6 +59,18 @@ void ReadDeclaration(const std::vector<Token>& tok, size_t b, size_t e, InputStr
     if (b < e && tok[b].text == "INTERNAL_DATA") {
         out.internal_data = true;
         ++b;
+    }
+    // UNITY_FOG_COORDS(n): the fog coordinate a finalcolor: function applies (the terrain's),
+    // which exists only with fog on.
+    if (b + 1 < e && tok[b].text == "UNITY_FOG_COORDS" && tok[b + 1].text == "(") {
+        InputMember m;
+        m.type = "float1";
+        m.name = "fogCoord";
+        m.semantic = "FOG";
+        m.offset = tok[b].begin;
+        out.members.push_back(std::move(m));
+        const size_t close = hlsl::MatchForward(tok, b + 1);
+        b = close == SIZE_MAX ? e : close + 1;
     }
     while (b < e && IsModifier(tok[b].text))
         ++b;
@@ -88,6 +100,41 @@ void ReadDeclaration(const std::vector<Token>& tok, size_t b, size_t e, InputStr
         else
             return;
     }
+}
+
+std::string Trim(std::string_view s) {
+    const size_t b = s.find_first_not_of(" \t");
+    const size_t e = s.find_last_not_of(" \t\r");
+    return b == std::string_view::npos ? "" : std::string(s.substr(b, e - b + 1));
+}
+
+// The conditional directives open at `at`, counting from `from` (the struct's `{`): `#ifdef X`,
+// `#ifndef X`, `#if E`; an `#else` or `#elif` branch negates or replaces its condition.
+std::vector<std::string> ConditionsAt(std::string_view text, size_t from, size_t at) {
+    std::vector<std::string> open;
+    size_t line = from;
+    while (line < at) {
+        const size_t end = std::min(text.find('\n', line), text.size());
+        const std::string l = Trim(text.substr(line, end - line));
+        if (!l.empty() && l[0] == '#') {
+            const std::string d = Trim(std::string_view(l).substr(1));
+            auto word = [&](const char* w) { return d.rfind(w, 0) == 0; };
+            if (word("ifdef") || word("ifndef") || word("if")) {
+                open.push_back("#" + d);
+            } else if (word("elif") && !open.empty()) {
+                open.back() = "#if" + d.substr(4);
+            } else if (word("else") && !open.empty()) {
+                std::string& c = open.back();
+                c = c.rfind("#ifdef", 0) == 0    ? "#ifndef" + c.substr(6)
+                    : c.rfind("#ifndef", 0) == 0 ? "#ifdef" + c.substr(7)
+                                                 : "#if !(" + Trim(c.substr(3)) + ")";
+            } else if (word("endif") && !open.empty()) {
+                open.pop_back();
+            }
+        }
+        line = end + 1;
+    }
+    return open;
 }
 
 }  // namespace
@@ -144,6 +191,8 @@ std::optional<InputStruct> FindInputStruct(std::string_view text,
                 b = k + 1;
             }
         }
+        for (InputMember& m : out.members)
+            m.conditions = ConditionsAt(blank, tok[i + 2].begin, m.offset);
         return out;
     }
     return std::nullopt;

@@ -34,7 +34,12 @@ struct InputMember {
     size_t offset = 0;                 // of the name, in the text searched
     InputKind kind = InputKind::kCustom;
     std::string texture;  // kTexcoord: the texture whose _ST transforms it (uv_MainTex: _MainTex)
-    int uv_set = 0;       // kTexcoord: 0 for uv_, 1 for uv2_, 2 for uv3_, 3 for uv4_
+    // semantic "FOG": UNITY_FOG_COORDS(n) in the struct, read as `float1 fogCoord` (it exists only
+    // with fog on).
+    int uv_set = 0;  // kTexcoord: 0 for uv_, 1 for uv2_, 2 for uv3_, 3 for uv4_
+    // The `#if` lines inside the struct the member is declared under, outermost first (an
+    // `#else` branch as the negated condition): generated code that reads it goes under them too.
+    std::vector<std::string> conditions;
 };
 
 struct InputStruct {

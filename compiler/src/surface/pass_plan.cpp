@@ -45,7 +45,8 @@ std::string Modifiers(const SurfaceDirective& d, std::initializer_list<const cha
 void Common(const SurfaceDirective& d, PlannedPass& p, bool fog, bool instancing) {
     if (instancing && !d.Has("noinstancing"))
         p.pragmas.push_back("multi_compile_instancing");
-    if (fog && !d.Has("nofog"))
+    // A finalcolor: function applies fog itself (Unity's generator leaves it out then).
+    if (fog && !d.Has("nofog") && !d.final_color)
         p.pragmas.push_back("multi_compile_fog");
 }
 
@@ -72,7 +73,6 @@ std::vector<PlannedPass> PlanSurfacePasses(const SurfaceDirective& d, const Ligh
             PlannedPass add{
                 "FORWARD_DELTA", "ForwardAdd", "UNITY_PASS_FORWARDADD", AddState(d), {}};
             Common(d, add, true, false);
-            add.pragmas.push_back("skip_variants INSTANCING_ON");
             add.pragmas.push_back(std::string(d.Has("fullforwardshadows")
                                                   ? "multi_compile_fwdadd_fullshadows"
                                                   : "multi_compile_fwdadd") +
@@ -96,7 +96,9 @@ std::vector<PlannedPass> PlanSurfacePasses(const SurfaceDirective& d, const Ligh
             Modifiers(d, {"nolightmap", "nodynlightmap", "nodirlightmap", "noshadowmask"}));
         out.push_back(std::move(deferred));
     }
-    if (d.Has("addshadow")) {
+    // A shadow caster with addshadow, and when a vertex: function moves the vertices of an
+    // opaque surface (the fallback's shadow caster would cast the unmodified mesh).
+    if (d.Has("addshadow") || (d.vertex && !Blended(d))) {
         PlannedPass shadow{"ShadowCaster",
                            "ShadowCaster",
                            "UNITY_PASS_SHADOWCASTER",

@@ -14,25 +14,14 @@ using shaderlab::Pragma;
 using shaderlab::PragmaArg;
 
 // Unity pragmas Kiln accepts and ignores: they change nothing for Vulkan.
-const std::set<std::string> kIgnoredPragmas = {"fragmentoption",
-                                               "glsl_no_auto_normalization",
-                                               "enable_d3d11_debug_symbols",
-                                               "hardware_tier_variants",
-                                               "editor_sync_compilation",
-                                               "instancing_options",
-                                               "prefer_hlslcc",
-                                               "never_use_dxc",
-                                               "use_dxc",
-                                               "glsl_es",
-                                               "glsl_es2",
-                                               "glsl",
-                                               "enable_cbuffer",
-                                               "dynamic_branch",
-                                               "pack_matrix",
-                                               "warning",
-                                               "once",
-                                               "debug",
-                                               "vertex_format"};
+const std::set<std::string> kIgnoredPragmas = {
+    "fragmentoption", "glsl_no_auto_normalization", "enable_d3d11_debug_symbols",
+    "hardware_tier_variants", "editor_sync_compilation", "instancing_options", "prefer_hlslcc",
+    "never_use_dxc", "use_dxc", "glsl_es", "glsl_es2", "glsl", "enable_cbuffer", "dynamic_branch",
+    "pack_matrix", "warning", "once", "debug", "vertex_format",
+    // read by the surface-shader generator
+    // (driver/surface_passes.h)
+    "surface"};
 
 // Unity's built-in keyword shortcuts (BuiltinShortcut).
 const char* const kShortcutNames[] = {
@@ -44,7 +33,7 @@ const char* const kShortcutNames[] = {
     "multi_compile_particles"};
 
 // Entry-point pragmas of stages Kiln does not compile.
-const std::set<std::string> kOtherStages = {"surface", "kernel", "raytracing"};
+const std::set<std::string> kOtherStages = {"kernel", "raytracing"};
 
 bool IsIdentifier(const std::string& s) {
     if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) {
@@ -56,7 +45,7 @@ bool IsIdentifier(const std::string& s) {
 }
 
 struct State {
-    const std::string& file;
+    std::string file;  // of the block being read (a generated block names its own)
     DiagnosticList& diags;
     PassPragmas out;
     std::map<std::string, SourceRange> keyword_origin;
@@ -462,6 +451,7 @@ PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& b
                             DiagnosticList& diags) {
     State st{file, diags, {}, {}, 0};
     for (const shaderlab::ProgramBlock* block : blocks) {
+        st.file = block->file.empty() ? file : block->file;
         for (const Pragma& p : block->pragmas)
             st.One(p);
     }

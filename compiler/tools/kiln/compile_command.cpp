@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -298,6 +299,8 @@ std::vector<const SourceFile*> Views(const CompileOutput& out,
     std::vector<const SourceFile*> views;
     for (const auto& f : out.files)
         views.push_back(f.get());
+    for (const auto& f : out.generated)
+        views.push_back(f.get());
     for (const auto& f : more)
         views.push_back(f.get());
     return views;
@@ -340,8 +343,33 @@ struct CompileArgs {
     std::string stats;  // "", "text" or "json"
     bool no_aliases = false;
     bool preprocess_only = false;  // -E
+    std::string emit_generated;    // --emit-generated DIR
     SceneStripFlags strip;
 };
+
+// --emit-generated DIR: each surface shader's generated ShaderLab as DIR/<shader>.generated.shader
+// (.generated-2.shader for a file's second `#pragma surface`), also when the compile failed:
+// that is when it is read.
+void EmitGenerated(const std::string& dir,
+                   const CompileOutput& out,
+                   const std::vector<std::string>& inputs,
+                   DiagnosticList& diags) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    std::map<std::string, int> seen;
+    for (const auto& g : out.generated) {
+        std::string stem = g->path();
+        stem = stem.substr(0, stem.rfind(" (generated"));
+        stem = std::filesystem::path(stem).stem().string();
+        const int n = ++seen[stem];
+        const std::string path =
+            (std::filesystem::path(dir) /
+             (stem + ".generated" + (n > 1 ? "-" + std::to_string(n) : "") + ".shader"))
+                .string();
+        if (Status written = base::WriteFileAtomically(path, g->text(), {inputs}); !written.ok())
+            diags.Error(DiagCode::kCannotWriteFile, path, kNoPosition, written.error().message);
+    }
+}
 
 // kiln compile -E: every distinct stage program's text as glslang would compile it, each under a
 // comment naming the shader, pass, keywords, stage and entry point. Nothing is compiled.
@@ -413,6 +441,10 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
     cmd->add_flag("--no-keyword-aliases", o->no_aliases,
                   "Store every variant, also those of keywords whose SPIR-V duplicates another "
                   "keyword's (pack format 1.0 readers need this)");
+    cmd->add_option("--emit-generated", o->emit_generated,
+                    "Write the passes generated for each surface shader (#pragma surface) to "
+                    "DIR/<shader>.generated.shader, as Unity's \"Show generated code\"")
+        ->option_text("DIR");
     AddSceneStripOptions(*cmd, o->strip);
     cmd->footer(
         "Compiler-style options:\n"
@@ -511,6 +543,8 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         for (const auto& f : out.files)
             inputs.push_back(f->path());
+        if (!o->emit_generated.empty())
+            EmitGenerated(o->emit_generated, out, inputs, diags);
         if (out.ok && o->strip.active() &&
             !VerifyScenes(o->strip, out.pack, o->flags.materials, diags))
             out.ok = false;  // no pack that misses what the scene needs

@@ -1,5 +1,6 @@
-// What Kiln recognises but does not support: GLSL programs and surface shaders (errors), and
-// the fixed-function commands it does not translate (ignored with a warning).
+// What Kiln recognises but does not support: GLSL programs (an error), and the fixed-function
+// commands it does not translate (ignored with a warning). The surface shader parses (its passes
+// are generated when it is compiled: driver/surface_passes.h).
 Shader "Golden/Legacy"
 {
     SubShader

@@ -68,18 +68,18 @@ TEST(Check, ProgramsAtTheRightLevels) {
     EXPECT_EQ(bad.diags.all()[0].range.end.column - bad.diags.all()[0].range.begin.column, 11u);
 }
 
-TEST(Check, SurfacePragmaInsideAPassIsAlsoUnsupported) {
+TEST(Check, SurfacePragmaInsideAPassIsMisplaced) {
     ParseOutcome out = ParseText(
         "Shader \"x\" { SubShader { Pass { CGPROGRAM\n#pragma surface surf Standard\nENDCG } } }");
     ASSERT_EQ(out.diags.error_count(), 1u);
-    EXPECT_EQ(out.diags.all()[0].code, DiagCode::kUnsupportedSurfaceShader);
+    EXPECT_EQ(out.diags.all()[0].code, DiagCode::kBadSurfaceShader);
     EXPECT_EQ(out.diags.all()[0].range.begin.line, 2u);
 }
 
 // Unity's terrain splat shaders declare `#pragma surface` in a Shader-level CGINCLUDE and put
-// their CGPROGRAMs in the SubShaders: one K3008 at the pragma, and no K3009 for those programs
-// (they are the surface shader's, where Unity expects them). A Category's CGINCLUDE counts too;
-// a SubShader-level CGPROGRAM of a shader without one is still misplaced.
+// their CGPROGRAMs in the SubShaders: no K3009 for those programs (they are the surface
+// shader's, where Unity expects them; driver/surface_passes.h generates their passes). A Category's
+// CGINCLUDE counts too; a SubShader-level CGPROGRAM of a shader without one is still misplaced.
 TEST(Check, ProgramsOfASurfaceShaderDeclaredInAnIncludeAreNotMisplaced) {
     for (const char* text :
          {"Shader \"x\" { CGINCLUDE\n#pragma surface surf Lambert\nENDCG SubShader { CGPROGRAM "
@@ -89,14 +89,12 @@ TEST(Check, ProgramsOfASurfaceShaderDeclaredInAnIncludeAreNotMisplaced) {
           "Shader \"x\" { SubShader { CGINCLUDE\n#pragma surface surf Lambert\nENDCG CGPROGRAM "
           "ENDCG } }"}) {
         ParseOutcome out = ParseText(text);
-        ASSERT_EQ(out.diags.error_count(), 1u) << text << "\n" << Summarize(out.diags);
-        EXPECT_EQ(out.diags.all()[0].code, DiagCode::kUnsupportedSurfaceShader);
-        EXPECT_EQ(out.diags.all()[0].range.begin.line, 2u);
+        EXPECT_EQ(out.diags.error_count(), 0u) << text << "\n" << Summarize(out.diags);
     }
     ParseOutcome sibling = ParseText(
         "Shader \"x\" { Category { CGINCLUDE\n#pragma surface surf Lambert\nENDCG } SubShader { "
         "CGPROGRAM ENDCG } }");
-    EXPECT_EQ(sibling.diags.error_count(), 2u) << Summarize(sibling.diags);
+    EXPECT_EQ(sibling.diags.error_count(), 1u) << Summarize(sibling.diags);
     EXPECT_EQ(sibling.diags.all().back().code, DiagCode::kProgramOutsidePass);
 }
 

@@ -39,9 +39,9 @@ TEST(SurfaceInput, MembersAreReadByUnitysConventions) {
                   "uv_MainTex=uv_<texture>", "uv_BumpMap=uv_<texture>", "uv2_Detail=uv_<texture>",
                   "viewDir=viewDir", "screenPos=screenPos", "worldPos=worldPos",
                   "worldRefl=worldRefl", "color=COLOR", "customColor=custom", "facing=VFACE"}));
-    EXPECT_EQ(in->members[0].texture, "MainTex");
+    EXPECT_EQ(in->members[0].texture, "_MainTex");
     EXPECT_EQ(in->members[2].uv_set, 1);
-    EXPECT_EQ(in->members[2].texture, "Detail");
+    EXPECT_EQ(in->members[2].texture, "_Detail");
     EXPECT_EQ(text.substr(in->members[7].offset, 5), "color");
     EXPECT_TRUE(in->Reads(InputKind::kWorldRefl));
     EXPECT_FALSE(in->Reads(InputKind::kWorldNormal));

@@ -40,7 +40,7 @@ TEST(SurfacePasses, AnOpaqueStandardSurfaceGetsUnitysFourPasses) {
                   "FORWARD/ForwardBase [] {multi_compile_instancing; multi_compile_fog; "
                   "multi_compile_fwdbase}",
                   "FORWARD_DELTA/ForwardAdd [ZWrite Off; Blend One One] {multi_compile_fog; "
-                  "skip_variants INSTANCING_ON; multi_compile_fwdadd_fullshadows}",
+                  "multi_compile_fwdadd_fullshadows}",
                   "DEFERRED/Deferred [] {multi_compile_instancing; exclude_renderers nomrt; "
                   "multi_compile_prepassfinal}",
                   "Meta/Meta [Cull Off] {shader_feature EDITOR_VISUALIZATION}"}));
@@ -67,9 +67,9 @@ TEST(SurfacePasses, AnAdditiveDecalAddsInEveryPath) {
                        "fullforwardshadows nometa"),
               (std::vector<std::string>{
                   "FORWARD/ForwardBase [ZWrite Off; Blend One One] {multi_compile_instancing; "
-                  "multi_compile_fog; multi_compile_fwdbasealpha}",
-                  "FORWARD_DELTA/ForwardAdd [ZWrite Off; Blend One One] {multi_compile_fog; "
-                  "skip_variants INSTANCING_ON; multi_compile_fwdadd_fullshadows}",
+                  "multi_compile_fwdbasealpha}",
+                  "FORWARD_DELTA/ForwardAdd [ZWrite Off; Blend One One] "
+                  "{multi_compile_fwdadd_fullshadows}",
                   "DEFERRED/Deferred [ZWrite Off; Blend One One] {multi_compile_instancing; "
                   "exclude_renderers nomrt; multi_compile_prepassfinal}"}));
 }

@@ -167,6 +167,9 @@ struct ProgramBlock {
     SourceLoc body_begin;  // first byte after the opening marker: `text` starts here
     std::string text;      // verbatim body
     std::vector<Pragma> pragmas;
+    // "" for a block of the shader's file; else the generated text it comes from (a surface
+    // shader's generated pass, driver/surface_passes.h), which `#line` names.
+    std::string file;
 };
 
 bool IsIncludeBlock(ProgramKind kind);
@@ -209,6 +212,9 @@ struct Pass {
     RenderState state;
     FixedFunction fixed;
     std::vector<ProgramBlock> programs;  // CGPROGRAM/HLSLPROGRAM and *INCLUDE, in source order
+    // Generated from a surface shader (driver/surface_passes.h): `programs` holds every block the
+    // pass compiles, in order (its header, the CGINCLUDE blocks, the shader's program, its tail).
+    bool surface = false;
 };
 
 struct UsePass {
