@@ -64,7 +64,10 @@ std::vector<Param> Params(const std::vector<Token>& tok, size_t open, size_t clo
 }
 
 // The member names of `struct type { ... }` in the tokens; false when it is not defined there.
-bool StructMembers(const std::vector<Token>& tok, const std::string& type, VertexInput& out) {
+bool StructMembers(const std::string& blank,
+                   const std::vector<Token>& tok,
+                   const std::string& type,
+                   VertexInput& out) {
     for (size_t i = 0; i + 2 < tok.size(); ++i) {
         if (tok[i].text != "struct" || tok[i + 1].text != type || tok[i + 2].text != "{")
             continue;
@@ -80,6 +83,8 @@ bool StructMembers(const std::vector<Token>& tok, const std::string& type, Verte
                 (tok[k + 1].text == ":" || tok[k + 1].text == ";" || tok[k + 1].text == "[") &&
                 k > i + 3 && tok[k - 1].ident) {
                 out.members.insert(std::string(tok[k].text));
+                out.conditions[std::string(tok[k].text)] =
+                    ConditionsAt(blank, tok[i + 2].begin, tok[k].begin);
             }
         }
         return true;
@@ -205,7 +210,7 @@ std::optional<SurfaceShader> AnalyzeSurface(std::string_view text,
         out.vertex_fills_input = vp.size() == 2;
     }
     if (!BuiltinVertexInput(out.vertex_input.type, out.vertex_input) &&
-        !StructMembers(tok, out.vertex_input.type, out.vertex_input)) {
+        !StructMembers(blank, tok, out.vertex_input.type, out.vertex_input)) {
         problem.message = "the vertex input struct '" + out.vertex_input.type + "' is not defined";
         return std::nullopt;
     }

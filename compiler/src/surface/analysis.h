@@ -7,10 +7,12 @@
 #ifndef KILN_SURFACE_ANALYSIS_H_
 #define KILN_SURFACE_ANALYSIS_H_
 
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "surface/directive.h"
 #include "surface/input_struct.h"
@@ -23,7 +25,9 @@ namespace kiln::surface {
 struct VertexInput {
     std::string type = "appdata_full";
     std::set<std::string> members;  // vertex, normal, tangent, texcoord, texcoord1, ..., color
-    bool instance_id = true;        // has UNITY_VERTEX_INPUT_INSTANCE_ID
+    // The `#if` lines a member is declared under (surface/input_struct.h, ConditionsAt).
+    std::map<std::string, std::vector<std::string>> conditions;
+    bool instance_id = true;  // has UNITY_VERTEX_INPUT_INSTANCE_ID
 
     bool Has(const std::string& member) const { return members.count(member) > 0; }
 };

@@ -5,6 +5,8 @@
 // deferred passes; light, shadow and fog coordinates in the forward passes).
 #include "surface/generate_parts.h"
 
+#include <set>
+
 #include "hlsl/tokens.h"
 
 namespace kiln::surface {
@@ -15,14 +17,45 @@ bool Interpolatable(const InputMember& m) {
     return shape >= 1 && shape <= 4;
 }
 
-// `v.<member>` when the vertex input has it, else `fallback`.
-std::string Member(const SurfaceShader& s, const std::string& member, const char* fallback) {
-    return s.vertex_input.Has(member) ? "v." + member : fallback;
+// `vin_<member>` of `type`: the vertex input's member (through `swizzle`) where its struct has it
+// (under the `#if` it is declared under), else `fallback`.
+std::string Local(const SurfaceShader& s,
+                  const std::string& member,
+                  const std::string& type,
+                  const std::string& swizzle,
+                  const std::string& fallback) {
+    const std::string decl = "    " + type + " vin_" + member + " = ";
+    if (!s.vertex_input.Has(member))
+        return decl + fallback + ";\n";
+    auto it = s.vertex_input.conditions.find(member);
+    if (it == s.vertex_input.conditions.end() || it->second.empty())
+        return decl + "v." + member + swizzle + ";\n";
+    return "#if " + ConditionExpression(it->second) + "\n" + decl + "v." + member + swizzle +
+           ";\n#else\n" + decl + fallback + ";\n#endif\n";
 }
 
-std::string UvSource(const SurfaceShader& s, int set) {
-    const std::string member = set == 0 ? "texcoord" : "texcoord" + std::to_string(set);
-    return s.vertex_input.Has(member) ? "v." + member + ".xy" : "float2(0, 0)";
+std::string UvMember(int set) {
+    return set == 0 ? "texcoord" : "texcoord" + std::to_string(set);
+}
+
+std::string UvSource(int set) {
+    return "vin_" + UvMember(set);
+}
+
+// The locals the vertex program reads the vertex input through, after the vertex: function.
+std::string Locals(const SurfaceShader& s, const Interpolators& in) {
+    std::string o = Local(s, "vertex", "float4", "", "float4(0, 0, 0, 1)");
+    o += Local(s, "normal", "float3", ".xyz", "float3(0, 0, 1)");
+    if (s.tangent_space)
+        o += Local(s, "tangent", "float4", "", "float4(1, 0, 0, 1)");
+    std::set<int> sets = {1, 2};  // lightmaps, light coordinates, the meta pass
+    for (const InputMember* m : in.uvs)
+        sets.insert(m->uv_set);
+    for (int set : sets)
+        o += Local(s, UvMember(set), "float2", ".xy", "float2(0, 0)");
+    if (in.color)
+        o += Local(s, "color", "fixed4", "", "fixed4(1, 1, 1, 1)");
+    return o;
 }
 
 // Fog coordinates in an Input struct (UNITY_FOG_COORDS, as the terrain's) exist only with fog on.
@@ -123,15 +156,16 @@ std::string VertexProgram(const SurfaceShader& s, PassKind kind, const Interpola
             o += "    " + s.directive.vertex->text + "(v);\n";
         }
     }
-    const std::string vertex = Member(s, "vertex", "float4(0, 0, 0, 1)");
+    o += Locals(s, in);
+    const std::string vertex = "vin_vertex";
     if (kind == PassKind::kMeta) {
-        o += "    o.pos = UnityMetaVertexPosition(" + vertex + ", " + UvSource(s, 1) + ", " +
-             UvSource(s, 2) + ", unity_LightmapST, unity_DynamicLightmapST);\n";
+        o += "    o.pos = UnityMetaVertexPosition(" + vertex + ", " + UvSource(1) + ", " +
+             UvSource(2) + ", unity_LightmapST, unity_DynamicLightmapST);\n";
     } else if (kind != PassKind::kShadowCaster) {
         o += "    o.pos = UnityObjectToClipPos(" + vertex + ");\n";
     }
     for (const InputMember* m : in.uvs) {
-        o += "    o." + PackName(*m) + " = TRANSFORM_TEX(" + UvSource(s, m->uv_set) + ", " +
+        o += "    o." + PackName(*m) + " = TRANSFORM_TEX(" + UvSource(m->uv_set) + ", " +
              m->texture + ");\n";
     }
     for (const InputMember* m : in.custom) {
@@ -140,13 +174,10 @@ std::string VertexProgram(const SurfaceShader& s, PassKind kind, const Interpola
                              " = customInputData." + m->name + ";\n" + (fog ? "#endif\n" : ""));
     }
     o += "    float3 worldPos = mul(unity_ObjectToWorld, " + vertex + ").xyz;\n";
-    o += "    float3 worldNormal = UnityObjectToWorldNormal(" +
-         Member(s, "normal", "float3(0, 0, 1)") + ");\n";
+    o += "    float3 worldNormal = UnityObjectToWorldNormal(vin_normal);\n";
     if (s.tangent_space) {
-        o += "    fixed3 worldTangent = UnityObjectToWorldDir(" +
-             Member(s, "tangent", "float4(1, 0, 0, 1)") + ".xyz);\n";
-        o += "    fixed tangentSign = " + Member(s, "tangent", "float4(1, 0, 0, 1)") +
-             ".w * unity_WorldTransformParams.w;\n";
+        o += "    fixed3 worldTangent = UnityObjectToWorldDir(vin_tangent.xyz);\n";
+        o += "    fixed tangentSign = vin_tangent.w * unity_WorldTransformParams.w;\n";
         o += "    fixed3 worldBinormal = cross(worldNormal, worldTangent) * tangentSign;\n";
         const char* axes = "xyz";
         for (int i = 0; i < 3; ++i) {
@@ -164,11 +195,11 @@ std::string VertexProgram(const SurfaceShader& s, PassKind kind, const Interpola
                  : "    o.screenPos = ComputeScreenPos(UnityObjectToClipPos(" + vertex + "));\n";
     }
     if (in.color)
-        o += "    o.color = " + Member(s, "color", "fixed4(1, 1, 1, 1)") + ";\n";
+        o += "    o.color = vin_color;\n";
     if (in.ambient) {
-        o += "#ifdef DYNAMICLIGHTMAP_ON\n    o.lmap.zw = " + UvSource(s, 2) +
+        o += "#ifdef DYNAMICLIGHTMAP_ON\n    o.lmap.zw = " + UvSource(2) +
              " * unity_DynamicLightmapST.xy + unity_DynamicLightmapST.zw;\n#endif\n";
-        o += "#ifdef LIGHTMAP_ON\n    o.lmap.xy = " + UvSource(s, 1) +
+        o += "#ifdef LIGHTMAP_ON\n    o.lmap.xy = " + UvSource(1) +
              " * unity_LightmapST.xy + unity_LightmapST.zw;\n#endif\n";
         o += "#ifndef LIGHTMAP_ON\n#if UNITY_SHOULD_SAMPLE_SH\n    o.sh = 0;\n";
         if (kind == PassKind::kForwardBase && !s.directive.Has("novertexlights")) {
@@ -183,7 +214,7 @@ std::string VertexProgram(const SurfaceShader& s, PassKind kind, const Interpola
         o += "#endif\n#endif\n";
     }
     if (in.lighting)
-        o += "    UNITY_TRANSFER_LIGHTING(o, " + UvSource(s, 1) + ");\n";
+        o += "    UNITY_TRANSFER_LIGHTING(o, " + UvSource(1) + ");\n";
     if (in.fog)
         o += "    UNITY_TRANSFER_FOG(o, o.pos);\n";
     if (kind == PassKind::kShadowCaster)

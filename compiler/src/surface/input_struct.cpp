@@ -108,35 +108,6 @@ std::string Trim(std::string_view s) {
     return b == std::string_view::npos ? "" : std::string(s.substr(b, e - b + 1));
 }
 
-// The conditional directives open at `at`, counting from `from` (the struct's `{`): `#ifdef X`,
-// `#ifndef X`, `#if E`; an `#else` or `#elif` branch negates or replaces its condition.
-std::vector<std::string> ConditionsAt(std::string_view text, size_t from, size_t at) {
-    std::vector<std::string> open;
-    size_t line = from;
-    while (line < at) {
-        const size_t end = std::min(text.find('\n', line), text.size());
-        const std::string l = Trim(text.substr(line, end - line));
-        if (!l.empty() && l[0] == '#') {
-            const std::string d = Trim(std::string_view(l).substr(1));
-            auto word = [&](const char* w) { return d.rfind(w, 0) == 0; };
-            if (word("ifdef") || word("ifndef") || word("if")) {
-                open.push_back("#" + d);
-            } else if (word("elif") && !open.empty()) {
-                open.back() = "#if" + d.substr(4);
-            } else if (word("else") && !open.empty()) {
-                std::string& c = open.back();
-                c = c.rfind("#ifdef", 0) == 0    ? "#ifndef" + c.substr(6)
-                    : c.rfind("#ifndef", 0) == 0 ? "#ifdef" + c.substr(7)
-                                                 : "#if !(" + Trim(c.substr(3)) + ")";
-            } else if (word("endif") && !open.empty()) {
-                open.pop_back();
-            }
-        }
-        line = end + 1;
-    }
-    return open;
-}
-
 }  // namespace
 
 const char* InputKindName(InputKind kind) {
@@ -166,6 +137,44 @@ const char* InputKindName(InputKind kind) {
 bool InputStruct::Reads(InputKind kind) const {
     return std::any_of(members.begin(), members.end(),
                        [&](const InputMember& m) { return m.kind == kind; });
+}
+
+std::vector<std::string> ConditionsAt(std::string_view text, size_t from, size_t at) {
+    std::vector<std::string> open;
+    size_t line = from;
+    while (line < at) {
+        const size_t end = std::min(text.find('\n', line), text.size());
+        const std::string l = Trim(text.substr(line, end - line));
+        if (!l.empty() && l[0] == '#') {
+            const std::string d = Trim(std::string_view(l).substr(1));
+            auto word = [&](const char* w) { return d.rfind(w, 0) == 0; };
+            if (word("ifdef") || word("ifndef") || word("if")) {
+                open.push_back("#" + d);
+            } else if (word("elif") && !open.empty()) {
+                open.back() = "#if" + d.substr(4);
+            } else if (word("else") && !open.empty()) {
+                std::string& c = open.back();
+                c = c.rfind("#ifdef", 0) == 0    ? "#ifndef" + c.substr(6)
+                    : c.rfind("#ifndef", 0) == 0 ? "#ifdef" + c.substr(7)
+                                                 : "#if !(" + Trim(c.substr(3)) + ")";
+            } else if (word("endif") && !open.empty()) {
+                open.pop_back();
+            }
+        }
+        line = end + 1;
+    }
+    return open;
+}
+
+std::string ConditionExpression(const std::vector<std::string>& conditions) {
+    std::string out;
+    for (const std::string& c : conditions) {
+        const std::string e = c.rfind("#ifdef", 0) == 0    ? "defined(" + Trim(c.substr(6)) + ")"
+                              : c.rfind("#ifndef", 0) == 0 ? "!defined(" + Trim(c.substr(7)) + ")"
+                                                           : "(" + Trim(c.substr(3)) + ")";
+        out += (out.empty() ? "" : " && ") + e;
+    }
+    return out.empty() ? "1" : out;
 }
 
 std::optional<InputStruct> FindInputStruct(std::string_view text,

@@ -51,6 +51,13 @@ struct InputStruct {
     bool Reads(InputKind kind) const;
 };
 
+// The conditional directives inside a struct (from its `{` at `from`) open at `at`: `#ifdef X`,
+// `#ifndef X`, `#if E`, an `#else` branch as the negated condition, an `#elif` as its own.
+std::vector<std::string> ConditionsAt(std::string_view text, size_t from, size_t at);
+
+// Those lines as one `#if` expression: "defined(X) && !defined(Y) && (E)"; "1" for none.
+std::string ConditionExpression(const std::vector<std::string>& conditions);
+
 // The Input struct of `surface_function` in `text` (a program's text with what it includes before
 // it); nullopt when the function or its first parameter's struct is not in `text`.
 std::optional<InputStruct> FindInputStruct(std::string_view text,

@@ -48,7 +48,7 @@ struct State {
     std::string file;  // of the block being read (a generated block names its own)
     DiagnosticList& diags;
     PassPragmas out;
-    std::map<std::string, SourceRange> keyword_origin;
+    std::map<std::string, std::pair<std::string, SourceRange>> keyword_origin;  // file, range
     int required_target = 0;  // from #pragma require
 
     void Entry(const Pragma& p, std::optional<EntryPoint>& slot) {
@@ -109,7 +109,24 @@ struct State {
         }
     }
 
+    // Whether the pass has a set of this kind with these keywords already: a generated surface
+    // pass's shortcut and the shader's own `multi_compile_instancing`, or a keyword set written
+    // twice, declare the same variants once, as in Unity.
+    bool Repeats(const KeywordSet& set) const {
+        std::set<std::string> mine;
+        for (const std::string& k : set.keywords)
+            mine.insert(IsNoKeyword(k) ? std::string() : k);
+        if (set.kind == pack::KeywordSetKind::kShaderFeature && mine.size() == 1)
+            mine.insert("");
+        return std::any_of(out.sets.begin(), out.sets.end(), [&](const KeywordSet& s) {
+            return s.kind == set.kind && s.flags == set.flags &&
+                   std::set<std::string>(s.keywords.begin(), s.keywords.end()) == mine;
+        });
+    }
+
     void AddSet(KeywordSet set, const Pragma& p) {
+        if (Repeats(set))
+            return;
         std::set<std::string> in_set;
         std::vector<std::string> cleaned;
         for (size_t i = 0; i < set.keywords.size(); ++i) {
@@ -129,13 +146,14 @@ struct State {
                 continue;
             }
             if (!kw.empty()) {
-                auto [it, fresh] = keyword_origin.emplace(kw, r);
+                auto [it, fresh] = keyword_origin.emplace(kw, std::pair(file, r));
                 if (!fresh) {
                     diags
                         .Error(
                             DiagCode::kDuplicateKeyword, file, r,
                             "keyword '" + kw + "' is already in another keyword set of this pass")
-                        .notes.push_back({file, it->second, "first declared here"});
+                        .notes.push_back(
+                            {it->second.first, it->second.second, "first declared here"});
                     continue;
                 }
             }

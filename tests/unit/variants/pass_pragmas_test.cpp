@@ -152,6 +152,16 @@ TEST(PassPragmas, Problems) {
         test::Summarize(ReadPragmas("#pragma multi_compile A B\n#pragma multi_compile C A").diags),
         "K4007 6:25 error: keyword 'A' is already in another keyword set of this pass\n"
         "  note 5:23: first declared here\n");
+    // The same set twice (a surface pass's shortcut and the shader's own pragma) is one set.
+    const auto repeated = ReadPragmas(
+        "#pragma multi_compile_instancing\n#pragma multi_compile __ SHADOWS_SHADOWMASK\n"
+        "#pragma multi_compile_instancing\n#pragma multi_compile SHADOWS_SHADOWMASK _");
+    EXPECT_TRUE(repeated.diags.all().empty()) << test::Summarize(repeated.diags);
+    EXPECT_EQ(repeated.pragmas.sets.size(), 2u);
+    EXPECT_EQ(
+        test::Summarize(ReadPragmas("#pragma multi_compile _ A\n#pragma shader_feature _ A").diags),
+        "K4007 6:26 error: keyword 'A' is already in another keyword set of this pass\n"
+        "  note 5:25: first declared here\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma multi_compile A A").diags),
               "K4007 5:25 error: keyword 'A' appears twice in one keyword set\n");
     EXPECT_EQ(test::Summarize(ReadPragmas("#pragma multi_compile A 9B").diags),

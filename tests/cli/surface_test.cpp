@@ -1,0 +1,161 @@
+// Surface shaders (`#pragma surface`) end to end: the passes Kiln generates compile, draw as their
+// hand-written equivalent on both render paths, light as a custom lighting function says, cast
+// and receive shadows, pass `kiln test`, and report mistakes at the user's lines (or, in
+// generated code, with a note naming the pass). Renders run on lavapipe with the validation layer
+// on; images are compared pixel by pixel as 8-bit sRGB.
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "support/test_support.h"
+
+namespace kiln::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kDemoMaterials[] = {"Unlit",
+                                      "Lambert",
+                                      "LambertAmbient",
+                                      "BlinnPhong",
+                                      "BlinnPhongTextured",
+                                      "EnergyConserving",
+                                      "Standard",
+                                      "StandardMetallic",
+                                      "MultiLight",
+                                      "Deferred",
+                                      "Floor"};
+
+struct Image {
+    int w = 0, h = 0;
+    std::vector<unsigned char> rgb;
+    const unsigned char* At(int i) const { return &rgb[size_t(i) * 3]; }
+};
+
+Image Load(const std::string& png) {
+    Image img;
+    int n = 0;
+    unsigned char* p = stbi_load(png.c_str(), &img.w, &img.h, &n, 3);
+    if (p) {
+        img.rgb.assign(p, p + size_t(img.w) * img.h * 3);
+        stbi_image_free(p);
+    }
+    return img;
+}
+
+// The demo scene (tests/../scenes/demo: ten spheres on a floor, a sun, a point and a spot light)
+// with every glTF material drawn by `shader` (or by the one `pick` names for a material).
+std::string DemoSidecar(const std::string& dir,
+                        const std::function<std::string(const std::string&)>& pick) {
+    std::set<std::string> written;
+    std::string sidecar = R"({"kiln_materials": 1, "ambient": [0.05, 0.055, 0.07], "materials": {)";
+    bool first = true;
+    for (const char* m : kDemoMaterials) {
+        const std::string shader = pick(m);
+        std::string file = shader;
+        for (char& c : file)
+            c = c == '/' || c == ' ' ? '_' : c;
+        file = dir + "/" + file + ".material";
+        if (written.insert(file).second) {
+            WriteFile(file, R"({"kiln_material": 1, "shader": ")" + shader +
+                                R"(", "properties": {"_Color": [0.8, 0.8, 0.8, 1]}})");
+        }
+        sidecar += std::string(first ? "" : ", ") + "\"" + m + "\": \"" + file + "\"";
+        first = false;
+    }
+    WriteFile(dir + "/demo.kiln.json", sidecar + "}}");
+    return dir + "/demo.kiln.json";
+}
+
+std::string Demo() {
+    return DataPath("../scenes/demo/demo.gltf");
+}
+
+// Renders the demo scene with the sidecar; expects success and no validation message.
+void Render(const std::string& packs,
+            const std::string& sidecar,
+            const std::string& png,
+            const std::string& options) {
+    const RunResult r =
+        RunKiln("render " + Demo() + " --pack " + packs + " --materials " + sidecar +
+                " --validation --width 192 --height 108 -o " + png + " " + options);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
+}
+
+// A Lambert surface shader and the same lighting written by hand: on the forward path the
+// generated FORWARD/FORWARD_DELTA passes compute exactly what the hand-written ones do, so the
+// images must be identical (tolerance 0: same functions, same interpolators, same order of
+// operations). On the deferred path the surface shader goes through the G-buffer and Kiln's
+// deferred lighting (Unity's Internal-DeferredShading: its BRDF at smoothness 0 and black
+// specular, whose diffuse term is Lambert's) while the hand-written one, without a Deferred pass,
+// is drawn forward after it: at most 2 of 255 per channel apart (the G-buffer's 8-bit albedo and
+// 10-bit normal).
+TEST(Surface, ALambertSurfaceShaderRendersAsItsHandWrittenEquivalentOnBothPaths) {
+    const std::string dir = FreshTempDir("surface_lambert");
+    const std::string pack = dir + "/l.kpack";
+    RunResult r = RunKiln("compile " + DataPath("data/surface/lambert.shader") + " " +
+                          DataPath("data/surface/hand_lambert.shader") + " -o " + pack);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = RunKiln("info " + pack);
+    for (const char* pass :
+         {"\"FORWARD\" (LightMode ForwardBase)", "\"FORWARD_DELTA\" (LightMode ForwardAdd)",
+          "\"DEFERRED\" (LightMode Deferred)", "\"Meta\" (LightMode Meta)"})
+        EXPECT_NE(r.out.find(pass), std::string::npos) << pass << "\n" << r.out;
+    EXPECT_EQ(r.out.find("ShadowCaster"), std::string::npos) << "no addshadow, no vertex:";
+    const std::string packs = pack + " " + KILN_MATERIALS_PACK;
+    for (const std::string path : {"forward", "deferred"}) {
+        const std::string surface_png = dir + "/surface-" + path + ".png";
+        const std::string hand_png = dir + "/hand-" + path + ".png";
+        Render(packs, DemoSidecar(dir, [](const std::string&) { return "Test/SurfaceLambert"; }),
+               surface_png, "--path " + path);
+        Render(packs, DemoSidecar(dir, [](const std::string&) { return "Test/HandLambert"; }),
+               hand_png, "--path " + path);
+        const Image a = Load(surface_png), b = Load(hand_png);
+        ASSERT_EQ(a.rgb.size(), b.rgb.size());
+        ASSERT_FALSE(a.rgb.empty());
+        int worst = 0;
+        size_t lit = 0;
+        for (size_t i = 0; i < a.rgb.size(); ++i) {
+            worst = std::max(worst, std::abs(int(a.rgb[i]) - int(b.rgb[i])));
+            lit += a.rgb[i] > 40;
+        }
+        EXPECT_LE(worst, path == "forward" ? 0 : 2) << path;
+        EXPECT_GT(lit, a.rgb.size() / 4) << path << ": the scene is lit";
+    }
+}
+
+// A custom `Lighting<Name>` function with view direction and a _GI function: every pixel drawn is
+// the pure red or pure blue the function returns (no ambient, additive light or fog is added), and
+// both bands appear on the spheres and the floor lit by the sun.
+TEST(Surface, ACustomToonRampLightsAsItsFunctionSays) {
+    const std::string dir = FreshTempDir("surface_toon");
+    const std::string pack = dir + "/t.kpack";
+    RunResult r = RunKiln("compile " + DataPath("data/surface/toon.shader") + " -o " + pack);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string png = dir + "/toon.png";
+    Render(pack, DemoSidecar(dir, [](const std::string&) { return "Test/SurfaceToon"; }), png, "");
+    const Image img = Load(png);
+    ASSERT_FALSE(img.rgb.empty());
+    size_t red = 0, blue = 0, other = 0;
+    const unsigned char* background = img.At(0);  // the top-left corner shows no object
+    for (int i = 0; i < img.w * img.h; ++i) {
+        const unsigned char* p = img.At(i);
+        if (p[0] == 255 && p[1] == 0 && p[2] == 0)
+            ++red;
+        else if (p[0] == 0 && p[1] == 0 && p[2] == 255)
+            ++blue;
+        else if (!std::equal(p, p + 3, background))
+            ++other;
+    }
+    EXPECT_GT(red, 1000u);
+    EXPECT_GT(blue, 300u);
+    EXPECT_EQ(other, 0u) << "pixels neither band nor background";
+}
+
+}  // namespace
+}  // namespace kiln::test
