@@ -7,6 +7,8 @@
 #include <stb/stb_image.h>
 
 #include <filesystem>
+#include <functional>
+#include <iostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -155,6 +157,81 @@ TEST(Surface, ACustomToonRampLightsAsItsFunctionSays) {
     EXPECT_GT(red, 1000u);
     EXPECT_GT(blue, 300u);
     EXPECT_EQ(other, 0u) << "pixels neither band nor background";
+}
+
+const char* const kUnityCorpus = KILN_SHARED_DIR "/unity-builtin-2022.3/Shaders";
+
+// Unity's Legacy Diffuse, Bumped Diffuse and Bumped Specular (surface shaders without addshadow:
+// they cast shadows through their Fallback's ShadowCaster, Legacy Shaders/VertexLit, found beside
+// them) and a Standard surface shader with addshadow and a vertex: function, compiled against
+// Kiln's layer and against Unity's CGIncludes, draw the demo scene and the OrientationTest sample
+// with hard shadows and no validation message. The spheres' shadows darken the floor (drawn by
+// Legacy Diffuse, which receives them): more than 150 floor pixels are at least 20 of 255 darker
+// than without shadows (223 with Unity's CGIncludes, 316 with Kiln's layer at 192x108: the sun's
+// shadows; the floor's ForwardAdd has no shadows without fullforwardshadows, as in Unity).
+TEST(Surface, UnitysLegacySurfaceShadersAndAStandardOneRenderWithShadows) {
+    const std::string extra = std::string(kUnityCorpus) + "/DefaultResourcesExtra";
+    if (!fs::is_directory(extra))
+        GTEST_SKIP() << extra << " is absent (../shared not checked out)";
+    const std::string dir = FreshTempDir("surface_legacy");
+    for (const std::string mode : {"kiln", "unity"}) {
+        const std::string pack = dir + "/" + mode + ".kpack";
+        RunResult r =
+            RunKiln("compile '" + extra + "/Normal-Diffuse.shader' '" + extra +
+                    "/Normal-Bumped.shader' '" + extra + "/Normal-BumpSpec.shader' " +
+                    DataPath("data/surface/standard.shader") + " -o " + pack +
+                    (mode == "unity" ? " -I '" + std::string(kUnityCorpus) + "/CGIncludes'"
+                                     : std::string()));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        r = RunKiln("info " + pack);
+        // Diffuse casts through VertexLit's pass; the Standard one through its generated pass.
+        size_t casters = 0;
+        for (size_t at = r.out.find("(LightMode ShadowCaster)"); at != std::string::npos;
+             at = r.out.find("(LightMode ShadowCaster)", at + 1))
+            ++casters;
+        EXPECT_EQ(casters, 4u) << r.out;
+        const std::string shaders[] = {"Legacy Shaders/Diffuse", "Legacy Shaders/Bumped Diffuse",
+                                       "Legacy Shaders/Bumped Specular", "Test/SurfaceStandard"};
+        size_t next = 0;
+        const std::string sidecar = DemoSidecar(dir, [&](const std::string& m) {
+            return m == "Floor" ? shaders[0] : shaders[next++ % 4];
+        });
+        const std::string lit = dir + "/" + mode + "-off.png", shadowed = dir + "/" + mode + ".png";
+        const std::string packs = pack + " " + KILN_MATERIALS_PACK;  // screen-space shadows
+        Render(packs, sidecar, lit, "--shadows off");
+        Render(packs, sidecar, shadowed, "--shadows hard");
+        const Image a = Load(lit), b = Load(shadowed);
+        ASSERT_EQ(a.rgb.size(), b.rgb.size());
+        size_t darker = 0;
+        for (int i = 0; i < a.w * a.h; ++i) {
+            int d = 0;
+            for (int c = 0; c < 3; ++c)
+                d += int(a.At(i)[c]) - int(b.At(i)[c]);
+            darker += d >= 60;
+        }
+        EXPECT_GT(darker, 150u) << mode << ": shadows on the floor";
+        std::cout << mode << ": " << darker << " pixels darker with shadows\n";
+        // A Khronos sample, its materials drawn by each shader in turn.
+        const std::string sample = std::string(KILN_SHARED_DIR) +
+                                   "/gltf-samples/OrientationTest/glTF/OrientationTest.gltf";
+        std::string side = R"({"kiln_materials": 1, "materials": {)";
+        const char* names[] = {"BaseMaterial", "MatX1", "MatX2", "MatY1",
+                               "MatY2",        "MatZ1", "MatZ2"};
+        for (size_t i = 0; i < 7; ++i) {
+            std::string file = shaders[i % 4];
+            for (char& c : file)
+                c = c == '/' || c == ' ' ? '_' : c;
+            side += std::string(i ? ", " : "") + "\"" + names[i] + "\": \"" + dir + "/" + file +
+                    ".material\"";
+        }
+        WriteFile(dir + "/orientation.kiln.json", side + "}}");
+        r = RunKiln("render " + sample + " --pack " + packs + " --materials " + dir +
+                    "/orientation.kiln.json --validation --shadows hard --width 160 --height 120 "
+                    "-o " +
+                    dir + "/" + mode + "-orientation.png");
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(r.out.find("validation messages: 0"), std::string::npos) << r.out;
+    }
 }
 
 }  // namespace

@@ -55,6 +55,7 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
         st.shaders.push_back(std::move(unit));
     }
     driver::ResolveUsePasses(st);
+    driver::AddFallbackShadowCasters(st);
 }
 
 void FillReports(const CompileState& st, CompileOutput& out) {

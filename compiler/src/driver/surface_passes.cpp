@@ -133,6 +133,11 @@ std::vector<Pass> State::Generate(const ProgramBlock& program, const Pragma& pra
         surface::ParseSurfaceDirective(pragma, file.path(), diags);
     if (!directive)
         return {};
+    if (directive->tessellate) {
+        diags.Warning(DiagCode::kBadSurfaceShader, file.path(), directive->tessellate->range,
+                      "tessellate: is not generated yet; the passes are generated without "
+                      "tessellation");
+    }
     std::vector<const ProgramBlock*> user = includes;
     user.push_back(&program);
     std::string text;

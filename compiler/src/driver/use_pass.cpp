@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "driver/isolation.h"
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/names.h"
 #include "kiln/shaderlab/parse.h"
 
@@ -130,7 +131,57 @@ bool Resolve(CompileState& st, const ShaderUnit& unit, FlatPass& fp) {
     return false;
 }
 
+bool IsShadowCaster(const FlatPass& fp) {
+    return fp.pass != nullptr && Upper(fp.light_mode) == Upper(pack::kLightModeShadowCaster);
+}
+
+// The first ShadowCaster pass along the Fallback chain that starts at `unit`'s Fallback, or null.
+const FlatPass* FallbackShadowCaster(CompileState& st,
+                                     const ShaderUnit& unit,
+                                     const ShaderUnit*& owner) {
+    const ShaderUnit* at = &unit;
+    for (int depth = 0; depth < 8; ++depth) {  // a cycle of fallbacks ends here
+        if (!at->ast || !at->ast->fallback || at->ast->fallback->off)
+            return nullptr;
+        const std::string& name = at->ast->fallback->name;
+        const ShaderUnit* next = FindLoaded(st, name);
+        if (next == nullptr)
+            next = LoadFromPath(st, unit.file->path(), name);
+        if (next == nullptr || next == &unit)
+            return nullptr;
+        for (const FlatPass& fp : next->passes) {
+            if (IsShadowCaster(fp)) {
+                owner = next;
+                return &fp;
+            }
+        }
+        at = next;
+    }
+    return nullptr;
+}
+
 }  // namespace
+
+void AddFallbackShadowCasters(CompileState& st) {
+    for (ShaderUnit& unit : st.shaders) {
+        if (unit.passes.empty() ||
+            std::any_of(unit.passes.begin(), unit.passes.end(), IsShadowCaster))
+            continue;
+        const ShaderUnit* owner = nullptr;
+        const FlatPass* caster = FallbackShadowCaster(st, unit, owner);
+        if (caster == nullptr)
+            continue;
+        FlatPass fp = *caster;
+        fp.subshader = unit.passes.front().subshader;
+        if (!fp.source)
+            fp.source = owner->file;
+        // After the first SubShader's passes: the SubShader a renderer picks draws it.
+        auto at = std::find_if(unit.passes.begin(), unit.passes.end(),
+                               [&](const FlatPass& p) { return p.subshader != fp.subshader; });
+        unit.passes.insert(at, std::move(fp));
+        LabelPasses(unit.passes);
+    }
+}
 
 void ResolveUsePasses(CompileState& st) {
     for (ShaderUnit& unit : st.shaders) {

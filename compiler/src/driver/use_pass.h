@@ -15,6 +15,12 @@ namespace kiln::driver {
 // passes).
 void ResolveUsePasses(CompileState& st);
 
+// A shader without a ShadowCaster pass casts shadows with the first one along its Fallback chain,
+// as in Unity (Legacy Shaders/Diffuse and the other surface shaders without addshadow cast
+// through "Legacy Shaders/VertexLit"): that pass is copied into the shader's first SubShader,
+// found as UsePass finds shaders. A fallback that cannot be found adds nothing.
+void AddFallbackShadowCasters(CompileState& st);
+
 }  // namespace kiln::driver
 
 #endif  // KILN_DRIVER_USE_PASS_H_

@@ -275,6 +275,11 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
         v["kiln_SpotDirection0"] = {0, -1, 0, 0};
         v["kiln_LightParams0"] = {0, -1, -1, 0};
     }
+    // No baked shadow mask: a light's baked occlusion is 1 (Unity's UnitySampleBakedOcclusion
+    // multiplies the main light by dot(occlusion, selector) wherever light probe proxy volumes are
+    // on, as on desktop; a zero selector would leave the main light dark).
+    v["unity_OcclusionMaskSelector"] = {1, 0, 0, 0};
+    v["unity_ProbesOcclusion"] = {1, 1, 1, 1};
     std::vector<float> x(4, 0), y(4, 0), z(4, 0), atten(4, 0), colors(32, 0);
     for (size_t i = 0; i < vertex.size() && i < 4; ++i) {
         const runtime::Light& l = *vertex[i];
