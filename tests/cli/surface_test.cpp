@@ -159,6 +159,68 @@ TEST(Surface, ACustomToonRampLightsAsItsFunctionSays) {
     EXPECT_EQ(other, 0u) << "pixels neither band nor background";
 }
 
+// Mistakes: an error in the shader's own code is reported at its line of the .shader; one in
+// generated code names the generated file with a note on the pass and the directive; a missing
+// surface function and a misspelled option name what is wrong. --emit-generated writes the
+// generated shader, which compiles on its own.
+TEST(Surface, MistakesAreReportedWhereTheyAreAndTheGeneratedCodeCanBeRead) {
+    const std::string dir = FreshTempDir("surface_mistakes");
+    const std::string head =
+        "Shader \"Test/M\" {\n"                                  // 1
+        "  Properties { _Cutoff (\"C\", Range(0, 1)) = 0.5 }\n"  // 2
+        "  SubShader {\n"                                        // 3
+        "    CGPROGRAM\n";                                       // 4
+    const std::string input = "    struct Input { float2 uv_MainTex; };\n";
+    const std::string tail = "    ENDCG\n  }\n}\n";
+    // Line 7: a user error inside surf.
+    WriteFile(dir + "/user.shader", head + "    #pragma surface surf Lambert\n" + input +
+                                        "    void surf(Input IN, inout SurfaceOutput o) {\n"
+                                        "        o.Albedo = undefined_name;\n    }\n" +
+                                        tail);
+    RunResult r = RunKiln("compile " + dir + "/user.shader -o " + dir + "/u.kpack");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("user.shader:8:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("undefined_name"), std::string::npos) << r.err;
+    // The cutoff is a texture: the generated clip() fails, in generated code.
+    WriteFile(
+        dir + "/gen.shader",
+        head + "    #pragma surface surf Lambert alphatest:_Cutoff\n    sampler2D _Cutoff;\n" +
+            input + "    void surf(Input IN, inout SurfaceOutput o) { o.Albedo = 1; }\n" + tail);
+    r = RunKiln("compile " + dir + "/gen.shader -o " + dir + "/g.kpack --emit-generated " + dir +
+                "/generated");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("gen.shader (generated):"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("gen.shader:5:5: note: in the code generated for pass FORWARD of this "
+                         "surface shader"),
+              std::string::npos)
+        << r.err;
+    const std::string generated = ReadFile(dir + "/generated/gen.generated.shader");
+    EXPECT_NE(generated.find("Name \"FORWARD_DELTA\""), std::string::npos) << generated;
+    EXPECT_NE(generated.find("clip(o.Alpha - _Cutoff);"), std::string::npos) << generated;
+    // A correct shader's generated file compiles on its own.
+    r = RunKiln("compile " + DataPath("data/surface/lambert.shader") + " -o " + dir +
+                "/l.kpack --emit-generated " + dir + "/generated");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = RunKiln("compile " + dir + "/generated/lambert.generated.shader -o " + dir + "/l2.kpack");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    // No surface function; a misspelled option.
+    WriteFile(dir + "/nosurf.shader", head + "    #pragma surface surff Lambert\n" + input +
+                                          "    void surf(Input IN, inout SurfaceOutput o) {}\n" +
+                                          tail);
+    r = RunKiln("compile " + dir + "/nosurf.shader -o " + dir + "/n.kpack");
+    EXPECT_NE(r.err.find("nosurf.shader:5:5: error: cannot generate the passes of this surface "
+                         "shader: surface function 'surff' is not defined [K3008]"),
+              std::string::npos)
+        << r.err;
+    WriteFile(dir + "/typo.shader",
+              head + "    #pragma surface surf Lambert fullforwardshadow\n" + input +
+                  "    void surf(Input IN, inout SurfaceOutput o) {}\n" + tail);
+    r = RunKiln("compile " + dir + "/typo.shader -o " + dir + "/t.kpack");
+    EXPECT_NE(r.err.find("fullforwardshadows"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("[K4016]"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/t.kpack"));
+}
+
 const char* const kUnityCorpus = KILN_SHARED_DIR "/unity-builtin-2022.3/Shaders";
 
 // Unity's Legacy Diffuse, Bumped Diffuse and Bumped Specular (surface shaders without addshadow:

@@ -414,3 +414,112 @@ INSTANTIATE_TEST_SUITE_P(Versions,
 
 }  // namespace
 }  // namespace kiln::test
+
+namespace kiln::test {
+namespace {
+
+// Surface shaders whose defaults or engine inputs make the harness's checks inapplicable, not
+// their generated passes: what kiln test would report for them is what Unity draws too.
+const std::map<std::string, std::string> kHarnessInapplicable = {
+    {"Hidden/Nature/Tree Creator Leaves Optimized",
+     "LightingTreeLeaf adds its specular without _LightColor0: a light of intensity 0 changes it"},
+    {"Hidden/TerrainEngine/Details/WavingDoublePass",
+     "the terrain sets _WaveAndDistance; at zero its grass fades out and is clipped"},
+    {"Hidden/TerrainEngine/Details/BillboardWavingDoublePass",
+     "the terrain sets _WaveAndDistance; at zero its grass fades out and is clipped"},
+    {"Tutorial/022_stencil_buffer/read", "_StencilRef at 255 fails its stencil test"},
+    {"Tutorial/027_layered_noise/2d", "its noise goes negative at the Range ends"},
+    {"Tutorial/027_layered_noise/3d", "its noise goes negative at the Range ends"},
+    {"Tutorial/027_layered_noise/special_use_case", "_CellSize 0 divides by zero"},
+    {"Tutorial/038_dissolve", "its default black _DissolveTex dissolves all of it"},
+    {"Tutorial/040_DitheredLighting", "its default white halftone pattern darkens every pixel"},
+    {"UI/Lit/Bumped", "the UI sets _ClipRect; at zero UNITY_UI_CLIP_RECT clips everything"},
+    {"UI/Lit/Detail", "the UI sets _ClipRect; at zero UNITY_UI_CLIP_RECT clips everything"},
+    {"UI/Lit/Refraction", "the UI sets _ClipRect; at zero UNITY_UI_CLIP_RECT clips everything"},
+    {"UI/Lit/Refraction Detail",
+     "the UI sets _ClipRect; at zero UNITY_UI_CLIP_RECT clips everything"},
+    {"UI/Lit/Transparent", "the UI sets _ClipRect; at zero UNITY_UI_CLIP_RECT clips everything"},
+};
+
+// `kiln test` draws every variant of every pass the forward path draws (FORWARD, FORWARD_DELTA)
+// of a pack of surface shaders, and `kiln lint` finds nothing in their generated code. CI: a
+// subset of 2022.3's and the tutorials' surface shaders (Kiln's layer); KILN_COMPAT=full: every
+// surface shader of 2022.3 and the tutorials but SpeedTree's (allow-listed) and those of
+// kHarnessInapplicable.
+TEST(SurfaceCorpus, KilnTestPassesAndLintFindsNothingInGeneratedCode) {
+    const fs::path unity = kShared / "unity-builtin-2022.3" / "Shaders";
+    const fs::path ronja = kShared / "ronja-tutorials" / "Assets";
+    if (!fs::is_directory(unity) || !fs::is_directory(ronja))
+        GTEST_SKIP() << "../shared's corpora are absent: surface shaders not tested";
+    const char* env = std::getenv("KILN_COMPAT");
+    const bool full = env && std::string(env) == "full";
+    std::vector<fs::path> files;
+    if (full) {
+        for (const fs::path& root : {unity, ronja}) {
+            for (const auto& e : fs::recursive_directory_iterator(root)) {
+                if (e.path().extension() == ".shader" && IsSurfaceShader(e.path()) &&
+                    e.path().string().find("SpeedTree") == std::string::npos)
+                    files.push_back(e.path());
+            }
+        }
+        std::sort(files.begin(), files.end());
+    } else {
+        for (const char* f :
+             {"DefaultResourcesExtra/Normal-Diffuse.shader",
+              "DefaultResourcesExtra/Normal-BumpSpec.shader",
+              "DefaultResourcesExtra/AlphaTest-Diffuse.shader",
+              "DefaultResourcesExtra/Alpha-Glossy.shader",
+              "DefaultResourcesExtra/Illumin-Bumped.shader", "DefaultResourcesExtra/Decal.shader",
+              "DefaultResourcesExtra/Nature/TreeCreator/TreeCreatorBark.shader"})
+            files.push_back(unity / f);
+        for (const char* f : {"005_Surface_Basics/simple_surface.shader",
+                              "013_CustomSurfaceLighting/CustomLighting.shader",
+                              "031_StepToon/SteppedToonLighting.shader"})
+            files.push_back(ronja / f);
+    }
+    const ScratchDir dir;
+    std::string args;
+    for (const fs::path& f : files)
+        args += " " + Quote(f.string());
+    const std::string pack = dir.path() + "/surface.kpack";
+    RunResult r = RunKiln("compile" + args + " -o " + Quote(pack));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::string shaders;
+    r = RunKiln("info " + Quote(pack));
+    const std::string info = r.out;
+    size_t tested = 0;
+    for (size_t at = info.find("\nShader \""); at != std::string::npos;
+         at = info.find("\nShader \"", at + 1)) {
+        const size_t b = at + 9, e = info.find("\": ", b);
+        const std::string name = info.substr(b, e - b);
+        if (kHarnessInapplicable.count(name) || shaders.find("'" + name + "'") != std::string::npos)
+            continue;
+        shaders += " --shader '" + name + "'";
+        ++tested;
+    }
+    r = RunKiln("test " + Quote(pack) + shaders + " --keep-failures " + Quote(dir.path() + "/f"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    std::cout << tested << " of " << files.size()
+              << " surface shaders: " << r.out.substr(r.out.rfind("kiln test:"));
+    // Lint: every shader_feature combination. A K7xxx finding must be at a line of the file it
+    // names (a finding in generated code would be placed past the end of the .shader or in the
+    // "(generated)" file).
+    r = RunKiln("lint" + args);
+    size_t findings = 0;
+    std::istringstream lines(r.err);
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch m;
+        if (!std::regex_search(line, m,
+                               std::regex(R"(^(.*\.shader):(\d+):\d+: warning: .*\[K7\d{3}\])")))
+            continue;
+        ++findings;
+        const std::string text = ReadFile(m[1].str());
+        const size_t count = size_t(std::count(text.begin(), text.end(), '\n')) + 1;
+        EXPECT_LE(std::stoul(m[2].str()), count) << "a finding in generated code: " << line;
+    }
+    EXPECT_EQ(r.err.find("(generated)"), std::string::npos) << r.err;
+    std::cout << "kiln lint: " << findings << " findings, none in generated code\n";
+}
+
+}  // namespace
+}  // namespace kiln::test

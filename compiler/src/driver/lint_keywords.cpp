@@ -74,6 +74,8 @@ void LintKeywordUse(CompileState& st, size_t p, const std::map<uint64_t, Ids>& v
         if (alias_pass != p)
             continue;
         const variants::KeywordSet& set = pu.pragmas.sets[a.set];
+        if (set.generated)
+            continue;  // a surface shader's generated pragma: nothing the user can change
         const std::string& from = set.keywords[a.from];
         const std::string& to = set.keywords[a.to];
         if (to.empty()) {
@@ -92,7 +94,7 @@ void LintKeywordUse(CompileState& st, size_t p, const std::map<uint64_t, Ids>& v
     for (size_t s = 0; s < pu.pragmas.sets.size(); ++s) {
         const variants::KeywordSet& set = pu.pragmas.sets[s];
         const uint32_t n = static_cast<uint32_t>(set.keywords.size());
-        if (n < 2 || variants::BuiltinShortcut(set.pragma) ||
+        if (n < 2 || set.generated || variants::BuiltinShortcut(set.pragma) ||
             (set.flags & (pack::kKeywordSetVertexOnly | pack::kKeywordSetFragmentOnly))) {
             continue;  // a shortcut's sets, or already one stage
         }
@@ -140,6 +142,8 @@ void LintDeclarations(CompileState& st, size_t s) {
             continue;
         const std::string pass = unit.passes[pu.flat].label;
         for (const variants::KeywordSet& set : pu.pragmas.sets) {
+            if (set.generated)
+                continue;
             const bool feature = set.kind == pack::KeywordSetKind::kShaderFeature;
             bool all_material = !feature;
             for (const std::string& k : set.keywords) {

@@ -103,6 +103,12 @@ std::string GeneratedText(const Shader& shader,
                  std::to_string(b->body_begin.line) + " ----\n";
             std::string text = b->text;
             std::replace(text.begin(), text.end(), '\0', ' ');
+            // The directive is what this file is generated from: commented out here.
+            for (auto it = b->pragmas.rbegin(); it != b->pragmas.rend(); ++it) {
+                const size_t at = it->range.begin.offset - b->body_begin.offset;
+                if (it->name == "surface" && at <= text.size())
+                    text.insert(at, "// ");
+            }
             o += text + "\n";
         }
         o += "// ---- generated ----\n";

@@ -45,7 +45,8 @@ bool IsIdentifier(const std::string& s) {
 }
 
 struct State {
-    std::string file;  // of the block being read (a generated block names its own)
+    std::string file;        // of the block being read (a generated block names its own)
+    bool generated = false;  // the block being read is generated code
     DiagnosticList& diags;
     PassPragmas out;
     std::map<std::string, std::pair<std::string, SourceRange>> keyword_origin;  // file, range
@@ -127,6 +128,7 @@ struct State {
     void AddSet(KeywordSet set, const Pragma& p) {
         if (Repeats(set))
             return;
+        set.generated = generated;
         std::set<std::string> in_set;
         std::vector<std::string> cleaned;
         for (size_t i = 0; i < set.keywords.size(); ++i) {
@@ -467,9 +469,10 @@ PassPragmas ReadPassPragmas(const std::vector<const shaderlab::ProgramBlock*>& b
                             const std::string& file,
                             SourceRange pass_range,
                             DiagnosticList& diags) {
-    State st{file, diags, {}, {}, 0};
+    State st{file, false, diags, {}, {}, 0};
     for (const shaderlab::ProgramBlock* block : blocks) {
         st.file = block->file.empty() ? file : block->file;
+        st.generated = !block->file.empty();
         for (const Pragma& p : block->pragmas)
             st.One(p);
     }

@@ -23,6 +23,9 @@ struct KeywordSet {
     std::vector<std::string> keywords;  // "" = no keyword
     std::string pragma;                 // as written, e.g. "multi_compile_fwdadd"
     SourceRange range;                  // the pragma line
+    // Declared in generated code (a surface shader's pass, driver/surface_passes.h): the user
+    // cannot change it, so lint says nothing about it.
+    bool generated = false;
 };
 
 // A combination rule from a built-in shortcut: a variant that enables `keyword` must also enable

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <utility>
 
+#include "kiln/pack/engine_names.h"
 #include "kiln/pack/reader.h"
 
 namespace kiln::pack {
@@ -246,7 +247,9 @@ Result<PassState> ResolvePassState(const Pack& pack,
             v = Value{true, rec.number, {}};
         } else if (StateKind(rec.kind) == StateKind::kPropertyRef) {
             const std::string name(pack.String(rec.text));
-            const std::optional<float> value = properties ? properties(name) : std::nullopt;
+            std::optional<float> value = properties ? properties(name) : std::nullopt;
+            if (!value && name == kStateGuiZTestMode)
+                value = kStateGuiZTestModeValue;  // set by Unity's UI system, not a material
             if (!value) {
                 r.Fail("render state refers to property '" + name +
                        "', which the material does not set and the shader does not declare");

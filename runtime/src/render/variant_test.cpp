@@ -105,6 +105,14 @@ struct Harness {
                                          : LightType::kDirectional;
         render::MaterialInstance m;  // the draw plan's material: lives for this frame
         render::InstanceFromDefaults(pk, c.pack, c.shader, color, m);
+        // A main colour (`_Color`, Unity's Material.color) that defaults to black would hide
+        // every lighting check (Ronja's tutorial shaders tint with black by default): the
+        // harness draws it white.
+        if (auto it = m.values.find("_Color"); it != m.values.end() && it->second.size() >= 3 &&
+                                               it->second[0] == 0 && it->second[1] == 0 &&
+                                               it->second[2] == 0) {
+            it->second = {1, 1, 1, it->second.size() > 3 ? it->second[3] : 1};
+        }
         for (const auto& [name, v] : setup.values) {
             m.values[name] = v;
         }

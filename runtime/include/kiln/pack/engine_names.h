@@ -114,6 +114,18 @@ inline constexpr const char* kGlobalMatrixTransposeModelView0 =
 inline constexpr const char* kGlobalLightSplitsNear = "_LightSplitsNear";
 inline constexpr const char* kGlobalLightSplitsFar = "_LightSplitsFar";
 
+// The meta pass's PBR-validation settings (UnityMetaPass.cginc), which Unity's editor sets for its
+// validation views; Kiln's renderer leaves them zero (the meta pass draws no validation view).
+inline constexpr const char* kGlobalsEditorValidation[] = {
+    "_CheckPureMetal",           "_CheckAlbedo",        "_AlbedoCompareColor",
+    "_AlbedoMinLuminance",       "_AlbedoMaxLuminance", "_AlbedoHueTolerance",
+    "_AlbedoSaturationTolerance"};
+
+// A render-state property Unity's UI system sets globally (`ZTest [unity_GUIZTestMode]` in the UI
+// shaders): LessEqual (4) for a canvas in a scene, which is how Kiln's renderer draws.
+inline constexpr const char* kStateGuiZTestMode = "unity_GUIZTestMode";
+inline constexpr float kStateGuiZTestModeValue = 4;
+
 inline constexpr const char* kEngineGlobals[] = {
     kGlobalLightColor0,
     kGlobalWorldSpaceLightPos0,
@@ -154,6 +166,11 @@ constexpr bool IsEngineGlobal(std::string_view name) {
         name = name.substr(0, name.size() - kTexelSize.size());
     }
     for (const char* g : kEngineGlobals) {
+        if (name == g) {
+            return true;
+        }
+    }
+    for (const char* g : kGlobalsEditorValidation) {
         if (name == g) {
             return true;
         }
