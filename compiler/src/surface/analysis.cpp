@@ -5,63 +5,12 @@
 
 #include "hlsl/tokens.h"
 #include "shaderlab/program_scan.h"
+#include "surface/functions.h"
 
 namespace kiln::surface {
 namespace {
 
 using hlsl::Token;
-
-struct Param {
-    std::string qualifier, type, name;
-};
-
-// The definition of function `name` (not a call or a prototype): the index of its `(`, or
-// SIZE_MAX. `close` gets its `)`, `body` its `{`.
-size_t FindDefinition(const std::vector<Token>& tok,
-                      std::string_view name,
-                      size_t& close,
-                      size_t& body) {
-    for (size_t i = 1; i + 1 < tok.size(); ++i) {
-        if (tok[i].text != name || tok[i + 1].text != "(" || !tok[i - 1].ident)
-            continue;
-        if (tok[i - 1].text == "return")
-            continue;
-        close = hlsl::MatchForward(tok, i + 1);
-        if (close == SIZE_MAX)
-            return SIZE_MAX;
-        size_t k = close + 1;
-        if (k + 1 < tok.size() && tok[k].text == ":")  // a return semantic
-            k += 2;
-        if (k < tok.size() && tok[k].text == "{") {
-            body = k;
-            return i + 1;
-        }
-    }
-    return SIZE_MAX;
-}
-
-std::vector<Param> Params(const std::vector<Token>& tok, size_t open, size_t close) {
-    std::vector<Param> out;
-    size_t b = open + 1;
-    for (size_t k = b; k <= close; ++k) {
-        if (k != close && tok[k].text != ",")
-            continue;
-        Param p;
-        size_t i = b;
-        while (i < k && (tok[i].text == "in" || tok[i].text == "out" || tok[i].text == "inout" ||
-                         tok[i].text == "uniform")) {
-            p.qualifier = std::string(tok[i++].text);
-        }
-        if (i < k)
-            p.type = std::string(tok[i++].text);
-        if (i < k && tok[i].ident)
-            p.name = std::string(tok[i].text);
-        if (b < k)
-            out.push_back(std::move(p));
-        b = k + 1;
-    }
-    return out;
-}
 
 // The member names of `struct type { ... }` in the tokens; false when it is not defined there.
 bool StructMembers(const std::string& blank,
@@ -116,6 +65,27 @@ bool MentionsNormal(const std::vector<Token>& tok, size_t body, const std::strin
             return true;
     }
     return false;
+}
+
+// The vertex: function's input struct and whether it fills the Input struct.
+bool ReadVertexFunction(const std::vector<Token>& tok,
+                        const std::string& vert,
+                        SurfaceShader& out,
+                        SurfaceProblem& problem) {
+    size_t close = 0, body = 0;
+    const size_t open = FindDefinition(tok, vert, close, body);
+    const std::vector<Param> vp =
+        open == SIZE_MAX ? std::vector<Param>{} : Params(tok, open, close);
+    if (open == SIZE_MAX || vp.empty() || vp.size() > 2) {
+        problem.message = "vertex function '" + vert + "' " +
+                          (open == SIZE_MAX ? "is not defined"
+                                            : "must take (inout appdata_full v) or (inout "
+                                              "appdata_full v, out Input o)");
+        return false;
+    }
+    out.vertex_input.type = vp[0].type;
+    out.vertex_fills_input = vp.size() == 2;
+    return true;
 }
 
 }  // namespace
@@ -191,24 +161,8 @@ std::optional<SurfaceShader> AnalyzeSurface(std::string_view text,
                           out.output_type + "'";
         return std::nullopt;
     }
-    if (directive.vertex) {
-        const std::string& vert = directive.vertex->text;
-        size_t vclose = 0, vbody = 0;
-        const size_t vopen = FindDefinition(tok, vert, vclose, vbody);
-        if (vopen == SIZE_MAX) {
-            problem.message = "vertex function '" + vert + "' is not defined";
-            return std::nullopt;
-        }
-        const std::vector<Param> vp = Params(tok, vopen, vclose);
-        if (vp.empty() || vp.size() > 2) {
-            problem.message = "vertex function '" + vert +
-                              "' must take (inout appdata_full v) or (inout appdata_full v, "
-                              "out Input o)";
-            return std::nullopt;
-        }
-        out.vertex_input.type = vp[0].type;
-        out.vertex_fills_input = vp.size() == 2;
-    }
+    if (directive.vertex && !ReadVertexFunction(tok, directive.vertex->text, out, problem))
+        return std::nullopt;
     if (!BuiltinVertexInput(out.vertex_input.type, out.vertex_input) &&
         !StructMembers(blank, tok, out.vertex_input.type, out.vertex_input)) {
         problem.message = "the vertex input struct '" + out.vertex_input.type + "' is not defined";

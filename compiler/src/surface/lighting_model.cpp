@@ -2,42 +2,18 @@
 
 #include "hlsl/tokens.h"
 #include "shaderlab/program_scan.h"
+#include "surface/functions.h"
 
 namespace kiln::surface {
 namespace {
 
 using hlsl::Token;
 
-struct Parameter {
-    std::string qualifier;  // in, out, inout or ""
-    std::string type;
-};
-
-// The parameters of the function whose `(` is at `open`, by their qualifier and type.
-std::vector<Parameter> Parameters(const std::vector<Token>& tok, size_t open, size_t close) {
-    std::vector<Parameter> out;
-    size_t b = open + 1;
-    for (size_t k = b; k <= close; ++k) {
-        if (k != close && tok[k].text != ",")
-            continue;
-        Parameter p;
-        size_t i = b;
-        if (i < k && (tok[i].text == "in" || tok[i].text == "out" || tok[i].text == "inout"))
-            p.qualifier = std::string(tok[i++].text);
-        if (i < k)
-            p.type = std::string(tok[i].text);
-        if (b < k)
-            out.push_back(std::move(p));
-        b = k + 1;
-    }
-    return out;
-}
-
 bool IsVector3(const std::string& type) {
     return hlsl::NumericShape(type) == 3;
 }
 
-std::optional<LightingForm> FormOf(std::string_view suffix, const std::vector<Parameter>& p) {
+std::optional<LightingForm> FormOf(std::string_view suffix, const std::vector<Param>& p) {
     const size_t n = p.size();
     if (suffix == "_Deferred") {
         if (n == 5 && p[1].type == "UnityGI")
@@ -126,7 +102,7 @@ LightingModel FindLightingModel(std::string_view text, std::string_view name) {
         const size_t close = hlsl::MatchForward(tok, i + 1);
         if (close == SIZE_MAX || close + 1 >= tok.size() || tok[close + 1].text != "{")
             continue;
-        const std::vector<Parameter> params = Parameters(tok, i + 1, close);
+        const std::vector<Param> params = Params(tok, i + 1, close);
         const std::optional<LightingForm> form =
             params.empty() ? std::nullopt : FormOf(tok[i].text.substr(base.size()), params);
         if (!form)
