@@ -223,7 +223,8 @@ void State::SubShaderLevel(SubShader& ss) {
     }
     includes.resize(outer);
     ss.programs = std::move(kept);
-    for (auto& [offset, passes] : inserts) {
+    for (auto& [where, passes] : inserts) {
+        const size_t offset = where;  // a structured binding cannot be captured before C++20's
         auto at = std::find_if(ss.passes.begin(), ss.passes.end(), [&](const PassEntry& e) {
             const SourceRange r = std::visit([](const auto& p) { return p.range; }, e);
             return r.begin.offset > offset;
