@@ -161,6 +161,10 @@ void LintPassState(CompileState& st, const PassUnit& pu, const pack::Pack& pack)
                            " (LightMode Deferred) blends: G-buffer values are data, and a "
                            "blended normal or smoothness is no surface; use Blend Off");
     }
+    // A surface shader's generated pass has the state Unity's generator gives it (decal:add's
+    // DEFERRED pass adds into the G-buffer by design): nothing the user wrote.
+    if (fp.pass->surface)
+        return;
     for (const std::string& p : problems)
         st.diags.Warning(DiagCode::kLintStateContradictsPass, unit.file->path(), fp.pass->range, p);
 }
