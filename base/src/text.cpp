@@ -1,5 +1,6 @@
 #include "kiln/base/text.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace kiln::base {
@@ -39,6 +40,37 @@ std::string EscapeForTerminal(std::string_view s) {
         out += buf;
         ++i;
     }
+    return out;
+}
+
+namespace {
+
+char Lower(char c) {
+    return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
+char Upper(char c) {
+    return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+}
+
+}  // namespace
+
+bool EqualsIgnoreCase(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                              [](char x, char y) { return Lower(x) == Lower(y); });
+}
+
+std::string ToLower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        c = Lower(c);
+    return out;
+}
+
+std::string ToUpper(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        c = Upper(c);
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "driver/isolation.h"
+#include "kiln/base/text.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/names.h"
 #include "kiln/shaderlab/parse.h"
@@ -14,11 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Upper(std::string s) {
-    for (char& c : s)
-        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
+using base::ToUpper;
 
 // Whether Shader "declared" answers to `name`: the same, or, as Unity finds the built-in shaders
 // it moved under "Legacy Shaders/" by their old names (Reflect-BumpVertexLit's
@@ -116,7 +113,7 @@ bool Resolve(CompileState& st, const ShaderUnit& unit, FlatPass& fp) {
         if (other.pass == nullptr || other.pass->name.empty())
             continue;
         pass_names.push_back(other.pass->name);
-        if (Upper(other.pass->name) != Upper(pass))
+        if (ToUpper(other.pass->name) != ToUpper(pass))
             continue;
         const uint32_t subshader = fp.subshader;
         fp = other;
@@ -132,7 +129,8 @@ bool Resolve(CompileState& st, const ShaderUnit& unit, FlatPass& fp) {
 }
 
 bool IsShadowCaster(const FlatPass& fp) {
-    return fp.pass != nullptr && Upper(fp.light_mode) == Upper(pack::kLightModeShadowCaster);
+    return fp.pass != nullptr &&
+           base::EqualsIgnoreCase(fp.light_mode, pack::kLightModeShadowCaster);
 }
 
 // The first ShadowCaster pass along the Fallback chain that starts at `unit`'s Fallback, or null.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "kiln/base/text.h"
 #include "kiln/pack/engine_names.h"
 
 namespace kiln::hlsl {
@@ -60,13 +61,8 @@ std::string PassMacro(const std::string& light_mode) {
         {pack::kLightModeMotionVectors, "UNITY_PASS_MOTIONVECTORS"},
     };
     for (const auto& [mode, macro] : kModes) {
-        if (light_mode.size() == std::char_traits<char>::length(mode) &&
-            std::equal(light_mode.begin(), light_mode.end(), mode, [](char a, char b) {
-                return std::tolower(static_cast<unsigned char>(a)) ==
-                       std::tolower(static_cast<unsigned char>(b));
-            })) {
+        if (base::EqualsIgnoreCase(light_mode, mode))
             return macro;
-        }
     }
     return "";
 }

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kiln/base/text.h"
 #include "kiln/diagnostic.h"
 #include "kiln/pack/render_state.h"
 #include "kiln/shaderlab/ast.h"
@@ -22,7 +23,7 @@
 
 namespace kiln::shaderlab {
 
-bool EqualsIgnoreCase(std::string_view a, std::string_view b);
+using base::EqualsIgnoreCase;
 // A finite number spelled exactly as `text` ("1", "-0.5", "1e3"); nullopt otherwise.
 std::optional<double> ParseDouble(std::string_view text);
 
@@ -123,8 +124,7 @@ class Parser {
     bool ParseColorMask(RenderState& state);
     bool ParseStencil(RenderState& state);
     std::optional<int> ParseRenderTarget(std::string_view command);
-    std::optional<StateValue> ParseEnumValue(std::string_view command,
-                                             pack::StateValues set);
+    std::optional<StateValue> ParseEnumValue(std::string_view command, pack::StateValues set);
     std::optional<StateValue> ParseNumberValue(std::string_view command,
                                                double min,
                                                double max,

@@ -4,6 +4,8 @@
 // generator is hlsl/fixed_function.h.
 #include "parser.h"
 
+#include "kiln/base/text.h"
+
 namespace kiln::shaderlab {
 namespace {
 
@@ -11,13 +13,7 @@ bool Is(const Token& t, std::string_view word) {
     return t.kind == TokenKind::kIdentifier && EqualsIgnoreCase(t.text, word);
 }
 
-std::string Lower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return out;
-}
+using base::ToLower;
 
 const std::vector<std::string_view> kComparisons = {"Greater", "GEqual",   "Less",   "LEqual",
                                                     "Equal",   "NotEqual", "Always", "Never"};
@@ -270,7 +266,7 @@ std::optional<CombineSource> Parser::ParseCombineSource(uint32_t line) {
     const Token& n = Peek();
     if (n.range.begin.line == line &&
         (Is(n, "previous") || Is(n, "primary") || Is(n, "texture") || Is(n, "constant"))) {
-        src.name = Lower(n.text);
+        src.name = ToLower(n.text);
         Next();
     } else {
         Error(DiagCode::kInvalidValue, n.range,
@@ -361,7 +357,7 @@ bool Parser::ParseBindChannels(FixedFunction& fixed) {
         if (to == nullptr) {
             return false;
         }
-        fixed.bindings.emplace_back(Lower(from->text), Lower(to->text));
+        fixed.bindings.emplace_back(ToLower(from->text), ToLower(to->text));
         return true;
     });
 }

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "kiln/base/text.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/names.h"
 
@@ -102,9 +103,7 @@ struct State {
             {"tessellation", 46}, {"interpolators32", 50},
             {"mrt8", 50},         {"setrtarrayindexfromanyshader", 50}};
         for (const auto& a : p.args) {
-            std::string feature = a.text;
-            for (char& c : feature)
-                c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            const std::string feature = base::ToLower(a.text);
             if (auto it = kFeatureTargets.find(feature); it != kFeatureTargets.end())
                 required_target = std::max(required_target, it->second);
         }

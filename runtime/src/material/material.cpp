@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "kiln/base/text.h"
 #include "kiln/pack/names.h"
 #include "kiln/pack/render_state.h"
 #include "material/issue.h"
@@ -27,12 +28,7 @@ struct State {
     }
 };
 
-std::string Lower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return out;
-}
+using base::ToLower;
 
 std::string Join(const std::vector<std::string>& names) {
     std::string s;
@@ -175,7 +171,7 @@ void ParseRenderState(State& s, const JsonValue& v, Material& m) {
                                    : key + " must be a string");
             continue;
         }
-        if (key == "Blend" && values.size() == 1 && Lower(item.string) == "off") {
+        if (key == "Blend" && values.size() == 1 && ToLower(item.string) == "off") {
             o.values = {"Off"};
             m.render_state.push_back(std::move(o));
             continue;

@@ -3,18 +3,13 @@
 #include <algorithm>
 #include <cctype>
 
+#include "kiln/base/text.h"
 #include "kiln/pack/engine_names.h"
 
 namespace kiln::pack {
 namespace {
 
-std::string Lower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return out;
-}
+using base::ToLower;
 
 // Optimal string alignment distance: Levenshtein plus the swap of two adjacent characters as one
 // edit (the commonest typo: ZWirte, _Tnit).
@@ -43,9 +38,9 @@ size_t Distance(const std::string& a, const std::string& b) {
 std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates) {
     std::string best;
     size_t best_distance = std::max<size_t>(1, name.size() / 3) + 1;
-    const std::string a = Lower(name);
+    const std::string a = ToLower(name);
     for (const std::string& c : candidates) {
-        const size_t d = Distance(a, Lower(c));
+        const size_t d = Distance(a, ToLower(c));
         if (d < best_distance) {
             best_distance = d;
             best = c;

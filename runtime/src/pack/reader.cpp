@@ -15,6 +15,7 @@
 #include <xxhash.h>
 
 #include "kiln/base/files.h"
+#include "kiln/base/text.h"
 #include "kiln/pack/names.h"
 
 #include "kiln/pack/pass_id.h"
@@ -493,23 +494,16 @@ std::optional<uint32_t> Pack::FindPass(uint32_t shader, std::string_view name) c
     if (shader >= Count(SectionTag::kShaders))
         return std::nullopt;
     const ShaderRec s = Record<ShaderRec>(SectionTag::kShaders, shader);
-    auto equal_ci = [](std::string_view a, std::string_view b) {
-        return a.size() == b.size() &&
-               std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-                   return std::tolower(static_cast<unsigned char>(x)) ==
-                          std::tolower(static_cast<unsigned char>(y));
-               });
-    };
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        if (equal_ci(PassLabel(*this, i), name))
+        if (base::EqualsIgnoreCase(PassLabel(*this, i), name))
             return i;  // the pass's one name (kiln/pack/pass_id.h)
     }
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        if (equal_ci(String(Record<PassRec>(SectionTag::kPasses, i).name), name))
+        if (base::EqualsIgnoreCase(String(Record<PassRec>(SectionTag::kPasses, i).name), name))
             return i;
     }
     for (uint32_t i = s.first_pass; i < s.first_pass + s.pass_count; ++i) {
-        if (equal_ci(LightModeOf(*this, i), name))
+        if (base::EqualsIgnoreCase(LightModeOf(*this, i), name))
             return i;
     }
     return std::nullopt;

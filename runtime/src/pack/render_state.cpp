@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "kiln/base/text.h"
 #include "kiln/pack/reader.h"
 
 namespace kiln::pack {
@@ -81,18 +82,7 @@ constexpr Alias kAliases[] = {
     {StateValues::kOnOff, "False", 0},
 };
 
-bool EqualsIgnoreCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) {
-        return false;
-    }
-    for (size_t i = 0; i < a.size(); ++i) {
-        if (std::tolower(static_cast<unsigned char>(a[i])) !=
-            std::tolower(static_cast<unsigned char>(b[i]))) {
-            return false;
-        }
-    }
-    return true;
-}
+using base::EqualsIgnoreCase;
 
 }  // namespace
 

@@ -182,5 +182,14 @@ TEST(BaseText, ControlBytesAndInvalidUtf8AreEscapedAndNulDoesNotCut) {
     EXPECT_EQ(base::EscapeForTerminal(in), "a\\x00b\\x1b[31m\\xff\\xfe\t\xc3\xa9\\xc2\\x9b\\x7f");
 }
 
+// The one case folding: ASCII only (a UTF-8 byte is never folded into another).
+TEST(Text, CaseFoldingIsAsciiOnly) {
+    EXPECT_TRUE(base::EqualsIgnoreCase("ForwardBase", "FORWARDBASE"));
+    EXPECT_FALSE(base::EqualsIgnoreCase("ForwardBase", "ForwardBas"));
+    EXPECT_FALSE(base::EqualsIgnoreCase("a[", "A{"));  // '[' is not '{' in another case
+    EXPECT_EQ(base::ToLower("ZWrite \xc3\x89"), "zwrite \xc3\x89");
+    EXPECT_EQ(base::ToUpper("shadowcaster_1"), "SHADOWCASTER_1");
+}
+
 }  // namespace
 }  // namespace kiln::test

@@ -17,6 +17,12 @@ size_t Utf8SequenceLength(std::string_view s, size_t i);
 // C0/C1 controls, DEL, bytes of invalid UTF-8) becomes \xNN.
 std::string EscapeForTerminal(std::string_view s);
 
+// ASCII case folding, the one spelling of it (ShaderLab keywords, pass names, LightMode values and
+// render-state names compare without case, as Unity does).
+bool EqualsIgnoreCase(std::string_view a, std::string_view b);
+std::string ToLower(std::string_view s);
+std::string ToUpper(std::string_view s);
+
 }  // namespace kiln::base
 
 #endif  // KILN_BASE_TEXT_H_
