@@ -171,9 +171,7 @@ std::string ForwardLight(const SurfaceShader& s, bool base) {
         o += "    " + s.directive.final_color->text + "(surfIN, o, c);\n";
     if (AppliesFog(s, base ? PassKind::kForwardBase : PassKind::kForwardAdd))
         o += "    UNITY_APPLY_FOG(IN.fogCoord, c);\n";
-    const bool opaque =
-        EffectiveAlpha(s.directive) == AlphaMode::kOpaque && s.directive.decal == DecalMode::kNone;
-    if (opaque && !s.directive.Has("keepalpha"))
+    if (!Blended(s.directive) && !s.directive.Has("keepalpha"))
         o += "    UNITY_OPAQUE_ALPHA(c.a);\n";
     return o + "    return c;\n";
 }

@@ -3,10 +3,6 @@
 namespace kiln::surface {
 namespace {
 
-bool Blended(const SurfaceDirective& d) {
-    return EffectiveAlpha(d) != AlphaMode::kOpaque || d.decal != DecalMode::kNone;
-}
-
 // The base pass's blending: alpha modes and decals draw over what is there, without depth writes.
 std::vector<std::string> BaseState(const SurfaceDirective& d) {
     if (d.decal == DecalMode::kAdd)
@@ -51,6 +47,10 @@ void Common(const SurfaceDirective& d, PlannedPass& p, bool fog, bool instancing
 }
 
 }  // namespace
+
+bool Blended(const SurfaceDirective& d) {
+    return EffectiveAlpha(d) != AlphaMode::kOpaque || d.decal != DecalMode::kNone;
+}
 
 AlphaMode EffectiveAlpha(const SurfaceDirective& d) {
     if (d.alpha != AlphaMode::kAuto)

@@ -31,6 +31,10 @@ struct PlannedPass {
 AlphaMode EffectiveAlpha(const SurfaceDirective& d);
 
 // The passes, in Unity's order: forward base, forward add, deferred, shadow caster, meta.
+// Whether the surface blends over what is there (an alpha mode or a decal): no depth writes, no
+// G-buffer pass (but decal:add's), the fwdbasealpha shortcut, no UNITY_OPAQUE_ALPHA.
+bool Blended(const SurfaceDirective& d);
+
 std::vector<PlannedPass> PlanSurfacePasses(const SurfaceDirective& d, const LightingModel& model);
 
 }  // namespace kiln::surface
