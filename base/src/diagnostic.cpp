@@ -34,6 +34,18 @@ Diagnostic& DiagnosticList::Add(Severity severity,
                                 std::string file,
                                 SourceRange range,
                                 std::string message) {
+    if (severity == Severity::kWarning && !policy_.empty()) {
+        switch (policy_.For(code)) {
+            case WarningPolicy::Action::kIgnore:
+                overflow_sink_ = Diagnostic{};
+                return overflow_sink_;
+            case WarningPolicy::Action::kError:
+                severity = Severity::kError;
+                break;
+            case WarningPolicy::Action::kWarn:
+                break;
+        }
+    }
     const bool is_error = severity == Severity::kError || severity == Severity::kInternal;
     if (saturated_ || (is_error && severity != Severity::kInternal && errors_ >= limit_)) {
         if (!saturated_) {

@@ -33,11 +33,11 @@ def readme_commands(usage):
     commands, current = {}, None
     for line in usage.splitlines():
         m = re.match(r"\s+kiln (\w+)", line)
-        if m and not line.lstrip().startswith("kiln --"):
+        if m and not line.lstrip().startswith("kiln -"):
             current = m.group(1)
             commands.setdefault(current, set())
             line = line[m.end():]
-        elif re.match(r"\s+kiln --", line):
+        elif re.match(r"\s+kiln -", line):  # the CLI's own options: --color, -W...
             current = None
             continue
         if current is None:

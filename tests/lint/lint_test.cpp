@@ -2,6 +2,9 @@
 // variant budgets; and the keyword aliases the findings describe, in the pack.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <set>
+
 #include <nlohmann/json.hpp>
 
 #include "support/compile_support.h"
@@ -77,6 +80,99 @@ TEST(Lint, TextShowsTheCountsAndWerrorFails) {
     const RunResult strict = RunKiln("lint --no-cache -Werror " + Wasteful());
     EXPECT_EQ(strict.exit_code, 1);
     EXPECT_NE(strict.err.find(":50:13: error: keyword 'UNUSED_KW'"), std::string::npos);
+}
+
+// The -W options (docs/diagnostics.md, "Warning options"): one lint check silenced by its code,
+// the rest kept; one compile warning made an error, which fails the compile and writes no pack,
+// also when the pack comes whole from the cache; a misspelled option named with the closest.
+TEST(Lint, WnoSilencesOneCheckAndTheOthersStay) {
+    const RunResult r = RunKiln("lint --no-cache --json -Wno-K7001 " + Wasteful());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> found = Findings(nlohmann::json::parse(r.out));
+    EXPECT_EQ(std::count(found.begin(), found.end(), "50:13 K7001"), 0);
+    EXPECT_EQ(std::count(found.begin(), found.end(), "51:13 K7003"), 1);
+    EXPECT_EQ(std::count(found.begin(), found.end(), "42:9 K7011"), 1);
+    // A group, and a later option naming one of its codes again.
+    const RunResult group = RunKiln("lint --no-cache --json -Wno-lint -WK7011 " + Wasteful());
+    ASSERT_EQ(group.exit_code, 0) << group.err;
+    for (const std::string& f : Findings(nlohmann::json::parse(group.out)))
+        EXPECT_TRUE(f.find("K7") == std::string::npos || f.find("K7011") != std::string::npos) << f;
+    // -Werror with one code kept a warning: the lint fails on the others.
+    const RunResult strict = RunKiln("lint --no-cache -Werror -Wno-error=K7001 " + Wasteful());
+    EXPECT_EQ(strict.exit_code, 1);
+    EXPECT_NE(strict.err.find(":50:13: warning: keyword 'UNUSED_KW'"), std::string::npos)
+        << strict.err;
+    EXPECT_NE(strict.err.find(":51:13: error: keywords 'FOG_A' and 'FOG_B'"), std::string::npos)
+        << strict.err;
+}
+
+TEST(Lint, WerrorOfOneCodeFailsTheCompileAndWritesNoPack) {
+    ScratchDir dir;
+    const std::string shader = dir.Write("Global.shader", R"(Shader "T/Global" {
+    SubShader { Pass {
+        CGPROGRAM
+        #pragma vertex vert
+        #pragma fragment frag
+        float4 _Tint;
+        float4 vert(float4 p : POSITION) : SV_POSITION { return p; }
+        float4 frag() : SV_Target { return _Tint; }
+        ENDCG
+    } }
+}
+)");
+    const std::string pack = dir.path() + "/g.kpack", cache = dir.path() + "/cache";
+    const RunResult plain = RunKiln("compile " + shader + " --cache-dir " + cache + " -o " + pack);
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    EXPECT_NE(plain.err.find("warning: shader global '_Tint' is not in Properties"),
+              std::string::npos)
+        << plain.err;
+    std::filesystem::remove(pack);
+    // The same compile, its pack now in the cache: the warning is an error and no pack is written.
+    const RunResult strict =
+        RunKiln("compile -Werror=K5006 " + shader + " --cache-dir " + cache + " -o " + pack);
+    EXPECT_EQ(strict.exit_code, 1);
+    EXPECT_NE(strict.err.find("error: shader global '_Tint' is not in Properties"),
+              std::string::npos)
+        << strict.err;
+    EXPECT_FALSE(std::filesystem::exists(pack));
+    const RunResult cold = RunKiln("compile -Werror=K5006 --no-cache " + shader + " -o " + pack);
+    EXPECT_EQ(cold.exit_code, 1);
+    EXPECT_FALSE(std::filesystem::exists(pack));
+    // Silenced: no warning at all; the cache still holds it for a compile without the option.
+    const RunResult quiet =
+        RunKiln("compile -Wno-interface " + shader + " --cache-dir " + cache + " -o " + pack);
+    EXPECT_EQ(quiet.exit_code, 0);
+    EXPECT_EQ(quiet.err.find("K5006"), std::string::npos) << quiet.err;
+    const RunResult again = RunKiln("compile " + shader + " --cache-dir " + cache + " -o " + pack);
+    EXPECT_NE(again.err.find("[K5006]"), std::string::npos) << again.err;
+}
+
+TEST(Lint, AMisspelledWarningOptionIsAUsageError) {
+    const RunResult r = RunKiln("lint -Wno-K7100 " + Wasteful());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("unknown warning option '-Wno-K7100': expected a code (K7001) or a "
+                         "group (all, lint, interface, ...); did you mean 'K7010'? [K0003]"),
+              std::string::npos)
+        << r.err;
+    const RunResult group = RunKiln("compile -Werror=interfase " + Wasteful() + " -o -");
+    EXPECT_EQ(group.exit_code, 2);
+    EXPECT_NE(group.err.find("did you mean 'interface'?"), std::string::npos) << group.err;
+}
+
+TEST(Lint, ListChecksNamesEveryCheckWithItsCodes) {
+    const RunResult r = RunKiln("lint --list-checks --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json checks = nlohmann::json::parse(r.out);
+    std::set<std::string> codes;
+    for (const auto& c : checks) {
+        for (const auto& code : c["codes"])
+            EXPECT_TRUE(codes.insert(code.get<std::string>()).second) << code << " twice";
+    }
+    for (const char* code : {"K3001", "K5004", "K5006", "K7001", "K7011"})
+        EXPECT_TRUE(codes.count(code)) << code;
+    EXPECT_EQ(checks.back()["name"], "pass-state");
+    EXPECT_EQ(checks.back()["when"], "lint");
+    EXPECT_EQ(RunKiln("lint").exit_code, 2);  // no files, no --list-checks
 }
 
 TEST(Lint, AVariantBudgetFailsTheLint) {

@@ -6,8 +6,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "kiln/diag_code.h"
@@ -35,8 +37,46 @@ struct Diagnostic {
     std::vector<DiagnosticNote> notes;
 };
 
+// Every code of kiln/diag_code_list.h, in its order.
+const std::vector<DiagCode>& AllDiagCodes();
+
+// A named group of warnings for the -W options (-Wno-lint): codes in the inclusive ranges.
+struct WarningGroup {
+    std::string_view name;
+    std::vector<std::pair<uint16_t, uint16_t>> ranges;
+    std::string_view summary;
+};
+const std::vector<WarningGroup>& WarningGroups();
+
+// Compiler-style warning options in clang's and GCC's spelling, where X is a code (K7001) or a
+// group (lint, all): -Wno-X silences X's warnings, -WX shows them again, -Werror=X makes them
+// errors, -Wno-error=X keeps them warnings, -Werror makes every other warning an error and
+// -Wno-error undoes that. Options apply in order: of two naming one code, the later wins.
+// Errors are never silenced or demoted (docs/diagnostics.md, "Warning options").
+class WarningPolicy {
+  public:
+    enum class Action : uint8_t { kWarn, kIgnore, kError };
+    // One option ("-Wno-K7001"); a K0003 error naming what was expected and the closest valid
+    // code or group when it is not one of the spellings above.
+    Status Add(std::string_view option);
+    Action For(DiagCode code) const;
+    bool empty() const { return codes_.empty() && !werror_; }
+
+  private:
+    struct Entry {
+        int8_t shown = -1;  // -1: not named; 0: -Wno-X; 1: -WX or -Werror=X
+        int8_t error = -1;  // -1: not named (-Werror decides); 0: -Wno-error=X; 1: -Werror=X
+    };
+    std::map<uint16_t, Entry> codes_;
+    bool werror_ = false;
+};
+
 class DiagnosticList {
   public:
+    DiagnosticList() = default;
+    // Every warning added is passed through `policy` (silenced, kept or made an error).
+    explicit DiagnosticList(WarningPolicy policy) : policy_(std::move(policy)) {}
+
     // Errors past this limit are dropped and replaced by one kTooManyErrors error.
     static constexpr size_t kDefaultErrorLimit = 100;
 
@@ -70,6 +110,7 @@ class DiagnosticList {
     size_t limit_ = kDefaultErrorLimit;
     bool saturated_ = false;
     Diagnostic overflow_sink_;
+    WarningPolicy policy_;
 };
 
 // Compiler-style text: "file:line:col: error: message [K1234]" followed by the source line and a

@@ -215,6 +215,16 @@ CompileOutput BuildSkeletonPack(const std::vector<std::string>& paths,
                                 const CompileOptions& options,
                                 DiagnosticList& diags);
 
+// One of the compiler's checks over a finished input (docs/diagnostics.md, "Checks"): its name,
+// the codes it reports, what it reads (ast, programs, reflection, pack), when it runs (always, or
+// lint) and what it finds. `kiln lint --list-checks` prints them.
+struct CheckInfo {
+    std::string name;
+    std::vector<DiagCode> codes;
+    std::string input, when, summary;
+};
+std::vector<CheckInfo> ListChecks();
+
 // kiln lint: compiles every variant of every pass (every shader_feature combination, within the
 // variant budgets) and reports, as K7xxx warnings at the pragma, property or pass concerned, what
 // the keywords cost and where they are wasted (docs/variants.md, "Lint"); the compile's own

@@ -10,14 +10,13 @@
 #include <map>
 #include <set>
 
+#include "checks/checks.h"
 #include "driver/cache.h"
 #include "driver/compile_state.h"
 #include "driver/isolation.h"
-#include "driver/lint.h"
 #include "driver/parallel.h"
 #include "driver/use_pass.h"
 #include "frontend/glslang_stage.h"
-#include "hlsl/precheck.h"
 #include "hlsl/unity_versions.h"
 #include "kiln/shaderlab/parse.h"
 #include "spirv/optimize.h"
@@ -43,15 +42,18 @@ void LoadShaders(CompileState& st, const std::vector<std::string>& paths) {
         }
         unit.file = std::make_shared<const SourceFile>(std::move(read).value());
         st.files.Put(unit.file);
-        unit.ast = shaderlab::ParseAndCheck(*unit.file, st.diags);
+        unit.ast = shaderlab::Parse(*unit.file, st.diags);
+        checks::Inputs in{st.diags};
+        in.file = unit.file.get();
         if (unit.ast) {
+            in.ast = &*unit.ast;
+            checks::RunChecks(checks::Input::kAst, false, in);
             driver::ExpandSurfaceShaders(*unit.ast, *unit.file, driver::IncludePathsFor(st.options),
                                          st.files, st.generated, st.diags);
             unit.passes = driver::FlattenPasses(*unit.ast, path, st.diags);
         }
-        hlsl::Prechecker precheck(*unit.file, {}, st.diags);
-        for (const driver::FlatPass& fp : unit.passes)
-            precheck.CheckPass(fp.blocks);
+        in.passes = &unit.passes;
+        checks::RunChecks(checks::Input::kPrograms, false, in);
         st.shaders.push_back(std::move(unit));
     }
     driver::ResolveUsePasses(st);
@@ -110,11 +112,18 @@ void FillReports(const CompileState& st, CompileOutput& out) {
     out.stats.unique_programs = st.jobs.size();
 }
 
-// kiln lint's checks over a built pack (driver/lint.h).
+// kiln lint's checks over a built pack (checks/checks.h, Input::kPack).
 void Lint(CompileState& st, const std::vector<uint8_t>& bytes) {
-    driver::LintKeywords(st);
-    if (Result<pack::Pack> pack = pack::Pack::Open(bytes); pack)
-        driver::LintPropertiesAndState(st, pack.value());
+    Result<pack::Pack> pack = pack::Pack::Open(bytes);
+    if (!pack) {
+        st.diags.Add(Severity::kInternal, DiagCode::kInternalError, "", kNoPosition,
+                     "the pack just built does not open: " + pack.error().message);
+        return;
+    }
+    checks::Inputs in{st.diags};
+    in.st = &st;
+    in.pack = &pack.value();
+    checks::RunChecks(checks::Input::kPack, true, in);
 }
 
 // CompileOptions::keep_programs: each job's text, as its first task (the one that keeps it) names
@@ -270,8 +279,11 @@ CompileOutput Run(const std::vector<std::string>& paths,
         clock.Into(ms.compile);
         if (!diags.has_errors())
             driver::FinishModules(st);
-        if (!diags.has_errors())
-            driver::CheckInterfaces(st);
+        if (!diags.has_errors()) {
+            checks::Inputs in{st.diags};
+            in.st = &st;
+            checks::RunChecks(checks::Input::kReflection, mode == Mode::kLint, in);
+        }
         clock.Into(ms.finish);
         if (!diags.has_errors())
             out.pack = driver::EmitPack(st, out.stats);
@@ -284,24 +296,41 @@ CompileOutput Run(const std::vector<std::string>& paths,
     return Finish(st, out, exec, whole);
 }
 
+// The -W options (the caller's list's WarningPolicy) apply to what the caller is shown, not to
+// what the compile caches keep: the compile reports into a list without them, then hands every
+// diagnostic over, and a warning the options make an error fails the compile then.
+CompileOutput RunUnderPolicy(const std::vector<std::string>& paths,
+                             const CompileOptions& options,
+                             DiagnosticList& diags,
+                             Mode mode) {
+    DiagnosticList raw;
+    CompileOutput out = Run(paths, options, raw, mode);
+    diags.Append(raw);
+    if (diags.has_errors()) {
+        out.ok = false;
+        out.pack.clear();
+    }
+    return out;
+}
+
 }  // namespace
 
 CompileOutput CompileShaders(const std::vector<std::string>& paths,
                              const CompileOptions& options,
                              DiagnosticList& diags) {
-    return Run(paths, options, diags, Mode::kPack);
+    return RunUnderPolicy(paths, options, diags, Mode::kPack);
 }
 
 CompileOutput AnalyzeVariants(const std::vector<std::string>& paths,
                               const CompileOptions& options,
                               DiagnosticList& diags) {
-    return Run(paths, options, diags, Mode::kAnalyze);
+    return RunUnderPolicy(paths, options, diags, Mode::kAnalyze);
 }
 
 CompileOutput BuildSkeletonPack(const std::vector<std::string>& paths,
                                 const CompileOptions& options,
                                 DiagnosticList& diags) {
-    return Run(paths, options, diags, Mode::kSkeleton);
+    return RunUnderPolicy(paths, options, diags, Mode::kSkeleton);
 }
 
 CompileOutput LintShaders(const std::vector<std::string>& paths,
@@ -312,7 +341,7 @@ CompileOutput LintShaders(const std::vector<std::string>& paths,
     every.keywords.reset();
     every.materials.clear();
     every.requests.reset();
-    return Run(paths, every, diags, Mode::kLint);
+    return RunUnderPolicy(paths, every, diags, Mode::kLint);
 }
 
 pack::Precision DefaultPrecisionFor(int unity_version) {

@@ -177,9 +177,12 @@ std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
                                                 const std::string& key);
 
 // Phases implemented in pack_emit.cpp.
-void FinishModules(CompileState& st);    // bindings, reflection, strip, validate
-void CheckInterfaces(CompileState& st);  // stage interface, block layouts, properties
+void FinishModules(CompileState& st);  // bindings, reflection, strip, validate
 std::vector<uint8_t> EmitPack(CompileState& st, CompileStats& stats);
+// "shader "S" pass "P", variant A B" for a diagnostic about one variant of pass `p`.
+std::string VariantName(const CompileState& st, size_t p, pack::VariantKey key);
+// The final module of pass `p` that `task` compiled.
+const FinalModule& FinalFor(const CompileState& st, size_t p, size_t task);
 
 // Reports errors shared by many variants once each (error_merge.cpp).
 void ReportJobDiagnostics(CompileState& st);

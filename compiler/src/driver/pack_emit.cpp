@@ -1,5 +1,5 @@
-// The late phases of a compile: bindings + reflection + validation per module, cross-stage and
-// Properties checks, and the pack itself.
+// The late phases of a compile: bindings + reflection + validation per module, and the pack
+// itself (the checks over the reflection are in checks/).
 #include <algorithm>
 #include <set>
 
@@ -16,7 +16,6 @@
 #include "variants/alias_merge.h"
 
 namespace kiln::driver {
-namespace {
 
 using pack::Stage;
 
@@ -32,8 +31,6 @@ std::string VariantName(const CompileState& st, size_t p, pack::VariantKey key) 
 const FinalModule& FinalFor(const CompileState& st, size_t p, size_t task) {
     return st.finals[p].at(st.tasks[task].job);
 }
-
-}  // namespace
 
 void FinishModules(CompileState& st) {
     st.finals.assign(st.passes.size(), {});
@@ -110,202 +107,6 @@ void FinishModules(CompileState& st) {
                          unit.file->path(), unit.passes[pu.flat].program->range,
                          fm.error + " (" + VariantName(st, p, t.key) + ", " +
                              pack::StageName(t.stage) + " stage)");
-        }
-    }
-}
-
-void CheckInterfaces(CompileState& st) {
-    for (size_t p = 0; p < st.passes.size(); ++p) {
-        const PassUnit& pu = st.passes[p];
-        const ShaderUnit& unit = st.shaders[pu.shader];
-        const FlatPass& fp = unit.passes[pu.flat];
-        std::set<std::string> reported;
-        // The fragment stage reads what the last stage before rasterization writes: geometry,
-        // else domain (tessellation evaluation), else vertex.
-        const std::vector<Stage> stages = pu.pragmas.Stages();
-        size_t pre = 0;
-        for (size_t slot = 2; slot < stages.size(); ++slot) {
-            if (stages[slot] == Stage::kGeometry ||
-                (stages[slot] == Stage::kTessEval && stages[pre] != Stage::kGeometry))
-                pre = slot;
-        }
-        const std::string pre_name = pack::StageName(stages[pre]);
-        const variants::EntryPoint& pre_entry = *pu.pragmas.Entry(stages[pre]);
-        for (size_t v = 0; v < pu.expansion.keys.size(); ++v) {
-            const spirv::Reflection& vs = FinalFor(st, p, pu.TaskOf(v, pre)).reflection;
-            const spirv::Reflection& fs = FinalFor(st, p, pu.TaskOf(v, 1)).reflection;
-            for (const spirv::InterfaceVar& in : fs.interface) {
-                if (in.direction != 0 || in.location == ~0u)
-                    continue;
-                const spirv::InterfaceVar* match = nullptr;
-                for (const auto& out : vs.interface) {
-                    if (out.direction == 1 && out.location == in.location)
-                        match = &out;
-                }
-                std::string msg;
-                if (!match) {
-                    msg = "fragment input " + (in.semantic.empty() ? in.name : in.semantic) +
-                          " (location " + std::to_string(in.location) + ") is not written by the " +
-                          pre_name + " shader";
-                } else if (!in.semantic.empty() && !match->semantic.empty() &&
-                           in.semantic != match->semantic) {
-                    msg = "fragment input " + in.semantic + " and " + pre_name + " output " +
-                          match->semantic + " share location " + std::to_string(in.location) +
-                          "; declare the " + pre_name +
-                          " outputs and fragment inputs in the same order";
-                } else if (match->vecsize < in.vecsize) {
-                    msg = "fragment input " + in.semantic + " has " + std::to_string(in.vecsize) +
-                          " components but the " + pre_name + " shader writes " +
-                          std::to_string(match->vecsize);
-                }
-                if (!msg.empty() && reported.insert(msg).second) {
-                    st.diags
-                        .Error(DiagCode::kStageInterfaceMismatch, unit.file->path(),
-                               pu.pragmas.fragment->range, msg)
-                        .notes.push_back({unit.file->path(), pre_entry.range,
-                                          "in " + VariantName(st, p, pu.expansion.keys[v])});
-                }
-            }
-            for (const spirv::Block& a : vs.blocks) {
-                for (const spirv::Block& b : fs.blocks) {
-                    if (a.kind != b.kind || a.set != b.set || a.binding != b.binding)
-                        continue;
-                    if (a.kind == pack::BlockKind::kUniform && a.name != b.name)
-                        continue;
-                    bool same = a.size == b.size || a.kind == pack::BlockKind::kPushConstant;
-                    for (const auto& ma : a.members) {
-                        for (const auto& mb : b.members) {
-                            if (ma.name == mb.name && ma.offset != mb.offset)
-                                same = false;
-                        }
-                    }
-                    const std::string msg = "uniform block '" + a.name +
-                                            "' has a different layout in the " + pre_name +
-                                            " and fragment stages; declare the same globals for "
-                                            "both stages";
-                    if (!same && reported.insert(msg).second) {
-                        st.diags.Error(DiagCode::kBlockLayoutMismatch, unit.file->path(),
-                                       fp.program->range, msg);
-                    }
-                }
-            }
-        }
-    }
-
-    // Properties against shader globals, per shader over every variant of every pass.
-    for (size_t s = 0; s < st.shaders.size(); ++s) {
-        const ShaderUnit& unit = st.shaders[s];
-        if (!unit.ast)
-            continue;
-        std::map<std::string, const spirv::BlockMember*> members;
-        std::map<std::string, const spirv::Resource*> resources;
-        bool any_pass = false;
-        // A property only the unbuilt shader_feature combinations use is not unused: K5005 needs
-        // every combination (--all-features, or a shader without shader_feature sets).
-        bool every_feature_built = st.options.all_features;
-        for (size_t p = 0; p < st.passes.size(); ++p) {
-            if (st.passes[p].shader != s)
-                continue;
-            any_pass = true;
-            for (const auto& [j, fm] : st.finals[p]) {
-                for (const auto& b : fm.reflection.blocks) {
-                    if (b.kind != pack::BlockKind::kUniform || b.set != spirv::kMaterialSet)
-                        continue;
-                    for (const auto& m : b.members)
-                        members.emplace(m.name, &m);
-                }
-                for (const auto& r : fm.reflection.resources)
-                    resources.emplace(r.name, &r);
-            }
-        }
-        if (!any_pass)
-            continue;
-        // Properties render state reads (`Cull [_Cull]`, `Blend [_SrcBlend] [_DstBlend]`) are used.
-        std::set<std::string> state_refs;
-        for (const FlatPass& fp : unit.passes) {
-            for (const StateSetting& setting : fp.state) {
-                if (setting.value.kind == shaderlab::StateValue::Kind::kPropertyRef)
-                    state_refs.insert(setting.value.text);
-            }
-        }
-        if (!every_feature_built) {
-            every_feature_built = true;
-            for (const PassUnit& pu : st.passes) {
-                for (const auto& set : pu.pragmas.sets) {
-                    every_feature_built =
-                        every_feature_built &&
-                        (pu.shader != s || set.kind != pack::KeywordSetKind::kShaderFeature);
-                }
-            }
-        }
-        // A stripped compile builds what one scene needs: a property its variants leave unread
-        // may be read by others.
-        every_feature_built = every_feature_built && !st.options.requests;
-        std::set<std::string> declared;
-        const std::string& file = unit.file->path();
-        for (const shaderlab::Property& prop : unit.ast->properties) {
-            declared.insert(prop.name);
-            const bool texture = shaderlab::IsTextureType(prop.type);
-            if (texture) {
-                for (const char* suffix : {"_ST", "_TexelSize", "_HDR"}) {
-                    declared.insert(prop.name + suffix);
-                }
-            }
-            auto m = members.find(prop.name);
-            auto r = resources.find(prop.name);
-            if (m == members.end() && r == resources.end()) {
-                // A [Toggle]/[ToggleOff]/[KeywordEnum] property is a keyword switch; Unity's
-                // shaders rarely read its value.
-                const bool switch_only =
-                    std::any_of(prop.attributes.begin(), prop.attributes.end(), [&](const auto& a) {
-                        return pack::KeywordsDrivenBy(prop.name, a.name, a.raw_args).kind !=
-                               pack::PropertyKeywords::Kind::kNone;
-                    });
-                if (!every_feature_built || switch_only || state_refs.count(prop.name))
-                    continue;
-                st.diags.Warning(
-                    DiagCode::kPropertyUnused, file, prop.name_range,
-                    "property '" + prop.name + "' has no shader variable of that name in any pass");
-                continue;
-            }
-            std::string want;
-            if (m != members.end()) {
-                const spirv::BlockMember& mem = *m->second;
-                using PT = shaderlab::PropertyType;
-                if ((prop.type == PT::kColor || prop.type == PT::kVector) &&
-                    (mem.vecsize != 4 || mem.columns > 1)) {
-                    want = "a 4-component vector";
-                } else if ((prop.type == PT::kFloat || prop.type == PT::kRange ||
-                            prop.type == PT::kInt || prop.type == PT::kInteger) &&
-                           (mem.vecsize != 1 || mem.columns > 1)) {
-                    want = "a scalar";
-                } else if (texture) {
-                    want = "a texture";
-                }
-            } else if (!texture) {
-                want = "a uniform value, not a texture or sampler";
-            }
-            if (!want.empty()) {
-                st.diags.Warning(DiagCode::kPropertyTypeMismatch, file, prop.type_range,
-                                 "property '" + prop.name + "' is a " +
-                                     shaderlab::PropertyTypeName(prop.type) +
-                                     " but the shader does not declare it as " + want);
-            }
-        }
-        // Globals the runtime fills (kiln/pack/engine_names.h, and the texel size of a named
-        // GrabPass's texture); not material properties.
-        std::set<std::string> grabbed;
-        for (const FlatPass& fp : unit.passes) {
-            if (fp.grab && !fp.grab->texture_name.empty())
-                grabbed.insert(fp.grab->texture_name + "_TexelSize");
-        }
-        for (const auto& [name, mem] : members) {
-            if (declared.count(name) || pack::IsEngineGlobal(name) || grabbed.count(name)) {
-                continue;
-            }
-            st.diags.Warning(
-                DiagCode::kGlobalNotAProperty, file, unit.ast->name_range,
-                "shader global '" + name + "' is not in Properties; materials cannot set it");
         }
     }
 }

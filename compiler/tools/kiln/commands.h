@@ -29,7 +29,10 @@ enum class DiagFormat { kText, kJson };
 
 struct GlobalOptions {
     DiagFormat diag_format = DiagFormat::kText;
-    bool color = false;  // --color, resolved: ANSI colours in text diagnostics
+    bool color = false;      // --color, resolved: ANSI colours in text diagnostics
+    WarningPolicy warnings;  // the -W options, in order
+    // An empty list under the -W options: every command reports into one.
+    DiagnosticList NewDiagnostics() const { return DiagnosticList(warnings); }
 };
 
 // Prints diagnostics to stderr in the chosen format.
@@ -39,7 +42,7 @@ void PrintDiagnostics(const DiagnosticList& diags,
 int ExitCodeFor(const DiagnosticList& diags);
 // A command's diagnostics, printed once when it ends (kiln test, report, stability).
 struct CommandDiagnostics {
-    explicit CommandDiagnostics(const GlobalOptions& g) : global(g) {}
+    explicit CommandDiagnostics(const GlobalOptions& g) : global(g), diags(g.NewDiagnostics()) {}
     const GlobalOptions& global;
     DiagnosticList diags;
     // Prints them; returns `code`.

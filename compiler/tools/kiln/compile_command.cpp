@@ -381,7 +381,7 @@ int PreprocessOnly(const CompileArgs& o, const GlobalOptions& global) {
         return int(kExitUsageError);
     }
     std::vector<std::unique_ptr<SourceFile>> material_files;
-    DiagnosticList diags;
+    DiagnosticList diags = global.NewDiagnostics();
     CompileOptions options = ToCompileOptions(o.flags, material_files, diags);
     options.cache_dir.clear();
     options.keep_programs = true;
@@ -454,7 +454,7 @@ std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& globa
         "  -MF FILE                    The depfile's path (default: OUTPUT.d)");
 
     return [o, &global]() {
-        DiagnosticList diags;
+        DiagnosticList diags = global.NewDiagnostics();
         if (o->preprocess_only)
             return PreprocessOnly(*o, global);
         const bool to_stdout = o->output == base::kStandardStream;

@@ -119,7 +119,7 @@ std::function<int()> AddDiffCommand(CLI::App& app, const GlobalOptions& global) 
         }
         const int64_t added_bytes =
             int64_t(new_file.bytes().size()) - int64_t(old_file.bytes().size());
-        DiagnosticList diags;
+        DiagnosticList diags = global.NewDiagnostics();
         if (o->max_variants >= 0 && added_variants > o->max_variants) {
             diags.Error(DiagCode::kPackGrowthOverBudget, o->new_pack, kNoPosition,
                         "the new pack has " + std::to_string(added_variants) +

@@ -1,4 +1,4 @@
-// kiln lint A.shader... [-Werror] [--json]: what the keywords cost and where they are wasted
+// kiln lint A.shader... [-W options] [--json]: what the keywords cost and where they are wasted
 // (docs/variants.md, "Lint"). Every variant of every pass is compiled (every shader_feature
 // combination); the report gives each pass's variant count with the product that made it and its
 // budget, then the K7xxx warnings with the compile's own diagnostics.
@@ -68,28 +68,63 @@ nlohmann::json Report(const CompileOutput& out, const DiagnosticList& diags) {
             {"diagnostics", nlohmann::json::parse(FormatDiagnosticsJson(diags))}};
 }
 
+// --list-checks: the checks table (kiln/compile.h, ListChecks), as text or JSON.
+int PrintChecks(bool json) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    std::string text = "check                 reads       runs    codes\n";
+    for (const CheckInfo& c : ListChecks()) {
+        std::string codes;
+        nlohmann::json code_list = nlohmann::json::array();
+        for (DiagCode code : c.codes) {
+            codes += (codes.empty() ? "" : " ") + FormatDiagCode(code);
+            code_list.push_back(FormatDiagCode(code));
+        }
+        list.push_back({{"name", c.name},
+                        {"input", c.input},
+                        {"when", c.when},
+                        {"codes", code_list},
+                        {"summary", c.summary}});
+        char head[64];
+        std::snprintf(head, sizeof head, "%-21s %-11s %-7s ", c.name.c_str(), c.input.c_str(),
+                      c.when.c_str());
+        text += head + codes + "\n" + std::string(22, ' ') + c.summary + "\n";
+    }
+    std::printf("%s", json ? (list.dump(2) + "\n").c_str() : text.c_str());
+    return kExitOk;
+}
+
 }  // namespace
 
 std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) {
     struct Options {
         std::vector<std::string> files;
         CompilerFlags flags;
-        bool werror = false, json = false, no_cache = false;
+        bool json = false, no_cache = false, list_checks = false;
         std::string cache_dir;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
         "lint", "Report what the keywords cost and where they are wasted (every variant is built)");
-    cmd->add_option("files", o->files, "ShaderLab files")->required();
+    cmd->add_option("files", o->files, "ShaderLab files");
+    cmd->add_flag("--list-checks", o->list_checks,
+                  "Print every check: its name, what it reads, when it runs, its codes");
     AddCompilerOptions(*cmd, o->flags);
-    cmd->add_flag("--werror", o->werror, "")->group("");
     cmd->add_option("--cache-dir", o->cache_dir, "Compile cache (default: the user cache folder)");
     cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the compile cache");
     cmd->add_flag("--json", o->json,
                   "Print one JSON document on stdout: the counts and every diagnostic");
-    cmd->footer("Compiler-style options:\n  -Werror                     Treat warnings as errors");
+    cmd->footer(
+        "-Werror fails the lint on any finding; -Wno-K7003, -Werror=K7011 and the groups "
+        "(lint, lint-keywords, lint-state) choose per check (kiln --help)");
     return [o, &global]() {
-        DiagnosticList diags;
+        if (o->list_checks)
+            return PrintChecks(o->json);
+        if (o->files.empty()) {
+            ReportError(global, DiagCode::kBadCommandLine, "",
+                        "kiln lint needs at least one .shader file (or --list-checks)");
+            return int(kExitUsageError);
+        }
+        DiagnosticList diags = global.NewDiagnostics();
         std::vector<std::unique_ptr<SourceFile>> material_files;
         CompileOptions options = ToCompileOptions(o->flags, material_files, diags);
         if (diags.has_errors()) {
@@ -100,21 +135,14 @@ std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) 
             o->no_cache ? "" : (o->cache_dir.empty() ? DefaultCacheDir() : o->cache_dir);
         const CompileOutput out = LintShaders(o->files, options, diags);
         diags.SortByPosition();
-        DiagnosticList shown;
-        for (const Diagnostic& d : diags.all()) {
-            const bool promote = o->werror && d.severity == Severity::kWarning;
-            Diagnostic& c = shown.Add(promote ? Severity::kError : d.severity, d.code, d.file,
-                                      d.range, d.message);
-            c.notes = d.notes;
-        }
         if (o->json) {
-            std::printf("%s\n", Report(out, shown).dump(2).c_str());
+            std::printf("%s\n", Report(out, diags).dump(2).c_str());
         } else {
             PrintText(out);
             std::fflush(stdout);  // the report, then the diagnostics, also when both are piped
-            PrintDiagnostics(shown, Views(out, material_files), global);
+            PrintDiagnostics(diags, Views(out, material_files), global);
         }
-        return ExitCodeFor(shown);
+        return ExitCodeFor(diags);
     };
 }
 

@@ -158,8 +158,8 @@ std::vector<std::string> RewriteArgs(int argc, char** argv) {
             args.push_back("--opt=s");
         } else if (a.size() > 2 && a.rfind("-O", 0) == 0 && a[2] != '-') {
             args.push_back("--opt=" + a.substr(2));  // rejected with the valid spellings
-        } else if (a == "-Werror") {
-            args.push_back("--werror");
+        } else if (a.size() > 2 && a.rfind("-W", 0) == 0) {
+            args.push_back("--warning-option=" + a);  // -Wno-K7001, -Werror=lint, -Werror
         } else if (a == "-MD") {
             args.push_back("--md");
         } else if (a == "-MF") {
@@ -201,6 +201,16 @@ int main(int argc, char** argv) {
                        "always or never")
             ->check(CLI::IsMember({"auto", "always", "never"}))
             ->option_text("auto|always|never");
+        std::vector<std::string> warning_options;
+        app.add_option("--warning-option", warning_options)
+            ->group("")
+            ->allow_extra_args(false);  // -W..., rewritten
+        app.footer(
+            "Warning options, for every command, in clang's and GCC's spelling, where X is a "
+            "code (K7001) or a group (all, runtime, shaderlab, variants, hlsl, interface, "
+            "material, lint, lint-keywords, lint-state): -Wno-X silences X's warnings, -WX shows "
+            "them again, -Werror=X makes them errors, -Wno-error=X keeps them warnings, -Werror "
+            "makes every warning an error (docs/diagnostics.md, \"Warning options\").");
         app.fallthrough();
         app.add_subcommand("version", "Print the versions (as --version)");
 
@@ -265,6 +275,12 @@ int main(int argc, char** argv) {
             return ReportParseError(e, words, names);
         }
         global.color = color == "always" || (color == "auto" && AutoColor());
+        for (const std::string& w : warning_options) {
+            if (kiln::Status added = global.warnings.Add(w); !added.ok()) {
+                ReportError(global, added.error().code, "", added.error().message);
+                return kExitUsageError;
+            }
+        }
         if (app.get_subcommands().empty()) {
             std::fputs(app.help().c_str(), stderr);
             return kExitUsageError;

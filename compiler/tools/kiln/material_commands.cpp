@@ -28,7 +28,7 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
         pack::Pack p;
         if (!OpenPack(args->pack, mapped, p, global))
             return int(kExitInputError);
-        DiagnosticList diags;
+        DiagnosticList diags = global.NewDiagnostics();
         std::vector<std::unique_ptr<SourceFile>> files;
         for (const std::string& path : args->files) {
             Result<SourceFile> read = ReadSourceFile(path, material::kMaxFileBytes);

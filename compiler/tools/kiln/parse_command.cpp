@@ -22,7 +22,7 @@ std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global)
     cmd->add_flag("-q,--quiet", opts->quiet, "Print only diagnostics");
 
     return [opts, &global]() {
-        DiagnosticList diags;
+        DiagnosticList diags = global.NewDiagnostics();
         std::vector<std::unique_ptr<SourceFile>> sources;
         std::string json_files;
         for (const std::string& path : opts->files) {

@@ -317,7 +317,7 @@ std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global
                   "packs you built yourself)");
     return [a, &global] {
         // Every warning and error goes into one list, printed once (one JSON array).
-        DiagnosticList diags;
+        DiagnosticList diags = global.NewDiagnostics();
         auto finish = [&](int code) {
             PrintDiagnostics(diags, {}, global);
             return code;

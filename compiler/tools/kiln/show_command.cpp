@@ -45,7 +45,7 @@ bool CompileOneVariant(const Options& o,
                        std::vector<ProgramText>& programs,
                        const GlobalOptions& global) {
     std::vector<std::unique_ptr<SourceFile>> material_files;
-    DiagnosticList diags;
+    DiagnosticList diags = global.NewDiagnostics();
     CompileOptions options = ToCompileOptions(o.flags, material_files, diags);
     options.cache_dir.clear();  // every program preprocessed, so each has its text
     options.keep_programs = true;

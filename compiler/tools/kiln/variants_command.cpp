@@ -22,7 +22,7 @@ std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& glob
     cmd->add_flag("--json", o->json, "Print JSON");
 
     return [o, &global]() {
-        DiagnosticList diags;
+        DiagnosticList diags = global.NewDiagnostics();
         std::vector<std::unique_ptr<SourceFile>> material_files;
         const CompileOptions options = ToCompileOptions(o->flags, material_files, diags);
         if (diags.has_errors()) {

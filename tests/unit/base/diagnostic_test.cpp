@@ -95,6 +95,68 @@ TEST(Diagnostics, ErrorLimitAddsOneTooManyErrorsAndStops) {
 
 // The JSON a Kiln tool prints reads back as the same diagnostics (kiln compile --scene reads
 // kiln-render's this way); anything else is an error.
+// The -W options (WarningPolicy): by code and by group, in order, the later winning; errors are
+// never touched; a misspelled option is an error with the closest valid name.
+std::vector<std::string> Kept(const WarningPolicy& policy) {
+    DiagnosticList diags(policy);
+    diags.Warning(DiagCode::kLintKeywordChangesNothing, "a", kNoPosition, "k7001");
+    diags.Warning(DiagCode::kLintStateContradictsPass, "a", kNoPosition, "k7011");
+    diags.Warning(DiagCode::kGlobalNotAProperty, "a", kNoPosition, "k5006");
+    diags.Error(DiagCode::kHlslError, "a", kNoPosition, "k5001");
+    std::vector<std::string> out;
+    for (const Diagnostic& d : diags.all())
+        out.push_back(std::string(SeverityName(d.severity)) + " " + FormatDiagCode(d.code));
+    return out;
+}
+
+WarningPolicy Policy(std::initializer_list<const char*> options) {
+    WarningPolicy p;
+    for (const char* o : options)
+        EXPECT_TRUE(p.Add(o).ok()) << o;
+    return p;
+}
+
+TEST(WarningOptions, SilenceOrPromoteOneCodeOrAGroup) {
+    using V = std::vector<std::string>;
+    EXPECT_EQ(Kept(Policy({})),
+              (V{"warning K7001", "warning K7011", "warning K5006", "error K5001"}));
+    EXPECT_EQ(Kept(Policy({"-Wno-K7001"})), (V{"warning K7011", "warning K5006", "error K5001"}));
+    EXPECT_EQ(Kept(Policy({"-Werror=K5006"})),
+              (V{"warning K7001", "warning K7011", "error K5006", "error K5001"}));
+    EXPECT_EQ(Kept(Policy({"-Wno-lint"})), (V{"warning K5006", "error K5001"}));
+    EXPECT_EQ(Kept(Policy({"-Werror=lint-state", "-Wno-interface"})),
+              (V{"warning K7001", "error K7011", "error K5001"}));
+    // -Werror, and a code kept a warning under it; lower-case codes are accepted.
+    EXPECT_EQ(Kept(Policy({"-Werror", "-Wno-error=k7011"})),
+              (V{"error K7001", "warning K7011", "error K5006", "error K5001"}));
+    EXPECT_EQ(Kept(Policy({"-Werror", "-Wno-error"})),
+              (V{"warning K7001", "warning K7011", "warning K5006", "error K5001"}));
+    // Later options win: a group silenced, one of its codes shown again; and the reverse.
+    EXPECT_EQ(Kept(Policy({"-Wno-all", "-WK7011"})), (V{"warning K7011", "error K5001"}));
+    EXPECT_EQ(Kept(Policy({"-WK7011", "-Wno-all"})), (V{"error K5001"}));
+    // -Werror=X shows X even after -Wno-X; errors are not silenced.
+    EXPECT_EQ(Kept(Policy({"-Wno-K7001", "-Werror=K7001", "-Wno-K5001"})),
+              (V{"error K7001", "warning K7011", "warning K5006", "error K5001"}));
+}
+
+TEST(WarningOptions, AMisspelledOptionIsAnErrorWithTheClosestName) {
+    WarningPolicy p;
+    const Status code = p.Add("-Wno-K7100");
+    ASSERT_FALSE(code.ok());
+    EXPECT_EQ(code.error().code, DiagCode::kBadCommandLine);
+    EXPECT_NE(code.error().message.find("unknown warning option '-Wno-K7100'"), std::string::npos)
+        << code.error().message;
+    EXPECT_NE(code.error().message.find("did you mean 'K7010'?"), std::string::npos)
+        << code.error().message;
+    const Status group = p.Add("-Werror=lnit");
+    ASSERT_FALSE(group.ok());
+    EXPECT_NE(group.error().message.find("did you mean 'lint'?"), std::string::npos)
+        << group.error().message;
+    EXPECT_FALSE(p.Add("-W").ok());
+    EXPECT_FALSE(p.Add("-Werror=").ok());
+    EXPECT_TRUE(p.empty());  // a refused option changes nothing
+}
+
 TEST(DiagnosticsJson, ReadsBackWhatItWrote) {
     DiagnosticList d;
     Diagnostic& e = d.Error(DiagCode::kMissingVariant, "scene.gltf", {{0, 3, 4}, {0, 3, 9}},

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace kiln::base {
 
@@ -22,6 +23,14 @@ std::string EscapeForTerminal(std::string_view s);
 bool EqualsIgnoreCase(std::string_view a, std::string_view b);
 std::string ToLower(std::string_view s);
 std::string ToUpper(std::string_view s);
+
+// Edit distance suggestion: the candidate closest to `name` within a third of its length, or "".
+// Case-insensitive optimal string alignment distance (a swap of two neighbours is one edit).
+std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates);
+
+// "; did you mean 'X'?" for the closest candidate, or "" when none is close: the one spelling of
+// a suggestion appended to a diagnostic's message.
+std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates);
 
 }  // namespace kiln::base
 

@@ -6,15 +6,13 @@
 #include <string_view>
 #include <vector>
 
+#include "kiln/base/text.h"
+
 namespace kiln::pack {
 
-// Edit distance suggestion: the candidate closest to `name` within a third of its length, or "".
-// Case-insensitive Levenshtein distance.
-std::string ClosestName(std::string_view name, const std::vector<std::string>& candidates);
-
-// "; did you mean 'X'?" for the closest candidate, or "" when none is close: the one spelling of
-// a suggestion appended to a diagnostic's message.
-std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates);
+// The name suggestions ("did you mean ...") live in base/text.h, below the pack format.
+using base::ClosestName;
+using base::DidYouMean;
 
 // The LightMode tag values Unity's pipelines draw (built-in, URP, HDRP): a pass tagged otherwise
 // is never drawn, so the compiler warns (K3013) with the closest of these.

@@ -1,14 +1,19 @@
-// kiln lint: Properties and keywords that do not meet (K7009, K7010) and render state the pass's
-// LightMode or Queue contradicts (K7011).
+// kiln lint's property-keywords check (K7009, K7010: Properties and keywords that do not meet) and
+// pass-state check (K7011: render state the pass's LightMode or Queue contradicts).
 #include <set>
 
-#include "driver/lint.h"
+#include "checks/check_functions.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/property_keywords.h"
 #include "kiln/pack/render_state.h"
 
-namespace kiln::driver {
+namespace kiln::checks {
 namespace {
+
+using driver::CompileState;
+using driver::FlatPass;
+using driver::PassUnit;
+using driver::ShaderUnit;
 
 std::set<std::string> DeclaredKeywords(const CompileState& st, size_t s) {
     std::set<std::string> out;
@@ -23,7 +28,7 @@ std::set<std::string> DeclaredKeywords(const CompileState& st, size_t s) {
 
 // K7009: a property switches a keyword no pass declares. K7010: a pass declares the keyword
 // [Toggle] (or [ToggleOff]) on a property would switch, but the property has no such attribute.
-void LintPropertyKeywords(CompileState& st, size_t s) {
+void LintShaderPropertyKeywords(CompileState& st, size_t s) {
     const ShaderUnit& unit = st.shaders[s];
     const std::string& file = unit.file->path();
     const std::set<std::string> declared = DeclaredKeywords(st, s);
@@ -102,7 +107,7 @@ std::set<pack::StateField> PropertyFields(const pack::Pack& pack, uint32_t pass)
 
 // K7011 for one pass: ForwardAdd without additive blending or writing depth, a transparent
 // Queue writing depth, a Deferred pass that blends.
-void LintPassState(CompileState& st, const PassUnit& pu, const pack::Pack& pack) {
+void LintOnePassState(CompileState& st, const PassUnit& pu, const pack::Pack& pack) {
     const ShaderUnit& unit = st.shaders[pu.shader];
     const FlatPass& fp = unit.passes[pu.flat];
     const auto shader = pack.FindShader(unit.ast->name);
@@ -171,13 +176,16 @@ void LintPassState(CompileState& st, const PassUnit& pu, const pack::Pack& pack)
 
 }  // namespace
 
-void LintPropertiesAndState(CompileState& st, const pack::Pack& pack) {
-    for (size_t s = 0; s < st.shaders.size(); ++s) {
-        if (st.shaders[s].ast)
-            LintPropertyKeywords(st, s);
+void LintPropertyKeywords(Inputs& in) {
+    for (size_t s = 0; s < in.st->shaders.size(); ++s) {
+        if (in.st->shaders[s].ast)
+            LintShaderPropertyKeywords(*in.st, s);
     }
-    for (const PassUnit& pu : st.passes)
-        LintPassState(st, pu, pack);
 }
 
-}  // namespace kiln::driver
+void LintPassState(Inputs& in) {
+    for (const PassUnit& pu : in.st->passes)
+        LintOnePassState(*in.st, pu, *in.pack);
+}
+
+}  // namespace kiln::checks

@@ -1,13 +1,19 @@
-// kiln lint: what each keyword changes (K7001-K7003) and how keywords are declared (K7004-K7008).
+// kiln lint's keyword checks (checks.cpp's table): what each keyword changes (keyword-effect,
+// K7001-K7003), how keywords are declared (keyword-declarations, K7004-K7007) and how many there
+// are (keyword-limits, K7008).
 #include <array>
 #include <map>
 #include <set>
 
-#include "driver/lint.h"
+#include "checks/check_functions.h"
 #include "kiln/pack/property_keywords.h"
 
-namespace kiln::driver {
+namespace kiln::checks {
 namespace {
+
+using driver::CompileState;
+using driver::PassUnit;
+using driver::ShaderUnit;
 
 using Ids = std::array<size_t, 2>;  // (vertex, fragment) module identity of a variant
 
@@ -130,7 +136,7 @@ std::set<std::string> PropertyDrivenKeywords(const shaderlab::Shader& shader) {
 }
 
 // K7004-K7007 for one shader's passes.
-void LintDeclarations(CompileState& st, size_t s) {
+void LintShaderDeclarations(CompileState& st, size_t s) {
     const ShaderUnit& unit = st.shaders[s];
     const std::string& file = unit.file->path();
     const std::set<std::string> driven = PropertyDrivenKeywords(*unit.ast);
@@ -203,7 +209,7 @@ void LintDeclarations(CompileState& st, size_t s) {
 
 // K7008: Unity's documented limits (Unity 2021.1 and older, the built-in render pipeline): 64
 // local keywords per shader, 256 global keywords in all, Unity's own included.
-void LintKeywordLimits(CompileState& st) {
+void LintLimits(CompileState& st) {
     std::set<std::string> global;
     for (size_t s = 0; s < st.shaders.size(); ++s) {
         std::set<std::string> local;
@@ -235,15 +241,21 @@ void LintKeywordLimits(CompileState& st) {
 
 }  // namespace
 
-void LintKeywords(CompileState& st) {
+void LintKeywordEffects(Inputs& in) {
     std::map<std::vector<uint32_t>, size_t> ids;
-    for (size_t p = 0; p < st.passes.size(); ++p)
-        LintKeywordUse(st, p, ModulesOf(st, p, ids));
-    for (size_t s = 0; s < st.shaders.size(); ++s) {
-        if (st.shaders[s].ast)
-            LintDeclarations(st, s);
-    }
-    LintKeywordLimits(st);
+    for (size_t p = 0; p < in.st->passes.size(); ++p)
+        LintKeywordUse(*in.st, p, ModulesOf(*in.st, p, ids));
 }
 
-}  // namespace kiln::driver
+void LintKeywordDeclarations(Inputs& in) {
+    for (size_t s = 0; s < in.st->shaders.size(); ++s) {
+        if (in.st->shaders[s].ast)
+            LintShaderDeclarations(*in.st, s);
+    }
+}
+
+void LintKeywordLimits(Inputs& in) {
+    LintLimits(*in.st);
+}
+
+}  // namespace kiln::checks
