@@ -13,7 +13,7 @@
 #include "kiln/runtime/image_error.h"
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 std::vector<float> Uniform(uint32_t w, uint32_t h, float v) {
@@ -213,4 +213,4 @@ TEST_F(RuntimeTest, PerVertexLightingHasLargerErrorThanPerPixelOnACoarseMesh) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

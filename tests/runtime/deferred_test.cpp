@@ -12,7 +12,7 @@
 
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -345,4 +345,4 @@ INSTANTIATE_TEST_SUITE_P(Scenes,
                          ::testing::Values("demo", "LightsPunctualLamp"));
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

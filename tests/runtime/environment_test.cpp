@@ -10,7 +10,7 @@
 #include "render/reflection_probe.h"
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 const glm::dvec3 kZenith(0.1, 0.2, 0.6), kHorizon(0.5, 0.45, 0.4), kGround(0.15, 0.1, 0.05);
@@ -157,4 +157,4 @@ TEST_F(RuntimeTest, AMetalSphereLitOnlyByTheSkyShowsItsPrefilteredRadiance) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

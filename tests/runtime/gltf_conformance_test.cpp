@@ -11,7 +11,7 @@
 
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -629,4 +629,4 @@ TEST_F(GltfConformanceTest, AlphaBlendModeTestCutsEachPlaneAtItsCutoff) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

@@ -9,7 +9,7 @@
 #include "kiln/runtime/scene.h"
 #include "runtime/gltf_files.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 using nlohmann::json;
@@ -155,4 +155,4 @@ TEST(GltfExtensions, StripsAndFansBecomeTriangleLists) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

@@ -14,7 +14,7 @@
 
 #include "kiln/runtime/scene.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 
 // `bytes` as a base64 data URI (RFC 4648), for buffers written in the JSON.
 inline std::string DataUri(const std::string& bytes) {
@@ -100,6 +100,6 @@ inline std::string AllWarnings(const Loaded& l) {
     return all;
 }
 
-}  // namespace kiln::testing
+}  // namespace kiln::test
 
 #endif  // KILN_TESTS_RUNTIME_GLTF_FILES_H_

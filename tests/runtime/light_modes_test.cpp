@@ -14,7 +14,7 @@
 #include "render/frame_values.h"
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -283,4 +283,4 @@ TEST(LightRanking, TheSidecarSetsRenderModesByLightName) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

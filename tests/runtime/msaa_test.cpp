@@ -4,7 +4,7 @@
 // (the deferred path) the frame is drawn with one sample and a warning; bad counts are errors.
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 // The sphere on its floor, lit, seen so that silhouettes cross the background.
@@ -114,4 +114,4 @@ TEST_F(RuntimeTest, SampleCountsOtherThanOneTwoFourOrEightAreErrors) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

@@ -13,7 +13,7 @@
 #include "runtime/runtime_fixture.h"
 #include "vk/spirv_check.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -160,4 +160,4 @@ TEST(ModuleChecker, EachDistinctModuleIsValidatedOnce) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

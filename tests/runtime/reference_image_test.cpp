@@ -16,7 +16,7 @@
 #include "kiln/reference/sh.h"
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 using glm::dvec3;
@@ -293,4 +293,4 @@ TEST_F(ReferenceImageTest, BothPathsMatchTheReference) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

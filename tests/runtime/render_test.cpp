@@ -11,7 +11,7 @@
 #include "runtime/runtime_fixture.h"
 #include "vk/pipeline_cache.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -440,4 +440,4 @@ TEST_F(RuntimeTest, PipelineCacheIsPersistedBehindAValidatedHeader) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

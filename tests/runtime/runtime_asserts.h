@@ -15,7 +15,7 @@
 #include "kiln/runtime/scene.h"
 #include "support/result_asserts.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 
 // The runtime's Result/Status calls into existing objects, as assertions that print the error:
 // ASSERT_TRUE(CreateInto(options, renderer)), EXPECT_TRUE(Ok(renderer.AddPack(path))).
@@ -49,6 +49,6 @@ inline std::string RuntimeData(const std::string& name) {
     return std::string(KILN_RUNTIME_DATA_DIR) + "/" + name;
 }
 
-}  // namespace kiln::testing
+}  // namespace kiln::test
 
 #endif  // KILN_TESTS_RUNTIME_RUNTIME_ASSERTS_H_

@@ -18,7 +18,7 @@
 #include "kiln/runtime/scene.h"
 #include "runtime/runtime_asserts.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 
 // IEC 61966-2-1 decoding, written out independently of OpenColorIO.
 inline double SrgbToLinear(double c) {
@@ -167,6 +167,6 @@ class RuntimeTest : public ::testing::Test {
     runtime::ColorPipeline color_;
 };
 
-}  // namespace kiln::testing
+}  // namespace kiln::test
 
 #endif  // KILN_TESTS_RUNTIME_RUNTIME_FIXTURE_H_

@@ -11,7 +11,7 @@
 #include "kiln/runtime/scene.h"
 #include "runtime/gltf_files.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -293,4 +293,4 @@ TEST(GltfHardening, SidecarsAreBoundedRegularFiles) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

@@ -12,7 +12,7 @@
 #include "kiln/runtime/scene.h"
 #include "runtime/runtime_asserts.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -192,4 +192,4 @@ TEST(MaterialSidecar, PathsAreRelativeToTheSidecarAndUnknownFieldsAreErrors) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

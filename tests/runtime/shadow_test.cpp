@@ -11,7 +11,7 @@
 
 #include "kiln/pack/engine_names.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 constexpr uint32_t kSize = 128;  // pixels a side; the floor is 6 m, 4.7 cm a pixel
@@ -255,4 +255,4 @@ TEST_F(ShadowTest, NoShadowCasterPassIsAWarning) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

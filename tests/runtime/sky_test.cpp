@@ -11,7 +11,7 @@
 #include "render/frame_values.h"
 #include "runtime/runtime_fixture.h"
 
-namespace kiln::testing {
+namespace kiln::test {
 namespace {
 
 // Radiance a + b y: band-limited to order 1, so its irradiance is exact in closed form,
@@ -153,4 +153,4 @@ TEST(Sky, AnHdrFileIsReadScaledAndErrorsNameTheFile) {
 }
 
 }  // namespace
-}  // namespace kiln::testing
+}  // namespace kiln::test

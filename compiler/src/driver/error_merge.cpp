@@ -80,7 +80,7 @@ void ReportJobDiagnostics(CompileState& st) {
             const std::string where = "shader \"" + unit.ast->name + "\" pass \"" + fp.label + "\"";
             if (d.severity == Severity::kInternal) {
                 d.message +=
-                    " (" + where + ", variant " + variants::DescribeKeywords(smallest) + ")";
+                    " (" + where + ", variant " + pack::JoinKeywords(smallest) + ")";
             }
             if (total <= 1) {
                 // One variant: no counts, but which pass fails, where that is not plain from the
@@ -97,13 +97,13 @@ void ReportJobDiagnostics(CompileState& st) {
                 note = verb + " in " + std::to_string(keys.size()) + " of " +
                        std::to_string(total) + " variants of " + where;
                 if (!common.empty())
-                    note += ": " + variants::DescribeKeywords(common);
+                    note += ": " + pack::JoinKeywords(common);
             }
             d.notes.push_back({unit.file->path(), fp.program->range, note});
             if (keys.size() < total) {
                 d.notes.push_back({unit.file->path(), fp.program->range,
                                    "smallest failing keyword combination: " +
-                                       variants::DescribeKeywords(smallest)});
+                                       pack::JoinKeywords(smallest)});
             }
         }
         Diagnostic& added = st.diags.Add(d.severity, d.code, d.file, d.range, d.message);

@@ -160,7 +160,7 @@ std::optional<Diagnostic> OutcomeDiagnostic(const CompileState& st,
     }
     const auto keywords = variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, task.key);
     d.notes.push_back(
-        {unit.file->path(), kNoPosition, "in the variant " + variants::DescribeKeywords(keywords)});
+        {unit.file->path(), kNoPosition, "in the variant " + pack::JoinKeywords(keywords)});
     return d;
 }
 

@@ -24,7 +24,7 @@ std::string VariantName(const CompileState& st, size_t p, pack::VariantKey key) 
     const ShaderUnit& unit = st.shaders[pu.shader];
     return "shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label +
            "\", variant " +
-           variants::DescribeKeywords(
+           pack::JoinKeywords(
                variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, key));
 }
 

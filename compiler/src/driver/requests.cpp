@@ -93,7 +93,7 @@ void ExpandRequestedPasses(CompileState& st, bool skeleton) {
         for (const variants::ExcludedRequest& x : pu.excluded) {
             st.diags.Warning(DiagCode::kRequestedVariantNotBuilt, unit.file->path(),
                              unit.passes[pu.flat].program->range,
-                             "variant '" + variants::DescribeKeywords(x.keywords) + "' of pass \"" +
+                             "variant '" + pack::JoinKeywords(x.keywords) + "' of pass \"" +
                                  unit.passes[pu.flat].label + "\" is looked up but not built: " +
                                  x.reason + "; the runtime will not find it");
         }

@@ -136,15 +136,6 @@ std::optional<Expansion> ExpandRequested(const PassPragmas& pragmas,
     return ex;
 }
 
-std::string DescribeKeywords(const std::vector<std::string>& keywords) {
-    if (keywords.empty())
-        return "(no keywords)";
-    std::string s;
-    for (const std::string& k : keywords)
-        s += (s.empty() ? "" : " ") + k;
-    return s;
-}
-
 namespace {
 
 // Per keyword set, per choice: whether the default profile (variants/strip_profile.h) strips it.

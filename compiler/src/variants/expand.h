@@ -14,6 +14,7 @@
 
 #include "kiln/diagnostic.h"
 #include "kiln/pack/variant_key.h"
+#include "kiln/pack/variant_selector.h"  // pack::JoinKeywords, how messages show keywords
 #include "variants/pass_pragmas.h"
 
 namespace kiln::variants {
@@ -97,9 +98,6 @@ std::optional<Expansion> ExpandRequested(const PassPragmas& pragmas,
 std::vector<std::string> EnabledKeywords(const std::vector<KeywordSet>& sets,
                                          const std::vector<SetLayout>& layout,
                                          pack::VariantKey key);
-
-// "SPOT _NORMALMAP", or "(no keywords)".
-std::string DescribeKeywords(const std::vector<std::string>& keywords);
 
 }  // namespace kiln::variants
 

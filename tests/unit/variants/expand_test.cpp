@@ -39,7 +39,7 @@ TEST(Expand, CartesianProductPicksOneKeywordPerSet) {
     EXPECT_EQ(ex->permutations, 6u);
     std::set<std::string> seen;
     for (auto k : ex->keys)
-        seen.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+        seen.insert(pack::JoinKeywords(EnabledKeywords(p.sets, ex->layout, k)));
     EXPECT_EQ(seen, (std::set<std::string>{"DIRECTIONAL", "POINT", "SPOT", "DIRECTIONAL SHADOWS",
                                            "POINT SHADOWS", "SPOT SHADOWS"}));
 }
@@ -53,7 +53,7 @@ TEST(Expand, ShaderFeatureCombinationsComeFromMaterialsAsInUnity) {
         std::set<std::string> out;
         const auto ex = ExpandVariants(p, r, "P", "t", {}, diags);
         for (auto k : ex->keys)
-            out.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+            out.insert(pack::JoinKeywords(EnabledKeywords(p.sets, ex->layout, k)));
         EXPECT_FALSE(diags.has_errors());
         return out;
     };
@@ -94,7 +94,7 @@ std::set<std::string> ExpandShortcut(const std::string& pragma,
     std::set<std::string> out;
     const auto ex = ExpandVariants(p, request, "P", "t", {}, diags);
     for (auto k : ex->keys)
-        out.insert(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+        out.insert(pack::JoinKeywords(EnabledKeywords(p.sets, ex->layout, k)));
     return out;
 }
 
@@ -244,7 +244,7 @@ TEST(ExpandRequested, BuildsExactlyTheRequestedKeysAndSaysWhyOthersAreNot) {
     EXPECT_FALSE(diags.has_errors());
     std::vector<std::string> kept;
     for (auto k : ex->keys)
-        kept.push_back(DescribeKeywords(EnabledKeywords(p.sets, ex->layout, k)));
+        kept.push_back(pack::JoinKeywords(EnabledKeywords(p.sets, ex->layout, k)));
     // {} is the key of every set's first choice: POINT (the shortcut's first light type).
     EXPECT_EQ(kept, (std::vector<std::string>{"POINT", "POINT _NORMALMAP"}));
     ASSERT_EQ(excluded.size(), 2u);
@@ -306,7 +306,7 @@ TEST(ExpandRequested, KeysAgreeWithThePackReader) {
                                                {"C", "X", "DIRECTIONAL", "POINT"},
                                                {"B", "A"}}) {
         EXPECT_EQ(KeyForKeywords(p.sets, *layout, request).bits(), pk.KeyFor(0, request).bits())
-            << DescribeKeywords(request);
+            << pack::JoinKeywords(request);
     }
 }
 
