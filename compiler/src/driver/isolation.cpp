@@ -64,7 +64,7 @@ std::unique_ptr<worker::Executor> MakeExecutor(CompileState& st) {
     pool.workers = ResolveJobs(o.jobs);
     pool.timeout_seconds = o.program_timeout_seconds;
     pool.memory_limit_bytes = o.program_memory_mib << 20;
-    return worker::MakeWorkerPool(pool);
+    return worker::MakeWorkerPool(pool, st.files);
 }
 
 hlsl::IncludePaths IncludePathsFor(const CompileOptions& o) {

@@ -10,8 +10,12 @@ std::shared_ptr<const SourceFile> FileCache::Get(const std::string& path) {
             return it->second;
     }
     std::shared_ptr<const SourceFile> file;
-    if (auto read = ReadSourceFile(path); read.ok())  // regular files only, within the limit
+    if (loader_) {
+        if (std::optional<std::string> bytes = loader_(path))
+            file = std::make_shared<const SourceFile>(path, std::move(*bytes));
+    } else if (auto read = ReadSourceFile(path); read.ok()) {  // regular files, within the limit
         file = std::make_shared<const SourceFile>(std::move(read).value());
+    }
     std::lock_guard<std::mutex> lock(mu_);
     return files_.emplace(path, std::move(file)).first->second;
 }

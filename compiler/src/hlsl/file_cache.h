@@ -3,9 +3,11 @@
 #ifndef KILN_HLSL_FILE_CACHE_H_
 #define KILN_HLSL_FILE_CACHE_H_
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,13 @@ namespace kiln::hlsl {
 
 class FileCache {
   public:
+    // Where a file's bytes come from: nullopt when there is no such file (or it cannot be read).
+    using Loader = std::function<std::optional<std::string>(const std::string& path)>;
+    // Files read from this machine's disk (base::ReadRegularFile's rules and size limit).
+    FileCache() = default;
+    // Files from elsewhere: a worker's, asked of its client (worker/file_exchange.h).
+    explicit FileCache(Loader loader) : loader_(std::move(loader)) {}
+
     // The file at `path`, or null when it does not exist or cannot be read. Thread-safe.
     std::shared_ptr<const SourceFile> Get(const std::string& path);
     // Registers a file already read elsewhere (the .shader files).
@@ -23,6 +32,7 @@ class FileCache {
     std::vector<std::shared_ptr<const SourceFile>> Files() const;
 
   private:
+    Loader loader_;
     mutable std::mutex mu_;
     std::map<std::string, std::shared_ptr<const SourceFile>> files_;  // null: tried, absent
 };

@@ -47,11 +47,15 @@ struct PoolOptions {
     double timeout_seconds = 60;
     uint64_t memory_limit_bytes = uint64_t{2} << 30;
     uint64_t stack_bytes = uint64_t{256} << 20;
+    std::string working_dir;  // where the workers run (empty: this process's directory)
 };
 
+// Both read the files a request looks for through `files` (the compile's), and hand them over
+// through the protocol (worker/file_exchange.h): a worker needs no access to them.
 std::unique_ptr<Executor> MakeInProcessExecutor(hlsl::FileCache& files);
-// Workers start on first use and after each failure.
-std::unique_ptr<Executor> MakeWorkerPool(const PoolOptions& options);
+// Workers start on first use and after each failure, each with a hello (a worker of another
+// version is refused: kUnavailable).
+std::unique_ptr<Executor> MakeWorkerPool(const PoolOptions& options, hlsl::FileCache& files);
 
 // The worker executable: `explicit_path` when given, else $KILN_WORKER, else kiln-worker beside
 // the running executable, else the build tree's. "" when none is executable.

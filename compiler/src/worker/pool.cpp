@@ -20,8 +20,10 @@
 #include <thread>
 #include <vector>
 
+#include "kiln/compile.h"
 #include "worker/execute.h"
 #include "worker/executor.h"
+#include "worker/file_exchange.h"
 #include "worker/phase_board.h"
 
 extern char** environ;
@@ -33,18 +35,54 @@ using Clock = std::chrono::steady_clock;
 constexpr int kTickMs = 20;  // how often a running request's memory is looked at
 constexpr int kWorkerFd = 3, kBoardFd = 4;
 
+// The same protocol without a process: requests, responses and files pass as encoded frames, so
+// --in-process checks the encoding and the file exchange the workers use.
 class InProcessExecutor : public Executor {
   public:
-    explicit InProcessExecutor(hlsl::FileCache& files) : files_(files) {}
+    explicit InProcessExecutor(hlsl::FileCache& files)
+        : server_(files),
+          remote_([this](const std::string& path) -> std::optional<FileAnswer> {
+              const std::string frame = server_.Answer(path);
+              const auto f = SplitFrame(std::string_view(frame).substr(4));
+              return f && f->type == FrameType::kFile ? DecodeFile(f->payload) : std::nullopt;
+          }),
+          worker_files_(remote_.AsLoader()) {}
+
     Outcome Run(const Request& request) override {
-        ExecuteContext context{files_, {}};
         Outcome o;
-        o.response = Execute(request, context);
+        const std::optional<Request> sent = Decode<Request>(EncodeRequest(request));
+        if (!sent) {
+            o.status = Outcome::Status::kBroken;
+            o.detail = "a request that does not survive its encoding";
+            return o;
+        }
+        ExecuteContext context{worker_files_, {}};
+        const std::optional<Response> answer =
+            Decode<Response>(EncodeResponse(Execute(*sent, context)));
+        if (const std::string broken = remote_.error(); !broken.empty() || !answer) {
+            o.status = Outcome::Status::kBroken;
+            o.detail = broken.empty() ? "a response that does not survive its encoding" : broken;
+            return o;
+        }
+        o.response = std::move(*answer);
         return o;
     }
 
   private:
-    hlsl::FileCache& files_;
+    template <typename T>
+    static std::optional<T> Decode(const std::string& frame) {
+        const auto f = SplitFrame(std::string_view(frame).substr(4));
+        if (!f)
+            return std::nullopt;
+        if constexpr (std::is_same_v<T, Request>)
+            return DecodeRequest(f->payload);
+        else
+            return DecodeResponse(f->payload);
+    }
+
+    FileServer server_;
+    RemoteFiles remote_;
+    hlsl::FileCache worker_files_;
 };
 
 // Resident memory of a process, in bytes (0 when it cannot be read).
@@ -67,14 +105,39 @@ struct Worker {
     int fd = -1;
     FrameReader reader;
     PhaseBoard board;  // made once per slot, shared with each process that fills it
+    std::unique_ptr<FileServer> files;  // what this connection was sent
 };
+
+// The next frame from `w` within `ms` milliseconds; nullopt when none came whole.
+std::optional<std::string> ReceiveWithin(Worker& w, int ms) {
+    const auto give_up = Clock::now() + std::chrono::milliseconds(ms);
+    while (Clock::now() < give_up) {
+        pollfd p{w.fd, POLLIN, 0};
+        if (poll(&p, 1, kTickMs) <= 0)
+            continue;
+        const std::span<char> room = w.reader.Room();
+        const ssize_t n = recv(w.fd, room.data(), room.size(), MSG_DONTWAIT);
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR))
+            continue;
+        if (n <= 0 || w.reader.bad())
+            return std::nullopt;
+        if (w.reader.Advance(static_cast<size_t>(n)))
+            return w.reader.Take();
+        if (w.reader.bad())
+            return std::nullopt;
+    }
+    return std::nullopt;
+}
 
 class WorkerPool : public Executor {
   public:
-    explicit WorkerPool(PoolOptions options)
+    WorkerPool(PoolOptions options, hlsl::FileCache& files)
         : options_(std::move(options)),
           workers_(std::max(1u, options_.workers)),
-          busy_(workers_.size(), false) {}
+          busy_(workers_.size(), false) {
+        for (Worker& w : workers_)
+            w.files = std::make_unique<FileServer>(files);
+    }
 
     ~WorkerPool() override {
         for (Worker& w : workers_)
@@ -105,6 +168,7 @@ class WorkerPool : public Executor {
 
   private:
     Status Spawn(Worker& w) const;
+    Status Handshake(Worker& w) const;
     Outcome RunOn(Worker& w, const Request& request) const;
     // Ends a worker; fills `o` with how it ended when given.
     void Stop(Worker& w, bool kill_now, Outcome* o = nullptr) const;
@@ -143,6 +207,8 @@ Status WorkerPool::Spawn(Worker& w) const {
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, child_end, kWorkerFd);
     posix_spawn_file_actions_adddup2(&actions, board_end, kBoardFd);
+    if (!options_.working_dir.empty())
+        posix_spawn_file_actions_addchdir_np(&actions, options_.working_dir.c_str());
     posix_spawnattr_t attr;
     posix_spawnattr_init(&attr);
     sigset_t none, defaults;
@@ -185,6 +251,39 @@ Status WorkerPool::Spawn(Worker& w) const {
     const int buffer_bytes = 4 << 20;
     setsockopt(w.fd, SOL_SOCKET, SO_RCVBUF, &buffer_bytes, sizeof buffer_bytes);
     setsockopt(w.fd, SOL_SOCKET, SO_SNDBUF, &buffer_bytes, sizeof buffer_bytes);
+    w.files->Reset();
+    if (Status shook = Handshake(w); !shook.ok()) {
+        Stop(w, /*kill_now=*/true);
+        return shook;
+    }
+    return {};
+}
+
+// Hellos both ways (worker/protocol.h): a worker of another protocol or producer version is
+// refused, since its SPIR-V is not what this kiln's cache keys name.
+Status WorkerPool::Handshake(Worker& w) const {
+    const Hello mine{kProtocolVersion, ProducerVersion()};
+    std::optional<Hello> theirs;
+    if (SendFrame(w.fd, EncodeHello(mine))) {
+        const std::optional<std::string> payload = ReceiveWithin(w, 30000);
+        const auto frame = payload ? SplitFrame(*payload) : std::nullopt;
+        if (frame && frame->type == FrameType::kHello)
+            theirs = DecodeHello(frame->payload);
+    }
+    if (!theirs) {
+        return Error{
+            DiagCode::kWorkerUnavailable,
+            "'" + options_.worker_path +
+                "' did not answer the compile-worker protocol's hello; is it kiln-worker?"};
+    }
+    if (theirs->protocol != mine.protocol || theirs->producer != mine.producer) {
+        return Error{DiagCode::kWorkerUnavailable,
+                     "the compile worker '" + options_.worker_path + "' is '" + theirs->producer +
+                         "' (protocol " + std::to_string(theirs->protocol) +
+                         "), not this kiln's '" + mine.producer + "' (protocol " +
+                         std::to_string(mine.protocol) +
+                         "); use the kiln-worker installed with this kiln"};
+    }
     return {};
 }
 
@@ -266,12 +365,26 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
                 o.detail = "an unknown frame";
                 return fail(Outcome::Status::kBroken, true);
             }
+            if (frame->type == FrameType::kNeedFile) {
+                const std::optional<std::string> path = DecodeNeedFile(frame->payload);
+                if (!path) {
+                    o.detail = "a malformed file request";
+                    return fail(Outcome::Status::kBroken, true);
+                }
+                if (!SendFrame(w.fd, w.files->Answer(*path)))
+                    return fail(Outcome::Status::kCrashed, false);
+                continue;
+            }
             if (frame->type == FrameType::kFailure) {
                 const auto f = DecodeFailure(frame->payload);
                 o.detail = f ? f->detail : "";
-                return fail(f && f->reason == "memory" ? Outcome::Status::kOutOfMemory
-                                                       : Outcome::Status::kBroken,
-                            false);
+                const Outcome::Status status = f && f->reason == "memory"
+                                                   ? Outcome::Status::kOutOfMemory
+                                                   : Outcome::Status::kBroken;
+                fail(status, false);
+                if (f && f->component != Component::kNone)
+                    o.component = f->component;  // the worker's word beats the board's
+                return o;
             }
             std::optional<Response> resp;
             if (frame->type == FrameType::kResponse)
@@ -306,8 +419,8 @@ std::unique_ptr<Executor> MakeInProcessExecutor(hlsl::FileCache& files) {
     return std::make_unique<InProcessExecutor>(files);
 }
 
-std::unique_ptr<Executor> MakeWorkerPool(const PoolOptions& options) {
-    return std::make_unique<WorkerPool>(options);
+std::unique_ptr<Executor> MakeWorkerPool(const PoolOptions& options, hlsl::FileCache& files) {
+    return std::make_unique<WorkerPool>(options, files);
 }
 
 std::string FindWorker(const std::string& explicit_path) {

@@ -4,6 +4,9 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cstdio>
+
+#include <xxhash.h>
 
 #include "kiln/base/bytes.h"
 
@@ -39,7 +42,16 @@ enum Tag : uint8_t {
     kSecondOk,
     kSecondText,
     kSecondFunction,
-    kUnityVersion,
+    kUnityVersion,  // 28
+    // The hello, the file exchange and the failure's component (protocol 2). The numbers are the
+    // wire format: tests/fuzz/make_protocol_seeds.py and the pool test's stand-in worker use them.
+    kProtocol = 29,
+    kProducer = 30,
+    kPath = 31,
+    kFound = 32,
+    kHash = 33,
+    kContent = 34,
+    kComponent = 35,
 };
 
 // Builds a whole frame: the length is patched in when it is taken.
@@ -202,10 +214,45 @@ std::string EncodeResponse(const Response& r) {
     return w.Take();
 }
 
-std::string EncodeFailure(std::string_view reason, std::string_view detail) {
+std::string EncodeFailure(std::string_view reason, std::string_view detail, Component component) {
     Writer w(FrameType::kFailure);
     w.Bytes(kReason, reason);
     w.Bytes(kDetail, detail);
+    w.U8(kComponent, uint8_t(component));
+    return w.Take();
+}
+
+std::string ContentHash(std::string_view content) {
+    const XXH128_hash_t h = XXH3_128bits(content.data(), content.size());
+    char hex[33];
+    std::snprintf(hex, sizeof hex, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
+                  static_cast<unsigned long long>(h.low64));
+    return hex;
+}
+
+std::string EncodeHello(const Hello& h) {
+    Writer w(FrameType::kHello);
+    std::string v;
+    base::AppendLe32(v, h.protocol);
+    w.Bytes(kProtocol, v);
+    w.Bytes(kProducer, h.producer);
+    return w.Take();
+}
+
+std::string EncodeNeedFile(std::string_view path) {
+    Writer w(FrameType::kNeedFile);
+    w.Bytes(kPath, path);
+    return w.Take();
+}
+
+std::string EncodeFile(const FileAnswer& f) {
+    Writer w(FrameType::kFile);
+    w.Bytes(kPath, f.path);
+    w.U8(kFound, f.found);
+    if (f.found)
+        w.Bytes(kHash, f.hash);
+    if (f.with_content)
+        w.Bytes(kContent, f.content);
     return w.Take();
 }
 
@@ -217,6 +264,9 @@ std::optional<Frame> SplitFrame(std::string_view payload) {
         case FrameType::kRequest:
         case FrameType::kResponse:
         case FrameType::kFailure:
+        case FrameType::kHello:
+        case FrameType::kNeedFile:
+        case FrameType::kFile:
             return Frame{static_cast<FrameType>(type), payload.substr(4)};
     }
     return std::nullopt;
@@ -330,9 +380,68 @@ std::optional<Failure> DecodeFailure(std::string_view fields) {
             f.reason = b;
         else if (tag == kDetail)
             f.detail = b;
+        else if (tag == kComponent)
+            return ToComponent(b, f.component);
         return true;
     });
     return ok ? std::optional<Failure>(std::move(f)) : std::nullopt;
+}
+
+std::optional<Hello> DecodeHello(std::string_view fields) {
+    Hello h;
+    h.protocol = 0;
+    bool has_protocol = false;
+    const bool ok = ForEachField(fields, [&](uint8_t tag, std::string_view b) {
+        if (tag == kProtocol) {
+            if (b.size() != 4)
+                return false;
+            h.protocol = base::LoadLe32(b, 0);
+            has_protocol = true;
+        } else if (tag == kProducer) {
+            h.producer = b;
+        }
+        return true;
+    });
+    return ok && has_protocol ? std::optional<Hello>(std::move(h)) : std::nullopt;
+}
+
+std::optional<std::string> DecodeNeedFile(std::string_view fields) {
+    std::optional<std::string> path;
+    const bool ok = ForEachField(fields, [&path](uint8_t tag, std::string_view b) {
+        if (tag == kPath)
+            path = std::string(b);
+        return true;
+    });
+    return ok && path && !path->empty() ? path : std::nullopt;
+}
+
+std::optional<FileAnswer> DecodeFile(std::string_view fields) {
+    FileAnswer f;
+    bool has_path = false;
+    const bool ok = ForEachField(fields, [&](uint8_t tag, std::string_view b) {
+        switch (tag) {
+            case kPath:
+                f.path = b;
+                has_path = true;
+                return true;
+            case kFound:
+                return ToBool(b, f.found);
+            case kHash:
+                f.hash = b;
+                return b.size() == 32;
+            case kContent:
+                f.content = b;
+                f.with_content = true;
+                return true;
+            default:
+                return true;
+        }
+    });
+    // A file found names its content; content sent must be what the hash says.
+    if (!ok || !has_path || (f.found && f.hash.empty()) || (!f.found && f.with_content) ||
+        (f.with_content && ContentHash(f.content) != f.hash))
+        return std::nullopt;
+    return f;
 }
 
 bool SendFrame(int fd, const std::string& frame) {

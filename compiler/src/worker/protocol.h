@@ -2,6 +2,13 @@
 // (SPIR-V, glslang's log, SPIRV-Tools' messages) out. The same messages serve the in-process
 // executor, the worker processes (worker/pool.h) and, later, distributed compilation.
 //
+// A connection opens with a hello each way (protocol and producer versions; a worker of another
+// version is refused, since its SPIR-V would not be what the cache keys promise). The worker
+// reads no file of the client's: while it preprocesses, it asks for each file it looks for
+// (kNeedFile, by the client's path) and the client answers with the file's hash and, unless it
+// sent that content on this connection before, its bytes (kFile); the worker keeps contents by
+// hash. So a worker needs no access to the client's folders (worker/file_exchange.h).
+//
 // A frame on the wire is u32 length (little-endian) + payload; Encode* return whole frames. A
 // payload is a u32 frame type then fields: u8 tag, u32 size, bytes. Unknown tags are skipped; every
 // read is bounds-checked, since a worker that went wrong may send anything.
@@ -18,6 +25,9 @@
 #include "kiln/pack/format.h"
 
 namespace kiln::worker {
+
+// Bumped with every change a peer of the previous version would misread.
+inline constexpr uint32_t kProtocolVersion = 2;
 
 // The largest frame either side accepts (a preprocessed Unity shader is well under 8 MiB).
 inline constexpr uint32_t kMaxFrameBytes = 256u << 20;
@@ -87,12 +97,36 @@ struct Response {
 enum class FrameType : uint32_t {
     kRequest = 0x4b525131,   // "1QRK"
     kResponse = 0x4b525331,  // a Response
-    kFailure = 0x4b524631,   // the worker cannot go on (field 1: reason: "memory", "exception")
+    kFailure = 0x4b524631,   // the worker cannot go on (reason: "memory", "exception", ...)
+    kHello = 0x4b524831,     // each side's versions, first on a connection
+    kNeedFile = 0x4b524e31,  // worker -> client: the file at a client path, please
+    kFile = 0x4b524331,      // client -> worker: that file's hash and (maybe) its bytes
 };
+
+struct Hello {
+    uint32_t protocol = kProtocolVersion;
+    std::string producer;  // kiln::ProducerVersion(): Kiln's, glslang's and SPIRV-Tools' versions
+};
+
+struct FileAnswer {
+    std::string path;
+    bool found = false;
+    std::string hash;           // ContentHash(content), when found
+    bool with_content = false;  // false: the worker has it (sent before on this connection)
+    std::string content;
+};
+
+// 32 hex digits (XXH3, 128 bits) naming a file's content.
+std::string ContentHash(std::string_view content);
 
 std::string EncodeRequest(const Request& r);
 std::string EncodeResponse(const Response& r);
-std::string EncodeFailure(std::string_view reason, std::string_view detail);
+std::string EncodeFailure(std::string_view reason,
+                          std::string_view detail,
+                          Component component = Component::kNone);
+std::string EncodeHello(const Hello& h);
+std::string EncodeNeedFile(std::string_view path);
+std::string EncodeFile(const FileAnswer& f);
 
 // A frame's payload (what follows the length) split into its type and fields; nullopt when
 // malformed.
@@ -105,8 +139,12 @@ std::optional<Request> DecodeRequest(std::string_view fields);
 std::optional<Response> DecodeResponse(std::string_view fields);
 struct Failure {
     std::string reason, detail;
+    Component component = Component::kNone;  // where the worker was when it gave up
 };
 std::optional<Failure> DecodeFailure(std::string_view fields);
+std::optional<Hello> DecodeHello(std::string_view fields);
+std::optional<std::string> DecodeNeedFile(std::string_view fields);
+std::optional<FileAnswer> DecodeFile(std::string_view fields);
 
 // Sends a whole frame on a socket (no SIGPIPE when the peer is gone); false when it is gone.
 bool SendFrame(int fd, const std::string& frame);

@@ -20,7 +20,9 @@
 #include <thread>
 #include <vector>
 
+#include "kiln/compile.h"
 #include "worker/execute.h"
+#include "worker/file_exchange.h"
 #include "worker/phase_board.h"
 #include "worker/protocol.h"
 
@@ -105,9 +107,36 @@ std::optional<std::string> Receive(int fd, worker::FrameReader& reader) {
     std::abort();
 }
 
+// The connection's first frame is the client's hello; ours answers it either way, so that a
+// client of another version can say which two met. False when the two do not match.
+bool Handshake(int fd, worker::FrameReader& reader) {
+    const std::optional<std::string> payload = Receive(fd, reader);
+    if (!payload)
+        return false;
+    const auto frame = worker::SplitFrame(*payload);
+    std::optional<worker::Hello> theirs;
+    if (frame && frame->type == worker::FrameType::kHello)
+        theirs = worker::DecodeHello(frame->payload);
+    const worker::Hello mine{worker::kProtocolVersion, ProducerVersion()};
+    worker::SendFrame(fd, worker::EncodeHello(mine));
+    return theirs && theirs->protocol == mine.protocol && theirs->producer == mine.producer;
+}
+
 int Serve(int fd, worker::PhaseBoard& board) {
-    hlsl::FileCache files;
     worker::FrameReader reader;
+    if (!Handshake(fd, reader))
+        return 5;
+    // Every file is the client's, asked for by its path (worker/file_exchange.h).
+    worker::RemoteFiles remote([&](const std::string& path) -> std::optional<worker::FileAnswer> {
+        if (!worker::SendFrame(fd, worker::EncodeNeedFile(path)))
+            return std::nullopt;
+        const std::optional<std::string> answer = Receive(fd, reader);
+        const auto frame = answer ? worker::SplitFrame(*answer) : std::nullopt;
+        if (!frame || frame->type != worker::FrameType::kFile)
+            return std::nullopt;
+        return worker::DecodeFile(frame->payload);
+    });
+    hlsl::FileCache files(remote.AsLoader());
     for (;;) {
         const std::optional<std::string> payload = Receive(fd, reader);
         if (!payload)
@@ -122,15 +151,24 @@ int Serve(int fd, worker::PhaseBoard& board) {
         }
         if (request->kind == worker::RequestKind::kSelfTest)
             SelfTest(request->source, board);
-        worker::ExecuteContext context{files, [&board](Component c) { board.Set(c); }};
+        Component now = worker::FirstComponent(request->kind);
+        worker::ExecuteContext context{files, [&board, &now](Component c) {
+                                           board.Set(c);
+                                           now = c;
+                                       }};
         try {
-            if (!worker::SendFrame(fd, worker::EncodeResponse(worker::Execute(*request, context))))
+            const worker::Response response = worker::Execute(*request, context);
+            if (const std::string broken = remote.error(); !broken.empty()) {
+                worker::SendFrame(fd, worker::EncodeFailure("protocol", broken, now));
+                return 2;
+            }
+            if (!worker::SendFrame(fd, worker::EncodeResponse(response)))
                 return 0;
         } catch (const std::bad_alloc&) {
-            worker::SendFrame(fd, worker::EncodeFailure("memory", "an allocation failed"));
+            worker::SendFrame(fd, worker::EncodeFailure("memory", "an allocation failed", now));
             return 3;
         } catch (const std::exception& e) {
-            worker::SendFrame(fd, worker::EncodeFailure("exception", e.what()));
+            worker::SendFrame(fd, worker::EncodeFailure("exception", e.what(), now));
             return 4;
         }
     }

@@ -3,7 +3,12 @@
 // the same answers as the in-process executor.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <thread>
 
 #include "worker/executor.h"
@@ -18,6 +23,12 @@ PoolOptions Options() {
     o.timeout_seconds = 20;
     o.memory_limit_bytes = uint64_t{256} << 20;
     return o;
+}
+
+// The compile's files as a compile has them: read from this machine's disk.
+hlsl::FileCache& DiskFiles() {
+    static hlsl::FileCache files;
+    return files;
 }
 
 Request SelfTest(const char* what) {
@@ -50,7 +61,7 @@ TEST(WorkerPool, TheWorkerIsFound) {
 }
 
 TEST(WorkerPool, ACrashIsReportedWithItsSignalAndTheWorkerIsReplaced) {
-    auto pool = MakeWorkerPool(Options());
+    auto pool = MakeWorkerPool(Options(), DiskFiles());
     const Outcome o = pool->Run(SelfTest("crash"));
     EXPECT_EQ(o.status, Outcome::Status::kCrashed);
     EXPECT_EQ(o.signal, SIGSEGV);
@@ -60,7 +71,7 @@ TEST(WorkerPool, ACrashIsReportedWithItsSignalAndTheWorkerIsReplaced) {
 }
 
 TEST(WorkerPool, AnUnexpectedExitIsACrashWithItsStatus) {
-    auto pool = MakeWorkerPool(Options());
+    auto pool = MakeWorkerPool(Options(), DiskFiles());
     const Outcome o = pool->Run(SelfTest("exit"));
     EXPECT_EQ(o.status, Outcome::Status::kCrashed);
     EXPECT_EQ(o.exit_code, 7);
@@ -70,7 +81,7 @@ TEST(WorkerPool, AnUnexpectedExitIsACrashWithItsStatus) {
 TEST(WorkerPool, AHangIsKilledAtTheTimeLimit) {
     PoolOptions opts = Options();
     opts.timeout_seconds = 0.5;
-    auto pool = MakeWorkerPool(opts);
+    auto pool = MakeWorkerPool(opts, DiskFiles());
     const auto start = std::chrono::steady_clock::now();
     const Outcome o = pool->Run(SelfTest("hang"));
     const double took =
@@ -83,7 +94,7 @@ TEST(WorkerPool, AHangIsKilledAtTheTimeLimit) {
 }
 
 TEST(WorkerPool, RunawayMemoryIsStoppedAtTheLimit) {
-    auto pool = MakeWorkerPool(Options());
+    auto pool = MakeWorkerPool(Options(), DiskFiles());
     const Outcome o = pool->Run(SelfTest("allocate"));
     EXPECT_EQ(o.status, Outcome::Status::kOutOfMemory);
     ExpectWorks(*pool);
@@ -92,7 +103,7 @@ TEST(WorkerPool, RunawayMemoryIsStoppedAtTheLimit) {
 TEST(WorkerPool, AMissingWorkerIsUnavailableNotACrash) {
     PoolOptions opts = Options();
     opts.worker_path = "/nonexistent/kiln-worker";
-    auto pool = MakeWorkerPool(opts);
+    auto pool = MakeWorkerPool(opts, DiskFiles());
     const Outcome o = pool->Run(CompileRequest());
     EXPECT_EQ(o.status, Outcome::Status::kUnavailable);
     EXPECT_NE(o.detail.find("/nonexistent/kiln-worker"), std::string::npos) << o.detail;
@@ -101,7 +112,7 @@ TEST(WorkerPool, AMissingWorkerIsUnavailableNotACrash) {
 TEST(WorkerPool, WorkersAnswerAsTheInProcessExecutorDoes) {
     hlsl::FileCache files;
     auto local = MakeInProcessExecutor(files);
-    auto pool = MakeWorkerPool(Options());
+    auto pool = MakeWorkerPool(Options(), DiskFiles());
     for (const Request& r : {CompileRequest(), [] {
                                  Request p = CompileRequest();
                                  p.kind = RequestKind::kPreprocess;
@@ -120,7 +131,7 @@ TEST(WorkerPool, WorkersAnswerAsTheInProcessExecutorDoes) {
 }
 
 TEST(WorkerPool, ConcurrentRequestsShareTheWorkers) {
-    auto pool = MakeWorkerPool(Options());
+    auto pool = MakeWorkerPool(Options(), DiskFiles());
     std::vector<std::thread> threads;
     std::atomic<int> ok{0};
     for (int t = 0; t < 4; ++t) {
@@ -134,6 +145,100 @@ TEST(WorkerPool, ConcurrentRequestsShareTheWorkers) {
     for (auto& t : threads)
         t.join();
     EXPECT_EQ(ok.load(), 20);
+}
+
+// A worker started in an empty directory compiles a program whose files exist only on the
+// client's side, under paths that mean nothing on this machine: every include comes through the
+// protocol (worker/file_exchange.h), none from the worker's disk.
+TEST(WorkerPool, AWorkerInAnEmptyDirectoryCompilesFilesOnlyTheClientHas) {
+    const std::string root = "/nonexistent-kiln-client";
+    ASSERT_FALSE(std::filesystem::exists(root));
+    const std::map<std::string, std::string> client = {
+        {root + "/Assets/Shaders/Common.cginc",
+         "#include \"Lib/Tint.cginc\"\nfloat4 Shade(float4 c) { return Tint(c) * 2; }\n"},
+        {root + "/Packages/Lib/Tint.cginc", "float4 Tint(float4 c) { return c.bgra; }\n"},
+    };
+    std::map<std::string, int> asked;
+    hlsl::FileCache files([&](const std::string& path) -> std::optional<std::string> {
+        ++asked[path];
+        const auto it = client.find(path);
+        return it == client.end() ? std::nullopt : std::optional<std::string>(it->second);
+    });
+    PoolOptions o = Options();
+    o.workers = 1;
+    o.working_dir =
+        std::filesystem::temp_directory_path() / ("kiln_empty_" + std::to_string(getpid()));
+    std::filesystem::create_directories(o.working_dir);
+    auto pool = MakeWorkerPool(o, files);
+    Request r = CompileRequest();
+    r.kind = RequestKind::kPreprocess;
+    r.name = root + "/Assets/Shaders/Rock.shader";
+    r.include_dirs = {root + "/Packages"};
+    r.source =
+        "#include \"Common.cginc\"\nfloat4 _Color;\n"
+        "float4 frag() : SV_Target { return Shade(_Color); }\n";
+    const Outcome pre = pool->Run(r);
+    ASSERT_EQ(pre.status, Outcome::Status::kOk) << pre.detail;
+    ASSERT_TRUE(pre.response.ok) << pre.response.info_log;
+    EXPECT_NE(pre.response.text.find("bgra"), std::string::npos) << pre.response.text;
+    EXPECT_EQ(pre.response.files_read,
+              (std::vector<std::string>{root + "/Assets/Shaders/Common.cginc",
+                                        root + "/Packages/Lib/Tint.cginc"}));
+    // The preprocessed program compiles in the same worker.
+    Request c = CompileRequest();
+    c.source = pre.response.text;
+    const Outcome compiled = pool->Run(c);
+    ASSERT_EQ(compiled.status, Outcome::Status::kOk) << compiled.detail;
+    EXPECT_TRUE(compiled.response.ok) << compiled.response.info_log;
+    EXPECT_GT(compiled.response.words.size(), 5u);
+    // The client read each file once (its FileCache), the worker looked where includes resolve.
+    EXPECT_EQ(asked[root + "/Packages/Lib/Tint.cginc"], 1);
+    EXPECT_EQ(asked[root + "/Assets/Shaders/Lib/Tint.cginc"], 1);  // tried first, not there
+    EXPECT_TRUE(std::filesystem::is_empty(o.working_dir));
+    std::filesystem::remove_all(o.working_dir);
+}
+
+// A worker that answers the hello as another version (here a stand-in speaking the protocol's
+// hello as protocol 1 of "kiln 0.1.0") is refused with both versions named.
+TEST(WorkerPool, AWorkerOfAnotherVersionIsRefused) {
+    const std::string dir =
+        std::filesystem::temp_directory_path() / ("kiln_old_worker_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string path = dir + "/kiln-worker";
+    {
+        // Wire format (worker/protocol.h): u32 length, u32 frame type, then fields of u8 tag,
+        // u32 size, bytes; the hello's tags are 29 (protocol, u32) and 30 (producer).
+        std::ofstream py(path);
+        py << R"(#!/usr/bin/env python3
+import os, struct, sys
+fd = int(sys.argv[sys.argv.index("--fd") + 1])
+def read(n):
+    b = b""
+    while len(b) < n:
+        c = os.read(fd, n - len(b))
+        if not c:
+            sys.exit(0)
+        b += c
+    return b
+read(struct.unpack("<I", read(4))[0])
+field = lambda tag, data: bytes([tag]) + struct.pack("<I", len(data)) + data
+body = struct.pack("<I", 0x4b524831) + field(29, struct.pack("<I", 1)) + field(30, b"kiln 0.1.0")
+os.write(fd, struct.pack("<I", len(body)) + body)
+os.read(fd, 1)
+)";
+    }
+    chmod(path.c_str(), 0755);
+    PoolOptions o = Options();
+    o.worker_path = path;
+    auto pool = MakeWorkerPool(o, DiskFiles());
+    const Outcome out = pool->Run(CompileRequest());
+    EXPECT_EQ(out.status, Outcome::Status::kUnavailable);
+    EXPECT_NE(out.detail.find("the compile worker '" + path +
+                              "' is 'kiln 0.1.0' (protocol 1), not this kiln's 'kiln "),
+              std::string::npos)
+        << out.detail;
+    EXPECT_NE(out.detail.find("use the kiln-worker installed with this kiln"), std::string::npos);
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

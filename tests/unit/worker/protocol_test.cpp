@@ -118,6 +118,63 @@ TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
         EXPECT_FALSE(SplitFrame(Payload(bytes).substr(0, n)));
 }
 
+// The hello, the file exchange and the failure's component: round trips, and no prefix of a frame
+// is read past its end or taken for the whole (a file's content is checked against its hash).
+TEST(WorkerProtocol, HellosFilesAndFailuresRoundTripAndTheirPrefixesAreSafe) {
+    const std::string hello = EncodeHello({kProtocolVersion, "kiln 9.9.9; glslang 1"});
+    auto h = SplitFrame(Payload(hello));
+    ASSERT_TRUE(h && h->type == FrameType::kHello);
+    ASSERT_TRUE(DecodeHello(h->payload));
+    EXPECT_EQ(DecodeHello(h->payload)->protocol, kProtocolVersion);
+    EXPECT_EQ(DecodeHello(h->payload)->producer, "kiln 9.9.9; glslang 1");
+    EXPECT_FALSE(DecodeHello(""));  // a hello names its protocol
+
+    const std::string need = EncodeNeedFile("/client/Assets/Lib.cginc");
+    auto n = SplitFrame(Payload(need));
+    ASSERT_TRUE(n && n->type == FrameType::kNeedFile);
+    EXPECT_EQ(DecodeNeedFile(n->payload), "/client/Assets/Lib.cginc");
+
+    FileAnswer a;
+    a.path = "/client/Assets/Lib.cginc";
+    a.found = true;
+    a.content = std::string("float3 Lit();\0bytes", 19);
+    a.hash = ContentHash(a.content);
+    a.with_content = true;
+    const std::string file = EncodeFile(a);
+    auto f = SplitFrame(Payload(file));
+    ASSERT_TRUE(f && f->type == FrameType::kFile);
+    const auto back = DecodeFile(f->payload);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->content, a.content);
+    EXPECT_EQ(back->hash, a.hash);
+    EXPECT_EQ(a.hash.size(), 32u);
+    EXPECT_NE(ContentHash("a"), ContentHash("b"));
+    // Content that is not what its hash says, and content for a file not found, are refused.
+    FileAnswer forged = a;
+    forged.content += "x";
+    EXPECT_FALSE(DecodeFile(SplitFrame(Payload(EncodeFile(forged)))->payload));
+    FileAnswer absent;
+    absent.path = "/client/none.cginc";
+    EXPECT_TRUE(DecodeFile(SplitFrame(Payload(EncodeFile(absent)))->payload));
+    EXPECT_FALSE(DecodeFile(SplitFrame(Payload(EncodeFile(absent)))->payload)->found);
+
+    const std::string failure =
+        EncodeFailure("memory", "an allocation failed", Component::kGlslang);
+    EXPECT_EQ(DecodeFailure(SplitFrame(Payload(failure))->payload)->component, Component::kGlslang);
+
+    // Every strict prefix: the file answer needs its path, and its hash and content whole.
+    for (size_t k = 0; k < f->payload.size(); ++k) {
+        const auto part = DecodeFile(f->payload.substr(0, k));
+        EXPECT_TRUE(!part || !part->with_content) << k;
+    }
+    for (size_t k = 0; k < h->payload.size(); ++k) {
+        const auto part = DecodeHello(h->payload.substr(0, k));
+        EXPECT_TRUE(!part || part->producer.size() < 21) << k;
+    }
+    for (size_t k = 0; k < n->payload.size(); ++k)
+        EXPECT_FALSE(DecodeNeedFile(n->payload.substr(0, k))) << k;
+}
+
 TEST(WorkerProtocol, BadValuesAndUnknownTagsAreHandled) {
     // kind 9 does not exist; stage 7 does not exist; a bool of 2; words not a multiple of 4.
     auto field = [](uint8_t tag, std::string bytes) {
