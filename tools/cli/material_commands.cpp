@@ -12,9 +12,7 @@
 namespace kiln::cli {
 namespace fs = std::filesystem;
 
-std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global) {
-    auto* cmd = app.add_subcommand(
-        "validate", "Check .material files against their shaders' Properties in a pack");
+std::function<int()> AddValidateCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Args {
         std::string pack;
         std::vector<std::string> files;
@@ -53,8 +51,7 @@ std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& glob
     };
 }
 
-std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global) {
-    auto* cmd = app.add_subcommand("new", "Write a new .shader from a templates/ scaffold");
+std::function<int()> AddNewCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Args {
         std::string scaffold;
         std::string name;

@@ -174,12 +174,8 @@ int Run(const Options& o, const GlobalOptions& global) {
 
 }  // namespace
 
-std::function<int()> AddShowCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddShowCommand(CLI::App* cmd, const GlobalOptions& global) {
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
-        "show",
-        "Show what Kiln compiled for one variant and stage: the HLSL glslang compiled, "
-        "SPIR-V assembly, GLSL, ESSL, MSL, HLSL, reflection");
     cmd->add_option("input", o->input,
                     "A .kpack, or a .shader compiled for this variant alone (- reads standard "
                     "input)")

@@ -56,15 +56,13 @@ std::string KiB(int64_t bytes) {
 
 }  // namespace
 
-std::function<int()> AddDiffCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddDiffCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Options {
         std::string old_pack, new_pack;
         int64_t max_variants = -1, max_bytes = -1;
         bool json = false;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
-        "diff", "Variants and bytes each shader and pass gains or loses between two packs");
     cmd->add_option("old", o->old_pack, "The pack before")->required();
     cmd->add_option("new", o->new_pack, "The pack after")->required();
     cmd->add_option("--max-added-variants", o->max_variants,

@@ -8,15 +8,13 @@
 
 namespace kiln::cli {
 
-std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddVariantsCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Options {
         std::vector<std::string> files;
         CompilerFlags flags;
         bool json = false;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
-        "variants", "List keyword sets and variant counts per pass, and unique stage programs");
     cmd->add_option("files", o->files, "ShaderLab files")->required();
     AddCompilerOptions(*cmd, o->flags);
     cmd->add_flag("--json", o->json, "Print JSON");

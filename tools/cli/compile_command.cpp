@@ -406,10 +406,9 @@ int PreprocessOnly(const CompileArgs& o, const GlobalOptions& global) {
 
 }  // namespace
 
-std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& global) {
     using Options = CompileArgs;
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("compile", "Compile .shader files into a variant pack");
     cmd->add_option("files", o->files, "ShaderLab files")->required();
     cmd->add_option("-o,--output", o->output,
                     "The pack to write (- writes it to standard output); with -E, where the "

@@ -95,11 +95,7 @@ Result<std::vector<runtime::AccuracyConfig>> Configs(const ReportArgs& a) {
 
 }  // namespace
 
-std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global) {
-    auto* cmd = app.add_subcommand(
-        "report",
-        "Render a scene as a reference and in each approximation (light modes, deferred "
-        "G-buffer formats, other packs) and report error against run time");
+std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global) {
     auto a = std::make_shared<ReportArgs>();
     cmd->add_option("scene", a->scene,
                     ".gltf or .glb file (default: the demo scene of the build tree)");

@@ -196,13 +196,12 @@ nlohmann::json InfoJson(const Pack& p) {
 
 }  // namespace
 
-std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddInfoCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Options {
         std::string file;
         bool json = false;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("info", "Describe a variant pack");
     cmd->add_option("pack", o->file, "A .kpack file")->required();
     cmd->add_flag("--json", o->json, "Print JSON");
     return [o, &global]() {
@@ -331,17 +330,16 @@ std::optional<pack::VariantRec> ResolveVariant(const Pack& pack,
     return pack.Variant(*variant).value();
 }
 
-std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddExtractCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Options {
         std::string file, stage, output;
         VariantName name;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("extract", "Write one variant's SPIR-V module to a file");
     cmd->add_option("pack", o->file, "A .kpack file (- reads standard input)")->required();
     AddVariantNameOptions(*cmd, o->name);
-    AddStageOption(cmd->add_option("--stage", o->stage, "vert, frag, geometry, hull or domain")
-                       ->required());
+    AddStageOption(
+        cmd->add_option("--stage", o->stage, "vert, frag, geometry, hull or domain")->required());
     cmd->add_option("-o,--output", o->output, "Output .spv (- writes standard output)")->required();
     return [o, &global]() {
         MappedFile file;

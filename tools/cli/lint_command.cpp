@@ -95,7 +95,7 @@ int PrintChecks(bool json) {
 
 }  // namespace
 
-std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddLintCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Options {
         std::vector<std::string> files;
         CompilerFlags flags;
@@ -103,8 +103,6 @@ std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global) 
         std::string cache_dir;
     };
     auto o = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand(
-        "lint", "Report what the keywords cost and where they are wasted (every variant is built)");
     cmd->add_option("files", o->files, "ShaderLab files");
     cmd->add_flag("--list-checks", o->list_checks,
                   "Print every check: its name, what it reads, when it runs, its codes");

@@ -1,8 +1,7 @@
-// kiln: the command-line driver. A thin layer over the kiln_compiler library: flags in,
-// library calls, diagnostics out. The same file, built with KILN_RENDER_TOOL, is kiln-render:
-// only the render and test commands, the ones that link the renderer (Vulkan, OpenColorIO,
-// tinygltf). `kiln render ...` and `kiln test ...` run kiln-render from beside kiln with the same
-// arguments, so a build
+// The command-line driver of kiln and kiln-render (RunCli, commands.h): a thin layer over the
+// libraries: flags in, library calls, diagnostics out. Both programs run it over the one command
+// table (command_list.h); kiln hands the commands kiln-render runs (those that link the renderer:
+// Vulkan, OpenColorIO, tinygltf) to kiln-render beside it with the same arguments, so a build
 // machine's kiln needs none of those libraries (docs/install.md).
 #include <unistd.h>
 
@@ -123,7 +122,6 @@ int ReportParseError(const CLI::ParseError& e,
     return kExitUsageError;
 }
 
-#ifndef KILN_RENDER_TOOL
 // `kiln ... render ...`: kiln-render beside this kiln, with the whole command line. Returns only
 // when it cannot be run (K0025).
 int RunRenderTool(int argc, char** argv) {
@@ -140,10 +138,6 @@ int RunRenderTool(int argc, char** argv) {
                        "cannot run the renderer '" + path + "': " + std::strerror(errno) +
                            "; kiln render is kiln-render, installed beside kiln with the runtime");
 }
-#endif
-
-}  // namespace
-}  // namespace kiln::cli
 
 // Compiler-style spellings CLI11 cannot declare: -O0/-O/-Os, -MD, -MF.
 std::vector<std::string> RewriteArgs(int argc, char** argv) {
@@ -172,17 +166,17 @@ std::vector<std::string> RewriteArgs(int argc, char** argv) {
     return args;
 }
 
-int main(int argc, char** argv) {
-    using namespace kiln::cli;
+}  // namespace
+
+int RunCli(int argc, char** argv, Binary self, const std::vector<Command>& table) {
     // No output of any command may replace a file the command reads (docs/runtime.md, "Files").
     kiln::base::GuardInputFiles();
     try {
-#ifndef KILN_RENDER_TOOL
         const std::string first = FirstWord(std::vector<std::string>(argv + 1, argv + argc));
-        if (first == "render" || first == "test" || first == "report" || first == "stability") {
-            return RunRenderTool(argc, argv);
+        for (const Command& c : table) {
+            if (self == Binary::kKiln && c.binary == Binary::kKilnRender && c.name == first)
+                return RunRenderTool(argc, argv);
         }
-#endif
         CLI::App app{"kiln: shader-variant compiler for Vulkan", "kiln"};
         app.require_subcommand(0, 1);
         app.set_version_flag("-V,--version", VersionText,
@@ -214,52 +208,19 @@ int main(int argc, char** argv) {
         app.fallthrough();
         app.add_subcommand("version", "Print the versions (as --version)");
 
-#ifdef KILN_RENDER_TOOL
-        const std::map<std::string, std::function<int()>> commands{
-            {"render", AddRenderCommand(app, global)},
-            {"test", AddTestCommand(app, global)},
-            {"report", AddReportCommand(app, global)},
-            {"stability", AddStabilityCommand(app, global)}};
-#else
-        const std::map<std::string, std::function<int()>> commands{
-            {"parse", AddParseCommand(app, global)},
-            {"compile", AddCompileCommand(app, global)},
-            {"variants", AddVariantsCommand(app, global)},
-            {"lint", AddLintCommand(app, global)},
-            {"diff", AddDiffCommand(app, global)},
-            {"info", AddInfoCommand(app, global)},
-            {"extract", AddExtractCommand(app, global)},
-            {"show", AddShowCommand(app, global)},
-            {"validate", AddValidateCommand(app, global)},
-            {"new", AddNewCommand(app, global)},
-            // Listed for --help and "did you mean"; main() hands them to kiln-render first.
-            {"render",
-             [&] {
-                 app.add_subcommand(
-                     "render", "Render a glTF scene with packs (runs kiln-render, beside kiln)");
-                 return [] { return int(kExitUsageError); };
-             }()},
-            {"test",
-             [&] {
-                 app.add_subcommand("test",
-                                    "Draw every variant of packs in a test harness and check it "
-                                    "(runs kiln-render, beside kiln)");
-                 return [] { return int(kExitUsageError); };
-             }()},
-            {"report",
-             [&] {
-                 app.add_subcommand("report",
-                                    "Report error against run time of the renderer's "
-                                    "approximations (runs kiln-render, beside kiln)");
-                 return [] { return int(kExitUsageError); };
-             }()},
-            {"stability", [&] {
-                 app.add_subcommand("stability",
-                                    "Check lighting on stiff and extreme inputs for NaN and "
-                                    "infinity (runs kiln-render, beside kiln)");
-                 return [] { return int(kExitUsageError); };
-             }()}};
-#endif
+        // The table's commands this program runs; kiln lists kiln-render's too (for --help and
+        // "did you mean"), having handed them over above.
+        std::map<std::string, std::function<int()>> commands;
+        for (const Command& c : table) {
+            if (c.binary != self && self == Binary::kKilnRender)
+                continue;
+            const std::string summary =
+                std::string(c.summary) +
+                (c.binary == self ? "" : " (runs kiln-render, beside kiln)");
+            CLI::App* sub = app.add_subcommand(std::string(c.name), summary);
+            commands[std::string(c.name)] =
+                c.binary == self ? c.add(sub, global) : [] { return int(kExitUsageError); };
+        }
 
         std::vector<std::string> args = RewriteArgs(argc, argv);
         std::vector<std::string> names;
@@ -296,3 +257,5 @@ int main(int argc, char** argv) {
         return kExitInternalError;
     }
 }
+
+}  // namespace kiln::cli

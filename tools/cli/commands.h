@@ -1,4 +1,6 @@
-// Subcommands of the kiln CLI. Each registers itself on the CLI11 app and runs after parsing.
+// The kiln CLI (library kiln_cli, and kiln_cli_render for the commands that link the renderer):
+// the commands' Add functions, each filling its CLI11 subcommand and returning what runs after
+// parsing, and the driver both programs run over the one command table (command_list.h).
 #ifndef KILN_TOOLS_KILN_COMMANDS_H_
 #define KILN_TOOLS_KILN_COMMANDS_H_
 
@@ -16,6 +18,23 @@
 #include "kiln/pack/reader.h"
 
 namespace kiln::cli {
+
+struct GlobalOptions;
+
+// The program that runs a command: kiln, or kiln-render (the commands that link the renderer).
+enum class Binary { kKiln, kKilnRender };
+using AddCommandFn = std::function<int()> (*)(CLI::App* cmd, const GlobalOptions& global);
+// One row of the command table (command_list.h); `add` is null in the program that does not run
+// the command.
+struct Command {
+    std::string_view name;
+    std::string_view summary;
+    Binary binary;
+    AddCommandFn add;
+};
+// The driver: global options, -W, the table's subcommands, then the chosen command. kiln hands a
+// kiln-render command to kiln-render beside it (K0025 when it cannot be run).
+int RunCli(int argc, char** argv, Binary self, const std::vector<Command>& table);
 
 // Process exit codes, documented in README.md.
 enum ExitCode : int {
@@ -182,20 +201,20 @@ void PrintExplain(const SceneStripFlags& flags,
                   size_t skeleton_bytes);
 
 // Each registers its subcommand; the returned function runs it.
-std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddCompileCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddVariantsCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddLintCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddDiffCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddInfoCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddExtractCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddShowCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddValidateCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddNewCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddReportCommand(CLI::App& app, const GlobalOptions& global);
-std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& global);
+std::function<int()> AddParseCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddVariantsCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddLintCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddDiffCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddInfoCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddExtractCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddShowCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddValidateCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddNewCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddTestCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddStabilityCommand(CLI::App* cmd, const GlobalOptions& global);
 
 }  // namespace kiln::cli
 

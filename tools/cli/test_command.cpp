@@ -32,7 +32,7 @@ std::string FileName(size_t index, const runtime::VariantTestFailure& f) {
 
 }  // namespace
 
-std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddTestCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Args {
         std::vector<std::string> packs, shaders;
         runtime::VariantTestOptions options;
@@ -41,8 +41,6 @@ std::function<int()> AddTestCommand(CLI::App& app, const GlobalOptions& global) 
         bool json = false, no_validation = false;
     };
     auto a = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand(
-        "test", "Draw every variant of packs in a test harness and check it (docs/variants.md)");
     cmd->add_option("packs", a->packs, "Variant packs (.kpack)")->required();
     cmd->add_option("--shader", a->shaders, "Only this shader (repeatable)");
     cmd->add_option("--sample", a->sample, "Test N variants chosen with --seed instead of all")

@@ -9,14 +9,13 @@
 
 namespace kiln::cli {
 
-std::function<int()> AddParseCommand(CLI::App& app, const GlobalOptions& global) {
+std::function<int()> AddParseCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Options {
         std::vector<std::string> files;
         bool json = false;
         bool quiet = false;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("parse", "Parse .shader files and print their AST");
     cmd->add_option("files", opts->files, "ShaderLab files")->required();
     cmd->add_flag("--json", opts->json, "Print the AST as JSON (format: docs/ast-json.md)");
     cmd->add_flag("-q,--quiet", opts->quiet, "Print only diagnostics");

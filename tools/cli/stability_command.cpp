@@ -198,12 +198,7 @@ size_t PrintGrid(const runtime::TemplateStabilityReport& r,
 
 }  // namespace
 
-std::function<int()> AddStabilityCommand(CLI::App& app, const GlobalOptions& global) {
-    auto* cmd = app.add_subcommand(
-        "stability",
-        "Check lighting on stiff and extreme inputs: the templates' functions on adversarial "
-        "grids against the CPU reference, or materials' variants under extreme lights and "
-        "property values (--material); no NaN or infinity may appear");
+std::function<int()> AddStabilityCommand(CLI::App* cmd, const GlobalOptions& global) {
     auto a = std::make_shared<StabilityArgs>();
     cmd->add_option("--material", a->materials,
                     ".material files to check (repeatable); without it the templates are checked");

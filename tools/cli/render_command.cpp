@@ -173,8 +173,7 @@ int DryRun(const RenderArgs& a,
 
 }  // namespace
 
-std::function<int()> AddRenderCommand(CLI::App& app, const GlobalOptions& global) {
-    auto* cmd = app.add_subcommand("render", "Render a glTF scene headless with the runtime");
+std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global) {
     auto a = std::make_shared<RenderArgs>();
     cmd->add_option("scene", a->scene, ".gltf or .glb file")->required();
     cmd->add_option("--pack", a->packs,
