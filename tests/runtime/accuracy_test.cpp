@@ -1,4 +1,4 @@
-// kiln report's measures and runner (kiln/runtime/image_error.h, flip.h, accuracy_report.h): the
+// kiln report's measures and runner (kiln/tools/image_error.h, flip.h, accuracy_report.h): the
 // metrics on images with known answers, FLIP's bounds, and reports on lavapipe whose ordering is
 // known (the reference against itself; per-vertex against per-pixel lighting on a coarse mesh).
 #include <unistd.h>
@@ -8,9 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "kiln/runtime/accuracy_report.h"
-#include "kiln/runtime/flip.h"
-#include "kiln/runtime/image_error.h"
+#include "kiln/tools/accuracy_report.h"
+#include "kiln/tools/flip.h"
+#include "kiln/tools/image_error.h"
 #include "runtime/runtime_fixture.h"
 
 namespace kiln::test {
@@ -42,7 +42,7 @@ std::vector<float> Busy(uint32_t w, uint32_t h) {
 
 TEST(Flip, AnImageAgainstItselfIsZero) {
     const std::vector<float> img = Busy(64, 48);
-    Result<runtime::FlipMap> f = runtime::Flip(64, 48, img, img);
+    Result<tools::FlipMap> f = tools::Flip(64, 48, img, img);
     ASSERT_TRUE(f) << f.error().message;
     EXPECT_EQ(f.value().mean, 0.0);
     for (float e : f.value().error) {
@@ -53,8 +53,8 @@ TEST(Flip, AnImageAgainstItselfIsZero) {
 TEST(Flip, BlackAgainstWhiteIsCloseToOne) {
     // Colour term alone (no features in flat images): HyAB(white, black)^0.7 = 100^0.7 lies past
     // the knee 0.4 cmax, so the error is 0.95 + a share of the last 0.05: about 0.967.
-    Result<runtime::FlipMap> f =
-        runtime::Flip(32, 32, Uniform(32, 32, 0.0f), Uniform(32, 32, 1.0f));
+    Result<tools::FlipMap> f =
+        tools::Flip(32, 32, Uniform(32, 32, 0.0f), Uniform(32, 32, 1.0f));
     ASSERT_TRUE(f) << f.error().message;
     EXPECT_GT(f.value().mean, 0.95);
     EXPECT_LE(f.value().mean, 1.0);
@@ -67,8 +67,8 @@ TEST(Flip, GrowsWithTheDifference) {
         slight[i] = std::min(1.0f, ref[i] + 0.02f);
         strong[i] = std::min(1.0f, ref[i] + 0.2f);
     }
-    Result<runtime::FlipMap> a = runtime::Flip(64, 48, ref, slight);
-    Result<runtime::FlipMap> b = runtime::Flip(64, 48, ref, strong);
+    Result<tools::FlipMap> a = tools::Flip(64, 48, ref, slight);
+    Result<tools::FlipMap> b = tools::Flip(64, 48, ref, strong);
     ASSERT_TRUE(a && b);
     EXPECT_GT(a.value().mean, 0.0);
     EXPECT_LT(a.value().mean, b.value().mean);
@@ -76,7 +76,7 @@ TEST(Flip, GrowsWithTheDifference) {
 }
 
 TEST(Flip, RefusesImagesOfTheWrongSize) {
-    Result<runtime::FlipMap> f = runtime::Flip(8, 8, Uniform(8, 8, 0), Uniform(8, 4, 0));
+    Result<tools::FlipMap> f = tools::Flip(8, 8, Uniform(8, 8, 0), Uniform(8, 4, 0));
     ASSERT_FALSE(f);
     EXPECT_NE(f.error().message.find("8x8"), std::string::npos) << f.error().message;
 }
@@ -86,35 +86,35 @@ runtime::LinearImage Linear(uint32_t w, uint32_t h, float v) {
 }
 
 TEST(ImageError, KnownDifferences) {
-    Result<runtime::ImageError> same =
-        runtime::CompareLinear(Linear(4, 4, 0.5f), Linear(4, 4, 0.5f));
+    Result<tools::ImageError> same =
+        tools::CompareLinear(Linear(4, 4, 0.5f), Linear(4, 4, 0.5f));
     ASSERT_TRUE(same);
     EXPECT_EQ(same.value().rmse, 0.0);
     EXPECT_TRUE(std::isinf(same.value().psnr));
     // A uniform 0.1 difference: RMSE and max 0.1, PSNR 10 log10(1 / 0.01) = 20 dB (peak 1).
-    Result<runtime::ImageError> off =
-        runtime::CompareLinear(Linear(4, 4, 0.5f), Linear(4, 4, 0.6f));
+    Result<tools::ImageError> off =
+        tools::CompareLinear(Linear(4, 4, 0.5f), Linear(4, 4, 0.6f));
     ASSERT_TRUE(off);
     EXPECT_NEAR(off.value().rmse, 0.1, 1e-6);
     EXPECT_NEAR(off.value().max_abs, 0.1, 1e-6);
     EXPECT_NEAR(off.value().psnr, 20.0, 1e-4);
-    EXPECT_FALSE(runtime::CompareLinear(Linear(4, 4, 0), Linear(4, 2, 0)));
+    EXPECT_FALSE(tools::CompareLinear(Linear(4, 4, 0), Linear(4, 2, 0)));
 }
 
 TEST(ImageError, DownsampleAveragesBlocks) {
     runtime::LinearImage img = Linear(4, 2, 0.0f);
     img.rgba[0] = 1.0f;  // pixel (0, 0) red: its 2x2 block averages to 0.25
-    Result<runtime::LinearImage> small = runtime::Downsample(img, 2);
+    Result<runtime::LinearImage> small = tools::Downsample(img, 2);
     ASSERT_TRUE(small);
     EXPECT_EQ(small.value().width, 2u);
     EXPECT_EQ(small.value().height, 1u);
     EXPECT_FLOAT_EQ(small.value().rgba[0], 0.25f);
     EXPECT_FLOAT_EQ(small.value().rgba[4], 0.0f);
-    EXPECT_FALSE(runtime::Downsample(img, 3));
+    EXPECT_FALSE(tools::Downsample(img, 3));
 }
 
 TEST(ImageError, HeatMapRunsFromBlackToPaleYellow) {
-    const std::vector<uint8_t> map = runtime::HeatMap({0.0f, 1.0f});
+    const std::vector<uint8_t> map = tools::HeatMap({0.0f, 1.0f});
     EXPECT_LT(map[0] + map[1] + map[2], 10);
     EXPECT_GT(map[4], 240);
     EXPECT_GT(map[5], 240);
@@ -136,8 +136,8 @@ runtime::Scene CoarseSphere() {
     return scene;
 }
 
-runtime::AccuracyConfig Named(const std::string& name, runtime::LightMode mode) {
-    runtime::AccuracyConfig c;
+tools::AccuracyConfig Named(const std::string& name, runtime::LightMode mode) {
+    tools::AccuracyConfig c;
     c.name = name;
     c.settings.light_mode = mode;
     c.settings.pixel_lights = 8;
@@ -147,7 +147,7 @@ runtime::AccuracyConfig Named(const std::string& name, runtime::LightMode mode) 
 TEST_F(RuntimeTest, TheReferenceHasNoErrorAgainstItself) {
     // The reference's own settings, drawn by the reference's renderer without supersampling:
     // the same image, so every measure is exactly zero.
-    runtime::AccuracyOptions options;
+    tools::AccuracyOptions options;
     options.width = 96;
     options.height = 64;
     options.supersample = 1;
@@ -157,10 +157,10 @@ TEST_F(RuntimeTest, TheReferenceHasNoErrorAgainstItself) {
     options.configs[0].settings.pixel_lights = 64;
     runtime::Renderer* drawing[] = {&renderer_};
     const std::string labels[] = {"test"};
-    Result<runtime::AccuracyReport> r =
-        runtime::RunAccuracyReport(renderer_, drawing, labels, CoarseSphere(), color_, options);
+    Result<tools::AccuracyReport> r =
+        tools::RunAccuracyReport(renderer_, drawing, labels, CoarseSphere(), color_, options);
     ASSERT_TRUE(r) << r.error().message;
-    const runtime::AccuracyRow& row = r.value().rows.at(0);
+    const tools::AccuracyRow& row = r.value().rows.at(0);
     EXPECT_EQ(row.error.rmse, 0.0);
     EXPECT_EQ(row.error.max_abs, 0.0);
     EXPECT_EQ(row.flip, 0.0);
@@ -172,7 +172,7 @@ TEST_F(RuntimeTest, TheReferenceHasNoErrorAgainstItself) {
 }
 
 TEST_F(RuntimeTest, PerVertexLightingHasLargerErrorThanPerPixelOnACoarseMesh) {
-    runtime::AccuracyOptions options;
+    tools::AccuracyOptions options;
     options.width = 160;
     options.height = 120;
     options.supersample = 2;
@@ -182,11 +182,11 @@ TEST_F(RuntimeTest, PerVertexLightingHasLargerErrorThanPerPixelOnACoarseMesh) {
                        Named("vertex", runtime::LightMode::kVertex)};
     runtime::Renderer* drawing[] = {&renderer_};
     const std::string labels[] = {"test"};
-    Result<runtime::AccuracyReport> r =
-        runtime::RunAccuracyReport(renderer_, drawing, labels, CoarseSphere(), color_, options);
+    Result<tools::AccuracyReport> r =
+        tools::RunAccuracyReport(renderer_, drawing, labels, CoarseSphere(), color_, options);
     ASSERT_TRUE(r) << r.error().message;
-    const runtime::AccuracyRow& pixel = r.value().rows.at(0);
-    const runtime::AccuracyRow& vertex = r.value().rows.at(1);
+    const tools::AccuracyRow& pixel = r.value().rows.at(0);
+    const tools::AccuracyRow& vertex = r.value().rows.at(1);
     // Per pixel differs from the reference only by its antialiasing; per vertex also by the
     // lighting interpolated across eight-sided facets.
     EXPECT_GT(pixel.flip, 0.0);
@@ -198,7 +198,7 @@ TEST_F(RuntimeTest, PerVertexLightingHasLargerErrorThanPerPixelOnACoarseMesh) {
         (std::filesystem::temp_directory_path() / ("kiln_accuracy_" + std::to_string(getpid())))
             .string();
     std::filesystem::remove_all(dir);
-    Status written = runtime::WriteAccuracyReport(r.value(), color_, dir);
+    Status written = tools::WriteAccuracyReport(r.value(), color_, dir);
     ASSERT_TRUE(Ok(written));
     for (const char* f : {"report.md", "report.csv", "plot.svg", "plot.png", "reference.png",
                           "heat/pixel.png", "heat/vertex.png", "render/vertex.png"}) {

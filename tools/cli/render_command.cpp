@@ -11,13 +11,14 @@
 #include <utility>
 #include <vector>
 
+#include "render_setup.h"
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/runtime/color.h"
-#include "kiln/runtime/frame_debug.h"
 #include "kiln/runtime/plan.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
+#include "kiln/tools/frame_debug.h"
 
 namespace kiln::cli {
 namespace {
@@ -432,16 +433,11 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
         options.trust_packs = a->trust;
         options.missing_variant =
             a->closest ? pack::MissingVariantPolicy::kClosest : pack::MissingVariantPolicy::kError;
-        Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+        Result<runtime::Renderer> made = MakeRenderer(options, a->packs);
         if (!made) {
             return fail(made.error());
         }
         runtime::Renderer renderer = std::move(made).value();
-        for (const std::string& p : a->packs) {
-            if (Status added = renderer.AddPack(p); !added.ok()) {
-                return fail(added.error());
-            }
-        }
         runtime::LinearImage image;
         runtime::FrameStats stats;
         runtime::FrameCapture capture;
@@ -471,7 +467,7 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
             return fail(written.error(), a->output);
         }
         if (!a->frame_debug.empty()) {
-            if (Status written = runtime::WriteFrameDebug(a->frame_debug, capture); !written.ok()) {
+            if (Status written = tools::WriteFrameDebug(a->frame_debug, capture); !written.ok()) {
                 return fail(written.error(), a->frame_debug);
             }
             std::fprintf(summary, "%s/index.html: %zu steps\n", a->frame_debug.c_str(),

@@ -1,5 +1,5 @@
 // kiln report [SCENE.gltf] -o DIR: error against run time of the renderer's approximations
-// (kiln/runtime/accuracy_report.h, docs/accuracy.md).
+// (kiln/tools/accuracy_report.h, docs/accuracy.md).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -7,11 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "render_setup.h"
 #include "commands.h"
-#include "kiln/runtime/accuracy_report.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
+#include "kiln/tools/accuracy_report.h"
 
 namespace kiln::cli {
 namespace {
@@ -19,7 +20,7 @@ namespace {
 struct ReportArgs {
     std::string scene, output, materials, device;
     std::vector<std::string> packs, compare, only;
-    runtime::AccuracyOptions options;
+    tools::AccuracyOptions options;
     runtime::ColorOptions color;
     bool validation = false, no_default_light = false, no_fp16 = false;
 };
@@ -58,15 +59,15 @@ std::pair<std::string, std::string> SplitCompare(const std::string& text) {
 
 // The configurations asked for: the defaults (or those --only names), then the automatic
 // light mode once per --compare pack set.
-Result<std::vector<runtime::AccuracyConfig>> Configs(const ReportArgs& a) {
-    std::vector<runtime::AccuracyConfig> all = runtime::DefaultAccuracyConfigs(), out;
+Result<std::vector<tools::AccuracyConfig>> Configs(const ReportArgs& a) {
+    std::vector<tools::AccuracyConfig> all = tools::DefaultAccuracyConfigs(), out;
     std::vector<std::string> names;
-    for (const runtime::AccuracyConfig& c : all) {
+    for (const tools::AccuracyConfig& c : all) {
         names.push_back(c.name);
     }
     for (const std::string& want : a.only) {
         bool found = false;
-        for (const runtime::AccuracyConfig& c : all) {
+        for (const tools::AccuracyConfig& c : all) {
             found = found || c.name == want;
         }
         if (!found) {
@@ -78,13 +79,13 @@ Result<std::vector<runtime::AccuracyConfig>> Configs(const ReportArgs& a) {
                          "--only: unknown configuration '" + want + "' (one of " + list + ")"};
         }
     }
-    for (const runtime::AccuracyConfig& c : all) {
+    for (const tools::AccuracyConfig& c : all) {
         if (a.only.empty() || std::find(a.only.begin(), a.only.end(), c.name) != a.only.end()) {
             out.push_back(c);
         }
     }
     for (size_t i = 0; i < a.compare.size(); ++i) {
-        runtime::AccuracyConfig c = all[1];  // auto-4: Unity's default
+        tools::AccuracyConfig c = all[1];  // auto-4: Unity's default
         c.group = "packs";
         c.renderer = i + 1;
         c.name += "-" + SplitCompare(a.compare[i]).first;
@@ -145,7 +146,7 @@ std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global
         if (Status fp16 = AddFp16Comparison(*a, diags); !fp16.ok()) {
             return run.Fail(fp16.error());
         }
-        Result<std::vector<runtime::AccuracyConfig>> configs = Configs(*a);
+        Result<std::vector<tools::AccuracyConfig>> configs = Configs(*a);
         if (!configs) {
             return run.Fail(configs.error());
         }
@@ -188,23 +189,18 @@ std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global
             options.validation = a->validation;
             options.device_filter = a->device;
             options.float32_target = i == 0;
-            Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+            Result<runtime::Renderer> made = MakeRenderer(options, pack_sets[i]);
             if (!made) {
                 return run.Fail(made.error());
             }
             renderers.push_back(std::move(made).value());
-            for (const std::string& p : pack_sets[i]) {
-                if (Status added = renderers.back().AddPack(p); !added.ok()) {
-                    return run.Fail(added.error());
-                }
-            }
         }
         std::vector<runtime::Renderer*> drawing;
         for (size_t i = 1; i < renderers.size(); ++i) {
             drawing.push_back(&renderers[i]);
         }
-        Result<runtime::AccuracyReport> report =
-            runtime::RunAccuracyReport(renderers[0], drawing, labels, scene, color, a->options);
+        Result<tools::AccuracyReport> report =
+            tools::RunAccuracyReport(renderers[0], drawing, labels, scene, color, a->options);
         if (!report) {
             return run.Fail(report.error());
         }
@@ -217,13 +213,13 @@ std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global
         if (diags.has_errors()) {
             return run.Finish(int(kExitInputError));
         }
-        if (Status written = runtime::WriteAccuracyReport(report.value(), color, a->output);
+        if (Status written = tools::WriteAccuracyReport(report.value(), color, a->output);
             !written.ok()) {
             return run.Fail(written.error(), a->output);
         }
         std::printf("%-24s %-8s %10s %10s %12s %12s\n", "configuration", "packs", "FLIP", "RMSE",
                     "GPU ms", "CPU ms");
-        for (const runtime::AccuracyRow& row : report.value().rows) {
+        for (const tools::AccuracyRow& row : report.value().rows) {
             std::printf("%-24s %-8s %10.4f %10.3g %12.3f %12.3f%s\n", row.config.name.c_str(),
                         row.config.label.c_str(), row.flip, row.error.rmse, row.gpu_ms.median,
                         row.cpu_ms.median, row.pareto ? "  pareto" : "");

@@ -1,4 +1,4 @@
-// kiln stability: numerical stability on stiff and extreme inputs (kiln/runtime/stability.h,
+// kiln stability: numerical stability on stiff and extreme inputs (kiln/tools/stability.h,
 // docs/accuracy.md). With --material, each material's fragment variants under extreme light
 // set-ups and at the ends of their Ranges; without, the templates' lighting functions on
 // adversarial grids against the CPU reference. Any non-finite value is a K0028 error.
@@ -18,8 +18,8 @@
 #include "kiln/pack/variant_selector.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
-#include "kiln/runtime/stability.h"
-#include "kiln/runtime/template_stability.h"
+#include "kiln/tools/stability.h"
+#include "kiln/tools/template_stability.h"
 
 namespace kiln::cli {
 namespace {
@@ -27,7 +27,7 @@ namespace {
 struct StabilityArgs {
     std::vector<std::string> materials, packs, include_dirs, sources;
     std::vector<std::string> precisions;  // --precision: full, half (binary16), relaxed
-    runtime::MaterialStabilityOptions options;
+    tools::MaterialStabilityOptions options;
     std::string device, templates;
 };
 
@@ -117,17 +117,17 @@ void RunMaterials(runtime::Renderer& renderer,
                   Totals& totals,
                   DiagnosticList& diags) {
     for (const std::string& material : a.materials) {
-        Result<runtime::MaterialStabilityReport> ran =
-            runtime::TestMaterialStability(renderer, color, material, a.options);
+        Result<tools::MaterialStabilityReport> ran =
+            tools::TestMaterialStability(renderer, color, material, a.options);
         if (!ran) {
             // Errors from the material file carry its path and position already.
             const bool placed = ran.error().message.rfind(material + ":", 0) == 0;
             diags.Error(ran.error().code, placed ? "" : material, kNoPosition, ran.error().message);
             continue;
         }
-        const runtime::MaterialStabilityReport& r = ran.value();
-        std::vector<const runtime::StabilityFinding*> fresh;
-        for (const runtime::StabilityFinding& f : r.findings) {
+        const tools::MaterialStabilityReport& r = ran.value();
+        std::vector<const tools::StabilityFinding*> fresh;
+        for (const tools::StabilityFinding& f : r.findings) {
             const std::string key = material + "|" + f.pass + "|" + pack::JoinKeywords(f.keywords) +
                                     "|" + f.properties + "|" + f.light + "|" + std::to_string(f.x) +
                                     "," + std::to_string(f.y);
@@ -142,7 +142,7 @@ void RunMaterials(runtime::Renderer& renderer,
             "values\n",
             material.c_str(), r.shader.c_str(), cause.empty() ? "" : ", strict: ", cause.c_str(),
             r.variants, r.renders, fresh.size());
-        for (const runtime::StabilityFinding* f : fresh) {
+        for (const tools::StabilityFinding* f : fresh) {
             std::printf("  %-14s %-20s %-32s %-56s %zu/%zu at (%u, %u): %s\n", f->pass.c_str(),
                         pack::JoinKeywords(f->keywords).c_str(), f->properties.c_str(),
                         f->light.c_str(), f->bad, f->values, f->x, f->y, f->inputs.c_str());
@@ -157,14 +157,14 @@ void RunMaterials(runtime::Renderer& renderer,
 }
 
 // The grid table; returns the number of failing cases.
-size_t PrintGrid(const runtime::TemplateStabilityReport& r,
+size_t PrintGrid(const tools::TemplateStabilityReport& r,
                  DiagnosticList& diags,
                  const std::string& precision) {
     const std::string build = "--precision " + precision + ": ";
     size_t failed = 0;
     std::printf("%-22s %7s %7s %11s %11s %11s %9s  %s\n", "case", "values", "NaN/Inf", "max abs",
                 "max rel", "bound", "max ULP", "worst input");
-    for (const runtime::GridCaseReport& c : r.cases) {
+    for (const tools::GridCaseReport& c : r.cases) {
         std::printf("%-22s %7zu %7zu %11.3g %11.3g %11.3g %9llu  %s\n", c.name.c_str(), c.values,
                     c.non_finite, c.max_abs, c.max_rel, c.bound,
                     static_cast<unsigned long long>(c.max_ulp), c.worst.c_str());
@@ -184,7 +184,7 @@ size_t PrintGrid(const runtime::TemplateStabilityReport& r,
     if (r.energy.empty())
         return failed;
     std::printf("\n%-36s %12s  %s\n", "white furnace (directional albedo)", "max", "at");
-    for (const runtime::EnergyReport& e : r.energy) {
+    for (const tools::EnergyReport& e : r.energy) {
         std::printf("%-36s %12.6f  %s\n", e.brdf.c_str(), e.max_albedo, e.where.c_str());
         if (!e.ok()) {
             diags.Error(DiagCode::kOutsideBounds, "", kNoPosition,
@@ -254,8 +254,8 @@ std::function<int()> AddStabilityCommand(CLI::App* cmd, const GlobalOptions& glo
                     continue;
                 if (!AddCompiledPack(*a, {GridHarness(*a)}, {}, p, renderer, diags, global))
                     return int(kExitInputError);
-                Result<runtime::TemplateStabilityReport> ran =
-                    runtime::TestTemplateStability(renderer, color, {.precision = p});
+                Result<tools::TemplateStabilityReport> ran =
+                    tools::TestTemplateStability(renderer, color, {.precision = p});
                 if (!ran)
                     return run.Fail(ran.error(), "");
                 if (checks > 0)

@@ -1,5 +1,5 @@
 // kiln test PACK... [--shader S] [--sample N --seed S] [--size N] [--keep-failures DIR] [--json]:
-// every variant drawn in the runtime's test harness and checked (kiln/runtime/variant_test.h).
+// every variant drawn in the runtime's test harness and checked (kiln/tools/variant_test.h).
 // Each failure is a K0027 error naming the shader, pass, keyword set, property values and check,
 // with its render kept as a PNG; the exit status is 1 when any variant fails.
 #include <cstdio>
@@ -8,17 +8,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "render_setup.h"
 #include "commands.h"
 #include "kiln/pack/variant_selector.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
-#include "kiln/runtime/variant_test.h"
+#include "kiln/tools/variant_test.h"
 
 namespace kiln::cli {
 namespace {
 
 // A file name from a failure's description: letters, digits, '-', '_' and '.' only.
-std::string FileName(size_t index, const runtime::VariantTestFailure& f) {
+std::string FileName(size_t index, const tools::VariantTestFailure& f) {
     std::string raw = f.shader + "_" + f.pass + "_" + pack::JoinKeywords(f.keywords) + "_" +
                       f.properties + "_" + f.check;
     for (char& c : raw) {
@@ -35,7 +36,7 @@ std::string FileName(size_t index, const runtime::VariantTestFailure& f) {
 std::function<int()> AddTestCommand(CLI::App* cmd, const GlobalOptions& global) {
     struct Args {
         std::vector<std::string> packs, shaders;
-        runtime::VariantTestOptions options;
+        tools::VariantTestOptions options;
         uint32_t sample = 0;
         std::string keep = "kiln-test-failures", device;
         bool json = false, no_validation = false;
@@ -67,24 +68,21 @@ std::function<int()> AddTestCommand(CLI::App* cmd, const GlobalOptions& global) 
         options.validation = !a->no_validation;
         options.device_filter = a->device;
         options.float32_target = true;  // the checks compare linear values
-        Result<runtime::Renderer> made = runtime::Renderer::Create(options);
+        std::string failed_pack;
+        Result<runtime::Renderer> made = MakeRenderer(options, a->packs, &failed_pack);
         if (!made)
-            return run.Fail(made.error(), "");
+            return run.Fail(made.error(), failed_pack);
         runtime::Renderer renderer = std::move(made).value();
-        for (const std::string& p : a->packs) {
-            if (Status added = renderer.AddPack(p); !added.ok())
-                return run.Fail(added.error(), p);
-        }
         a->options.shaders = a->shaders;
         if (a->sample > 0)
             a->options.sample = a->sample;
-        Result<runtime::VariantTestReport> ran = runtime::TestVariants(renderer, color, a->options);
+        Result<tools::VariantTestReport> ran = tools::TestVariants(renderer, color, a->options);
         if (!ran)
             return run.Fail(ran.error(), "");
-        const runtime::VariantTestReport& report = ran.value();
+        const tools::VariantTestReport& report = ran.value();
         nlohmann::ordered_json failures = nlohmann::ordered_json::array();
         for (size_t i = 0; i < report.failures.size(); ++i) {
-            const runtime::VariantTestFailure& f = report.failures[i];
+            const tools::VariantTestFailure& f = report.failures[i];
             std::string png;
             if (!f.image.rgba.empty()) {
                 std::error_code ec;

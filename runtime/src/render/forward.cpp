@@ -4,7 +4,7 @@
 // records them all. Render dispatches to the deferred path (render/deferred.cpp) from here too.
 #include <algorithm>
 
-#include "kiln/runtime/frame_debug.h"
+#include "kiln/runtime/frame_capture.h"
 #include "render/capture.h"
 #include "render/deferred_plan.h"
 #include "render/draw_builder.h"

@@ -437,6 +437,10 @@ Status Renderer::Render(const Scene& scene,
     return RenderFrame(*state_, scene, settings, color, out, stats, capture);
 }
 
+Renderer::State& Renderer::internal_state() {
+    return *state_;
+}
+
 std::string Renderer::DeviceName() const {
     return state_->context.properties.deviceName;
 }

@@ -62,7 +62,7 @@ inline constexpr const char* kShaderDeferredShading = "Hidden/Internal-DeferredS
 // texture, filtered with SHADOWS_SOFT.
 inline constexpr const char* kShaderScreenSpaceShadows = "Hidden/Internal-ScreenSpaceShadows";
 // kiln stability's grid harness (templates/stability/KilnStabilityGrid.shader), compiled when the
-// command runs; kiln/runtime/template_stability.h fills its properties.
+// command runs; kiln/tools/template_stability.h fills its properties.
 inline constexpr const char* kShaderStabilityGrid = "Hidden/Kiln/StabilityGrid";
 inline constexpr const char* kStabilityGridFile = "stability/KilnStabilityGrid.shader";
 // Its passes, by Name: a ranged light's stencil mask and the light bounded by it. A replacement

@@ -100,7 +100,7 @@ struct FrameStats {
     // GPU time from timestamp queries, in milliseconds: the whole frame and each pass (in frame
     // order: "forward", or "gbuffer", "lighting", "forward"). Negative and empty where the
     // queue has no timestamps, and for a captured frame (whose draws are timed one at a time,
-    // kiln/runtime/frame_debug.h).
+    // kiln/runtime/frame_capture.h).
     double gpu_ms = -1;
     struct PassTime {
         std::string pass;
@@ -113,12 +113,6 @@ struct FrameStats {
 };
 
 struct FrameCapture;
-struct VariantTestOptions;
-struct VariantTestReport;
-struct MaterialStabilityOptions;
-struct MaterialStabilityReport;
-struct TemplateStabilityOptions;
-struct TemplateStabilityReport;
 
 class Renderer {
   public:
@@ -134,7 +128,7 @@ class Renderer {
 
     // Renders one frame into a linear (scene-referred) image. Colour properties are decoded
     // from sRGB through `color`. With `capture` the frame is drawn one step at a time and every
-    // step recorded (kiln/runtime/frame_debug.h); the image is the same.
+    // step recorded (kiln/runtime/frame_capture.h); the image is the same.
     Status Render(const Scene& scene,
                   const FrameSettings& settings,
                   const ColorPipeline& color,
@@ -153,20 +147,12 @@ class Renderer {
 
     struct State;  // opaque: defined inside the library
 
+    // For Kiln's own tools (kiln_tools: kiln test's harness, kiln stability), which draw with the
+    // renderer's device, packs and pipelines through the runtime's internal headers
+    // (render/renderer_state.h, not installed). An engine has no use for it: State is opaque.
+    State& internal_state();
+
   private:
-    // kiln test's harness draws with the renderer's state (kiln/runtime/variant_test.h).
-    friend Result<VariantTestReport> TestVariants(Renderer& renderer,
-                                                  const ColorPipeline& color,
-                                                  const VariantTestOptions& options);
-    friend Result<MaterialStabilityReport> TestMaterialStability(
-        Renderer& renderer,
-        const ColorPipeline& color,
-        const std::string& material,
-        const MaterialStabilityOptions& options);
-    friend Result<TemplateStabilityReport> TestTemplateStability(
-        Renderer& renderer,
-        const ColorPipeline& color,
-        const TemplateStabilityOptions& options);
     std::unique_ptr<State> state_;
 };
 

@@ -1,16 +1,14 @@
-// The frame debugger (kiln render --frame-debug DIR), as Unity's Frame Debugger: a frame drawn one
-// step at a time, recording for each pass and draw what was drawn (pass, LightMode, shader,
-// variant keywords, render state, light, object, GPU time where the queue has timestamps) and an
-// image of each target the pass writes after the step. WriteFrameDebug writes them as PNGs, a
-// JSON record and an index.html to step through in a browser.
-#ifndef KILN_RUNTIME_FRAME_DEBUG_H_
-#define KILN_RUNTIME_FRAME_DEBUG_H_
+// A captured frame (Renderer::Render with a FrameCapture), what the frame debugger shows (kiln
+// render --frame-debug DIR), as Unity's Frame Debugger: a frame drawn one step at a time,
+// recording for each pass and draw what was drawn (pass, LightMode, shader, variant keywords,
+// render state, light, object, GPU time where the queue has timestamps) and an image of each
+// target the pass writes after the step. kiln/tools/frame_debug.h writes it out.
+#ifndef KILN_RUNTIME_FRAME_CAPTURE_H_
+#define KILN_RUNTIME_FRAME_CAPTURE_H_
 
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include "kiln/result.h"
 
 namespace kiln::runtime {
 
@@ -41,11 +39,6 @@ struct FrameCapture {
     std::vector<DebugStep> steps;
 };
 
-// Writes `capture` into `dir` (created if missing): steps/NNNN-<target>.png for every image,
-// frame.json with every step's record, and index.html listing the passes and their steps with
-// their images. The PNGs are written first and the page last.
-Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture);
-
 }  // namespace kiln::runtime
 
-#endif  // KILN_RUNTIME_FRAME_DEBUG_H_
+#endif  // KILN_RUNTIME_FRAME_CAPTURE_H_

@@ -4,8 +4,8 @@
 // compared with the CPU double-precision reference (kiln/reference): non-finite values, the
 // largest absolute and relative error and the ULP distance, each case against its documented
 // bound; and the white-furnace directional albedo of each BRDF lobe by CPU integration.
-#ifndef KILN_RUNTIME_TEMPLATE_STABILITY_H_
-#define KILN_RUNTIME_TEMPLATE_STABILITY_H_
+#ifndef KILN_TOOLS_TEMPLATE_STABILITY_H_
+#define KILN_TOOLS_TEMPLATE_STABILITY_H_
 
 #include <cstdint>
 #include <string>
@@ -16,8 +16,10 @@
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
 
+using runtime::ColorPipeline;
+using runtime::Renderer;
 struct GridCaseReport {
     std::string name;               // "BRDF1_Unity_PBS"
     std::string functions;          // what each channel holds
@@ -61,6 +63,6 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
 // The white-furnace part alone (CPU only).
 std::vector<EnergyReport> WhiteFurnaceReport();
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools
 
-#endif  // KILN_RUNTIME_TEMPLATE_STABILITY_H_
+#endif  // KILN_TOOLS_TEMPLATE_STABILITY_H_

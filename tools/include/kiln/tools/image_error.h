@@ -1,8 +1,8 @@
 // How far a rendered image is from a reference: error in linear (scene-referred) light, FLIP on
-// the display-referred images (kiln/runtime/flip.h), and a heat map of a per-pixel error. Used by
+// the display-referred images (kiln/tools/flip.h), and a heat map of a per-pixel error. Used by
 // `kiln report` (docs/accuracy.md); pure CPU, no device.
-#ifndef KILN_RUNTIME_IMAGE_ERROR_H_
-#define KILN_RUNTIME_IMAGE_ERROR_H_
+#ifndef KILN_TOOLS_IMAGE_ERROR_H_
+#define KILN_TOOLS_IMAGE_ERROR_H_
 
 #include <cstdint>
 #include <vector>
@@ -10,8 +10,9 @@
 #include "kiln/result.h"
 #include "kiln/runtime/color.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
 
+using runtime::LinearImage;
 // Over the RGB channels of every pixel (alpha, the coverage, is not compared).
 struct ImageError {
     double rmse = 0;     // root of the mean squared difference
@@ -32,6 +33,6 @@ Result<LinearImage> Downsample(const LinearImage& image, uint32_t factor);
 // 1), as FLIP's own tool shows it.
 std::vector<uint8_t> HeatMap(const std::vector<float>& error);
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools
 
-#endif  // KILN_RUNTIME_IMAGE_ERROR_H_
+#endif  // KILN_TOOLS_IMAGE_ERROR_H_

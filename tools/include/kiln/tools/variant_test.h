@@ -15,8 +15,8 @@
 //   no-light   with its light at intensity 0 a variant draws exactly what it draws with no light
 //              (within 1e-5 in linear fp32: both renders run the same SPIR-V, and the light's
 //              contribution is multiplied by zero)
-#ifndef KILN_RUNTIME_VARIANT_TEST_H_
-#define KILN_RUNTIME_VARIANT_TEST_H_
+#ifndef KILN_TOOLS_VARIANT_TEST_H_
+#define KILN_TOOLS_VARIANT_TEST_H_
 
 #include <cstdint>
 #include <optional>
@@ -28,8 +28,11 @@
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
 
+using runtime::ColorPipeline;
+using runtime::LinearImage;
+using runtime::Renderer;
 struct VariantTestOptions {
     uint32_t size = 64;              // the square image's side in pixels
     std::optional<uint32_t> sample;  // test this many variants, chosen with `seed`; all if unset
@@ -61,6 +64,6 @@ Result<VariantTestReport> TestVariants(Renderer& renderer,
                                        const ColorPipeline& color,
                                        const VariantTestOptions& options);
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools
 
-#endif  // KILN_RUNTIME_VARIANT_TEST_H_
+#endif  // KILN_TOOLS_VARIANT_TEST_H_

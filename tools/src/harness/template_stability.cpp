@@ -1,6 +1,6 @@
-// TestTemplateStability (kiln/runtime/template_stability.h): the grids, their CPU reference and
+// TestTemplateStability (kiln/tools/template_stability.h): the grids, their CPU reference and
 // the comparison. The grid harness decodes pixel i into axis values exactly as Decode() below.
-#include "kiln/runtime/template_stability.h"
+#include "kiln/tools/template_stability.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "harness/harness_scene.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/reference/attenuation.h"
 #include "kiln/reference/brdf.h"
@@ -19,9 +20,13 @@
 #include "kiln/reference/sh.h"
 #include "kiln/reference/unity_terms.h"
 #include "kiln/reference/white_furnace.h"
-#include "render/harness_scene.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
+
+using runtime::ColorPipeline;
+using runtime::FrameSettings;
+using runtime::LinearImage;
+using runtime::Renderer;
 namespace {
 
 using glm::dvec3;
@@ -268,7 +273,7 @@ std::vector<EnergyReport> WhiteFurnaceReport() {
 Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
                                                       const ColorPipeline& color,
                                                       const TemplateStabilityOptions& options) {
-    Renderer::State& s = *renderer.state_;
+    Renderer::State& s = renderer.internal_state();
     std::optional<uint32_t> shader;
     uint32_t pack_index = 0;
     for (; pack_index < s.packs.size(); ++pack_index) {
@@ -282,7 +287,7 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
     render::MaterialInstance m;
     render::InstanceFromDefaults(s.packs[pack_index]->pack, pack_index, *shader, color, m);
     m.name = "kiln stability grid";
-    runtime::Scene scene = render::StabilityScene();
+    runtime::Scene scene = StabilityScene();
     scene.instances.pop_back();  // the plane alone fills the view
     const reference::PackedSH sh = GridSH();
     const char* sh_names[7] = {"_SHr", "_SHg", "_SHb", "_SHBr", "_SHBg", "_SHBb", "_SHCc"};
@@ -313,13 +318,12 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
         render::CameraSetup camera;
         if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok())
             return e.error();
-        render::HarnessPass draw;
+        HarnessPass draw;
         draw.material = &m;
         draw.pass = s.packs[pack_index]->pack.Shader(*shader).value().first_pass;
         draw.pixel_light = false;
         LinearImage image;
-        if (Status e = render::DrawHarnessPass(s, color, scene, settings, camera, draw, image);
-            !e.ok()) {
+        if (Status e = DrawHarnessPass(s, color, scene, settings, camera, draw, image); !e.ok()) {
             return e.error();
         }
         GridCaseReport r;
@@ -388,4 +392,4 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
     return report;
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

@@ -9,10 +9,10 @@
 // pixel of every render must be finite; a finding names the variant, the values, the set-up and
 // the first non-finite pixel with the inputs there (n . l, n . v, l . v, distance).
 //
-// TestTemplateStability (kiln/runtime/template_stability.h) evaluates the templates' lighting
+// TestTemplateStability (kiln/tools/template_stability.h) evaluates the templates' lighting
 // functions on adversarial grids against the CPU reference.
-#ifndef KILN_RUNTIME_STABILITY_H_
-#define KILN_RUNTIME_STABILITY_H_
+#ifndef KILN_TOOLS_STABILITY_H_
+#define KILN_TOOLS_STABILITY_H_
 
 #include <string>
 #include <vector>
@@ -21,8 +21,10 @@
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
 
+using runtime::ColorPipeline;
+using runtime::Renderer;
 struct StabilityFinding {
     std::string shader, pass;
     std::vector<std::string> keywords;
@@ -50,6 +52,6 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
                                                       const std::string& material,
                                                       const MaterialStabilityOptions& options = {});
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools
 
-#endif  // KILN_RUNTIME_STABILITY_H_
+#endif  // KILN_TOOLS_STABILITY_H_

@@ -1,4 +1,4 @@
-#include "kiln/runtime/variant_test.h"
+#include "kiln/tools/variant_test.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,15 +7,23 @@
 #include <random>
 #include <tuple>
 
+#include "harness/harness_scene.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
 #include "render/forward_plan.h"
 #include "render/frame_values.h"
-#include "render/harness_scene.h"
 #include "render/renderer_state.h"
 #include "vk/context.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
+
+using runtime::ColorPipeline;
+using runtime::FrameSettings;
+using runtime::LightMode;
+using runtime::LightType;
+using runtime::LinearImage;
+using runtime::Renderer;
+using runtime::Scene;
 namespace {
 
 struct Case {
@@ -78,7 +86,7 @@ struct Harness {
     Renderer::State& s;
     const ColorPipeline& color;
     const VariantTestOptions& options;
-    Scene scene = render::HarnessScene();
+    Scene scene = HarnessScene();
     render::CameraSetup camera;
     VariantTestReport report;
 
@@ -116,17 +124,17 @@ struct Harness {
         for (const auto& [name, v] : setup.values) {
             m.values[name] = v;
         }
-        render::HarnessPass draw;
+        HarnessPass draw;
         draw.material = &m;
         draw.pass = c.pass;
         draw.additive = additive;
         draw.keywords = keywords;
-        draw.lights = {render::HarnessLight(type, setup.intensity * 4.0f),
-                       render::HarnessLight(LightType::kPoint, setup.intensity * 4.0f)};
+        draw.lights = {HarnessLight(type, setup.intensity * 4.0f),
+                       HarnessLight(LightType::kPoint, setup.intensity * 4.0f)};
         draw.pixel_light = !setup.no_light;
         draw.vertex_light = !additive && !setup.no_light &&
                             std::count(keywords.begin(), keywords.end(), pack::kKeywordVertexLight);
-        return render::DrawHarnessPass(s, color, scene, Settings(additive), camera, draw, out);
+        return DrawHarnessPass(s, color, scene, Settings(additive), camera, draw, out);
     }
 
     void Fail(const Case& c,
@@ -302,14 +310,14 @@ std::vector<Case> Cases(const Renderer::State& s,
 Result<VariantTestReport> TestVariants(Renderer& renderer,
                                        const ColorPipeline& color,
                                        const VariantTestOptions& options) {
-    Renderer::State& s = *renderer.state_;
+    Renderer::State& s = renderer.internal_state();
     if (s.packs.empty()) {
         return Error{DiagCode::kRenderFailed, "no variant pack loaded"};
     }
     if (options.size < 16 || options.size > 4096) {
         return Error{DiagCode::kBadCommandLine, "the harness image must be 16 to 4096 pixels"};
     }
-    Harness h{s, color, options, render::HarnessScene(), {}, {}};
+    Harness h{s, color, options, HarnessScene(), {}, {}};
     if (Status e = render::ChooseCamera(h.scene, h.Settings(false), h.camera); !e.ok()) {
         return e.error();
     }
@@ -319,4 +327,4 @@ Result<VariantTestReport> TestVariants(Renderer& renderer,
     return std::move(h.report);
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

@@ -1,4 +1,4 @@
-#include "kiln/runtime/image_error.h"
+#include "kiln/tools/image_error.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,9 @@
 #include <limits>
 #include <string>
 
-namespace kiln::runtime {
+namespace kiln::tools {
+
+using runtime::LinearImage;
 namespace {
 
 std::string SizeOf(const LinearImage& image) {
@@ -99,4 +101,4 @@ std::vector<uint8_t> HeatMap(const std::vector<float>& error) {
     return out;
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

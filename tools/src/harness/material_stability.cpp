@@ -1,6 +1,6 @@
-// TestMaterialStability (kiln/runtime/stability.h): a material's fragment variants under extreme
-// light set-ups and at the ends of its Ranges, in the stability scene (render/harness_scene.h).
-#include "kiln/runtime/stability.h"
+// TestMaterialStability (kiln/tools/stability.h): a material's fragment variants under extreme
+// light set-ups and at the ends of its Ranges, in the stability scene (harness/harness_scene.h).
+#include "kiln/tools/stability.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,19 @@
 
 #include <glm/geometric.hpp>
 
+#include "harness/harness_scene.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
-#include "render/harness_scene.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
+
+using runtime::ColorPipeline;
+using runtime::FrameSettings;
+using runtime::Light;
+using runtime::LightType;
+using runtime::LinearImage;
+using runtime::Renderer;
+using runtime::Scene;
 namespace {
 
 using glm::vec3;
@@ -38,7 +46,7 @@ Light Make(LightType type, vec3 position, vec3 direction, float intensity) {
 
 // The set-ups for a light of `type`. The eye is at (0, 0, kStabilityEyeZ) looking at the origin.
 std::vector<LightSetup> Setups(LightType type) {
-    const float e = render::kStabilityEyeZ;
+    const float e = kStabilityEyeZ;
     const vec3 eye(0, 0, e), behind(0, 0, -e), toward(0, 0, -1), away(0, 0, 1);
     auto point = [](vec3 p, float i) { return Make(LightType::kPoint, p, {0, 0, -1}, i); };
     std::vector<LightSetup> out;
@@ -89,13 +97,13 @@ std::vector<LightSetup> Setups(LightType type) {
 
 // What the pixel (x, y) of the stability scene sees: the point, its normal, and the set-up's l.
 std::string Inputs(const LightSetup& setup, uint32_t x, uint32_t y, uint32_t size) {
-    const float t = std::tan(render::kStabilityYFov / 2);
-    const vec3 eye(0, 0, render::kStabilityEyeZ);
+    const float t = std::tan(kStabilityYFov / 2);
+    const vec3 eye(0, 0, kStabilityEyeZ);
     const vec3 d = glm::normalize(vec3((2 * (float(x) + 0.5f) / float(size) - 1) * t,
                                        (1 - 2 * (float(y) + 0.5f) / float(size)) * t, -1));
     vec3 p, n(0, 0, 1);
-    const vec3 c = render::kStabilitySphereCentre;
-    const float r = render::kStabilitySphereRadius;
+    const vec3 c = kStabilitySphereCentre;
+    const float r = kStabilitySphereRadius;
     const float b = glm::dot(d, eye - c), q = glm::dot(eye - c, eye - c) - r * r;
     if (b * b - q >= 0 && -b - std::sqrt(b * b - q) > 0) {
         p = eye + d * (-b - std::sqrt(b * b - q));
@@ -150,7 +158,7 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
                                                       const ColorPipeline& color,
                                                       const std::string& material,
                                                       const MaterialStabilityOptions& options) {
-    Renderer::State& s = *renderer.state_;
+    Renderer::State& s = renderer.internal_state();
     if (options.size < 9 || options.size > 1025 || options.size % 2 == 0) {
         return Error{DiagCode::kBadCommandLine,
                      "the stability image must be odd, 9 to 1025 pixels"};
@@ -164,7 +172,7 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
     MaterialStabilityReport report;
     report.material = material;
     report.shader = std::string(pk.String(sr.name));
-    const Scene scene = render::StabilityScene();
+    const Scene scene = StabilityScene();
     FrameSettings settings;
     settings.width = settings.height = options.size;
     settings.camera = 0;
@@ -215,7 +223,7 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
                 for (const auto& [properties, vals] : values) {
                     render::MaterialInstance at = m;
                     at.values = vals;
-                    render::HarnessPass draw;
+                    HarnessPass draw;
                     draw.material = &at;
                     draw.pass = pass;
                     draw.additive = additive;
@@ -224,8 +232,7 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
                     draw.vertex_light = !additive && has(pack::kKeywordVertexLight);
                     LinearImage image;
                     ++report.renders;
-                    if (Status e =
-                            render::DrawHarnessPass(s, color, scene, settings, camera, draw, image);
+                    if (Status e = DrawHarnessPass(s, color, scene, settings, camera, draw, image);
                         !e.ok()) {
                         return e.error();
                     }
@@ -259,4 +266,4 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
     return report;
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

@@ -1,11 +1,21 @@
 // RunAccuracyReport: the reference, then each configuration rendered, timed and compared.
-#include "kiln/runtime/accuracy_report.h"
+#include "kiln/tools/accuracy_report.h"
 
 #include <algorithm>
 #include <chrono>
 #include <set>
 
-namespace kiln::runtime {
+namespace kiln::tools {
+
+using runtime::ColorPipeline;
+using runtime::FrameSettings;
+using runtime::FrameStats;
+using runtime::GBufferSettings;
+using runtime::LightMode;
+using runtime::LinearImage;
+using runtime::Renderer;
+using runtime::RenderPath;
+using runtime::Scene;
 namespace {
 
 constexpr uint32_t kEveryLight = 64;  // pixel lights per object: more than any scene asks for
@@ -226,4 +236,4 @@ Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
     return report;
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "kiln/runtime/accuracy_report.h"
+#include "kiln/tools/accuracy_report.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
 namespace {
 
 struct Layout {
@@ -205,4 +205,4 @@ std::vector<uint8_t> AccuracyPlotImage(const AccuracyReport& r, uint32_t width, 
     return c.px;
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

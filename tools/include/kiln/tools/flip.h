@@ -5,15 +5,15 @@
 // filters in YCxCz, Hunt-adjusted CIELAB, the HyAB distance, compressed and redistributed) and a
 // feature pipeline (edges and points of the achromatic channel) give a per-pixel error in [0, 1];
 // the report uses its mean. 0 for identical images.
-#ifndef KILN_RUNTIME_FLIP_H_
-#define KILN_RUNTIME_FLIP_H_
+#ifndef KILN_TOOLS_FLIP_H_
+#define KILN_TOOLS_FLIP_H_
 
 #include <cstdint>
 #include <vector>
 
 #include "kiln/result.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
 
 struct FlipOptions {
     // The observer: a 0.7 m wide 3840-pixel monitor seen from 0.7 m (the paper's default).
@@ -34,6 +34,6 @@ Result<FlipMap> Flip(uint32_t width,
                      const std::vector<float>& test,
                      const FlipOptions& options = {});
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools
 
-#endif  // KILN_RUNTIME_FLIP_H_
+#endif  // KILN_TOOLS_FLIP_H_

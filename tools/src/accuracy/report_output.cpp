@@ -7,9 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "kiln/base/files.h"
-#include "kiln/runtime/accuracy_report.h"
+#include "kiln/tools/accuracy_report.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
+
+using runtime::ColorPipeline;
+using runtime::FrameStats;
+using runtime::WriteDisplayPng;
+using runtime::WritePng;
 namespace {
 
 namespace fs = std::filesystem;
@@ -172,4 +177,4 @@ Status WriteAccuracyReport(const AccuracyReport& report,
     return {};
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

@@ -1,14 +1,14 @@
 // LDR-FLIP (Andersson et al. 2020). Equation and section numbers are the paper's; the constants
 // are its Table/section values, and the colour transforms those of its reference implementation
 // (sRGB primaries, D65 white).
-#include "kiln/runtime/flip.h"
+#include "kiln/tools/flip.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 
-namespace kiln::runtime {
+namespace kiln::tools {
 namespace {
 
 using Vec3 = std::array<double, 3>;
@@ -260,4 +260,4 @@ Result<FlipMap> Flip(uint32_t width,
     return out;
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools

@@ -1,10 +1,10 @@
 // `kiln report`: what an approximation costs in accuracy and buys in time (docs/accuracy.md). A
 // scene is rendered as a reference (every light per pixel, fp32 targets, supersampled) and in
 // each configuration (light modes, paths and G-buffer formats, other packs such as other
-// optimizer levels); each is compared with the reference (kiln/runtime/image_error.h, FLIP) and
+// optimizer levels); each is compared with the reference (kiln/tools/image_error.h, FLIP) and
 // timed (GPU timestamps per pass and frame, CPU time per frame, the first frame apart).
-#ifndef KILN_RUNTIME_ACCURACY_REPORT_H_
-#define KILN_RUNTIME_ACCURACY_REPORT_H_
+#ifndef KILN_TOOLS_ACCURACY_REPORT_H_
+#define KILN_TOOLS_ACCURACY_REPORT_H_
 
 #include <span>
 #include <string>
@@ -12,13 +12,19 @@
 
 #include "kiln/result.h"
 #include "kiln/runtime/color.h"
-#include "kiln/runtime/flip.h"
-#include "kiln/runtime/image_error.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
+#include "kiln/tools/flip.h"
+#include "kiln/tools/image_error.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
 
+using runtime::ColorPipeline;
+using runtime::FrameSettings;
+using runtime::FrameStats;
+using runtime::LinearImage;
+using runtime::Renderer;
+using runtime::Scene;
 struct AccuracyConfig {
     std::string name;        // "auto-4", "deferred-rgba8-oct", ... (also a file name)
     std::string group;       // what it varies: "light mode", "path", "pack"
@@ -94,6 +100,6 @@ std::vector<uint8_t> AccuracyPlotImage(const AccuracyReport& report,
                                        uint32_t width,
                                        uint32_t height);
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools
 
-#endif  // KILN_RUNTIME_ACCURACY_REPORT_H_
+#endif  // KILN_TOOLS_ACCURACY_REPORT_H_

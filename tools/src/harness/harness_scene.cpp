@@ -1,4 +1,4 @@
-#include "render/harness_scene.h"
+#include "harness/harness_scene.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -7,7 +7,12 @@
 
 #include "render/forward_plan.h"
 
-namespace kiln::render {
+namespace kiln::tools {
+
+using render::CameraSetup;
+using render::ForwardPlan;
+using runtime::ComputeBounds;
+using runtime::DrawPlan;
 namespace {
 
 const glm::vec3 kEye(0.0f, 0.6f, 2.4f);
@@ -168,4 +173,4 @@ runtime::Light HarnessLight(runtime::LightType type, float intensity) {
     return l;
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::tools

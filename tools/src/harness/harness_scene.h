@@ -1,8 +1,8 @@
-// The scene kiln test draws every variant in (kiln/runtime/variant_test.h): a unit sphere over a
+// The scene kiln test draws every variant in (kiln/tools/variant_test.h): a unit sphere over a
 // plane, one perspective camera, and lights placed at the camera so the sphere's centre faces
 // them (the image centre is lit head-on, where a specular highlight is brightest).
-#ifndef KILN_RUNTIME_RENDER_HARNESS_SCENE_H_
-#define KILN_RUNTIME_RENDER_HARNESS_SCENE_H_
+#ifndef KILN_TOOLS_HARNESS_SCENE_H_
+#define KILN_TOOLS_HARNESS_SCENE_H_
 
 #include <string>
 #include <vector>
@@ -14,8 +14,10 @@
 #include "render/material_binding.h"
 #include "render/renderer_state.h"
 
-namespace kiln::render {
+namespace kiln::tools {
 
+using render::CameraSetup;
+using render::MaterialInstance;
 // Sphere (centre (0, 0.5, 0), radius 0.5) first, then the plane y = 0; camera 0 looks at the
 // sphere's centre from +Z.
 runtime::Scene HarnessScene();
@@ -24,7 +26,7 @@ runtime::Scene HarnessScene();
 // or candela (point, spot).
 runtime::Light HarnessLight(runtime::LightType type, float intensity);
 
-// kiln stability's scene (kiln/runtime/stability.h): a plane in z = 0 facing +z, made of
+// kiln stability's scene (kiln/tools/stability.h): a plane in z = 0 facing +z, made of
 // triangles around a vertex at the origin, and a sphere beside it; camera 0 at (0, 0,
 // kStabilityEyeZ) looks down -z at the origin, so in an odd-sized image the centre pixel sees
 // exactly the origin with normal +z (a vertex: its interpolated values are exact). A light
@@ -54,6 +56,6 @@ Status DrawHarnessPass(runtime::Renderer::State& s,
                        const HarnessPass& draw,
                        runtime::LinearImage& out);
 
-}  // namespace kiln::render
+}  // namespace kiln::tools
 
-#endif  // KILN_RUNTIME_RENDER_HARNESS_SCENE_H_
+#endif  // KILN_TOOLS_HARNESS_SCENE_H_

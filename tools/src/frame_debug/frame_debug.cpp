@@ -1,9 +1,9 @@
-// WriteFrameDebug: a captured frame (kiln/runtime/frame_debug.h) as files a person opens in a
+// WriteFrameDebug: a captured frame (kiln/runtime/frame_capture.h) as files a person opens in a
 // browser. The page lists every pass with its steps and every step's images in static HTML, so
 // it reads without script too; its script shows one step at a time (the list, the buttons, or
 // the arrow keys) and, once the page has loaded, counts the images that loaded into
 // <body data-images-loaded>, which the headless-browser test reads.
-#include "kiln/runtime/frame_debug.h"
+#include "kiln/tools/frame_debug.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -14,7 +14,12 @@
 #include "kiln/base/files.h"
 #include "kiln/runtime/color.h"
 
-namespace kiln::runtime {
+namespace kiln::tools {
+
+using runtime::DebugImage;
+using runtime::DebugStep;
+using runtime::FrameCapture;
+using runtime::WritePng;
 namespace {
 
 namespace fs = std::filesystem;
@@ -239,4 +244,4 @@ Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
                                      replace_links);
 }
 
-}  // namespace kiln::runtime
+}  // namespace kiln::tools
