@@ -31,13 +31,12 @@ ALLOWED = {
     ("runtime/src/pack/reader.cpp", "open"):
         "MappedFile::Map: O_NONBLOCK, fstat S_ISREG before mmap, noted for the input guard",
     ("runtime/src/pack/reader.cpp", "mmap"): "MappedFile::Map, of the checked descriptor",
-    ("compiler/src/worker/phase_board.cpp", "mmap"): "shared memory with the workers, no file",
     ("compiler/src/worker/pool.cpp", "fopen"): "/proc/PID/statm of a worker, for its memory",
     ("runtime/src/image/stb_decoder.cpp", "stb_image any"):
         "the image reader: bytes from ReadRegularFile through bounded callbacks (image.cpp)",
 }
 
-ROOTS = ["base", "compiler", "runtime"]
+ROOTS = ["base", "compiler", "runtime", "tools"]
 
 
 def main():

@@ -24,7 +24,6 @@
 #include "worker/execute.h"
 #include "worker/executor.h"
 #include "worker/file_exchange.h"
-#include "worker/phase_board.h"
 
 extern char** environ;
 
@@ -33,7 +32,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr int kTickMs = 20;  // how often a running request's memory is looked at
-constexpr int kWorkerFd = 3, kBoardFd = 4;
+constexpr int kWorkerFd = 3;
+// How long a worker stopped at a limit (SIGUSR1) has to say where it was before it is killed.
+constexpr int kLastWordsMs = 500;
 
 // The same protocol without a process: requests, responses and files pass as encoded frames, so
 // --in-process checks the encoding and the file exchange the workers use.
@@ -104,7 +105,6 @@ struct Worker {
     pid_t pid = -1;
     int fd = -1;
     FrameReader reader;
-    PhaseBoard board;  // made once per slot, shared with each process that fills it
     std::unique_ptr<FileServer> files;  // what this connection was sent
 };
 
@@ -186,27 +186,18 @@ Status WorkerPool::Spawn(Worker& w) const {
         return Error{DiagCode::kWorkerUnavailable,
                      std::string("socketpair: ") + std::strerror(errno)};
     }
-    if (Status board = w.board.ok() ? Status() : w.board.Create(); !board.ok()) {
-        close(sv[0]);
-        close(sv[1]);
-        return board;
-    }
-    // The child's ends move to fds 3 and 4 there; keep them away from those here so that dup2
-    // clears CLOEXEC.
+    // The child's end moves to fd 3 there; keep it away from that here so that dup2 clears
+    // CLOEXEC.
     const int child_end = fcntl(sv[1], F_DUPFD_CLOEXEC, 10);
-    const int board_end = fcntl(w.board.fd(), F_DUPFD_CLOEXEC, 10);
     close(sv[1]);
-    if (child_end < 0 || board_end < 0) {
+    if (child_end < 0) {
         Error error{DiagCode::kWorkerUnavailable, std::string("fcntl: ") + std::strerror(errno)};
         close(sv[0]);
-        close(child_end);
-        close(board_end);
         return error;
     }
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, child_end, kWorkerFd);
-    posix_spawn_file_actions_adddup2(&actions, board_end, kBoardFd);
     if (!options_.working_dir.empty())
         posix_spawn_file_actions_addchdir_np(&actions, options_.working_dir.c_str());
     posix_spawnattr_t attr;
@@ -219,14 +210,11 @@ Status WorkerPool::Spawn(Worker& w) const {
     posix_spawnattr_setsigdefault(&attr, &defaults);
     posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
     const std::string fd = std::to_string(kWorkerFd);
-    const std::string board = std::to_string(kBoardFd);
     const std::string memory = std::to_string(options_.memory_limit_bytes);
     const std::string stack = std::to_string(options_.stack_bytes);
     std::vector<const char*> argv = {options_.worker_path.c_str(),
                                      "--fd",
                                      fd.c_str(),
-                                     "--phase-fd",
-                                     board.c_str(),
                                      "--memory-limit",
                                      memory.c_str(),
                                      "--stack",
@@ -238,7 +226,6 @@ Status WorkerPool::Spawn(Worker& w) const {
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attr);
     close(child_end);
-    close(board_end);
     if (rc != 0) {
         close(sv[0]);
         return Error{DiagCode::kWorkerUnavailable,
@@ -324,13 +311,31 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
             return o;
         }
     }
+    // Where the request was: the component it starts in until the worker says otherwise (its
+    // failure frame, also for a crash or a stop at a limit).
+    o.component = FirstComponent(request.kind);
     const auto fail = [&](Outcome::Status status, bool kill_now) {
         o.status = status;
-        o.component = w.board.Get();
         Stop(w, kill_now, &o);
         return o;
     };
-    w.board.Set(FirstComponent(request.kind));
+    // A limit: the worker is asked to stop (SIGUSR1), says where it was, and is killed.
+    const auto stop_at_limit = [&](Outcome::Status status) {
+        kill(w.pid, SIGUSR1);
+        for (auto give_up = Clock::now() + std::chrono::milliseconds(kLastWordsMs);
+             Clock::now() < give_up;) {
+            const std::optional<std::string> payload = ReceiveWithin(w, kLastWordsMs);
+            const auto frame = payload ? SplitFrame(*payload) : std::nullopt;
+            if (!frame)
+                break;
+            if (frame->type != FrameType::kFailure)
+                continue;  // an answer that crossed the stop
+            if (const auto f = DecodeFailure(frame->payload); f && f->reason == "stopped")
+                o.component = f->component;
+            break;
+        }
+        return fail(status, true);
+    };
     if (!SendFrame(w.fd, EncodeRequest(request)))
         return fail(Outcome::Status::kCrashed, false);
     const auto start = Clock::now();
@@ -378,13 +383,15 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
             if (frame->type == FrameType::kFailure) {
                 const auto f = DecodeFailure(frame->payload);
                 o.detail = f ? f->detail : "";
-                const Outcome::Status status = f && f->reason == "memory"
+                if (f && f->component != Component::kNone)
+                    o.component = f->component;
+                // A crash's last words come before the worker dies by its signal.
+                const Outcome::Status status = !f                     ? Outcome::Status::kBroken
+                                               : f->reason == "crash" ? Outcome::Status::kCrashed
+                                               : f->reason == "memory"
                                                    ? Outcome::Status::kOutOfMemory
                                                    : Outcome::Status::kBroken;
-                fail(status, false);
-                if (f && f->component != Component::kNone)
-                    o.component = f->component;  // the worker's word beats the board's
-                return o;
+                return fail(status, false);
             }
             std::optional<Response> resp;
             if (frame->type == FrameType::kResponse)
@@ -398,10 +405,10 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
         }
         const auto now = Clock::now();
         if (now >= deadline)
-            return fail(Outcome::Status::kTimedOut, true);
+            return stop_at_limit(Outcome::Status::kTimedOut);
         if (now >= next_memory_check) {
             if (ResidentBytes(w.pid) > options_.memory_limit_bytes)
-                return fail(Outcome::Status::kOutOfMemory, true);
+                return stop_at_limit(Outcome::Status::kOutOfMemory);
             next_memory_check = now + std::chrono::milliseconds(kTickMs);
         }
     }

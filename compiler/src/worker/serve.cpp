@@ -1,6 +1,9 @@
 // The worker process's side (kiln/compile_worker.h): read a request, run it on a deep stack,
 // answer; exit on end-of-file, when the parent dies, or after anything that may have left the
-// third-party libraries' global state damaged (an exhausted allocation, an exception).
+// third-party libraries' global state damaged (an exhausted allocation, an exception). Where it
+// ends abnormally it says, in a failure frame, which component it was in: also for a crash (a
+// fatal signal's handler) and when the client stops it at a limit (SIGUSR1), so nothing but the
+// socket is shared with the client.
 #include "kiln/compile_worker.h"
 
 #include <pthread.h>
@@ -9,6 +12,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -23,7 +27,6 @@
 #include "kiln/compile.h"
 #include "worker/execute.h"
 #include "worker/file_exchange.h"
-#include "worker/phase_board.h"
 #include "worker/protocol.h"
 
 namespace kiln {
@@ -45,7 +48,6 @@ constexpr bool kAddressSanitizer = false;
 
 struct Args {
     int fd = -1;
-    int phase_fd = -1;
     uint64_t memory_limit = 0;
     uint64_t stack = uint64_t{256} << 20;
 };
@@ -60,8 +62,6 @@ bool ParseArgs(int argc, char** argv, Args& a) {
             return false;
         if (flag == "--fd" && v < 1024)
             a.fd = static_cast<int>(v);
-        else if (flag == "--phase-fd" && v < 1024)
-            a.phase_fd = static_cast<int>(v);
         else if (flag == "--memory-limit")
             a.memory_limit = v;
         else if (flag == "--stack" && v >= (1u << 20))
@@ -88,10 +88,72 @@ std::optional<std::string> Receive(int fd, worker::FrameReader& reader) {
     }
 }
 
+// The worker's last words: where a request was when the worker crashed or was stopped. The
+// frames are encoded before the first request, so the signal handlers only write(2) them
+// (async-signal-safe) and then end the process.
+constexpr size_t kComponents = size_t(Component::kKilnReduction) + 1;
+struct LastWords {
+    int fd = -1;
+    std::atomic<uint8_t> component{0};
+    std::string crashed[kComponents];  // reason "crash"
+    std::string stopped[kComponents];  // reason "stopped": the client's limit
+};
+LastWords g_last;
+
+void SetComponent(Component c) {
+    g_last.component.store(uint8_t(c), std::memory_order_relaxed);
+}
+
+void Say(const std::string (&frames)[kComponents]) {
+    const uint8_t c = g_last.component.load(std::memory_order_relaxed);
+    const std::string& f = frames[c < kComponents ? c : 0];
+    ssize_t n = 0;
+    for (size_t at = 0; at < f.size() && n >= 0; at += size_t(n))
+        n = write(g_last.fd, f.data() + at, f.size() - at);
+}
+
+void OnFatalSignal(int sig) {
+    Say(g_last.crashed);
+    signal(sig, SIG_DFL);  // the process ends by the signal, as the client sees it
+    raise(sig);
+}
+
+void OnStop(int) {
+    Say(g_last.stopped);
+    std::_Exit(6);
+}
+
+void PrepareLastWords(int fd) {
+    g_last.fd = fd;
+    for (size_t c = 0; c < kComponents; ++c) {
+        g_last.crashed[c] = worker::EncodeFailure("crash", "", Component(c));
+        g_last.stopped[c] = worker::EncodeFailure("stopped", "", Component(c));
+    }
+    struct sigaction fatal {};
+    fatal.sa_handler = OnFatalSignal;
+    fatal.sa_flags = SA_ONSTACK | SA_RESETHAND;  // a stack overflow runs it on the spare stack
+    sigemptyset(&fatal.sa_mask);
+    for (int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT})
+        sigaction(sig, &fatal, nullptr);
+    struct sigaction stop {};
+    stop.sa_handler = OnStop;
+    sigemptyset(&stop.sa_mask);
+    sigaction(SIGUSR1, &stop, nullptr);
+}
+
+// A spare stack for the fatal-signal handler on the calling thread (the one requests run on).
+void UseSpareStack() {
+    static std::vector<char> spare(size_t{256} << 10);
+    stack_t ss{};
+    ss.ss_sp = spare.data();
+    ss.ss_size = spare.size();
+    sigaltstack(&ss, nullptr);
+}
+
 // Requests that test the isolation itself (tests/unit/worker/pool_test.cpp): they do what a broken
-// compiler does, after saying on the phase board that they are in SPIRV-Tools' optimizer.
-[[noreturn]] void SelfTest(const std::string& what, worker::PhaseBoard& board) {
-    board.Set(Component::kSpirvOpt);
+// compiler does, after saying they are in SPIRV-Tools' optimizer.
+[[noreturn]] void SelfTest(const std::string& what) {
+    SetComponent(Component::kSpirvOpt);
     if (what == "hang") {
         for (;;)
             pause();
@@ -122,7 +184,7 @@ bool Handshake(int fd, worker::FrameReader& reader) {
     return theirs && theirs->protocol == mine.protocol && theirs->producer == mine.producer;
 }
 
-int Serve(int fd, worker::PhaseBoard& board) {
+int Serve(int fd) {
     worker::FrameReader reader;
     if (!Handshake(fd, reader))
         return 5;
@@ -150,10 +212,11 @@ int Serve(int fd, worker::PhaseBoard& board) {
             return 2;
         }
         if (request->kind == worker::RequestKind::kSelfTest)
-            SelfTest(request->source, board);
+            SelfTest(request->source);
         Component now = worker::FirstComponent(request->kind);
-        worker::ExecuteContext context{files, [&board, &now](Component c) {
-                                           board.Set(c);
+        SetComponent(now);
+        worker::ExecuteContext context{files, [&now](Component c) {
+                                           SetComponent(c);
                                            now = c;
                                        }};
         try {
@@ -176,13 +239,13 @@ int Serve(int fd, worker::PhaseBoard& board) {
 
 struct ThreadArgs {
     int fd;
-    worker::PhaseBoard* board;
     int rc;
 };
 
 void* ServeThread(void* p) {
     auto* a = static_cast<ThreadArgs*>(p);
-    a->rc = Serve(a->fd, *a->board);
+    UseSpareStack();
+    a->rc = Serve(a->fd);
     return nullptr;
 }
 
@@ -207,7 +270,7 @@ int RunCompileWorker(int argc, char** argv) {
     if (!ParseArgs(argc, argv, args)) {
         std::fprintf(stderr,
                      "kiln-worker: a compile worker started by kiln; usage: kiln-worker --fd N "
-                     "[--phase-fd N] [--memory-limit BYTES] [--stack BYTES]\n");
+                     "[--memory-limit BYTES] [--stack BYTES]\n");
         return 2;
     }
     // Never outlive the compile, even when a request hangs. (PR_SET_PDEATHSIG would fire when
@@ -222,10 +285,8 @@ int RunCompileWorker(int argc, char** argv) {
     pthread_attr_t attr;
     pthread_attr_init(&attr);
     pthread_attr_setstacksize(&attr, static_cast<size_t>(args.stack));
-    worker::PhaseBoard board;  // stays empty (and silent) when no --phase-fd is given
-    if (args.phase_fd >= 0)
-        board.Attach(args.phase_fd);
-    ThreadArgs targs{args.fd, &board, 0};
+    PrepareLastWords(args.fd);
+    ThreadArgs targs{args.fd, 0};
     pthread_t thread;
     if (pthread_create(&thread, &attr, ServeThread, &targs) != 0) {
         std::fprintf(stderr, "kiln-worker: cannot start a thread with a %llu-byte stack\n",

@@ -65,7 +65,8 @@ TEST(WorkerPool, ACrashIsReportedWithItsSignalAndTheWorkerIsReplaced) {
     const Outcome o = pool->Run(SelfTest("crash"));
     EXPECT_EQ(o.status, Outcome::Status::kCrashed);
     EXPECT_EQ(o.signal, SIGSEGV);
-    // Where it crashed comes from the phase board, which the self test set.
+    // Where it crashed comes from the worker's last words (its fatal-signal handler's failure
+    // frame), the component the self test said it was in; nothing but the socket is shared.
     EXPECT_EQ(o.component, Component::kSpirvOpt);
     ExpectWorks(*pool);
 }
@@ -97,6 +98,7 @@ TEST(WorkerPool, RunawayMemoryIsStoppedAtTheLimit) {
     auto pool = MakeWorkerPool(Options(), DiskFiles());
     const Outcome o = pool->Run(SelfTest("allocate"));
     EXPECT_EQ(o.status, Outcome::Status::kOutOfMemory);
+    EXPECT_EQ(o.component, Component::kSpirvOpt);  // said when stopped at the limit
     ExpectWorks(*pool);
 }
 
