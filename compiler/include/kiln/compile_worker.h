@@ -7,9 +7,10 @@
 
 namespace kiln {
 
-// Serves requests on the socket named by `--fd N` until it is closed. Also takes `--phase-fd N`
-// (the shared page where it says which component it is in), `--memory-limit BYTES` (the
-// address-space backstop) and `--stack BYTES` (the compile thread's).
+// Serves requests on the socket named by `--fd N` until it is closed (the protocol, with its
+// hello and the files it asks the client for, is compiler/src/worker/protocol.h). Also takes
+// `--memory-limit BYTES` (the address-space backstop) and `--stack BYTES` (the compile
+// thread's).
 int RunCompileWorker(int argc, char** argv);
 
 }  // namespace kiln

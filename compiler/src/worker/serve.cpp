@@ -141,8 +141,13 @@ void PrepareLastWords(int fd) {
     sigaction(SIGUSR1, &stop, nullptr);
 }
 
-// A spare stack for the fatal-signal handler on the calling thread (the one requests run on).
+// A spare stack for the fatal-signal handler on the calling thread (the one requests run on),
+// unless the thread has one already: AddressSanitizer gives each thread its own and unmaps it
+// when the thread ends, which fails on a stack it did not map.
 void UseSpareStack() {
+    stack_t current{};
+    if (sigaltstack(nullptr, &current) == 0 && !(current.ss_flags & SS_DISABLE))
+        return;
     static std::vector<char> spare(size_t{256} << 10);
     stack_t ss{};
     ss.ss_sp = spare.data();
