@@ -23,6 +23,9 @@ void FileServer::Reset() {
 }
 
 std::optional<std::string> RemoteFiles::Load(const std::string& path) {
+    // One question and its answer at a time: an answer without content ("you have it") must not
+    // overtake the answer that carries it (threads of the in-process executor ask concurrently).
+    std::lock_guard<std::mutex> exchange(exchange_mu_);
     const std::optional<FileAnswer> a = ask_(path);
     std::lock_guard<std::mutex> lock(mu_);
     if (!a || a->path != path) {

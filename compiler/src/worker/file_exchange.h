@@ -51,6 +51,7 @@ class RemoteFiles {
 
   private:
     Ask ask_;
+    std::mutex exchange_mu_;  // held across a question and its answer
     mutable std::mutex mu_;
     std::map<std::string, std::string> by_hash_;
     std::string error_;

@@ -5,6 +5,7 @@
 
 #include <sys/stat.h>
 
+#include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "worker/executor.h"
+#include "worker/file_exchange.h"
 
 namespace kiln::worker {
 namespace {
@@ -241,6 +243,41 @@ os.read(fd, 1)
         << out.detail;
     EXPECT_NE(out.detail.find("use the kiln-worker installed with this kiln"), std::string::npos);
     std::filesystem::remove_all(dir);
+}
+
+// Threads ask for files at once (the in-process executor's do). Files with the same content are
+// sent once, so an answer that says "you have it" must never overtake, on its way to the store,
+// the answer that carries the bytes: here the carrying answer is slowed down on purpose.
+TEST(FileExchange, AnAnswerWithoutBytesNeverOvertakesTheOneWithThem) {
+    hlsl::FileCache client([](const std::string& path) -> std::optional<std::string> {
+        return path.rfind("/client/", 0) == 0 ? std::optional<std::string>("float4 Same;\n")
+                                              : std::nullopt;
+    });
+    FileServer server(client);
+    RemoteFiles remote([&](const std::string& path) -> std::optional<FileAnswer> {
+        const std::string frame = server.Answer(path);
+        const auto f = SplitFrame(std::string_view(frame).substr(4));
+        std::optional<FileAnswer> a = f ? DecodeFile(f->payload) : std::nullopt;
+        if (a && a->with_content)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        return a;
+    });
+    std::atomic<int> ready{0}, missing{0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([&, t] {
+            ++ready;
+            while (ready.load() < 4) {
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(5 * t));  // the first carries
+            if (remote.Load("/client/copy" + std::to_string(t) + ".cginc") != "float4 Same;\n")
+                ++missing;
+        });
+    }
+    for (std::thread& th : threads)
+        th.join();
+    EXPECT_EQ(missing.load(), 0);
+    EXPECT_EQ(remote.error(), "");
 }
 
 }  // namespace
