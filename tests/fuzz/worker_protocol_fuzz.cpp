@@ -12,10 +12,6 @@ namespace {
 
 using namespace kiln::worker;
 
-std::string_view Body(const std::string& frame) {
-    return std::string_view(frame).substr(4);  // the length
-}
-
 void Check(bool ok) {
     if (!ok)
         std::abort();
@@ -28,28 +24,28 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const auto frame = SplitFrame(payload);
     const std::string_view fields = frame ? frame->payload : payload;
     if (const auto r = DecodeRequest(fields)) {
-        const auto again = DecodeRequest(SplitFrame(Body(EncodeRequest(*r)))->payload);
+        const auto again = DecodeRequest(SplitWholeFrame(EncodeRequest(*r))->payload);
         Check(again && again->source == r->source && again->words == r->words &&
               again->include_dirs == r->include_dirs);
     }
     if (const auto r = DecodeResponse(fields)) {
-        const auto again = DecodeResponse(SplitFrame(Body(EncodeResponse(*r)))->payload);
+        const auto again = DecodeResponse(SplitWholeFrame(EncodeResponse(*r))->payload);
         Check(again && again->text == r->text && again->files_read == r->files_read);
     }
     if (const auto f = DecodeFailure(fields)) {
         const auto again = DecodeFailure(
-            SplitFrame(Body(EncodeFailure(f->reason, f->detail, f->component)))->payload);
+            SplitWholeFrame(EncodeFailure(f->reason, f->detail, f->component))->payload);
         Check(again && again->detail == f->detail && again->component == f->component);
     }
     if (const auto h = DecodeHello(fields)) {
-        const auto again = DecodeHello(SplitFrame(Body(EncodeHello(*h)))->payload);
+        const auto again = DecodeHello(SplitWholeFrame(EncodeHello(*h))->payload);
         Check(again && again->protocol == h->protocol && again->producer == h->producer);
     }
     if (const auto path = DecodeNeedFile(fields))
-        Check(DecodeNeedFile(SplitFrame(Body(EncodeNeedFile(*path)))->payload) == path);
+        Check(DecodeNeedFile(SplitWholeFrame(EncodeNeedFile(*path))->payload) == path);
     if (const auto f = DecodeFile(fields)) {
         Check(!f->with_content || ContentHash(f->content) == f->hash);
-        const auto again = DecodeFile(SplitFrame(Body(EncodeFile(*f)))->payload);
+        const auto again = DecodeFile(SplitWholeFrame(EncodeFile(*f))->payload);
         Check(again && again->path == f->path && again->content == f->content);
     }
     return 0;

@@ -44,7 +44,7 @@ class InProcessExecutor : public Executor {
         : server_(files),
           remote_([this](const std::string& path) -> std::optional<FileAnswer> {
               const std::string frame = server_.Answer(path);
-              const auto f = SplitFrame(std::string_view(frame).substr(4));
+              const auto f = SplitWholeFrame(frame);
               return f && f->type == FrameType::kFile ? DecodeFile(f->payload) : std::nullopt;
           }),
           worker_files_(remote_.AsLoader()) {}
@@ -72,7 +72,7 @@ class InProcessExecutor : public Executor {
   private:
     template <typename T>
     static std::optional<T> Decode(const std::string& frame) {
-        const auto f = SplitFrame(std::string_view(frame).substr(4));
+        const auto f = SplitWholeFrame(frame);
         if (!f)
             return std::nullopt;
         if constexpr (std::is_same_v<T, Request>)

@@ -272,6 +272,12 @@ std::optional<Frame> SplitFrame(std::string_view payload) {
     return std::nullopt;
 }
 
+std::optional<Frame> SplitWholeFrame(std::string_view frame) {
+    if (frame.size() < 4 || base::LoadLe32(frame, 0) != frame.size() - 4)
+        return std::nullopt;
+    return SplitFrame(frame.substr(4));
+}
+
 std::optional<Request> DecodeRequest(std::string_view fields) {
     Request r;
     const bool ok = ForEachField(fields, [&r](uint8_t tag, std::string_view b) {

@@ -135,6 +135,8 @@ struct Frame {
     std::string_view payload;  // fields, after the type
 };
 std::optional<Frame> SplitFrame(std::string_view payload);
+// The same for a whole frame as Encode* return it: its length first, which must be its size.
+std::optional<Frame> SplitWholeFrame(std::string_view frame);
 std::optional<Request> DecodeRequest(std::string_view fields);
 std::optional<Response> DecodeResponse(std::string_view fields);
 struct Failure {

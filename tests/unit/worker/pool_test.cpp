@@ -256,7 +256,7 @@ TEST(FileExchange, AnAnswerWithoutBytesNeverOvertakesTheOneWithThem) {
     FileServer server(client);
     RemoteFiles remote([&](const std::string& path) -> std::optional<FileAnswer> {
         const std::string frame = server.Answer(path);
-        const auto f = SplitFrame(std::string_view(frame).substr(4));
+        const auto f = SplitWholeFrame(frame);
         std::optional<FileAnswer> a = f ? DecodeFile(f->payload) : std::nullopt;
         if (a && a->with_content)
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
