@@ -11,8 +11,9 @@
 //                  marked: only pixels within the sphere's depth range are shaded (and unmarked).
 // Both draws of a ranged light are scissored to its sphere's rectangle on screen. The light pass
 // reads the G-buffer the objects' Deferred passes wrote (UnityGBuffer.cginc), rebuilds the world
-// position and shades with the same BRDF and attenuation as the forward path's additive passes,
-// so both paths agree up to the G-buffer's quantization. A pack loaded before materials.kpack can
+// position and shades with the same BRDF, attenuation and shadow as the forward path's additive
+// passes (UNITY_LIGHT_ATTENUATION from the world position), so both paths agree up to the
+// G-buffer's quantization. A pack loaded before materials.kpack can
 // replace it, as Unity allows.
 Shader "Hidden/Internal-DeferredShading"
 {
@@ -88,6 +89,10 @@ Shader "Hidden/Internal-DeferredShading"
             #pragma target 3.0  // GGX, as the Standard shaders' passes
             #pragma multi_compile DIRECTIONAL POINT SPOT
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
+            // The light's real-time shadow (AutoLight.cginc): screen-space for directional
+            // lights, the map for spot lights, the depth cube for point lights.
+            #pragma multi_compile_fragment _ SHADOWS_SCREEN SHADOWS_DEPTH SHADOWS_CUBE
+            #pragma multi_compile_fragment _ SHADOWS_SOFT
             ENDCG
         }
 
@@ -133,6 +138,10 @@ Shader "Hidden/Internal-DeferredShading"
             #pragma target 3.0  // GGX, as the Standard shaders' passes
             #pragma multi_compile DIRECTIONAL POINT SPOT
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
+            // The light's real-time shadow (AutoLight.cginc): screen-space for directional
+            // lights, the map for spot lights, the depth cube for point lights.
+            #pragma multi_compile_fragment _ SHADOWS_SCREEN SHADOWS_DEPTH SHADOWS_CUBE
+            #pragma multi_compile_fragment _ SHADOWS_SOFT
             ENDCG
         }
     }

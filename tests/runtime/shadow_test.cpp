@@ -1,8 +1,8 @@
-// Shadows (FrameSettings::shadows, kiln render --shadows): a sphere over a floor, seen straight
-// down by an orthographic camera so that each pixel is a known floor point, lit by one light of
-// each type. A CPU reference casts a ray from each floor point to the light: where it passes
-// through the sphere well inside (or well outside) its radius, the render must show the floor
-// unlit (or lit) by that light. The lit fraction is measured as (shadowed - ambient only) /
+// Shadows (FrameSettings::shadows, kiln render --shadows) on both paths: a sphere over a floor,
+// seen straight down by an orthographic camera so that each pixel is a known floor point, lit by
+// one light of each type. A CPU reference casts a ray from each floor point to the light: where it
+// passes through the sphere well inside (or well outside) its radius, the render must show the
+// floor unlit (or lit) by that light. The lit fraction is measured as (shadowed - ambient only) /
 // (unshadowed - ambient only), so the BRDF and the light's falloff cancel. The validation layer
 // reports nothing (the fixture fails any test on a message).
 #include "runtime/runtime_fixture.h"
@@ -79,11 +79,13 @@ struct ShadowCheck {
 class ShadowTest : public RuntimeTest {
   protected:
     // Renders the scene lit by `light` with shadows `mode`, without shadows and without the
-    // light, and checks every floor pixel outside the sphere's own footprint.
+    // light, along `path`, and checks every floor pixel outside the sphere's own footprint.
     ShadowCheck Check(const runtime::Light& light,
                       runtime::Shadows mode,
-                      runtime::FrameStats* stats_out = nullptr) {
+                      runtime::FrameStats* stats_out = nullptr,
+                      const runtime::RenderPath& path = runtime::RenderPath::kForward) {
         runtime::FrameSettings settings;
+        settings.path = path;
         settings.width = settings.height = kSize;
         settings.default_light = false;
         runtime::FrameStats stats;
@@ -127,9 +129,10 @@ class ShadowTest : public RuntimeTest {
             }
         }
         std::printf(
-            "%s, %s shadows: lit %zu (%zu wrong), shadowed %zu (%zu wrong), partly lit %zu\n",
-            light.name.c_str(), mode == runtime::Shadows::kSoft ? "soft" : "hard", out.lit,
-            out.lit_wrong, out.shadowed, out.shadow_wrong, out.partial);
+            "%s, %s, %s shadows: lit %zu (%zu wrong), shadowed %zu (%zu wrong), partly lit %zu\n",
+            path.name.c_str(), light.name.c_str(),
+            mode == runtime::Shadows::kSoft ? "soft" : "hard", out.lit, out.lit_wrong, out.shadowed,
+            out.shadow_wrong, out.partial);
         return out;
     }
 };
@@ -226,17 +229,25 @@ TEST_F(ShadowTest, WithoutShadowsTheReferenceFails) {
     EXPECT_EQ(darker, shadowed);
 }
 
-TEST_F(ShadowTest, DeferredPathDrawsWithoutShadowsAndSaysSo) {
-    runtime::FrameSettings settings;
-    settings.width = settings.height = 32;
-    settings.shadows = runtime::Shadows::kSoft;
-    settings.path = runtime::RenderPath::kDeferred;
-    runtime::FrameStats stats;
-    Render(ShadowScene(Directional()), settings, &stats);
-    EXPECT_EQ(stats.shadow_draws, 0u);
-    ASSERT_FALSE(stats.warnings.all().empty());
-    EXPECT_NE(stats.warnings.all()[0].message.find("shadows are off for the deferred path"),
-              std::string::npos);
+// The deferred path's light pass receives the same shadows (as Unity's: the screen-space shadows
+// for a directional light, the map for a spot light, the cube for a point light): both objects
+// go through the G-buffer (Kiln/StandardMetallic has a Deferred pass), so every floor pixel the
+// check classifies is shaded by the light pass, and the reference holds there, hard and soft.
+TEST_F(ShadowTest, DeferredPathShadowsAreWhereTheReferenceSays) {
+    for (const runtime::Light& light : {Directional(), Spot(), Point()}) {
+        SCOPED_TRACE(light.name);
+        for (runtime::Shadows mode : {runtime::Shadows::kHard, runtime::Shadows::kSoft}) {
+            runtime::FrameStats stats;
+            ExpectMatchesReference(Check(light, mode, &stats, runtime::RenderPath::kDeferred));
+            EXPECT_EQ(stats.gbuffer_draws, 2u);
+            EXPECT_EQ(stats.light_passes, 1u);
+            EXPECT_EQ(stats.base_passes + stats.add_passes, 0u);  // nothing drawn forward
+            // The same shadow passes as the forward path's (the tests above).
+            EXPECT_EQ(stats.shadow_draws, light.type == runtime::LightType::kPoint  ? 12u
+                                          : light.type == runtime::LightType::kSpot ? 2u
+                                                                                    : 5u);
+        }
+    }
 }
 
 TEST_F(ShadowTest, NoShadowCasterPassIsAWarning) {

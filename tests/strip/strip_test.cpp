@@ -291,6 +291,40 @@ TEST(SceneStrip, TheDeferredPathStripsToItsOwnLookups) {
     EXPECT_NE(forward.err.find("[K0006]"), std::string::npos) << forward.err;
 }
 
+// --shadows plans the shadows the deferred path draws (its light passes receive them, as Unity's):
+// the light pass keeps one shadow variant per light type, the collector its SHADOWS_SOFT variant;
+// the stripped pack renders the scene deferred with soft shadows, and not without shadows (whose
+// light-pass variants it left out).
+TEST(SceneStrip, DeferredShadowsStripToTheLightPassShadowVariants) {
+    ScratchDir dir;
+    const std::string out = dir.path() + "/deferred_shadows.kpack";
+    std::string shaders;
+    for (const char* s : {"Unlit", "Lambert", "LambertAmbient", "BlinnPhong", "BlinnPhongTextured",
+                          "EnergyConserving", "Standard", "StandardMetallic", "MultiLight",
+                          "Deferred", "internal/DeferredShading", "internal/ScreenSpaceShadows"}) {
+        shaders += DataPath(std::string("../materials/") + s + ".shader") + " ";
+    }
+    const std::string demo = DataPath("../scenes/demo/demo.gltf");
+    const RunResult r = RunKiln("compile " + shaders + "--no-cache -o " + out + " --scene " + demo +
+                                " --path deferred --shadows soft --verify-scene");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto kept = VariantsByPass(out);
+    EXPECT_EQ(kept.at("LIGHT"), (std::vector<std::string>{"DIRECTIONAL SHADOWS_SCREEN"}));
+    EXPECT_EQ(kept.at("LIGHT_BOUNDED"),
+              (std::vector<std::string>{"SPOT SHADOWS_DEPTH SHADOWS_SOFT",
+                                        "POINT SHADOWS_CUBE SHADOWS_SOFT"}));
+    EXPECT_EQ(kept.at("#1"), (std::vector<std::string>{"SHADOWS_SOFT"}));  // the collector
+    const std::string render = "render " + demo + " --pack " + out +
+                               " --path deferred --width 96 --height 54 --validation -o " +
+                               dir.path() + "/deferred.png";
+    const RunResult shadowed = RunKiln(render + " --shadows soft");
+    EXPECT_EQ(shadowed.exit_code, 0) << shadowed.err;
+    EXPECT_NE(shadowed.out.find("shadow draws"), std::string::npos) << shadowed.out;
+    const RunResult unshadowed = RunKiln(render);
+    EXPECT_EQ(unshadowed.exit_code, 1);
+    EXPECT_NE(unshadowed.err.find("[K0006]"), std::string::npos) << unshadowed.err;
+}
+
 TEST(SceneStrip, FlagsThatDoNotApplyAreRefused) {
     ScratchDir dir;
     const std::string out = dir.path() + "/x.kpack";

@@ -171,6 +171,7 @@ struct SceneStripFlags {
     std::string path = "forward";
     uint32_t pixel_lights = 4;
     std::string light_mode = "auto";
+    std::string shadows = "off";
     bool explain = false, explain_json = false, verify = false;
     bool active() const { return !scenes.empty() || !usage_files.empty(); }
 };

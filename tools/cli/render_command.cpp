@@ -11,7 +11,6 @@
 #include <utility>
 #include <vector>
 
-#include "render_setup.h"
 #include "commands.h"
 #include "kiln/base/files.h"
 #include "kiln/runtime/color.h"
@@ -19,6 +18,7 @@
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
 #include "kiln/tools/frame_debug.h"
+#include "render_setup.h"
 
 namespace kiln::cli {
 namespace {
@@ -213,17 +213,7 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
                 CLI::ignore_case)
                 .description(""))
         ->option_text("auto|pixel|vertex|sh");
-    cmd->add_option("--path", a->frame.path,
-                    "Render path: forward, or deferred (a G-buffer from the objects' Deferred "
-                    "passes lit per light in screen space; the rest drawn forward after it) "
-                    "(default forward)")
-        ->transform(CLI::CheckedTransformer(
-                        std::map<std::string, runtime::RenderPath>{
-                            {"forward", runtime::RenderPath::kForward},
-                            {"deferred", runtime::RenderPath::kDeferred}},
-                        CLI::ignore_case)
-                        .description(""))
-        ->option_text("forward|deferred");
+    AddPathOption(*cmd, a->frame.path.name);
     cmd->add_option("--msaa", a->frame.msaa,
                     "Samples per pixel on the forward path, resolved before the display "
                     "transform (default 1; the deferred path and --frame-debug draw 1)")
@@ -231,7 +221,7 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
         ->option_text("1|2|4|8");
     cmd->add_option("--shadows", a->frame.shadows,
                     "Real-time shadows of the pixel lights from the objects' ShadowCaster "
-                    "passes, on the forward path: off, hard, or soft (SHADOWS_SOFT) "
+                    "passes: off, hard, or soft (SHADOWS_SOFT) "
                     "(default off)")
         ->transform(CLI::CheckedTransformer(
                         std::map<std::string, runtime::Shadows>{{"off", runtime::Shadows::kOff},
@@ -474,9 +464,8 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
                          capture.steps.size());
         }
         std::string deferred;
-        if (a->frame.path == runtime::RenderPath::kDeferred) {
-            deferred = std::to_string(stats.gbuffer_draws) + " G-buffer draws, " +
-                       std::to_string(stats.light_passes) + " light passes, ";
+        if (!stats.path_counts.empty()) {
+            deferred = stats.path_counts + ", ";
         }
         if (stats.shadow_draws > 0) {
             deferred += std::to_string(stats.shadow_draws) + " shadow draws, ";

@@ -1,5 +1,7 @@
 #include "render_setup.h"
 
+#include "kiln/base/text.h"
+
 namespace kiln::cli {
 
 Result<runtime::Renderer> MakeRenderer(const runtime::RendererOptions& options,
@@ -16,6 +18,39 @@ Result<runtime::Renderer> MakeRenderer(const runtime::RendererOptions& options,
         }
     }
     return made;
+}
+
+}  // namespace kiln::cli
+
+namespace kiln::cli {
+
+void AddPathOption(CLI::App& cmd, std::string& name) {
+    const std::vector<runtime::RenderPathInfo> paths = runtime::RenderPaths();
+    std::string help = "Render path (default forward): ", names;
+    std::vector<std::string> candidates;
+    for (const runtime::RenderPathInfo& p : paths) {
+        help += (names.empty() ? "" : "; ") + p.name + ", " + p.summary;
+        names += (names.empty() ? "" : "|") + p.name;
+        candidates.push_back(p.name);
+    }
+    cmd.add_option("--path", name, help)
+        ->check(CLI::Validator(
+            [paths, candidates](std::string& value) -> std::string {
+                for (const runtime::RenderPathInfo& p : paths) {
+                    if (base::EqualsIgnoreCase(p.name, value)) {
+                        value = p.name;
+                        return "";
+                    }
+                }
+                std::string list;
+                for (const std::string& c : candidates) {
+                    list += (list.empty() ? "" : ", ") + c;
+                }
+                return "unknown render path '" + value + "' (there are " + list + ")" +
+                       base::DidYouMean(value, candidates);
+            },
+            "", ""))
+        ->option_text(names);
 }
 
 }  // namespace kiln::cli

@@ -2,6 +2,8 @@
 #ifndef KILN_TOOLS_CLI_RENDER_SETUP_H_
 #define KILN_TOOLS_CLI_RENDER_SETUP_H_
 
+#include <CLI/CLI.hpp>
+
 #include <string>
 #include <vector>
 
@@ -14,6 +16,10 @@ namespace kiln::cli {
 Result<runtime::Renderer> MakeRenderer(const runtime::RendererOptions& options,
                                        const std::vector<std::string>& packs,
                                        std::string* failed_pack = nullptr);
+
+// --path: a registered render path's name (runtime::RenderPaths, any case), stored as it is
+// registered into `name`; another name is refused with the registered ones and the closest.
+void AddPathOption(CLI::App& cmd, std::string& name);
 
 }  // namespace kiln::cli
 

@@ -128,7 +128,9 @@ bool DryRun(const std::string& scene,
                                      "--light-mode",
                                      flags.light_mode,
                                      "--path",
-                                     flags.path};
+                                     flags.path,
+                                     "--shadows",
+                                     flags.shadows};
     for (const std::string& p : packs) {
         args.insert(args.end(), {"--pack", p});
     }
@@ -267,10 +269,11 @@ void AddSceneStripOptions(CLI::App& cmd, SceneStripFlags& f) {
                    "Build only the variants this usage file (kiln render --usage, or an "
                    "engine's) looks up; with --scene, those of both")
         ->option_text("USAGE.json");
+    // kiln-render checks the name: the paths are the runtime's (registered there).
     cmd.add_option("--path", f.path,
-                   "The render path the scene is drawn with, as kiln render's (default forward)")
-        ->check(CLI::IsMember({"forward", "deferred"}))
-        ->option_text("forward|deferred");
+                   "The render path the scene is drawn with, as kiln render's: forward, "
+                   "deferred, or another path kiln-render registers (default forward)")
+        ->option_text("NAME");
     cmd.add_option("--pixel-lights", f.pixel_lights,
                    "Additive per-light passes per object at most, as kiln render's (default 4)")
         ->option_text("N");
@@ -279,6 +282,11 @@ void AddSceneStripOptions(CLI::App& cmd, SceneStripFlags& f) {
                    "auto)")
         ->check(CLI::IsMember({"auto", "pixel", "vertex", "sh"}, CLI::ignore_case))
         ->option_text("auto|pixel|vertex|sh");
+    cmd.add_option("--shadows", f.shadows,
+                   "The shadows the scene is drawn with, as kiln render's: their casters, "
+                   "collector and receiver variants are kept (default off)")
+        ->check(CLI::IsMember({"off", "hard", "soft"}, CLI::ignore_case))
+        ->option_text("off|hard|soft");
     cmd.add_flag("--explain", f.explain,
                  "Print what was kept and why, what was left out, and what that saved");
     cmd.add_flag("--explain-json", f.explain_json, "The same as JSON on stdout");

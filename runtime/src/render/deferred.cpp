@@ -8,7 +8,10 @@
 //             not shaded;
 //   forward   the objects the deferred path cannot draw, with their forward passes, into RT3
 //             over the G-buffer pass's depth.
-// RT3, the light buffer, is the frame's output.
+// RT3, the light buffer, is the frame's output. With shadows, the shadow passes come first
+// (render/shadow_passes.h), as on the forward path: each light's pass samples its light's map
+// (spot: SHADOWS_DEPTH, point: SHADOWS_CUBE) or, for a directional light, the screen-space
+// shadows collected from the camera's depth (SHADOWS_SCREEN), as Unity's deferred path does.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -20,7 +23,9 @@
 #include "render/frame.h"
 #include "render/frame_values.h"
 #include "render/grab_pass.h"
+#include "render/render_path.h"
 #include "render/renderer_state.h"
+#include "render/shadow_passes.h"
 
 namespace kiln::runtime {
 namespace {
@@ -103,17 +108,11 @@ LightReach ReachOf(const Light& light,
     return out;
 }
 
-}  // namespace
-
-Status DrawDeferred(Renderer::State& s,
-                    SceneResources& resources,
-                    const Scene& scene,
-                    const FrameSettings& settings,
-                    const render::CameraSetup& camera,
-                    const render::DeferredPlan& plan,
-                    LinearImage& out,
-                    FrameStats& stats,
-                    const StepObserver* observer) {
+// The deferred frame of `plan` (the passes this file's comment lists), after the shadow passes
+// when a light casts.
+Status BuildDeferredFrame(BuildInputs& in, const render::DeferredPlan& plan, Frame& frame) {
+    Renderer::State& s = in.state;
+    const FrameSettings& settings = in.settings;
     VkFormatProperties depth_props;
     vkGetPhysicalDeviceFormatProperties(s.context.physical, s.depth_format, &depth_props);
     if (!plan.lights.empty() &&
@@ -122,9 +121,6 @@ Status DrawDeferred(Renderer::State& s,
                      "the device cannot sample its depth format, which the deferred light pass "
                      "reads (use --path forward)"};
     }
-    Frame frame;
-    frame.width = settings.width;
-    frame.height = settings.height;
     enum : uint32_t { kRT0, kRT1, kRT2, kRT3, kDepth };
     frame.targets = {
         {"gbuffer0 (diffuse)", VK_FORMAT_R8G8B8A8_SRGB, false, {}, false},
@@ -139,9 +135,15 @@ Status DrawDeferred(Renderer::State& s,
     frame.targets[kDepth].clear.depthStencil = {1.0f, 0};
     frame.output = kRT3;
 
-    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats,
-                        observer != nullptr);
-    frame.passes.reserve(3);
+    DrawBuilder& builder = in.builder;
+    FrameStats& stats = in.stats;
+    ShadowFrame shadows;
+    if (Status e = AddShadowPasses(s, builder, settings, plan.shadows, in.resources.bounds, frame,
+                                   shadows);
+        !e.ok()) {
+        return e;
+    }
+    stats.shadow_draws = shadows.draws;
     FramePass& gbuffer = frame.passes.emplace_back();
     gbuffer.name = "gbuffer";
     gbuffer.colors = {kRT0, kRT1, kRT2, kRT3};
@@ -162,17 +164,21 @@ Status DrawDeferred(Renderer::State& s,
         lighting.clear = false;
         lighting.depth_read_only = true;
         lighting.sampled = {kRT0, kRT1, kRT2, kDepth};
+        lighting.sampled.insert(lighting.sampled.end(), shadows.sampled.begin(),
+                                shadows.sampled.end());
         builder.BeginPass(frame, lighting,
                           {{pack::kTextureGBuffer0, kRT0},
                            {pack::kTextureGBuffer1, kRT1},
                            {pack::kTextureGBuffer2, kRT2},
                            {pack::kTextureCameraDepth, kDepth}});
         for (const render::LightDraw& l : plan.lights) {
-            const LightReach reach = ReachOf(*l.request.light, camera, frame.width, frame.height);
+            const LightReach reach =
+                ReachOf(*l.request.light, in.camera, frame.width, frame.height);
             if (!reach.visible) {
                 continue;
             }
-            if (Status e = builder.Build(l.request, lighting.draws); !e.ok()) {
+            if (Status e = builder.Build(WithShadows({&l.request, 1}, shadows)[0], lighting.draws);
+                !e.ok()) {
                 return e;
             }
             Draw& d = lighting.draws.back();
@@ -200,14 +206,83 @@ Status DrawDeferred(Renderer::State& s,
         forward.colors = {kRT3};
         forward.depth = kDepth;
         forward.clear = false;
-        if (Status e = BuildForwardPasses(builder, frame, forward, kRT3, plan.forward, stats);
+        forward.sampled = shadows.sampled;
+        if (Status e = BuildForwardPasses(builder, frame, forward, kRT3,
+                                          WithShadows(plan.forward, shadows), stats);
             !e.ok()) {
             return e;
         }
     }
-    stats.objects = plan.objects;
-    frame.uniforms = builder.TakeUniforms();
-    return RecordFrame(s, frame, out, stats, observer);
+    return {};
+}
+
+class DeferredPathPlan final : public PathPlan {
+  public:
+    void Requests(std::vector<const render::DrawRequest*>& out) const override {
+        for (const render::DrawRequest& r : plan.gbuffer) {
+            out.push_back(&r);
+        }
+        for (const render::LightDraw& l : plan.lights) {
+            out.push_back(&l.request);
+        }
+        for (const render::DrawRequest& r : plan.forward) {
+            out.push_back(&r);
+        }
+        render::ShadowRequests(plan.shadows, out);
+    }
+    void Materials(std::vector<const render::MaterialInstance*>& out) const override {
+        out.insert(out.end(), plan.list.materials.begin(), plan.list.materials.end());
+        if (plan.light_material) {
+            out.push_back(&*plan.light_material);
+        }
+        if (plan.shadows.collect) {
+            out.push_back(&*plan.shadows.collector);
+        }
+    }
+    uint32_t Objects() const override { return plan.objects; }
+    Status Build(BuildInputs& in, Frame& frame) const override {
+        return BuildDeferredFrame(in, plan, frame);
+    }
+
+    render::DeferredPlan plan;
+};
+
+class DeferredPath final : public PathRenderer {
+  public:
+    std::string_view Name() const override { return "deferred"; }
+    std::string_view Summary() const override {
+        return "a G-buffer from the objects' Deferred passes lit per light in screen space; the "
+               "rest drawn forward after it";
+    }
+    void Adjust(FrameSettings& settings,
+                const Scene& scene,
+                DiagnosticList& warnings) const override {
+        if (settings.msaa > 1) {  // as Unity's deferred path
+            settings.msaa = 1;
+            warnings.Warning(DiagCode::kRenderWarning, scene.path, kNoPosition,
+                             "MSAA is off for the deferred path, whose light pass reads one "
+                             "G-buffer sample: drawn with 1 sample per pixel");
+        }
+    }
+    Result<std::unique_ptr<PathPlan>> Plan(const PlanInputs& in) const override {
+        auto out = std::make_unique<DeferredPathPlan>();
+        if (Status e = render::PlanDeferred(in.packs, in.scene, in.settings, in.camera.position,
+                                            in.color, in.materials, out->plan, in.warnings);
+            !e.ok()) {
+            return e.error();
+        }
+        return std::unique_ptr<PathPlan>(std::move(out));
+    }
+    std::string Counts(const FrameStats& stats) const override {
+        return std::to_string(stats.gbuffer_draws) + " G-buffer draws, " +
+               std::to_string(stats.light_passes) + " light passes";
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<PathRenderer> MakeDeferredPath() {
+    return std::make_unique<DeferredPath>();
 }
 
 }  // namespace kiln::runtime

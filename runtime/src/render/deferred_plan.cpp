@@ -2,6 +2,7 @@
 
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
+#include "render/shadow_plan.h"
 
 namespace kiln::render {
 namespace {
@@ -139,7 +140,18 @@ Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
             ++out.objects;
         }
     }
-    return {};
+    if (settings.shadows == runtime::Shadows::kOff) {
+        return {};
+    }
+    // The lights' passes receive their shadows (not a ranged light's stencil mask), and so do
+    // the objects drawn forward.
+    std::vector<DrawRequest*> receivers = ForwardReceivers(out.forward);
+    for (LightDraw& l : out.lights) {
+        if (l.role != LightDraw::Role::kMask) {
+            receivers.push_back(&l.request);
+        }
+    }
+    return PlanShadows(packs, scene, settings, color, out.list, receivers, out.shadows, warnings);
 }
 
 }  // namespace kiln::render

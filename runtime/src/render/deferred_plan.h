@@ -3,8 +3,10 @@
 // writes the G-buffer; each light of the frame gets one light pass of the internal
 // Hidden/Internal-DeferredShading shader (materials/internal/DeferredShading.shader, looked up
 // in the loaded packs in order, so a user's pack can replace it); every other object (no Deferred
-// pass, or transparent) is drawn afterwards with the forward path's requests. PlanScene makes
-// the same plan's lookups for stripping (kiln compile --scene --path deferred).
+// pass, or transparent) is drawn afterwards with the forward path's requests. With shadows on,
+// the light passes and those forward requests receive them (render/shadow_plan.h), as in Unity's
+// deferred path. PlanScene makes the same plan's lookups for stripping (kiln compile --scene
+// --path deferred).
 #ifndef KILN_RUNTIME_RENDER_DEFERRED_PLAN_H_
 #define KILN_RUNTIME_RENDER_DEFERRED_PLAN_H_
 
@@ -34,6 +36,7 @@ struct DeferredPlan {
     std::vector<LightDraw> lights;     // per light, one draw or a mask and a bounded draw
     std::vector<DrawRequest> forward;  // the rest, as the forward path draws them
     uint32_t objects = 0;              // primitives drawn by either
+    ShadowPlan shadows;                // with settings.shadows on
 };
 
 Status PlanDeferred(const std::vector<const pack::Pack*>& packs,

@@ -104,6 +104,16 @@ std::string Requester(const runtime::Scene& scene, const DrawItem& item) {
     return ObjectLabel(scene, *item.instance, *item.material) + ": ";
 }
 
+std::vector<DrawRequest*> ForwardReceivers(std::vector<DrawRequest>& requests) {
+    std::vector<DrawRequest*> out;
+    for (DrawRequest& r : requests) {
+        if (r.light && (r.additive || r.light->type == LightType::kDirectional)) {
+            out.push_back(&r);
+        }
+    }
+    return out;
+}
+
 bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
                         const runtime::Scene& scene,
                         const runtime::FrameSettings& settings,
@@ -178,10 +188,11 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
             ++out.objects;
         }
     }
-    if (settings.shadows != runtime::Shadows::kOff) {
-        return PlanShadows(packs, scene, settings, color, out, out.shadows, warnings);
+    if (settings.shadows == runtime::Shadows::kOff) {
+        return {};
     }
-    return {};
+    return PlanShadows(packs, scene, settings, color, out.list, ForwardReceivers(out.draws),
+                       out.shadows, warnings);
 }
 
 }  // namespace kiln::render

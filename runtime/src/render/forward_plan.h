@@ -60,7 +60,7 @@ struct DrawRequest {
     std::optional<std::string> grab;
 };
 
-// The shadows of a forward frame (render/shadow_plan.h).
+// The shadows of a frame (render/shadow_plan.h).
 struct ShadowPlan {
     std::vector<const runtime::Light*> lights;  // shadowed, in first-use order
     // The ShadowCaster pass of each opaque object that has one, with SHADOWS_DEPTH (directional
@@ -92,6 +92,10 @@ bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
                         const DrawItem& item,
                         std::vector<DrawRequest>& out,
                         DiagnosticList& warnings);
+
+// The requests among the forward path's `requests` that receive their light's shadow: base
+// passes lit by the main directional light, and additive passes.
+std::vector<DrawRequest*> ForwardReceivers(std::vector<DrawRequest>& requests);
 
 // "material on node 'n'" (or on mesh 'm', or on an unnamed node): who a draw is for.
 std::string ObjectLabel(const runtime::Scene& scene,

@@ -3,9 +3,7 @@
 #include <memory>
 #include <set>
 
-#include "render/deferred_plan.h"
-#include "render/forward_plan.h"
-#include "render/frame_values.h"
+#include "render/render_path.h"
 
 namespace kiln::runtime {
 
@@ -21,49 +19,19 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok()) {
         return e.error();
     }
-    render::MaterialCache materials;
-    // The path's requests, in drawing order, and the list they came from.
-    render::ForwardPlan forward;
-    render::DeferredPlan deferred;
-    std::vector<const render::DrawRequest*> requests;
-    const bool is_deferred = settings.path == RenderPath::kDeferred;
-    if (is_deferred) {
-        if (Status e = render::PlanDeferred(packs, scene, settings, camera.position, color,
-                                            materials, deferred, warnings);
-            !e.ok()) {
-            return e.error();
-        }
-        for (const render::DrawRequest& r : deferred.gbuffer) {
-            requests.push_back(&r);
-        }
-        for (const render::LightDraw& l : deferred.lights) {
-            requests.push_back(&l.request);
-        }
-        for (const render::DrawRequest& r : deferred.forward) {
-            requests.push_back(&r);
-        }
-    } else {
-        if (Status e = render::PlanForward(packs, scene, settings, camera.position, color,
-                                           materials, forward, warnings);
-            !e.ok()) {
-            return e.error();
-        }
-        for (const render::DrawRequest& r : forward.draws) {
-            requests.push_back(&r);
-        }
-        const render::ShadowPlan& shadows = forward.shadows;
-        if (!shadows.lights.empty()) {  // the shadow passes' draws
-            for (const auto* casters : {&shadows.casters, &shadows.cube_casters}) {
-                for (const render::DrawRequest& r : *casters) {
-                    requests.push_back(&r);
-                }
-            }
-            if (shadows.collect) {
-                requests.push_back(&*shadows.collect);
-            }
-        }
+    const PathRenderer* path = FindPathRenderer(settings.path.name);
+    if (!path) {
+        return UnknownPath(settings.path.name);
     }
-    const render::DrawList& list = is_deferred ? deferred.list : forward.list;
+    render::MaterialCache materials;
+    const PlanInputs in{packs, scene, settings, camera, color, materials, warnings};
+    Result<std::unique_ptr<PathPlan>> planned = path->Plan(in);
+    if (!planned) {
+        return planned.error();
+    }
+    const PathPlan& plan = *planned.value();
+    std::vector<const render::DrawRequest*> requests;
+    plan.Requests(requests);
     ScenePlan out;
     std::vector<std::unique_ptr<pack::VariantSelector>> selectors;
     for (const pack::Pack* p : packs) {
@@ -88,19 +56,14 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     }
     out.usage.lookups = pack::UsageOf(views);
     std::set<pack::UsageMaterial> used;
-    std::vector<const render::MaterialInstance*> used_instances = list.materials;
-    if (deferred.light_material) {
-        used_instances.push_back(&*deferred.light_material);
-    }
-    if (forward.shadows.collect) {
-        used_instances.push_back(&*forward.shadows.collector);
-    }
+    std::vector<const render::MaterialInstance*> used_instances;
+    plan.Materials(used_instances);
     for (const render::MaterialInstance* m : used_instances) {
         const pack::Pack& p = *packs[m->pack];
         used.insert({m->name, std::string(p.String(p.Shader(m->shader).value().name))});
     }
     out.usage.materials.assign(used.begin(), used.end());
-    out.objects = is_deferred ? deferred.objects : forward.objects;
+    out.objects = plan.Objects();
     out.draws = uint32_t(requests.size());
     return out;
 }

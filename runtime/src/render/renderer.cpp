@@ -54,8 +54,8 @@ std::vector<const pack::Pack*> Renderer::State::PackList() const {
     return out;
 }
 
-void Renderer::State::NoteMaterials(const render::DrawList& list) {
-    for (const render::MaterialInstance* m : list.materials) {
+void Renderer::State::NoteMaterials(const std::vector<const render::MaterialInstance*>& materials) {
+    for (const render::MaterialInstance* m : materials) {
         const pack::Pack& pack = packs[m->pack]->pack;
         used_materials.insert(
             {m->name, std::string(pack.String(pack.Shader(m->shader).value().name))});

@@ -138,15 +138,15 @@ struct Renderer::State {
     // the shape the shader declares.
     Status DefaultTexture(const std::string& name, vk::ImageShape shape, const vk::Image*& out);
     std::vector<const pack::Pack*> PackList() const;
-    // Records the list's materials (with their shaders) for the usage file.
-    void NoteMaterials(const render::DrawList& list);
+    // Records a frame's materials (with their shaders) for the usage file.
+    void NoteMaterials(const std::vector<const render::MaterialInstance*>& materials);
     // A triangle covering the whole frame in clip space (x, y in -1..3), in the mesh vertex
     // layout: what the deferred light pass draws.
     Status ScreenTriangle(const vk::Buffer*& vertices, const vk::Buffer*& indices);
 };
 
-// Renders a frame with the state's caches (render/forward.cpp): plans it for the settings' path
-// (render/forward_plan.h, render/deferred_plan.h), then draws the plan.
+// Renders a frame with the state's caches (render/render_frame.cpp): plans it along the settings'
+// path (render/render_path.h), then builds and records the plan's frame.
 Status RenderFrame(Renderer::State& state,
                    const Scene& scene,
                    const FrameSettings& settings,
@@ -167,18 +167,6 @@ Status DrawPlan(Renderer::State& state,
                 LinearImage& out,
                 FrameStats& stats,
                 const StepObserver* observer = nullptr);
-
-// Draws a deferred plan (render/deferred.cpp): the G-buffer pass, one light pass per light into
-// the light buffer, then the objects the deferred path cannot draw with the forward path.
-Status DrawDeferred(Renderer::State& state,
-                    SceneResources& resources,
-                    const Scene& scene,
-                    const FrameSettings& settings,
-                    const render::CameraSetup& camera,
-                    const render::DeferredPlan& plan,
-                    LinearImage& out,
-                    FrameStats& stats,
-                    const StepObserver* observer = nullptr);
 
 }  // namespace kiln::runtime
 

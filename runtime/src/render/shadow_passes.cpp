@@ -57,11 +57,14 @@ Status AddShadowPasses(Renderer::State& s,
                        DrawBuilder& builder,
                        const FrameSettings& settings,
                        const render::ShadowPlan& plan,
-                       const std::pair<glm::vec3, glm::vec3>& bounds,
+                       const std::optional<std::pair<glm::vec3, glm::vec3>>& bounds,
                        Frame& frame,
                        ShadowFrame& out) {
     if (plan.lights.empty()) {
         return {};
+    }
+    if (!bounds) {
+        return Error{DiagCode::kRenderFailed, "internal: a shadowed frame without scene bounds"};
     }
     VkFormat format = VK_FORMAT_UNDEFINED;
     if (Status e = s.ShadowMapFormat(format); !e.ok()) {
@@ -75,7 +78,7 @@ Status AddShadowPasses(Renderer::State& s,
         const bool cube = light->type == LightType::kPoint;
         const uint32_t size = cube ? std::max(resolution / 2, 16u) : resolution;
         const render::LightShadow& shadow =
-            out.shadows.emplace_back(render::ShadowOf(*light, bounds, size));
+            out.shadows.emplace_back(render::ShadowOf(*light, *bounds, size));
         FrameTarget map{"shadow map: " + render::LightName(light), format, true, {}, false};
         map.clear.depthStencil = {1.0f, 0};
         map.shadow_map = true;
@@ -139,6 +142,18 @@ Status AddShadowPasses(Renderer::State& s,
         out.sampled.push_back(screen_target);
     }
     return {};
+}
+
+std::vector<render::DrawRequest> WithShadows(std::span<const render::DrawRequest> requests,
+                                             const ShadowFrame& shadows) {
+    std::vector<render::DrawRequest> out(requests.begin(), requests.end());
+    for (render::DrawRequest& r : out) {
+        if (auto it = shadows.receivers.find(r.light); r.light && it != shadows.receivers.end()) {
+            r.shadow_map = int(it->second.target);
+            r.values = it->second.values;
+        }
+    }
+    return out;
 }
 
 }  // namespace kiln::runtime

@@ -1,13 +1,17 @@
-// The shadow passes of a forward frame (render/shadow_plan.h decides them): per shadowed light its
+// The shadow passes of a frame (render/shadow_plan.h decides them): per shadowed light its
 // map drawn by the objects' ShadowCaster passes (a point light's six cube faces, one pass each);
 // with a directional light, the camera's depth drawn by the same passes and one collector pass
-// per directional light into a screen-space shadow texture. They come before the forward pass,
-// which samples what each receiver's light left.
+// per directional light into a screen-space shadow texture. They come before the passes that
+// sample what each receiver's light left: the forward pass, the deferred light pass.
 #ifndef KILN_RUNTIME_RENDER_SHADOW_PASSES_H_
 #define KILN_RUNTIME_RENDER_SHADOW_PASSES_H_
 
 #include <deque>
 #include <map>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
 
 #include "render/draw_builder.h"
 #include "render/frame.h"
@@ -15,7 +19,7 @@
 
 namespace kiln::runtime {
 
-// What the forward pass's receivers of each shadowed light bind: the frame target sampled as
+// What the receivers of each shadowed light bind: the frame target sampled as
 // _ShadowMapTexture and the values their shadow macros read.
 struct ShadowFrame {
     struct Receiver {
@@ -23,7 +27,7 @@ struct ShadowFrame {
         const render::Values* values = nullptr;
     };
     std::map<const Light*, Receiver> receivers;
-    std::vector<uint32_t> sampled;               // the targets the forward pass samples
+    std::vector<uint32_t> sampled;               // the targets the receivers' passes sample
     std::deque<render::LightShadow> shadows;     // the values point into them
     std::deque<render::DrawRequest> requests;    // the passes' draws, as built
     render::Values camera_depth;                 // the camera depth pass's values (no bias)
@@ -31,14 +35,20 @@ struct ShadowFrame {
     std::map<uint32_t, uint32_t> unused_colors;  // size -> target (UnusedColor)
 };
 
-// Appends the shadow passes of `plan` to `frame`; `bounds`: the scene's world bounds.
+// Appends the shadow passes of `plan` (none when no light casts) to `frame`; `bounds`: the
+// scene's world bounds, which a shadowed frame needs.
 Status AddShadowPasses(Renderer::State& s,
                        DrawBuilder& builder,
                        const FrameSettings& settings,
                        const render::ShadowPlan& plan,
-                       const std::pair<glm::vec3, glm::vec3>& bounds,
+                       const std::optional<std::pair<glm::vec3, glm::vec3>>& bounds,
                        Frame& frame,
                        ShadowFrame& out);
+
+// `requests` with each receiver of a shadowed light bound to its light's shadow (the target it
+// samples as _ShadowMapTexture and the values its shadow macros read).
+std::vector<render::DrawRequest> WithShadows(std::span<const render::DrawRequest> requests,
+                                             const ShadowFrame& shadows);
 
 }  // namespace kiln::runtime
 

@@ -152,11 +152,12 @@ Status PlanShadows(const std::vector<const pack::Pack*>& packs,
                    const runtime::Scene& scene,
                    const runtime::FrameSettings& settings,
                    const runtime::ColorPipeline& color,
-                   ForwardPlan& plan,
+                   const DrawList& list,
+                   const std::vector<DrawRequest*>& receivers,
                    ShadowPlan& out,
                    DiagnosticList& warnings) {
     const bool soft = settings.shadows == runtime::Shadows::kSoft;
-    for (const DrawItem& item : plan.list.items) {
+    for (const DrawItem& item : list.items) {
         const MaterialInstance& m = *item.material;
         const ShaderPasses passes = PassesOf(*packs[m.pack], m.shader);
         if (m.transparent || !passes.shadow_caster) {
@@ -176,19 +177,19 @@ Status PlanShadows(const std::vector<const pack::Pack*>& packs,
         return {};
     }
     bool point = false, directional = false;
-    for (DrawRequest& r : plan.draws) {
-        if (!r.light || (!r.additive && r.light->type != LightType::kDirectional)) {
+    for (DrawRequest* r : receivers) {
+        if (!r->light) {
             continue;
         }
-        if (std::find(out.lights.begin(), out.lights.end(), r.light) == out.lights.end()) {
-            out.lights.push_back(r.light);
+        if (std::find(out.lights.begin(), out.lights.end(), r->light) == out.lights.end()) {
+            out.lights.push_back(r->light);
         }
-        r.keywords.emplace_back(ReceiverKeyword(*r.light));
-        if (soft && r.light->type != LightType::kDirectional) {
-            r.keywords.emplace_back(pack::kKeywordShadowsSoft);
+        r->keywords.emplace_back(ReceiverKeyword(*r->light));
+        if (soft && r->light->type != LightType::kDirectional) {
+            r->keywords.emplace_back(pack::kKeywordShadowsSoft);
         }
-        point |= r.light->type == LightType::kPoint;
-        directional |= r.light->type == LightType::kDirectional;
+        point |= r->light->type == LightType::kPoint;
+        directional |= r->light->type == LightType::kDirectional;
     }
     if (!point) {
         out.cube_casters.clear();
@@ -220,6 +221,20 @@ Status PlanShadows(const std::vector<const pack::Pack*>& packs,
                      pack::kShaderScreenSpaceShadows +
                      "', which is in none of the loaded packs (add the shipped materials.kpack, "
                      "built from materials/internal/ScreenSpaceShadows.shader)"};
+}
+
+void ShadowRequests(const ShadowPlan& plan, std::vector<const DrawRequest*>& out) {
+    if (plan.lights.empty()) {
+        return;  // no shadow pass
+    }
+    for (const auto* casters : {&plan.casters, &plan.cube_casters}) {
+        for (const DrawRequest& r : *casters) {
+            out.push_back(&r);
+        }
+    }
+    if (plan.collect) {
+        out.push_back(&*plan.collect);
+    }
 }
 
 }  // namespace kiln::render

@@ -1,4 +1,4 @@
-// Shadows on the forward path (docs/runtime.md, "Shadows"), decided on the CPU: which lights cast,
+// Shadows of either path (docs/runtime.md, "Shadows"), decided on the CPU: which lights cast,
 // the objects' ShadowCaster requests, each light's shadow projection and the values its casters
 // and receivers read. Unity's built-in pipeline is the model:
 //   directional  an orthographic map around the scene, collected into a screen-space texture
@@ -43,16 +43,22 @@ LightShadow ShadowOf(const runtime::Light& light,
 // The keyword a receiver of `light`'s shadow asks for.
 const char* ReceiverKeyword(const runtime::Light& light);
 
-// Adds the shadow keywords to `plan`'s requests lit by a pixel light (settings.shadows on) and
-// plans the casters and the collector. A scene without a ShadowCaster pass casts nothing: a
-// warning, once, and no shadow keywords.
+// Plans the shadows of a frame whose requests `receivers` are lit by a pixel light (each with
+// its light; the path chooses them: the forward path's base passes lit by the main directional
+// light and its additive passes, the deferred path's light passes): adds the shadow keywords to
+// each receiver and plans the casters of `list` and the collector. A scene without a
+// ShadowCaster pass casts nothing: a warning, once, and no shadow keywords.
 Status PlanShadows(const std::vector<const pack::Pack*>& packs,
                    const runtime::Scene& scene,
                    const runtime::FrameSettings& settings,
                    const runtime::ColorPipeline& color,
-                   ForwardPlan& plan,
+                   const DrawList& list,
+                   const std::vector<DrawRequest*>& receivers,
                    ShadowPlan& out,
                    DiagnosticList& warnings);
+
+// The shadow passes' requests of `plan` (the casters, the collector), appended to `out`.
+void ShadowRequests(const ShadowPlan& plan, std::vector<const DrawRequest*>& out);
 
 }  // namespace kiln::render
 

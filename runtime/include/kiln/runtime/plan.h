@@ -1,6 +1,7 @@
-// Planning a frame without a GPU: every variant lookup a forward render of a scene makes, who
-// makes it (material, node, light) and the materials it resolves. It reads the same draw list as
-// Renderer::Render, so what it records is what a render looks up: `kiln render --dry-run` writes
+// Planning a frame without a GPU: every variant lookup a render of a scene makes along the
+// settings' path, who makes it (material, node, light) and the materials it resolves. It walks the
+// same plan as Renderer::Render (the path's requests), so what it records is what a render looks
+// up: `kiln render --dry-run` writes
 // it as a usage file, `kiln compile --scene` strips a pack by it and `--verify-scene` replays it
 // against the stripped pack.
 #ifndef KILN_RUNTIME_PLAN_H_

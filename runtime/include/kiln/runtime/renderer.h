@@ -43,7 +43,24 @@ struct RendererOptions {
 // every such light in one mode (kVertex: four point lights per vertex, the rest in SH).
 enum class LightMode { kAuto, kPixel, kVertex, kSH };
 
-enum class RenderPath { kForward, kDeferred };
+// A render path by name (docs/runtime.md, "Render paths"). Two are built in: forward (the lecture's
+// base and additive passes) and deferred (a G-buffer lit per light in screen space); a program
+// that links the runtime's internals may register more (render/render_path.h). A name no path is
+// registered under is an error when a frame is rendered or planned.
+struct RenderPath {
+    std::string name;
+    static const RenderPath kForward, kDeferred;
+    friend bool operator==(const RenderPath&, const RenderPath&) = default;
+};
+inline const RenderPath RenderPath::kForward{"forward"};
+inline const RenderPath RenderPath::kDeferred{"deferred"};
+
+// The registered paths in registration order (the built-in ones first), each with a summary for
+// a command's help.
+struct RenderPathInfo {
+    std::string name, summary;
+};
+std::vector<RenderPathInfo> RenderPaths();
 
 // The deferred path's G-buffer normals (RT2): the target's format, and the encoding (xyz * 0.5 +
 // 0.5, or octahedral in two channels with the _GBUFFER_NORMALS_OCT keyword). Unity's is RGB10A2
@@ -75,8 +92,8 @@ struct FrameSettings {
     // transform; the deferred path and the frame debugger draw 1 with a warning, as Unity's
     // deferred path does.
     uint32_t msaa = 1;
-    // Off by default, as a scene file says nothing about shadows; the deferred path and the frame
-    // debugger draw without them (a K0010 warning).
+    // Off by default, as a scene file says nothing about shadows; the frame debugger draws
+    // without them (a K0010 warning).
     Shadows shadows = Shadows::kOff;
     uint32_t shadow_resolution = 2048;  // texels a side of each map (a cube's faces: half)
 };
@@ -91,6 +108,9 @@ struct FrameStats {
     uint32_t light_passes = 0;   // deferred path: light passes over the G-buffer
     uint32_t shadow_draws = 0;   // ShadowCaster draws into maps and the camera depth, collectors
     uint32_t grab_copies = 0;    // GrabPass copies of the colour target into a texture
+    // The path's own counts in words, as its summary line shows them ("3 G-buffer draws, 2 light
+    // passes"); empty when it has none.
+    std::string path_counts;
     uint32_t pipelines_created = 0;
     // Device uploads this frame: vertex and index buffers, and material instances resolved. A
     // scene with an id (Scene::id) uploads them on its first frame only.

@@ -1,0 +1,141 @@
+// RenderFrame: one frame along the path FrameSettings::path names (render/render_path.h). What
+// every path shares is here: the settings' checks, the camera, the frame debugger's observer,
+// the settings a capture cannot draw with, the DrawBuilder, and recording the built Frame. What
+// a path draws is the path's: its plan and its frame's targets and passes.
+#include "kiln/runtime/frame_capture.h"
+#include "render/capture.h"
+#include "render/render_path.h"
+#include "render/renderer_state.h"
+
+namespace kiln::runtime {
+namespace {
+
+Status CheckSettings(const Renderer::State& s, const Scene& scene, const FrameSettings& settings) {
+    if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
+        settings.height > 16384) {
+        return Error{DiagCode::kBadScene, "image size must be between 1x1 and 16384x16384"};
+    }
+    if (s.packs.empty()) {
+        return Error{DiagCode::kRenderFailed, "no variant pack loaded"};
+    }
+    if (settings.msaa != 1 && settings.msaa != 2 && settings.msaa != 4 && settings.msaa != 8) {
+        return Error{DiagCode::kBadScene, "msaa must be 1, 2, 4 or 8 samples per pixel (got " +
+                                              std::to_string(settings.msaa) + ")"};
+    }
+    if (scene.instances.empty()) {
+        return Error{DiagCode::kBadScene,
+                     (scene.path.empty() ? std::string("the scene") : scene.path) +
+                         ": nothing to draw (no node of the scene has a mesh)"};
+    }
+    return {};
+}
+
+// The device draws `samples` per pixel into its colour and depth formats.
+Status CheckSamples(const Renderer::State& s, uint32_t samples) {
+    const VkSampleCountFlags supported = s.context.properties.limits.framebufferColorSampleCounts &
+                                         s.context.properties.limits.framebufferDepthSampleCounts;
+    if (supported & VkSampleCountFlags(samples)) {
+        return {};
+    }
+    std::string counts;
+    for (uint32_t n = 1; n <= 64; n *= 2) {
+        counts += supported & n ? (counts.empty() ? "" : ", ") + std::to_string(n) : "";
+    }
+    return Error{DiagCode::kRenderFailed,
+                 "device '" + std::string(s.context.properties.deviceName) + "' cannot render " +
+                     std::to_string(samples) + " samples per pixel (it has " + counts + ")"};
+}
+
+// The frame debugger reads every target back at the frame's size: one sample per pixel (as
+// Unity's), and no shadow maps.
+void AdjustForCapture(FrameSettings& settings, const Scene& scene, DiagnosticList& warnings) {
+    if (settings.msaa > 1) {
+        settings.msaa = 1;
+        warnings.Warning(DiagCode::kRenderWarning, scene.path, kNoPosition,
+                         "MSAA is off for the frame debugger, which reads every target back: "
+                         "drawn with 1 sample per pixel");
+    }
+    if (settings.shadows != Shadows::kOff) {
+        settings.shadows = Shadows::kOff;
+        warnings.Warning(DiagCode::kRenderWarning, scene.path, kNoPosition,
+                         "shadows are off for the frame debugger: drawn without them");
+    }
+}
+
+}  // namespace
+
+Status RenderFrame(Renderer::State& s,
+                   const Scene& scene,
+                   const FrameSettings& settings,
+                   const ColorPipeline& color,
+                   LinearImage& out,
+                   FrameStats& stats,
+                   FrameCapture* capture) {
+    if (Status e = CheckSettings(s, scene, settings); !e.ok()) {
+        return e;
+    }
+    const PathRenderer* path = FindPathRenderer(settings.path.name);
+    if (!path) {
+        return UnknownPath(settings.path.name);
+    }
+    SceneResources& resources = s.ResourcesFor(scene, color);
+    const bool automatic = scene.cameras.empty() || settings.camera == FrameSettings::kCameraAuto;
+    if (!resources.bounds && automatic) {  // the automatic camera frames them
+        resources.bounds = SceneBounds(scene);
+    }
+    render::CameraSetup camera;
+    if (Status e = render::ChooseCamera(scene, settings, camera,
+                                        resources.bounds ? &*resources.bounds : nullptr);
+        !e.ok()) {
+        return e;
+    }
+    stats.camera = camera.name;
+
+    const uint32_t uploads = resources.uploads;
+    const size_t materials = resources.materials.size();
+    StepObserver observer;
+    FrameSettings drawn = settings;
+    if (capture) {
+        *capture = FrameCapture{};
+        capture->scene = scene.path.empty() ? std::string("(scene)") : scene.path;
+        capture->path = std::string(path->Name());
+        observer = CaptureObserver(camera.projection, color, *capture);
+        AdjustForCapture(drawn, scene, stats.warnings);
+    }
+    path->Adjust(drawn, scene, stats.warnings);
+    if (Status e = CheckSamples(s, drawn.msaa); !e.ok()) {
+        return e;
+    }
+    if (drawn.shadows != Shadows::kOff && !resources.bounds) {
+        resources.bounds = SceneBounds(scene);
+    }
+    const PlanInputs in{s.PackList(),        scene,         drawn, camera, color,
+                        resources.materials, stats.warnings};
+    Result<std::unique_ptr<PathPlan>> planned = path->Plan(in);
+    if (!planned) {
+        return planned.error();
+    }
+    const PathPlan& plan = *planned.value();
+    std::vector<const render::MaterialInstance*> used;
+    plan.Materials(used);
+    s.NoteMaterials(used);
+    stats.materials_resolved = uint32_t(resources.materials.size() - materials);
+
+    Frame frame;
+    frame.width = drawn.width;
+    frame.height = drawn.height;
+    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, drawn, camera), stats,
+                        capture != nullptr);
+    BuildInputs build{s, resources, builder, scene, drawn, camera, stats};
+    if (Status e = plan.Build(build, frame); !e.ok()) {
+        return e;
+    }
+    stats.objects = plan.Objects();
+    stats.path_counts = path->Counts(stats);
+    frame.uniforms = builder.TakeUniforms();
+    const Status recorded = RecordFrame(s, frame, out, stats, capture ? &observer : nullptr);
+    stats.buffers_uploaded = resources.uploads - uploads;
+    return recorded;
+}
+
+}  // namespace kiln::runtime
