@@ -65,6 +65,10 @@ RunResult RunKiln(const std::string& args) {
 }
 
 RunResult RunKilnWithin(const std::string& args, int seconds) {
+    return RunProgram(KILN_BINARY, args, seconds);
+}
+
+RunResult RunProgram(const std::string& binary, const std::string& args, int seconds) {
     // ctest runs tests in parallel: each test and call gets its own capture files.
     static int call = 0;
     const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
@@ -76,8 +80,7 @@ RunResult RunKilnWithin(const std::string& args, int seconds) {
     const std::string err_path = stem + ".err";
     const std::string limit =
         seconds > 0 ? "timeout -s KILL " + std::to_string(seconds) + " " : std::string();
-    const std::string cmd =
-        limit + std::string(KILN_BINARY) + " " + args + " >" + out_path + " 2>" + err_path;
+    const std::string cmd = limit + binary + " " + args + " >" + out_path + " 2>" + err_path;
     const int status = std::system(cmd.c_str());
     RunResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -34,6 +34,8 @@ struct RunResult {
 RunResult RunKiln(const std::string& args);
 // The same, killed after `seconds` (exit code 137 then): for inputs that once hung.
 RunResult RunKilnWithin(const std::string& args, int seconds);
+// Another program of the build (`binary`) run the same way.
+RunResult RunProgram(const std::string& binary, const std::string& args, int seconds = 0);
 
 // Parses and checks `text` as "test.shader".
 struct ParseOutcome {
