@@ -56,7 +56,7 @@ runtime::Scene SkyScene() {
 }
 
 // The probe's texel in direction d of mip `mip`.
-glm::dvec3 ProbeTexel(const render::ReflectionProbe& p, uint32_t mip, const glm::dvec3& d) {
+glm::dvec3 ProbeTexel(const runtime::ReflectionProbe& p, uint32_t mip, const glm::dvec3& d) {
     const uint32_t n = std::max(1u, p.size >> mip);
     // Brute force over the faces: the texel whose centre is closest in angle.
     double best = -2;
@@ -65,7 +65,7 @@ glm::dvec3 ProbeTexel(const render::ReflectionProbe& p, uint32_t mip, const glm:
         for (uint32_t y = 0; y < n; ++y) {
             for (uint32_t x = 0; x < n; ++x) {
                 const double a = 2.0 * (x + 0.5) / n - 1.0, b = 2.0 * (y + 0.5) / n - 1.0;
-                const double c = glm::dot(render::CubeTexelDirection(f, a, b), d);
+                const double c = glm::dot(runtime::CubeTexelDirection(f, a, b), d);
                 if (c > best) {
                     best = c;
                     out = p.texels[mip][(size_t(f) * n + y) * n + x];
@@ -81,19 +81,19 @@ glm::dvec3 ProbeTexel(const render::ReflectionProbe& p, uint32_t mip, const glm:
 // side, built from box-filtered copies of a 256 x 128 sky with a kink at the horizon).
 TEST(ReflectionProbe, EachMipIsTheSkyPrefilteredAtItsRoughness) {
     const runtime::Scene scene = SkyScene();
-    const render::ReflectionProbe probe = render::MakeReflectionProbe(scene);
+    const runtime::ReflectionProbe probe = runtime::MakeReflectionProbe(scene);
     ASSERT_EQ(probe.mips, 7u);
     ASSERT_EQ(probe.texels.size(), 7u);
-    EXPECT_NEAR(render::ProbeMipRoughness(0), 0.0, 1e-9);
-    EXPECT_NEAR(render::ProbeMipRoughness(6), 1.0, 1e-9);
+    EXPECT_NEAR(runtime::ProbeMipRoughness(0), 0.0, 1e-9);
+    EXPECT_NEAR(runtime::ProbeMipRoughness(6), 1.0, 1e-9);
     for (uint32_t mip : {0u, 2u, 3u, 4u, 5u}) {
         const uint32_t n = probe.size >> mip;
         // Directions at texel centres of +y, +x, -y and +z, so that no interpolation is needed.
         const double c = 2.0 * (n / 2 + 0.5) / n - 1.0;
         for (const auto& [face, a, b] : {std::tuple{2u, c, c}, std::tuple{0u, c, c},
                                          std::tuple{3u, c, -c}, std::tuple{4u, c, c}}) {
-            const glm::dvec3 d = render::CubeTexelDirection(face, a, b);
-            const double r = render::ProbeMipRoughness(mip);
+            const glm::dvec3 d = runtime::CubeTexelDirection(face, a, b);
+            const double r = runtime::ProbeMipRoughness(mip);
             const glm::dvec3 want = mip == 0 ? SkyRadiance(d) : Prefiltered(d, r);
             const glm::dvec3 got = ProbeTexel(probe, mip, d);
             for (int k = 0; k < 3; ++k) {
@@ -118,7 +118,7 @@ TEST_F(RuntimeTest, AMetalSphereLitOnlyByTheSkyShowsItsPrefilteredRadiance) {
     runtime::Mesh sphere;
     sphere.primitives.push_back(SpherePrimitive(1.0f, 128, 64));
     scene.meshes = {sphere};
-    const double roughness = render::ProbeMipRoughness(3);
+    const double roughness = runtime::ProbeMipRoughness(3);
     ASSERT_NEAR(roughness, 0.34239, 1e-4);
     runtime::SceneMaterial metal;
     metal.name = "metal";
@@ -132,7 +132,7 @@ TEST_F(RuntimeTest, AMetalSphereLitOnlyByTheSkyShowsItsPrefilteredRadiance) {
     cam.yfov = 0.6f;
     cam.znear = 0.1f;
     cam.zfar = 20.0f;
-    const glm::dvec3 axis = render::CubeTexelDirection(4, 0.375, -0.125);  // +z face, texel 5, 3
+    const glm::dvec3 axis = runtime::CubeTexelDirection(4, 0.375, -0.125);  // +z face, texel 5, 3
     cam.world =
         glm::inverse(glm::lookAtRH(glm::vec3(axis) * 4.0f, glm::vec3(0.0f), glm::vec3(0, 1, 0)));
     scene.cameras.push_back(cam);

@@ -237,23 +237,23 @@ TEST(LightRanking, ImportantAndNotImportantLightsAsUnityRanksThem) {
     lights[2].importance = I::kImportant;
     lights[3].importance = I::kNotImportant;
     const glm::vec3 center(0, 1, 0);
-    const render::ObjectLights one = render::LightsFor(lights, nullptr, center, 1.0f, 1);
+    const runtime::ObjectLights one = runtime::LightsFor(lights, nullptr, center, 1.0f, 1);
     EXPECT_EQ(one.pixel, (std::vector<const runtime::Light*>{&lights[2]}));
     EXPECT_EQ(one.vertex, (std::vector<const runtime::Light*>{&lights[0], &lights[1]}));
     EXPECT_EQ(one.sh, (std::vector<const runtime::Light*>{&lights[3]}));  // a spot: no vertex
-    const render::ObjectLights two = render::LightsFor(lights, nullptr, center, 1.0f, 2);
+    const runtime::ObjectLights two = runtime::LightsFor(lights, nullptr, center, 1.0f, 2);
     EXPECT_EQ(two.pixel, (std::vector<const runtime::Light*>{&lights[2], &lights[1]}));
-    const render::ObjectLights none = render::LightsFor(lights, nullptr, center, 1.0f, 0);
+    const runtime::ObjectLights none = runtime::LightsFor(lights, nullptr, center, 1.0f, 0);
     EXPECT_EQ(none.pixel, (std::vector<const runtime::Light*>{&lights[2]}));  // still important
-    const render::ObjectLights pixel =
-        render::LightsFor(lights, nullptr, center, 1.0f, 0, runtime::LightMode::kPixel);
+    const runtime::ObjectLights pixel =
+        runtime::LightsFor(lights, nullptr, center, 1.0f, 0, runtime::LightMode::kPixel);
     EXPECT_EQ(pixel.pixel.size(), 4u);  // the fixed modes ignore the Render Mode
     // A not-important directional light is never the main light.
     std::vector<runtime::Light> suns(2);
     suns[0].type = suns[1].type = T::kDirectional;
     suns[0].intensity = 10;
     suns[0].importance = I::kNotImportant;
-    EXPECT_EQ(render::MainLight(suns), &suns[1]);
+    EXPECT_EQ(runtime::MainLight(suns), &suns[1]);
 }
 
 TEST(LightRanking, TheSidecarSetsRenderModesByLightName) {

@@ -28,12 +28,12 @@ std::vector<float> LinearSky(uint32_t w, uint32_t h, glm::vec3 a, glm::vec3 b) {
     return rgb;
 }
 
-std::array<float, 4> Packed(const render::Values& v, const char* name) {
+std::array<float, 4> Packed(const runtime::Values& v, const char* name) {
     const std::vector<float>& f = v.at(name);
     return {f[0], f[1], f[2], f[3]};
 }
 
-glm::dvec3 ShadeSH9(const render::Values& probe, const glm::dvec3& n) {
+glm::dvec3 ShadeSH9(const runtime::Values& probe, const glm::dvec3& n) {
     const reference::PackedSH packed = {Packed(probe, "unity_SHAr"), Packed(probe, "unity_SHAg"),
                                         Packed(probe, "unity_SHAb"), Packed(probe, "unity_SHBr"),
                                         Packed(probe, "unity_SHBg"), Packed(probe, "unity_SHBb"),
@@ -48,7 +48,7 @@ TEST(Sky, AnImageIsProjectedSoShadeSH9IsItsIrradiance) {
     runtime::Scene scene;
     scene.ambient_mode = runtime::AmbientMode::kSky;
     scene.sky = runtime::MakeSky("linear", 256, 128, LinearSky(256, 128, a, b));
-    const render::Values probe = render::ProbeValues(scene, {}, glm::vec3(0.0f));
+    const runtime::Values probe = runtime::ProbeValues(scene, {}, glm::vec3(0.0f));
     for (const glm::dvec3 n : {glm::dvec3(0, 1, 0), glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0),
                                glm::normalize(glm::dvec3(1, 1, -1))}) {
         const glm::dvec3 want = glm::dvec3(a) + 2.0 / 3.0 * glm::dvec3(b) * n.y;

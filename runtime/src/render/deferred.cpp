@@ -54,10 +54,7 @@ struct LightReach {
     float zmin = 0, zmax = kFarthest;
 };
 
-LightReach ReachOf(const Light& light,
-                   const render::CameraSetup& camera,
-                   uint32_t width,
-                   uint32_t height) {
+LightReach ReachOf(const Light& light, const CameraSetup& camera, uint32_t width, uint32_t height) {
     LightReach out;
     if (light.type == LightType::kDirectional || !(light.range > 0)) {
         return out;  // unlimited: every pixel with geometry
@@ -110,7 +107,7 @@ LightReach ReachOf(const Light& light,
 
 // The deferred frame of `plan` (the passes this file's comment lists), after the shadow passes
 // when a light casts.
-Status BuildDeferredFrame(BuildInputs& in, const render::DeferredPlan& plan, Frame& frame) {
+Status BuildDeferredFrame(BuildInputs& in, const DeferredPlan& plan, Frame& frame) {
     Renderer::State& s = in.state;
     const FrameSettings& settings = in.settings;
     VkFormatProperties depth_props;
@@ -149,7 +146,7 @@ Status BuildDeferredFrame(BuildInputs& in, const render::DeferredPlan& plan, Fra
     gbuffer.colors = {kRT0, kRT1, kRT2, kRT3};
     gbuffer.depth = kDepth;
     builder.BeginPass(frame, gbuffer);
-    for (const render::DrawRequest& r : plan.gbuffer) {
+    for (const DrawRequest& r : plan.gbuffer) {
         if (Status e = builder.Build(r, gbuffer.draws); !e.ok()) {
             return e;
         }
@@ -171,7 +168,7 @@ Status BuildDeferredFrame(BuildInputs& in, const render::DeferredPlan& plan, Fra
                            {pack::kTextureGBuffer1, kRT1},
                            {pack::kTextureGBuffer2, kRT2},
                            {pack::kTextureCameraDepth, kDepth}});
-        for (const render::LightDraw& l : plan.lights) {
+        for (const LightDraw& l : plan.lights) {
             const LightReach reach =
                 ReachOf(*l.request.light, in.camera, frame.width, frame.height);
             if (!reach.visible) {
@@ -184,15 +181,15 @@ Status BuildDeferredFrame(BuildInputs& in, const render::DeferredPlan& plan, Fra
             Draw& d = lighting.draws.back();
             d.scissor = reach.scissor;
             switch (l.role) {
-                case render::LightDraw::Role::kWhole:
+                case LightDraw::Role::kWhole:
                     d.depth = kFarthest;
                     ++stats.light_passes;
                     break;
-                case render::LightDraw::Role::kMask:
+                case LightDraw::Role::kMask:
                     d.depth = reach.zmin;
                     d.joins_next = true;
                     break;
-                case render::LightDraw::Role::kBounded:
+                case LightDraw::Role::kBounded:
                     d.depth = reach.zmax;
                     ++stats.light_passes;
                     break;
@@ -218,19 +215,19 @@ Status BuildDeferredFrame(BuildInputs& in, const render::DeferredPlan& plan, Fra
 
 class DeferredPathPlan final : public PathPlan {
   public:
-    void Requests(std::vector<const render::DrawRequest*>& out) const override {
-        for (const render::DrawRequest& r : plan.gbuffer) {
+    void Requests(std::vector<const DrawRequest*>& out) const override {
+        for (const DrawRequest& r : plan.gbuffer) {
             out.push_back(&r);
         }
-        for (const render::LightDraw& l : plan.lights) {
+        for (const LightDraw& l : plan.lights) {
             out.push_back(&l.request);
         }
-        for (const render::DrawRequest& r : plan.forward) {
+        for (const DrawRequest& r : plan.forward) {
             out.push_back(&r);
         }
-        render::ShadowRequests(plan.shadows, out);
+        ShadowRequests(plan.shadows, out);
     }
-    void Materials(std::vector<const render::MaterialInstance*>& out) const override {
+    void Materials(std::vector<const MaterialInstance*>& out) const override {
         out.insert(out.end(), plan.list.materials.begin(), plan.list.materials.end());
         if (plan.light_material) {
             out.push_back(&*plan.light_material);
@@ -244,7 +241,7 @@ class DeferredPathPlan final : public PathPlan {
         return BuildDeferredFrame(in, plan, frame);
     }
 
-    render::DeferredPlan plan;
+    DeferredPlan plan;
 };
 
 class DeferredPath final : public PathRenderer {
@@ -266,8 +263,8 @@ class DeferredPath final : public PathRenderer {
     }
     Result<std::unique_ptr<PathPlan>> Plan(const PlanInputs& in) const override {
         auto out = std::make_unique<DeferredPathPlan>();
-        if (Status e = render::PlanDeferred(in.packs, in.scene, in.settings, in.camera.position,
-                                            in.color, in.materials, out->plan, in.warnings);
+        if (Status e = PlanDeferred(in.packs, in.scene, in.settings, in.camera.position, in.color,
+                                    in.materials, out->plan, in.warnings);
             !e.ok()) {
             return e.error();
         }

@@ -4,11 +4,8 @@
 #include "kiln/pack/pass_id.h"
 #include "render/shadow_plan.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 namespace {
-
-using runtime::Light;
-using runtime::LightType;
 
 const char* LightKeyword(LightType type) {
     return type == LightType::kPoint  ? pack::kKeywordPoint
@@ -26,7 +23,7 @@ struct LightPasses {
 // The light pass's shader (the first loaded pack's) as a material with its defaults, and its
 // passes, of its first SubShader.
 Status LightMaterial(const std::vector<const pack::Pack*>& packs,
-                     const runtime::ColorPipeline& color,
+                     const ColorPipeline& color,
                      MaterialInstance& out,
                      LightPasses& passes) {
     for (uint32_t p = 0; p < packs.size(); ++p) {
@@ -71,10 +68,10 @@ Status LightMaterial(const std::vector<const pack::Pack*>& packs,
 }  // namespace
 
 Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
-                    const runtime::Scene& scene,
-                    const runtime::FrameSettings& settings,
+                    const Scene& scene,
+                    const FrameSettings& settings,
                     const glm::vec3& camera_position,
-                    const runtime::ColorPipeline& color,
+                    const ColorPipeline& color,
                     MaterialCache& materials,
                     DeferredPlan& out,
                     DiagnosticList& warnings) {
@@ -140,7 +137,7 @@ Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
             ++out.objects;
         }
     }
-    if (settings.shadows == runtime::Shadows::kOff) {
+    if (settings.shadows == Shadows::kOff) {
         return {};
     }
     // The lights' passes receive their shadows (not a ranged light's stencil mask), and so do
@@ -154,4 +151,4 @@ Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
     return PlanShadows(packs, scene, settings, color, out.list, receivers, out.shadows, warnings);
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

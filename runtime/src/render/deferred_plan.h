@@ -15,7 +15,7 @@
 
 #include "render/forward_plan.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 // A draw of the light pass: the whole frame's pixels with geometry (lights without a range), or
 // for a ranged light its stencil mask and then the light bounded by it (render/deferred.cpp).
@@ -40,14 +40,14 @@ struct DeferredPlan {
 };
 
 Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
-                    const runtime::Scene& scene,
-                    const runtime::FrameSettings& settings,
+                    const Scene& scene,
+                    const FrameSettings& settings,
                     const glm::vec3& camera_position,
-                    const runtime::ColorPipeline& color,
+                    const ColorPipeline& color,
                     MaterialCache& materials,
                     DeferredPlan& out,
                     DiagnosticList& warnings);
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_DEFERRED_PLAN_H_

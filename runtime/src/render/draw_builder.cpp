@@ -14,9 +14,6 @@
 namespace kiln::runtime {
 namespace {
 
-using render::MaterialInstance;
-using render::Values;
-
 bool Written(const std::vector<Draw::Write>& writes, uint32_t set, uint32_t binding) {
     return std::any_of(writes.begin(), writes.end(),
                        [&](const Draw::Write& w) { return w.set == set && w.binding == binding; });
@@ -75,7 +72,7 @@ void DrawBuilder::BeginPass(const Frame& frame,
 }
 
 void DrawBuilder::Warn(DiagCode code, std::string message) {
-    render::WarnOnce(stats_.warnings, scene_, code, std::move(message));
+    WarnOnce(stats_.warnings, scene_, code, std::move(message));
 }
 
 Status DrawBuilder::Pipeline(const MaterialInstance& m,
@@ -211,8 +208,7 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
                     }
                 } else {
                     const vk::Image* map = nullptr;
-                    if (Status e =
-                            s_.DefaultShadowMap(render::ShapeOf(res) == vk::ImageShape::kCube, map);
+                    if (Status e = s_.DefaultShadowMap(ShapeOf(res) == vk::ImageShape::kCube, map);
                         !e.ok()) {
                         return e;
                     }
@@ -225,7 +221,7 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
             }
             vk::ImageShape shape = vk::ImageShape::k2D;  // a lone sampler has none
             if (kind != pack::ResourceKind::kSeparateSampler) {
-                const std::optional<vk::ImageShape> declared = render::ShapeOf(res);
+                const std::optional<vk::ImageShape> declared = ShapeOf(res);
                 if (!declared) {
                     return Error{DiagCode::kRenderFailed,
                                  m.name + ": texture '" + name +
@@ -233,10 +229,10 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
                 }
                 shape = *declared;
             }
-            render::BoundTexture t;
+            BoundTexture t;
             auto it = m.textures.find(name);
             if (Status e = resources_.textures->Get(
-                    it == m.textures.end() ? render::UnsetTexture(name) : it->second, shape, t);
+                    it == m.textures.end() ? UnsetTexture(name) : it->second, shape, t);
                 !e.ok()) {
                 return e;
             }
@@ -263,7 +259,7 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
 // The variant's uniform and push-constant blocks, written from `lookup`.
 void DrawBuilder::Uniforms(const pack::Pack& pack,
                            const pack::VariantRec& v,
-                           const render::ValueLookup& lookup,
+                           const ValueLookup& lookup,
                            Draw& d) {
     for (uint32_t module : pack.ModulesOf(v)) {
         const pack::ModuleRec mod = pack.Module(module).value();
@@ -272,7 +268,7 @@ void DrawBuilder::Uniforms(const pack::Pack& pack,
                 pack.Get<pack::BlockRec>(pack::SectionTag::kBlocks, mod.first_block + b).value();
             if (pack::BlockKind(block.kind) == pack::BlockKind::kPushConstant) {
                 d.push.assign(d.pipeline->layout.push_constant_size, 0);
-                render::WriteBlock(pack, block, lookup, d.push.data(), d.push.size());
+                WriteBlock(pack, block, lookup, d.push.data(), d.push.size());
                 continue;
             }
             if (Written(d.writes, block.set, block.binding)) {
@@ -281,7 +277,7 @@ void DrawBuilder::Uniforms(const pack::Pack& pack,
             const VkDeviceSize offset =
                 (uniforms_.size() + alignment_ - 1) / alignment_ * alignment_;
             uniforms_.resize(offset + block.size, 0);
-            render::WriteBlock(pack, block, lookup, uniforms_.data() + offset, block.size);
+            WriteBlock(pack, block, lookup, uniforms_.data() + offset, block.size);
             Draw::Write w{block.set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
             w.offset = offset;
             w.range = block.size;
@@ -290,9 +286,8 @@ void DrawBuilder::Uniforms(const pack::Pack& pack,
     }
 }
 
-Status DrawBuilder::BuildForward(std::span<const render::DrawRequest> requests,
-                                 std::vector<Draw>& draws) {
-    for (const render::DrawRequest& r : requests) {
+Status DrawBuilder::BuildForward(std::span<const DrawRequest> requests, std::vector<Draw>& draws) {
+    for (const DrawRequest& r : requests) {
         if (Status e = Build(r, draws); !e.ok()) {
             return e;
         }
@@ -301,7 +296,7 @@ Status DrawBuilder::BuildForward(std::span<const render::DrawRequest> requests,
     return {};
 }
 
-Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>& draws) {
+Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) {
     const MaterialInstance& m = *request.material;
     const uint32_t pass = request.pass;
     const bool additive = request.additive;
@@ -350,9 +345,9 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
         d.info.light_mode = std::string(pack::LightModeOf(pack, pass));
         d.info.keywords = pack::JoinKeywords(chosen);
         d.info.state = binding.state;
-        d.info.light = request.light ? render::LightName(request.light) : std::string();
+        d.info.light = request.light ? LightName(request.light) : std::string();
         if (request.instance) {
-            d.info.object = render::ObjectLabel(scene_, *request.instance, m);
+            d.info.object = ObjectLabel(scene_, *request.instance, m);
         }
     }
     if (request.instance) {
@@ -372,10 +367,10 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
     }
 
     Values light_values =
-        render::LightValues(request.light, additive ? std::vector<const Light*>{} : request.vertex);
+        LightValues(request.light, additive ? std::vector<const Light*>{} : request.vertex);
     if (!additive && !request.sh.empty()) {
         // Read before the frame's probe: this object's ambient plus its SH lights.
-        light_values.merge(render::ProbeValues(scene_, request.sh, request.center));
+        light_values.merge(ProbeValues(scene_, request.sh, request.center));
         ++stats_.sh_lit;
     }
     glm::mat4 view(1.0f);
@@ -384,8 +379,8 @@ Status DrawBuilder::Build(const render::DrawRequest& request, std::vector<Draw>&
         view = glm::make_mat4(v_it->second.data());
     }
     const Values object =
-        render::ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f), view);
-    const render::ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
+        ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f), view);
+    const ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
         for (const Values* table : std::initializer_list<const Values*>{
                  request.values, &object, &light_values, &frame_values_, &binding.texel_sizes}) {
             if (!table) {

@@ -26,7 +26,7 @@ class DrawBuilder {
     DrawBuilder(Renderer::State& s,
                 SceneResources& resources,
                 const Scene& scene,
-                render::Values frame,
+                Values frame,
                 FrameStats& stats,
                 bool record_info = false);
 
@@ -37,9 +37,9 @@ class DrawBuilder {
                    std::map<std::string, uint32_t, std::less<>> target_textures = {});
 
     // One draw of a request's pass for its primitive, appended to `draws`.
-    Status Build(const render::DrawRequest& request, std::vector<Draw>& draws);
+    Status Build(const DrawRequest& request, std::vector<Draw>& draws);
     // The forward path's requests in order, counted as base and additive passes in the stats.
-    Status BuildForward(std::span<const render::DrawRequest> requests, std::vector<Draw>& draws);
+    Status BuildForward(std::span<const DrawRequest> requests, std::vector<Draw>& draws);
 
     // Every draw's uniform blocks, at the offsets their writes name.
     std::vector<uint8_t> TakeUniforms() { return std::move(uniforms_); }
@@ -50,12 +50,12 @@ class DrawBuilder {
     struct Binding {
         const vk::Pipeline* pipeline = nullptr;
         std::vector<Draw::Write> textures;
-        render::Values texel_sizes;
+        Values texel_sizes;
         std::string state;  // the render state as ShaderLab spells it (when recording info)
     };
 
     void Warn(DiagCode code, std::string message);
-    Status Pipeline(const render::MaterialInstance& m,
+    Status Pipeline(const MaterialInstance& m,
                     uint32_t pass,
                     uint32_t variant,
                     bool additive,
@@ -64,20 +64,20 @@ class DrawBuilder {
                     const std::vector<std::string>& chosen,
                     Binding& out);
     // `shadow_map`: the frame target bound as _ShadowMapTexture (-1: none).
-    Status Textures(const render::MaterialInstance& m,
+    Status Textures(const MaterialInstance& m,
                     const pack::VariantRec& v,
                     int shadow_map,
                     Binding& out);
     Status TargetTexture(uint32_t target, pack::ResourceKind kind, Draw::Write& out);
     void Uniforms(const pack::Pack& pack,
                   const pack::VariantRec& v,
-                  const render::ValueLookup& lookup,
+                  const ValueLookup& lookup,
                   Draw& d);
 
     Renderer::State& s_;
     SceneResources& resources_;
     const Scene& scene_;
-    render::Values frame_values_;
+    Values frame_values_;
     FrameStats& stats_;
     bool record_info_ = false;
     const Frame* frame_ = nullptr;
@@ -86,8 +86,7 @@ class DrawBuilder {
     std::vector<uint8_t> uniforms_;
     VkDeviceSize alignment_ = 256;
     // (material, pass, variant, additive, mirrored, shadow map)
-    std::map<std::tuple<const render::MaterialInstance*, uint32_t, uint32_t, bool, bool, int>,
-             Binding>
+    std::map<std::tuple<const MaterialInstance*, uint32_t, uint32_t, bool, bool, int>, Binding>
         bindings_;
 };
 

@@ -8,11 +8,11 @@
 #include "kiln/pack/engine_names.h"
 #include "render/frame_values.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 Status MaterialCache::For(const std::vector<const pack::Pack*>& packs,
-                          const runtime::Scene& scene,
-                          const runtime::ColorPipeline& color,
+                          const Scene& scene,
+                          const ColorPipeline& color,
                           int index,
                           const MaterialInstance*& out) {
     if (slots_.size() != scene.materials.size() + 1) {
@@ -23,7 +23,7 @@ Status MaterialCache::For(const std::vector<const pack::Pack*>& packs,
         out = slots_[slot];
         return {};
     }
-    runtime::SceneMaterial gltf;
+    SceneMaterial gltf;
     gltf.name = "(default)";
     if (index >= 0) {
         gltf = scene.materials[slot];
@@ -58,7 +58,7 @@ Status MaterialCache::For(const std::vector<const pack::Pack*>& packs,
     return {};
 }
 
-std::pair<glm::vec3, float> WorldSphere(const runtime::Primitive& prim, const glm::mat4& world) {
+std::pair<glm::vec3, float> WorldSphere(const Primitive& prim, const glm::mat4& world) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-lo);
     if (prim.bounds_min.x <= prim.bounds_max.x) {
         for (int corner = 0; corner < 8; ++corner) {
@@ -70,7 +70,7 @@ std::pair<glm::vec3, float> WorldSphere(const runtime::Primitive& prim, const gl
             hi = glm::max(hi, w);
         }
     } else {  // a scene built by hand without ComputeBounds
-        for (const runtime::MeshVertex& v : prim.vertices) {
+        for (const MeshVertex& v : prim.vertices) {
             const glm::vec3 w(world * glm::vec4(glm::make_vec3(v.position), 1));
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);
@@ -82,10 +82,7 @@ std::pair<glm::vec3, float> WorldSphere(const runtime::Primitive& prim, const gl
     return {(lo + hi) * 0.5f, glm::length(hi - lo) * 0.5f};
 }
 
-void WarnOnce(DiagnosticList& warnings,
-              const runtime::Scene& scene,
-              DiagCode code,
-              std::string message) {
+void WarnOnce(DiagnosticList& warnings, const Scene& scene, DiagCode code, std::string message) {
     const auto& all = warnings.all();
     if (std::none_of(all.begin(), all.end(),
                      [&](const Diagnostic& d) { return d.message == message; })) {
@@ -94,18 +91,18 @@ void WarnOnce(DiagnosticList& warnings,
 }
 
 Status BuildDrawList(const std::vector<const pack::Pack*>& packs,
-                     const runtime::Scene& scene,
-                     const runtime::FrameSettings& settings,
+                     const Scene& scene,
+                     const FrameSettings& settings,
                      const glm::vec3& camera_position,
-                     const runtime::ColorPipeline& color,
+                     const ColorPipeline& color,
                      MaterialCache& materials,
                      DrawList& out,
                      DiagnosticList& warnings) {
     out.lights = scene.lights;
     if (out.lights.empty() && settings.default_light) {
-        runtime::Light key;
+        Light key;
         key.name = "default light";
-        key.type = runtime::LightType::kDirectional;
+        key.type = LightType::kDirectional;
         key.direction = glm::normalize(glm::vec3(-0.35f, -0.8f, -0.5f));
         key.intensity = 3.14159265f;  // pi lux: _LightColor0 = 1, Unity's default light
         out.lights.push_back(key);
@@ -116,8 +113,8 @@ Status BuildDrawList(const std::vector<const pack::Pack*>& packs,
     out.main = MainLight(out.lights);
 
     std::vector<DrawItem> transparent;
-    for (const runtime::Instance& inst : scene.instances) {
-        for (const runtime::Primitive& prim : scene.meshes[inst.mesh].primitives) {
+    for (const Instance& inst : scene.instances) {
+        for (const Primitive& prim : scene.meshes[inst.mesh].primitives) {
             const MaterialInstance* m = nullptr;
             if (Status e = materials.For(packs, scene, color, prim.material, m); !e.ok()) {
                 return e;
@@ -137,4 +134,4 @@ Status BuildDrawList(const std::vector<const pack::Pack*>& packs,
     return {};
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

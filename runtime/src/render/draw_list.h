@@ -18,7 +18,7 @@
 #include "kiln/runtime/scene.h"
 #include "render/material_binding.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 // Material instances of one scene, each resolved once: a sidecar .material, else the glTF
 // material on Kiln/StandardMetallic. Kept with the scene's device resources while the renderer
@@ -27,8 +27,8 @@ class MaterialCache {
   public:
     // The instance for glTF material `index` of `scene` (-1: glTF's default material).
     Status For(const std::vector<const pack::Pack*>& packs,
-               const runtime::Scene& scene,
-               const runtime::ColorPipeline& color,
+               const Scene& scene,
+               const ColorPipeline& color,
                int index,
                const MaterialInstance*& out);
     size_t size() const { return store_.size(); }  // instances resolved so far
@@ -39,8 +39,8 @@ class MaterialCache {
 };
 
 struct DrawItem {
-    const runtime::Instance* instance = nullptr;
-    const runtime::Primitive* primitive = nullptr;
+    const Instance* instance = nullptr;
+    const Primitive* primitive = nullptr;
     const MaterialInstance* material = nullptr;
     glm::vec3 center{0.0f};  // of the world-space box around the transformed local bounds
     float radius = 0;        // half the box's diagonal
@@ -52,34 +52,30 @@ struct DrawList {
     DrawList(const DrawList&) = delete;  // items and the main light point into it
     DrawList& operator=(const DrawList&) = delete;
 
-    std::vector<runtime::Light> lights;              // the scene's, or the default light
-    const runtime::Light* main = nullptr;            // the brightest directional light
+    std::vector<Light> lights;                       // the scene's, or the default light
+    const Light* main = nullptr;                     // the brightest directional light
     std::vector<DrawItem> items;                     // opaque in scene order, then transparent
     std::vector<const MaterialInstance*> materials;  // distinct, in first-use order
 };
 
 // World-space box of `primitive` under `world` (the eight corners of its local bounds; the
 // vertices when the bounds are unset): (centre, radius).
-std::pair<glm::vec3, float> WorldSphere(const runtime::Primitive& primitive,
-                                        const glm::mat4& world);
+std::pair<glm::vec3, float> WorldSphere(const Primitive& primitive, const glm::mat4& world);
 
 // Builds the list: `camera_position` orders transparent objects. The default light's warning
 // goes to `warnings` once, against the scene's file.
 Status BuildDrawList(const std::vector<const pack::Pack*>& packs,
-                     const runtime::Scene& scene,
-                     const runtime::FrameSettings& settings,
+                     const Scene& scene,
+                     const FrameSettings& settings,
                      const glm::vec3& camera_position,
-                     const runtime::ColorPipeline& color,
+                     const ColorPipeline& color,
                      MaterialCache& materials,
                      DrawList& out,
                      DiagnosticList& warnings);
 
 // Adds a warning against the scene unless the same message is already there.
-void WarnOnce(DiagnosticList& warnings,
-              const runtime::Scene& scene,
-              DiagCode code,
-              std::string message);
+void WarnOnce(DiagnosticList& warnings, const Scene& scene, DiagCode code, std::string message);
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_DRAW_LIST_H_

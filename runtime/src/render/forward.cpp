@@ -16,7 +16,7 @@ namespace {
 // The forward frame of `plan`: one pass into the colour target and the depth buffer; with MSAA
 // both have settings.msaa samples per pixel and the colour is resolved (averaged) into a
 // single-sample target at the end of the pass, before the display transform reads it.
-Status BuildForwardFrame(BuildInputs& in, const render::ForwardPlan& plan, Frame& frame) {
+Status BuildForwardFrame(BuildInputs& in, const ForwardPlan& plan, Frame& frame) {
     Renderer::State& s = in.state;
     const FrameSettings& settings = in.settings;
     const uint32_t samples = settings.msaa;
@@ -61,13 +61,13 @@ Status BuildForwardFrame(BuildInputs& in, const render::ForwardPlan& plan, Frame
 
 class ForwardPathPlan final : public PathPlan {
   public:
-    void Requests(std::vector<const render::DrawRequest*>& out) const override {
-        for (const render::DrawRequest& r : plan.draws) {
+    void Requests(std::vector<const DrawRequest*>& out) const override {
+        for (const DrawRequest& r : plan.draws) {
             out.push_back(&r);
         }
-        render::ShadowRequests(plan.shadows, out);
+        ShadowRequests(plan.shadows, out);
     }
-    void Materials(std::vector<const render::MaterialInstance*>& out) const override {
+    void Materials(std::vector<const MaterialInstance*>& out) const override {
         out.insert(out.end(), plan.list.materials.begin(), plan.list.materials.end());
         if (plan.shadows.collect) {
             out.push_back(&*plan.shadows.collector);
@@ -78,7 +78,7 @@ class ForwardPathPlan final : public PathPlan {
         return BuildForwardFrame(in, plan, frame);
     }
 
-    render::ForwardPlan plan;
+    ForwardPlan plan;
 };
 
 class ForwardPath final : public PathRenderer {
@@ -90,8 +90,8 @@ class ForwardPath final : public PathRenderer {
     }
     Result<std::unique_ptr<PathPlan>> Plan(const PlanInputs& in) const override {
         auto out = std::make_unique<ForwardPathPlan>();
-        if (Status e = render::PlanForward(in.packs, in.scene, in.settings, in.camera.position,
-                                           in.color, in.materials, out->plan, in.warnings);
+        if (Status e = PlanForward(in.packs, in.scene, in.settings, in.camera.position, in.color,
+                                   in.materials, out->plan, in.warnings);
             !e.ok()) {
             return e.error();
         }
@@ -109,15 +109,15 @@ Status DrawPlan(Renderer::State& s,
                 SceneResources& resources,
                 const Scene& scene,
                 const FrameSettings& settings,
-                const render::CameraSetup& camera,
-                const render::ForwardPlan& plan,
+                const CameraSetup& camera,
+                const ForwardPlan& plan,
                 LinearImage& out,
                 FrameStats& stats,
                 const StepObserver* observer) {
     Frame frame;
     frame.width = settings.width;
     frame.height = settings.height;
-    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, settings, camera), stats,
+    DrawBuilder builder(s, resources, scene, FrameValues(scene, settings, camera), stats,
                         observer != nullptr);
     BuildInputs in{s, resources, builder, scene, settings, camera, stats};
     if (Status e = BuildForwardFrame(in, plan, frame); !e.ok()) {

@@ -7,11 +7,8 @@
 #include "render/frame_values.h"
 #include "render/shadow_plan.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 namespace {
-
-using runtime::Light;
-using runtime::LightType;
 
 const char* TypeName(LightType type) {
     return type == LightType::kPoint ? "point" : type == LightType::kSpot ? "spot" : "directional";
@@ -90,8 +87,8 @@ std::string LightName(const Light* light) {
                  : std::string("no light");
 }
 
-std::string ObjectLabel(const runtime::Scene& scene,
-                        const runtime::Instance& instance,
+std::string ObjectLabel(const Scene& scene,
+                        const Instance& instance,
                         const MaterialInstance& material) {
     const std::string& mesh = scene.meshes[instance.mesh].name;
     return material.name + " on " +
@@ -100,7 +97,7 @@ std::string ObjectLabel(const runtime::Scene& scene,
                                    : std::string("an unnamed node"));
 }
 
-std::string Requester(const runtime::Scene& scene, const DrawItem& item) {
+std::string Requester(const Scene& scene, const DrawItem& item) {
     return ObjectLabel(scene, *item.instance, *item.material) + ": ";
 }
 
@@ -115,8 +112,8 @@ std::vector<DrawRequest*> ForwardReceivers(std::vector<DrawRequest>& requests) {
 }
 
 bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
-                        const runtime::Scene& scene,
-                        const runtime::FrameSettings& settings,
+                        const Scene& scene,
+                        const FrameSettings& settings,
                         const DrawList& list,
                         const DrawItem& item,
                         std::vector<DrawRequest>& out,
@@ -171,10 +168,10 @@ bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
 }
 
 Status PlanForward(const std::vector<const pack::Pack*>& packs,
-                   const runtime::Scene& scene,
-                   const runtime::FrameSettings& settings,
+                   const Scene& scene,
+                   const FrameSettings& settings,
                    const glm::vec3& camera_position,
-                   const runtime::ColorPipeline& color,
+                   const ColorPipeline& color,
                    MaterialCache& materials,
                    ForwardPlan& out,
                    DiagnosticList& warnings) {
@@ -188,11 +185,11 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
             ++out.objects;
         }
     }
-    if (settings.shadows == runtime::Shadows::kOff) {
+    if (settings.shadows == Shadows::kOff) {
         return {};
     }
     return PlanShadows(packs, scene, settings, color, out.list, ForwardReceivers(out.draws),
                        out.shadows, warnings);
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

@@ -23,7 +23,7 @@
 #include "render/frame_values.h"
 #include "render/material_binding.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 // The passes of a shader the paths draw: of its first SubShader, every ForwardBase, Always or
 // untagged pass in order (GrabPasses among them), the first ForwardAdd pass, and the first
@@ -37,17 +37,17 @@ struct ShaderPasses {
 ShaderPasses PassesOf(const pack::Pack& pack, uint32_t shader);
 
 struct DrawRequest {
-    const runtime::Instance* instance = nullptr;
-    const runtime::Primitive* primitive = nullptr;
+    const Instance* instance = nullptr;
+    const Primitive* primitive = nullptr;
     const MaterialInstance* material = nullptr;
     uint32_t pass = 0;
     bool additive = false;
-    const runtime::Light* light = nullptr;      // the pass's pixel light (base: the main one)
-    std::vector<const runtime::Light*> vertex;  // base passes: up to four vertex lights
-    std::vector<const runtime::Light*> sh;      // base passes: lights in the object's SH
-    std::vector<std::string> keywords;          // what the draw asks the selector for
-    std::string reason;                         // "material on node 'n': point light 'l'"
-    glm::vec3 center{0.0f};                     // the object's, where SH lights are projected
+    const Light* light = nullptr;       // the pass's pixel light (base: the main one)
+    std::vector<const Light*> vertex;   // base passes: up to four vertex lights
+    std::vector<const Light*> sh;       // base passes: lights in the object's SH
+    std::vector<std::string> keywords;  // what the draw asks the selector for
+    std::string reason;                 // "material on node 'n': point light 'l'"
+    glm::vec3 center{0.0f};             // the object's, where SH lights are projected
     // Set when the frame is built: values read before the frame's (a shadow pass's camera, the
     // shadow a receiver samples), the frame target bound as _ShadowMapTexture (-1: none), and
     // whether the pass's view mirrors the winding (a cube face).
@@ -62,7 +62,7 @@ struct DrawRequest {
 
 // The shadows of a frame (render/shadow_plan.h).
 struct ShadowPlan {
-    std::vector<const runtime::Light*> lights;  // shadowed, in first-use order
+    std::vector<const Light*> lights;  // shadowed, in first-use order
     // The ShadowCaster pass of each opaque object that has one, with SHADOWS_DEPTH (directional
     // and spot maps, the camera's depth) and with SHADOWS_CUBE (point maps).
     std::vector<DrawRequest> casters, cube_casters;
@@ -86,8 +86,8 @@ struct ForwardPlan {
 // additive pass per pixel light. False (and a warning, once) when its shader has no pass the
 // forward path draws.
 bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
-                        const runtime::Scene& scene,
-                        const runtime::FrameSettings& settings,
+                        const Scene& scene,
+                        const FrameSettings& settings,
                         const DrawList& list,
                         const DrawItem& item,
                         std::vector<DrawRequest>& out,
@@ -98,27 +98,27 @@ bool AddForwardRequests(const std::vector<const pack::Pack*>& packs,
 std::vector<DrawRequest*> ForwardReceivers(std::vector<DrawRequest>& requests);
 
 // "material on node 'n'" (or on mesh 'm', or on an unnamed node): who a draw is for.
-std::string ObjectLabel(const runtime::Scene& scene,
-                        const runtime::Instance& instance,
+std::string ObjectLabel(const Scene& scene,
+                        const Instance& instance,
                         const MaterialInstance& material);
 // ObjectLabel + ": ", what a request's reason starts with.
-std::string Requester(const runtime::Scene& scene, const DrawItem& item);
+std::string Requester(const Scene& scene, const DrawItem& item);
 
 // "point light 'l'", or "no light".
-std::string LightName(const runtime::Light* light);
+std::string LightName(const Light* light);
 
 // Plans a frame: the draw list (materials from `materials`), then its requests. Warnings (the
 // default light, a shader the path cannot draw) go to `warnings` once each, against the scene's
 // file.
 Status PlanForward(const std::vector<const pack::Pack*>& packs,
-                   const runtime::Scene& scene,
-                   const runtime::FrameSettings& settings,
+                   const Scene& scene,
+                   const FrameSettings& settings,
                    const glm::vec3& camera_position,
-                   const runtime::ColorPipeline& color,
+                   const ColorPipeline& color,
                    MaterialCache& materials,
                    ForwardPlan& out,
                    DiagnosticList& warnings);
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_FORWARD_PLAN_H_

@@ -10,7 +10,7 @@
 #include "kiln/reference/attenuation.h"
 #include "kiln/reference/sh.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 namespace {
 
 std::vector<float> Vec(const glm::vec4& v) {
@@ -81,12 +81,12 @@ float Luminance(const glm::vec3& c) {
     return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
 }
 
-Status ChooseCamera(const runtime::Scene& scene,
-                    const runtime::FrameSettings& settings,
+Status ChooseCamera(const Scene& scene,
+                    const FrameSettings& settings,
                     CameraSetup& out,
                     const std::pair<glm::vec3, glm::vec3>* bounds) {
     const float aspect = float(settings.width) / float(settings.height);
-    using Settings = runtime::FrameSettings;
+    using Settings = FrameSettings;
     if (settings.camera < Settings::kCameraAuto ||
         (settings.camera >= 0 && size_t(settings.camera) >= scene.cameras.size())) {
         return Error{DiagCode::kBadScene, "camera " + std::to_string(settings.camera) +
@@ -95,7 +95,7 @@ Status ChooseCamera(const runtime::Scene& scene,
                                               "; use an index from 0, or the automatic camera)"};
     }
     if (!scene.cameras.empty() && settings.camera != Settings::kCameraAuto) {
-        const runtime::Camera& c = scene.cameras[size_t(std::max(settings.camera, 0))];
+        const Camera& c = scene.cameras[size_t(std::max(settings.camera, 0))];
         out.name =
             c.name.empty() ? "camera " + std::to_string(std::max(settings.camera, 0)) : c.name;
         out.view = glm::inverse(c.world);
@@ -113,7 +113,7 @@ Status ChooseCamera(const runtime::Scene& scene,
         return {};
     }
     // No camera: frame the scene's bounds from the front, above and to the right.
-    const auto [lo, hi] = bounds ? *bounds : runtime::SceneBounds(scene);
+    const auto [lo, hi] = bounds ? *bounds : SceneBounds(scene);
     const glm::vec3 center = (lo + hi) * 0.5f;
     const float radius = std::max(glm::length(hi - lo) * 0.5f, 1e-3f);
     const float yfov = 0.8f;
@@ -128,9 +128,7 @@ Status ChooseCamera(const runtime::Scene& scene,
     return {};
 }
 
-Values FrameValues(const runtime::Scene& scene,
-                   const runtime::FrameSettings& settings,
-                   const CameraSetup& camera) {
+Values FrameValues(const Scene& scene, const FrameSettings& settings, const CameraSetup& camera) {
     const float t = settings.time;
     const float w = float(settings.width), h = float(settings.height);
     Values v;
@@ -161,8 +159,8 @@ Values FrameValues(const runtime::Scene& scene,
     // UNITY_LIGHTMODEL_AMBIENT is glstate_lightmodel_ambient * 2, the sky colour (Unity's
     // RenderSettings.ambientLight); unity_IndirectSpecColor is the mean radiance over the sphere.
     // A sky: its mean radiance over the upper cap, the horizon band and the lower cap.
-    const bool trilight = scene.ambient_mode == runtime::AmbientMode::kTrilight;
-    const runtime::Sky* image = SkyOf(scene);
+    const bool trilight = scene.ambient_mode == AmbientMode::kTrilight;
+    const Sky* image = SkyOf(scene);
     const glm::vec4 sky(image ? image->up : scene.ambient, 1);
     v["unity_AmbientSky"] = Vec(sky);
     v["unity_AmbientEquator"] = Vec(image      ? glm::vec4(image->horizon, 1)
@@ -186,39 +184,39 @@ Values FrameValues(const runtime::Scene& scene,
     return v;
 }
 
-const runtime::Sky* SkyOf(const runtime::Scene& scene) {
-    return scene.ambient_mode == runtime::AmbientMode::kSky ? scene.sky.get() : nullptr;
+const Sky* SkyOf(const Scene& scene) {
+    return scene.ambient_mode == AmbientMode::kSky ? scene.sky.get() : nullptr;
 }
 
-glm::vec3 MeanAmbient(const runtime::Scene& scene) {
-    if (const runtime::Sky* sky = SkyOf(scene)) {
+glm::vec3 MeanAmbient(const Scene& scene) {
+    if (const Sky* sky = SkyOf(scene)) {
         return sky->mean;
     }
-    if (scene.ambient_mode != runtime::AmbientMode::kTrilight) {
+    if (scene.ambient_mode != AmbientMode::kTrilight) {
         return scene.ambient;
     }
     // The mean of the trilight gradient over the sphere: y is uniform on [-1, 1].
     return scene.ambient_equator * 0.5f + (scene.ambient + scene.ambient_ground) * 0.25f;
 }
 
-std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const glm::vec3& point) {
+std::pair<glm::vec3, glm::vec3> IlluminanceAt(const Light& light, const glm::vec3& point) {
     const glm::vec3 lux = light.color * light.intensity;
-    if (light.type == runtime::LightType::kDirectional) {
+    if (light.type == LightType::kDirectional) {
         return {lux, -light.direction};
     }
     const glm::vec3 to_light = light.position - point;
     const float d = glm::length(to_light);
     const glm::vec3 l = d > 0 ? to_light / d : glm::vec3(0, 1, 0);
     double falloff = reference::DistanceAttenuation(d, light.range);
-    if (light.type == runtime::LightType::kSpot) {
+    if (light.type == LightType::kSpot) {
         falloff *=
             reference::SpotCone(glm::dot(-l, light.direction), light.outer_cone, light.inner_cone);
     }
     return {lux * float(falloff), l};
 }
 
-Values ProbeValues(const runtime::Scene& scene,
-                   const std::vector<const runtime::Light*>& lights,
+Values ProbeValues(const Scene& scene,
+                   const std::vector<const Light*>& lights,
                    const glm::vec3& center) {
     // A constant sky of radiance `ambient`: ShadeSH9 then returns E / pi = ambient (a trilight
     // gradient: its projection, reference::AddTrilight). A light of
@@ -227,15 +225,15 @@ Values ProbeValues(const runtime::Scene& scene,
     // term would (the order-2 approximation of the clamped cosine, Ramamoorthi and Hanrahan
     // 2001).
     reference::SH9 sh;
-    if (const runtime::Sky* sky = SkyOf(scene)) {
+    if (const Sky* sky = SkyOf(scene)) {
         sh.L = sky->sh;  // projected once, when the sky was made
-    } else if (scene.ambient_mode == runtime::AmbientMode::kTrilight) {
+    } else if (scene.ambient_mode == AmbientMode::kTrilight) {
         reference::AddTrilight(sh, glm::dvec3(scene.ambient), glm::dvec3(scene.ambient_equator),
                                glm::dvec3(scene.ambient_ground));
     } else {
         reference::AddConstantRadiance(sh, glm::dvec3(scene.ambient));
     }
-    for (const runtime::Light* light : lights) {
+    for (const Light* light : lights) {
         const auto [lux, l] = IlluminanceAt(*light, center);
         reference::AddDirectionalLight(sh, glm::dvec3(l), glm::dvec3(lux));
     }
@@ -249,12 +247,12 @@ Values ProbeValues(const runtime::Scene& scene,
     return v;
 }
 
-Values LightValues(const runtime::Light* light, const std::vector<const runtime::Light*>& vertex) {
+Values LightValues(const Light* light, const std::vector<const Light*>& vertex) {
     Values v;
     if (light) {
-        const glm::vec3 c = runtime::ShaderLightColor(*light);
+        const glm::vec3 c = ShaderLightColor(*light);
         v[pack::kGlobalLightColor0] = {c.r, c.g, c.b, 1};
-        if (light->type == runtime::LightType::kDirectional) {
+        if (light->type == LightType::kDirectional) {
             const glm::vec3 d = -light->direction;  // towards the light
             v[pack::kGlobalWorldSpaceLightPos0] = {d.x, d.y, d.z, 0};
         } else {
@@ -282,12 +280,12 @@ Values LightValues(const runtime::Light* light, const std::vector<const runtime:
     v["unity_ProbesOcclusion"] = {1, 1, 1, 1};
     std::vector<float> x(4, 0), y(4, 0), z(4, 0), atten(4, 0), colors(32, 0);
     for (size_t i = 0; i < vertex.size() && i < 4; ++i) {
-        const runtime::Light& l = *vertex[i];
+        const Light& l = *vertex[i];
         x[i] = l.position.x;
         y[i] = l.position.y;
         z[i] = l.position.z;
         atten[i] = l.range > 0 ? 1 / (l.range * l.range) : 0;
-        const glm::vec3 c = runtime::ShaderLightColor(l);
+        const glm::vec3 c = ShaderLightColor(l);
         colors[i * 4 + 0] = c.r;
         colors[i * 4 + 1] = c.g;
         colors[i * 4 + 2] = c.b;
@@ -310,11 +308,10 @@ Values ObjectValues(const glm::mat4& world, const glm::mat4& view) {
             {pack::kGlobalMatrixTransposeModelView0, Mat(glm::transpose(view * world))}};
 }
 
-const runtime::Light* MainLight(const std::vector<runtime::Light>& lights) {
-    const runtime::Light* main = nullptr;
-    for (const runtime::Light& l : lights) {
-        if (l.type == runtime::LightType::kDirectional &&
-            l.importance != runtime::LightImportance::kNotImportant &&
+const Light* MainLight(const std::vector<Light>& lights) {
+    const Light* main = nullptr;
+    for (const Light& l : lights) {
+        if (l.type == LightType::kDirectional && l.importance != LightImportance::kNotImportant &&
             (!main ||
              l.intensity * Luminance(l.color) > main->intensity * Luminance(main->color))) {
             main = &l;
@@ -323,26 +320,26 @@ const runtime::Light* MainLight(const std::vector<runtime::Light>& lights) {
     return main;
 }
 
-ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
-                       const runtime::Light* main,
+ObjectLights LightsFor(const std::vector<Light>& lights,
+                       const Light* main,
                        const glm::vec3& center,
                        float radius,
                        uint32_t pixel_lights,
-                       runtime::LightMode mode) {
+                       LightMode mode) {
     ObjectLights out;
     out.main = main;
     struct Ranked {
         bool directional;
         float importance;
-        const runtime::Light* light;
+        const Light* light;
     };
     std::vector<Ranked> ranked;
-    for (const runtime::Light& l : lights) {
+    for (const Light& l : lights) {
         if (&l == main) {
             continue;
         }
         const float power = l.intensity * Luminance(l.color);
-        if (l.type == runtime::LightType::kDirectional) {
+        if (l.type == LightType::kDirectional) {
             ranked.push_back({true, power, &l});
             continue;
         }
@@ -355,14 +352,12 @@ ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
     std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
         return a.directional != b.directional ? a.directional : a.importance > b.importance;
     });
-    using runtime::LightMode;
     const size_t pixel = mode == LightMode::kAuto    ? pixel_lights
                          : mode == LightMode::kPixel ? ranked.size()
                                                      : 0;
     const bool vertex = mode == LightMode::kAuto || mode == LightMode::kVertex;
     // Unity's Render Mode (auto mode only): important lights are per pixel whatever the count,
     // not-important ones never; auto lights fill what is left of the count.
-    using runtime::LightImportance;
     const bool by_importance = mode == LightMode::kAuto;
     if (by_importance) {
         for (const Ranked& r : ranked) {
@@ -378,7 +373,7 @@ ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
         }
         if (li == LightImportance::kAuto && out.pixel.size() < pixel) {
             out.pixel.push_back(light);
-        } else if (vertex && light->type == runtime::LightType::kPoint && out.vertex.size() < 4) {
+        } else if (vertex && light->type == LightType::kPoint && out.vertex.size() < 4) {
             out.vertex.push_back(light);
         } else {
             out.sh.push_back(light);
@@ -387,4 +382,4 @@ ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
     return out;
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

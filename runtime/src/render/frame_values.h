@@ -14,7 +14,7 @@
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 using Values = std::map<std::string, std::vector<float>, std::less<>>;
 
@@ -27,18 +27,16 @@ struct CameraSetup {
 
 // `bounds`: the scene's world bounds when the caller keeps them (runtime::SceneBounds otherwise,
 // computed only when the automatic camera needs them).
-Status ChooseCamera(const runtime::Scene& scene,
-                    const runtime::FrameSettings& settings,
+Status ChooseCamera(const Scene& scene,
+                    const FrameSettings& settings,
                     CameraSetup& out,
                     const std::pair<glm::vec3, glm::vec3>* bounds = nullptr);
 
 // UnityPerCamera, UnityPerFrame and UnityProbes (the scene's ambient as constant radiance).
-Values FrameValues(const runtime::Scene& scene,
-                   const runtime::FrameSettings& settings,
-                   const CameraSetup& camera);
+Values FrameValues(const Scene& scene, const FrameSettings& settings, const CameraSetup& camera);
 
 // UnityLighting for one pixel light (nullptr: none, colour 0) and up to four vertex lights.
-Values LightValues(const runtime::Light* light, const std::vector<const runtime::Light*>& vertex);
+Values LightValues(const Light* light, const std::vector<const Light*>& vertex);
 
 // UnityPerDraw, and Unity 2018's transposed model-view matrix (`view`: the camera's).
 Values ObjectValues(const glm::mat4& world, const glm::mat4& view);
@@ -48,20 +46,20 @@ Values ObjectValues(const glm::mat4& world, const glm::mat4& view);
 // `lights` projected as a distant light from its direction at the centre, with its illuminance
 // there (distance attenuation and spot cone as the pixel path computes them), as Unity projects the
 // lights it does not draw per pixel or per vertex.
-Values ProbeValues(const runtime::Scene& scene,
-                   const std::vector<const runtime::Light*>& lights,
+Values ProbeValues(const Scene& scene,
+                   const std::vector<const Light*>& lights,
                    const glm::vec3& center);
 
 // The scene's ambient radiance averaged over the sphere (unity_IndirectSpecColor).
-glm::vec3 MeanAmbient(const runtime::Scene& scene);
+glm::vec3 MeanAmbient(const Scene& scene);
 
 // The scene's sky when its ambient is one (AmbientMode::kSky with a sky set), else null: a kSky
 // scene without a sky falls back to the flat `ambient`.
-const runtime::Sky* SkyOf(const runtime::Scene& scene);
+const Sky* SkyOf(const Scene& scene);
 
 // The light's illuminance (lux, times its colour) at `point`, on a surface facing it, and the unit
 // direction from `point` towards it.
-std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const glm::vec3& point);
+std::pair<glm::vec3, glm::vec3> IlluminanceAt(const Light& light, const glm::vec3& point);
 
 // The lights of one object: the main directional light (brightest directional) for the base
 // pass, then the rest by importance (directional lights, then point and spot lights by
@@ -69,21 +67,21 @@ std::pair<glm::vec3, glm::vec3> IlluminanceAt(const runtime::Light& light, const
 // The first `pixel_lights` are per-pixel, up to four point lights after them per-vertex, and
 // all the others go into the object's spherical harmonics, as Unity's forward path does.
 struct ObjectLights {
-    const runtime::Light* main = nullptr;
-    std::vector<const runtime::Light*> pixel;   // additive passes, at most pixel_lights
-    std::vector<const runtime::Light*> vertex;  // point lights beyond those, at most 4
-    std::vector<const runtime::Light*> sh;      // the rest
+    const Light* main = nullptr;
+    std::vector<const Light*> pixel;   // additive passes, at most pixel_lights
+    std::vector<const Light*> vertex;  // point lights beyond those, at most 4
+    std::vector<const Light*> sh;      // the rest
 };
-const runtime::Light* MainLight(const std::vector<runtime::Light>& lights);
-ObjectLights LightsFor(const std::vector<runtime::Light>& lights,
-                       const runtime::Light* main,
+const Light* MainLight(const std::vector<Light>& lights);
+ObjectLights LightsFor(const std::vector<Light>& lights,
+                       const Light* main,
                        const glm::vec3& center,
                        float radius,
                        uint32_t pixel_lights,
-                       runtime::LightMode mode = runtime::LightMode::kAuto);
+                       LightMode mode = LightMode::kAuto);
 
 float Luminance(const glm::vec3& c);
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_FRAME_VALUES_H_

@@ -12,7 +12,7 @@ Status BuildForwardPasses(DrawBuilder& builder,
                           Frame& frame,
                           const FramePass& first,
                           uint32_t source,
-                          std::span<const render::DrawRequest> requests,
+                          std::span<const DrawRequest> requests,
                           FrameStats& stats) {
     std::map<std::string, uint32_t, std::less<>> grabbed;  // texture -> frame target
     size_t current = frame.passes.size();

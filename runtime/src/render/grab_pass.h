@@ -24,7 +24,7 @@ Status BuildForwardPasses(DrawBuilder& builder,
                           Frame& frame,
                           const FramePass& first,
                           uint32_t source,
-                          std::span<const render::DrawRequest> requests,
+                          std::span<const DrawRequest> requests,
                           FrameStats& stats);
 
 }  // namespace kiln::runtime

@@ -9,7 +9,7 @@
 #include "kiln/pack/names.h"
 #include "scene/gltf_input.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 namespace {
 
 using pack::PropertyType;
@@ -43,7 +43,7 @@ std::optional<pack::PropertyRec> FindProperty(const pack::Pack& pack,
 // sRGB-authored values become linear: Colors always, Floats/Vectors/Ranges marked [Gamma].
 void Decode(const pack::Pack& pack,
             const pack::PropertyRec& p,
-            const runtime::ColorPipeline& color,
+            const ColorPipeline& color,
             std::vector<float>& v) {
     const auto type = PropertyType(p.type);
     const bool gamma = HasAttribute(pack, p, "Gamma");
@@ -62,7 +62,7 @@ void Decode(const pack::Pack& pack,
 void InstanceFromDefaults(const pack::Pack& pack,
                           uint32_t pack_index,
                           uint32_t shader,
-                          const runtime::ColorPipeline& color,
+                          const ColorPipeline& color,
                           MaterialInstance& out) {
     MaterialInstance m;
     m.pack = pack_index;
@@ -96,7 +96,7 @@ void InstanceFromDefaults(const pack::Pack& pack,
 
 Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
                                 const std::string& path,
-                                const runtime::ColorPipeline& color,
+                                const ColorPipeline& color,
                                 MaterialInstance& out) {
     Result<std::string> text = base::ReadRegularFile(path, material::kMaxFileBytes);
     if (!text) {
@@ -182,11 +182,10 @@ Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
                                               pack::DidYouMean(mat.shader, shaders)};
 }
 
-void ApplyGltfMaterial(const runtime::SceneMaterial& g, MaterialInstance& m) {
+void ApplyGltfMaterial(const SceneMaterial& g, MaterialInstance& m) {
     m.name = "glTF material '" + g.name + "'";
     auto set = [&](const char* name, std::vector<float> v) { m.values[name] = std::move(v); };
-    auto texture = [&](const char* name, const runtime::TextureRef& ref, bool srgb,
-                       const char* keyword) {
+    auto texture = [&](const char* name, const TextureRef& ref, bool srgb, const char* keyword) {
         if (ref.image < 0) {
             return false;
         }
@@ -209,10 +208,10 @@ void ApplyGltfMaterial(const runtime::SceneMaterial& g, MaterialInstance& m) {
     };
     set("_Color", {g.base_color.r, g.base_color.g, g.base_color.b, g.base_color.a});
     texture("_MainTex", g.base_color_texture, true, nullptr);
-    if (g.alpha_mode == runtime::AlphaMode::kMask) {
+    if (g.alpha_mode == AlphaMode::kMask) {
         m.keywords.emplace_back("_ALPHATEST_ON");
         set("_Cutoff", {g.alpha_cutoff});
-    } else if (g.alpha_mode == runtime::AlphaMode::kBlend) {
+    } else if (g.alpha_mode == AlphaMode::kBlend) {
         m.transparent = true;
         m.overrides.push_back({"Blend", {"SrcAlpha", "OneMinusSrcAlpha"}});
         m.overrides.push_back({"ZWrite", {"Off"}});
@@ -270,4 +269,4 @@ void WriteBlock(const pack::Pack& pack,
     }
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

@@ -16,7 +16,7 @@
 #include "kiln/runtime/scene.h"
 #include "vk/pipeline.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 struct TextureBinding {
     // kAmbient: the scene's ambient radiance as the environment (the reflection-probe cube
@@ -27,8 +27,7 @@ struct TextureBinding {
     int image = -1;                      // kSceneImage
     std::string file;                    // kFile
     bool srgb = true;
-    runtime::TextureWrap wrap_u = runtime::TextureWrap::kRepeat,
-                         wrap_v = runtime::TextureWrap::kRepeat;
+    TextureWrap wrap_u = TextureWrap::kRepeat, wrap_v = TextureWrap::kRepeat;
     bool nearest = false;
 };
 
@@ -48,21 +47,21 @@ struct MaterialInstance {
 void InstanceFromDefaults(const pack::Pack& pack,
                           uint32_t pack_index,
                           uint32_t shader,
-                          const runtime::ColorPipeline& color,
+                          const ColorPipeline& color,
                           MaterialInstance& out);
 
 // Reads, validates (against the pack) and applies a .material file on top of the shader's
 // defaults; the shader comes from the file. Errors carry file:line:col.
 Status InstanceFromMaterialFile(const std::vector<const pack::Pack*>& packs,
                                 const std::string& path,
-                                const runtime::ColorPipeline& color,
+                                const ColorPipeline& color,
                                 MaterialInstance& out);
 
 // A glTF metallic-roughness material mapped onto Kiln/StandardMetallic, or a KHR_materials_unlit
 // one onto Kiln/Unlit (factors are linear in glTF and written as they are; maps switch on their
 // shader_feature keywords; each map's KHR_texture_transform and UV set go to <map>_ST and
 // <map>_UV, materials/GltfTexture.cginc).
-void ApplyGltfMaterial(const runtime::SceneMaterial& m, MaterialInstance& inout);
+void ApplyGltfMaterial(const SceneMaterial& m, MaterialInstance& inout);
 
 // Writes a uniform or push-constant block: each member whose name `lookup` knows gets that
 // value (clipped to the member's size; floats converted for int members); others stay zero.
@@ -73,6 +72,6 @@ void WriteBlock(const pack::Pack& pack,
                 uint8_t* dst,
                 size_t dst_size);
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_MATERIAL_BINDING_H_

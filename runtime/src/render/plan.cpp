@@ -15,22 +15,22 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     if (packs.empty()) {
         return Error{DiagCode::kRenderFailed, "no variant pack loaded"};
     }
-    render::CameraSetup camera;
-    if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok()) {
+    CameraSetup camera;
+    if (Status e = ChooseCamera(scene, settings, camera); !e.ok()) {
         return e.error();
     }
     const PathRenderer* path = FindPathRenderer(settings.path.name);
     if (!path) {
         return UnknownPath(settings.path.name);
     }
-    render::MaterialCache materials;
+    MaterialCache materials;
     const PlanInputs in{packs, scene, settings, camera, color, materials, warnings};
     Result<std::unique_ptr<PathPlan>> planned = path->Plan(in);
     if (!planned) {
         return planned.error();
     }
     const PathPlan& plan = *planned.value();
-    std::vector<const render::DrawRequest*> requests;
+    std::vector<const DrawRequest*> requests;
     plan.Requests(requests);
     ScenePlan out;
     std::vector<std::unique_ptr<pack::VariantSelector>> selectors;
@@ -39,7 +39,7 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
             std::make_unique<pack::VariantSelector>(*p, pack::MissingVariantPolicy::kError));
     }
     std::set<std::string> reported;
-    for (const render::DrawRequest* r : requests) {
+    for (const DrawRequest* r : requests) {
         if (r->grab) {
             continue;  // a copy, no variant
         }
@@ -56,9 +56,9 @@ Result<ScenePlan> PlanScene(const std::vector<const pack::Pack*>& packs,
     }
     out.usage.lookups = pack::UsageOf(views);
     std::set<pack::UsageMaterial> used;
-    std::vector<const render::MaterialInstance*> used_instances;
+    std::vector<const MaterialInstance*> used_instances;
     plan.Materials(used_instances);
-    for (const render::MaterialInstance* m : used_instances) {
+    for (const MaterialInstance* m : used_instances) {
         const pack::Pack& p = *packs[m->pack];
         used.insert({m->name, std::string(p.String(p.Shader(m->shader).value().name))});
     }

@@ -8,7 +8,7 @@
 #include "kiln/reference/sh.h"
 #include "render/frame_values.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -53,7 +53,7 @@ double TexelSolidAngle(double a, double b, uint32_t n) {
 }
 
 // A sky image sampled bilinearly at direction d (the inverse of reference::EquirectDirection).
-glm::dvec3 SampleSky(const runtime::Sky& sky, const glm::dvec3& d) {
+glm::dvec3 SampleSky(const Sky& sky, const glm::dvec3& d) {
     const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
     const double phi = std::atan2(d.x, -d.z);  // sin phi = x / sin theta, cos phi = -z / ...
     const double u = (phi + kPi) / (2.0 * kPi) * double(sky.width) - 0.5;
@@ -79,9 +79,9 @@ using Faces = std::vector<glm::vec3>;  // six n x n faces
 // Mip 0: a sky's texels binned by direction (each cube texel the solid-angle-weighted mean of
 // the sky texels in it; a texel no sky texel falls in samples the sky at its centre); analytic
 // ambients at texel centres.
-Faces BaseLevel(const runtime::Scene& scene, uint32_t n) {
+Faces BaseLevel(const Scene& scene, uint32_t n) {
     Faces out(size_t(6) * n * n, glm::vec3(0.0f));
-    const runtime::Sky* sky = SkyOf(scene);
+    const Sky* sky = SkyOf(scene);
     std::vector<double> weight(out.size(), 0.0);
     std::vector<glm::dvec3> sum(out.size(), glm::dvec3(0.0));
     if (sky) {
@@ -207,11 +207,11 @@ double ProbeMipRoughness(uint32_t mip) {
     return std::clamp(1.7 / 1.4 - std::sqrt(std::max(2.89 / 1.96 - m / 0.7, 0.0)), 0.0, 1.0);
 }
 
-glm::dvec3 AmbientRadiance(const runtime::Scene& scene, const glm::dvec3& d) {
-    if (const runtime::Sky* sky = SkyOf(scene)) {
+glm::dvec3 AmbientRadiance(const Scene& scene, const glm::dvec3& d) {
+    if (const Sky* sky = SkyOf(scene)) {
         return SampleSky(*sky, d);
     }
-    if (scene.ambient_mode == runtime::AmbientMode::kTrilight) {
+    if (scene.ambient_mode == AmbientMode::kTrilight) {
         return reference::TrilightRadiance(d, glm::dvec3(scene.ambient),
                                            glm::dvec3(scene.ambient_equator),
                                            glm::dvec3(scene.ambient_ground));
@@ -219,7 +219,7 @@ glm::dvec3 AmbientRadiance(const runtime::Scene& scene, const glm::dvec3& d) {
     return glm::dvec3(scene.ambient);
 }
 
-ReflectionProbe MakeReflectionProbe(const runtime::Scene& scene) {
+ReflectionProbe MakeReflectionProbe(const Scene& scene) {
     ReflectionProbe p;
     p.size = kProbeSize;
     p.mips = kProbeMips;
@@ -247,4 +247,4 @@ ReflectionProbe MakeReflectionProbe(const runtime::Scene& scene) {
     return p;
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

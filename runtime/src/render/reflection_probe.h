@@ -14,7 +14,7 @@
 
 #include "kiln/runtime/scene.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 inline constexpr uint32_t kProbeSize = 64;  // the base mip's face size
 inline constexpr uint32_t kProbeMips = 7;   // UNITY_SPECCUBE_LOD_STEPS (6) + 1
@@ -35,15 +35,15 @@ double ProbeMipRoughness(uint32_t mip);
 
 // The scene's ambient radiance in direction `d` (unit): the sky image (bilinear), the trilight
 // gradient or the flat colour.
-glm::dvec3 AmbientRadiance(const runtime::Scene& scene, const glm::dvec3& d);
+glm::dvec3 AmbientRadiance(const Scene& scene, const glm::dvec3& d);
 
 // The probe of the scene's ambient. Mip 0 is the radiance averaged over each texel (a sky's
 // texels binned by direction; analytic ambients sampled at texel centres); mip m > 0 is
 // sum L(l) D(h) (n . l) / sum D(h) (n . l) with n = v = the texel's direction (GGX D of
 // alpha = ProbeMipRoughness(m)^2) over a box-filtered copy of mip 0 fine enough for the lobe
 // (mip 1, nearly a mirror, is the 2x2 box of mip 0).
-ReflectionProbe MakeReflectionProbe(const runtime::Scene& scene);
+ReflectionProbe MakeReflectionProbe(const Scene& scene);
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_REFLECTION_PROBE_H_

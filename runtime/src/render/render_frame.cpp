@@ -83,9 +83,9 @@ Status RenderFrame(Renderer::State& s,
     if (!resources.bounds && automatic) {  // the automatic camera frames them
         resources.bounds = SceneBounds(scene);
     }
-    render::CameraSetup camera;
-    if (Status e = render::ChooseCamera(scene, settings, camera,
-                                        resources.bounds ? &*resources.bounds : nullptr);
+    CameraSetup camera;
+    if (Status e =
+            ChooseCamera(scene, settings, camera, resources.bounds ? &*resources.bounds : nullptr);
         !e.ok()) {
         return e;
     }
@@ -116,7 +116,7 @@ Status RenderFrame(Renderer::State& s,
         return planned.error();
     }
     const PathPlan& plan = *planned.value();
-    std::vector<const render::MaterialInstance*> used;
+    std::vector<const MaterialInstance*> used;
     plan.Materials(used);
     s.NoteMaterials(used);
     stats.materials_resolved = uint32_t(resources.materials.size() - materials);
@@ -124,7 +124,7 @@ Status RenderFrame(Renderer::State& s,
     Frame frame;
     frame.width = drawn.width;
     frame.height = drawn.height;
-    DrawBuilder builder(s, resources, scene, render::FrameValues(scene, drawn, camera), stats,
+    DrawBuilder builder(s, resources, scene, FrameValues(scene, drawn, camera), stats,
                         capture != nullptr);
     BuildInputs build{s, resources, builder, scene, drawn, camera, stats};
     if (Status e = plan.Build(build, frame); !e.ok()) {

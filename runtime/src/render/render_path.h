@@ -29,9 +29,9 @@ struct PlanInputs {
     const std::vector<const pack::Pack*>& packs;
     const Scene& scene;
     const FrameSettings& settings;
-    const render::CameraSetup& camera;
+    const CameraSetup& camera;
     const ColorPipeline& color;
-    render::MaterialCache& materials;
+    MaterialCache& materials;
     DiagnosticList& warnings;
 };
 
@@ -43,7 +43,7 @@ struct BuildInputs {
     DrawBuilder& builder;
     const Scene& scene;
     const FrameSettings& settings;
-    const render::CameraSetup& camera;
+    const CameraSetup& camera;
     FrameStats& stats;
 };
 
@@ -54,10 +54,10 @@ class PathPlan {
 
     // Every request the frame draws, in drawing order, GrabPass copies included (they look no
     // variant up). The shadow passes' casters and collector are among them.
-    virtual void Requests(std::vector<const render::DrawRequest*>& out) const = 0;
+    virtual void Requests(std::vector<const DrawRequest*>& out) const = 0;
     // The material instances the requests use: the draw list's and the path's own (a light
     // pass's, the shadow collector's).
-    virtual void Materials(std::vector<const render::MaterialInstance*>& out) const = 0;
+    virtual void Materials(std::vector<const MaterialInstance*>& out) const = 0;
     // Primitives drawn.
     virtual uint32_t Objects() const = 0;
     // Builds the frame's targets and passes (frame.width and height are set; the output target

@@ -54,8 +54,8 @@ std::vector<const pack::Pack*> Renderer::State::PackList() const {
     return out;
 }
 
-void Renderer::State::NoteMaterials(const std::vector<const render::MaterialInstance*>& materials) {
-    for (const render::MaterialInstance* m : materials) {
+void Renderer::State::NoteMaterials(const std::vector<const MaterialInstance*>& materials) {
+    for (const MaterialInstance* m : materials) {
         const pack::Pack& pack = packs[m->pack]->pack;
         used_materials.insert(
             {m->name, std::string(pack.String(pack.Shader(m->shader).value().name))});
@@ -301,7 +301,7 @@ SceneResources::SceneResources(Renderer::State& state,
     : s(state),
       id(scene.id),
       color(&color_pipeline),
-      textures(std::make_unique<render::FrameTextures>(state, scene)) {}
+      textures(std::make_unique<FrameTextures>(state, scene)) {}
 
 SceneResources::~SceneResources() {
     for (auto& [key, buffers] : meshes) {

@@ -21,12 +21,12 @@
 #include "vk/render_pass.h"
 #include "vk/resources.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 struct CameraSetup;
 struct DeferredPlan;
 struct ForwardPlan;
 class FrameTextures;
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 namespace kiln::runtime {
 
@@ -73,8 +73,8 @@ struct SceneResources {
     uint64_t id = 0;
     const ColorPipeline* color = nullptr;
     std::map<std::pair<uint32_t, uint32_t>, std::pair<vk::Buffer, vk::Buffer>> meshes;
-    std::unique_ptr<render::FrameTextures> textures;
-    render::MaterialCache materials;
+    std::unique_ptr<FrameTextures> textures;
+    MaterialCache materials;
     std::optional<std::pair<glm::vec3, glm::vec3>> bounds;  // SceneBounds, for the camera
     uint32_t uploads = 0;                                   // buffers uploaded, for the stats
 };
@@ -139,7 +139,7 @@ struct Renderer::State {
     Status DefaultTexture(const std::string& name, vk::ImageShape shape, const vk::Image*& out);
     std::vector<const pack::Pack*> PackList() const;
     // Records a frame's materials (with their shaders) for the usage file.
-    void NoteMaterials(const std::vector<const render::MaterialInstance*>& materials);
+    void NoteMaterials(const std::vector<const MaterialInstance*>& materials);
     // A triangle covering the whole frame in clip space (x, y in -1..3), in the mesh vertex
     // layout: what the deferred light pass draws.
     Status ScreenTriangle(const vk::Buffer*& vertices, const vk::Buffer*& indices);
@@ -162,8 +162,8 @@ Status DrawPlan(Renderer::State& state,
                 SceneResources& resources,
                 const Scene& scene,
                 const FrameSettings& settings,
-                const render::CameraSetup& camera,
-                const render::ForwardPlan& plan,
+                const CameraSetup& camera,
+                const ForwardPlan& plan,
                 LinearImage& out,
                 FrameStats& stats,
                 const StepObserver* observer = nullptr);

@@ -26,9 +26,9 @@ Status CasterPass(DrawBuilder& builder,
                   const std::string& name,
                   uint32_t target,
                   uint32_t layer,
-                  const std::vector<render::DrawRequest>& requests,
+                  const std::vector<DrawRequest>& requests,
                   const Light* light,
-                  const render::Values& values,
+                  const Values& values,
                   ShadowFrame& out) {
     const uint32_t color = UnusedColor(frame, frame.targets[target].size, out);
     FramePass& pass = frame.passes.emplace_back();
@@ -37,8 +37,8 @@ Status CasterPass(DrawBuilder& builder,
     pass.depth = target;
     pass.layer = layer;
     builder.BeginPass(frame, pass);
-    for (const render::DrawRequest& caster : requests) {
-        render::DrawRequest& r = out.requests.emplace_back(caster);
+    for (const DrawRequest& caster : requests) {
+        DrawRequest& r = out.requests.emplace_back(caster);
         r.light = light;
         r.values = &values;
         r.mirrored_view = frame.targets[target].cube;  // cube faces are left-handed views
@@ -56,7 +56,7 @@ Status CasterPass(DrawBuilder& builder,
 Status AddShadowPasses(Renderer::State& s,
                        DrawBuilder& builder,
                        const FrameSettings& settings,
-                       const render::ShadowPlan& plan,
+                       const ShadowPlan& plan,
                        const std::optional<std::pair<glm::vec3, glm::vec3>>& bounds,
                        Frame& frame,
                        ShadowFrame& out) {
@@ -77,9 +77,8 @@ Status AddShadowPasses(Renderer::State& s,
         // each), as Unity sizes them: 1.5 times a 2D map's memory instead of 6.
         const bool cube = light->type == LightType::kPoint;
         const uint32_t size = cube ? std::max(resolution / 2, 16u) : resolution;
-        const render::LightShadow& shadow =
-            out.shadows.emplace_back(render::ShadowOf(*light, *bounds, size));
-        FrameTarget map{"shadow map: " + render::LightName(light), format, true, {}, false};
+        const LightShadow& shadow = out.shadows.emplace_back(ShadowOf(*light, *bounds, size));
+        FrameTarget map{"shadow map: " + LightName(light), format, true, {}, false};
         map.clear.depthStencil = {1.0f, 0};
         map.shadow_map = true;
         map.size = size;
@@ -87,8 +86,8 @@ Status AddShadowPasses(Renderer::State& s,
         const uint32_t map_target = uint32_t(frame.targets.size());
         frame.targets.push_back(map);
         for (uint32_t face = 0; face < shadow.view_projection.size(); ++face) {
-            const std::string name = "shadows: " + render::LightName(light) +
-                                     (cube ? std::string(" ") + kFaceNames[face] : "");
+            const std::string name =
+                "shadows: " + LightName(light) + (cube ? std::string(" ") + kFaceNames[face] : "");
             if (Status e = CasterPass(builder, frame, name, map_target, face,
                                       cube ? plan.cube_casters : plan.casters, light,
                                       shadow.caster[face], out);
@@ -115,22 +114,19 @@ Status AddShadowPasses(Renderer::State& s,
                 return e;
             }
         }
-        FrameTarget screen{"screen-space shadows: " + render::LightName(light),
-                           VK_FORMAT_R8_UNORM,
-                           false,
-                           {},
-                           false};
+        FrameTarget screen{
+            "screen-space shadows: " + LightName(light), VK_FORMAT_R8_UNORM, false, {}, false};
         screen.clear.color = {{1, 1, 1, 1}};
         const uint32_t screen_target = uint32_t(frame.targets.size());
         frame.targets.push_back(screen);
         FramePass& collect = frame.passes.emplace_back();
-        collect.name = "screen-space shadows: " + render::LightName(light);
+        collect.name = "screen-space shadows: " + LightName(light);
         collect.colors = {screen_target};
         collect.sampled = {*camera_depth, map_target};
         builder.BeginPass(
             frame, collect,
             {{pack::kTextureCameraDepth, *camera_depth}, {pack::kTextureShadowMap, map_target}});
-        render::DrawRequest& r = out.requests.emplace_back(*plan.collect);
+        DrawRequest& r = out.requests.emplace_back(*plan.collect);
         r.light = light;
         r.additive = false;
         r.values = &shadow.receiver;
@@ -144,10 +140,10 @@ Status AddShadowPasses(Renderer::State& s,
     return {};
 }
 
-std::vector<render::DrawRequest> WithShadows(std::span<const render::DrawRequest> requests,
-                                             const ShadowFrame& shadows) {
-    std::vector<render::DrawRequest> out(requests.begin(), requests.end());
-    for (render::DrawRequest& r : out) {
+std::vector<DrawRequest> WithShadows(std::span<const DrawRequest> requests,
+                                     const ShadowFrame& shadows) {
+    std::vector<DrawRequest> out(requests.begin(), requests.end());
+    for (DrawRequest& r : out) {
         if (auto it = shadows.receivers.find(r.light); r.light && it != shadows.receivers.end()) {
             r.shadow_map = int(it->second.target);
             r.values = it->second.values;

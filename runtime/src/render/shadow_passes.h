@@ -24,13 +24,13 @@ namespace kiln::runtime {
 struct ShadowFrame {
     struct Receiver {
         uint32_t target = 0;
-        const render::Values* values = nullptr;
+        const Values* values = nullptr;
     };
     std::map<const Light*, Receiver> receivers;
     std::vector<uint32_t> sampled;               // the targets the receivers' passes sample
-    std::deque<render::LightShadow> shadows;     // the values point into them
-    std::deque<render::DrawRequest> requests;    // the passes' draws, as built
-    render::Values camera_depth;                 // the camera depth pass's values (no bias)
+    std::deque<LightShadow> shadows;             // the values point into them
+    std::deque<DrawRequest> requests;            // the passes' draws, as built
+    Values camera_depth;                         // the camera depth pass's values (no bias)
     uint32_t draws = 0;                          // ShadowCaster and collector draws
     std::map<uint32_t, uint32_t> unused_colors;  // size -> target (UnusedColor)
 };
@@ -40,15 +40,15 @@ struct ShadowFrame {
 Status AddShadowPasses(Renderer::State& s,
                        DrawBuilder& builder,
                        const FrameSettings& settings,
-                       const render::ShadowPlan& plan,
+                       const ShadowPlan& plan,
                        const std::optional<std::pair<glm::vec3, glm::vec3>>& bounds,
                        Frame& frame,
                        ShadowFrame& out);
 
 // `requests` with each receiver of a shadowed light bound to its light's shadow (the target it
 // samples as _ShadowMapTexture and the values its shadow macros read).
-std::vector<render::DrawRequest> WithShadows(std::span<const render::DrawRequest> requests,
-                                             const ShadowFrame& shadows);
+std::vector<DrawRequest> WithShadows(std::span<const DrawRequest> requests,
+                                     const ShadowFrame& shadows);
 
 }  // namespace kiln::runtime
 

@@ -8,11 +8,8 @@
 
 #include "kiln/pack/engine_names.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 namespace {
-
-using runtime::Light;
-using runtime::LightType;
 
 // Depth bias in shadow-map texels (world units: texels x the texel's world size at the scene):
 // enough for the 2x2 comparison filter's footprint and a surface's slope within a texel.
@@ -149,14 +146,14 @@ LightShadow ShadowOf(const Light& light,
 }
 
 Status PlanShadows(const std::vector<const pack::Pack*>& packs,
-                   const runtime::Scene& scene,
-                   const runtime::FrameSettings& settings,
-                   const runtime::ColorPipeline& color,
+                   const Scene& scene,
+                   const FrameSettings& settings,
+                   const ColorPipeline& color,
                    const DrawList& list,
                    const std::vector<DrawRequest*>& receivers,
                    ShadowPlan& out,
                    DiagnosticList& warnings) {
-    const bool soft = settings.shadows == runtime::Shadows::kSoft;
+    const bool soft = settings.shadows == Shadows::kSoft;
     for (const DrawItem& item : list.items) {
         const MaterialInstance& m = *item.material;
         const ShaderPasses passes = PassesOf(*packs[m.pack], m.shader);
@@ -237,4 +234,4 @@ void ShadowRequests(const ShadowPlan& plan, std::vector<const DrawRequest*>& out
     }
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

@@ -21,12 +21,12 @@
 #include "render/forward_plan.h"
 #include "render/frame_values.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 // One light's shadow: its map's view-projections (one, or six cube faces +X, -X, +Y, -Y, +Z, -Z),
 // the values its ShadowCaster draws read per face, and those its receivers read.
 struct LightShadow {
-    const runtime::Light* light = nullptr;
+    const Light* light = nullptr;
     std::vector<glm::mat4> view_projection;
     std::vector<Values> caster;  // per face: unity_MatrixVP, unity_LightShadowBias
     Values receiver;  // unity_WorldToShadow, _LightShadowData, _LightProjectionParams, texel size
@@ -36,12 +36,12 @@ struct LightShadow {
 // The shadow of `light` over a scene within `bounds` (world min, max) in a `resolution`^2 map:
 // directional lights fit the bounds' sphere; spot lights their cone, point lights a cube, both
 // as far as the light's range or the bounds' farthest corner.
-LightShadow ShadowOf(const runtime::Light& light,
+LightShadow ShadowOf(const Light& light,
                      const std::pair<glm::vec3, glm::vec3>& bounds,
                      uint32_t resolution);
 
 // The keyword a receiver of `light`'s shadow asks for.
-const char* ReceiverKeyword(const runtime::Light& light);
+const char* ReceiverKeyword(const Light& light);
 
 // Plans the shadows of a frame whose requests `receivers` are lit by a pixel light (each with
 // its light; the path chooses them: the forward path's base passes lit by the main directional
@@ -49,9 +49,9 @@ const char* ReceiverKeyword(const runtime::Light& light);
 // each receiver and plans the casters of `list` and the collector. A scene without a
 // ShadowCaster pass casts nothing: a warning, once, and no shadow keywords.
 Status PlanShadows(const std::vector<const pack::Pack*>& packs,
-                   const runtime::Scene& scene,
-                   const runtime::FrameSettings& settings,
-                   const runtime::ColorPipeline& color,
+                   const Scene& scene,
+                   const FrameSettings& settings,
+                   const ColorPipeline& color,
                    const DrawList& list,
                    const std::vector<DrawRequest*>& receivers,
                    ShadowPlan& out,
@@ -60,6 +60,6 @@ Status PlanShadows(const std::vector<const pack::Pack*>& packs,
 // The shadow passes' requests of `plan` (the casters, the collector), appended to `out`.
 void ShadowRequests(const ShadowPlan& plan, std::vector<const DrawRequest*>& out);
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_SHADOW_PLAN_H_

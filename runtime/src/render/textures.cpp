@@ -11,7 +11,7 @@
 #include "render/frame_values.h"
 #include "render/reflection_probe.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 namespace {
 
 const char* ShapeName(vk::ImageShape shape) {
@@ -145,8 +145,8 @@ Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
         }
         it = ambient_.emplace(shape, image).first;
     }
-    if (Status e = s_.Sampler(runtime::TextureWrap::kClampToEdge,
-                              runtime::TextureWrap::kClampToEdge, false, out.sampler);
+    if (Status e =
+            s_.Sampler(TextureWrap::kClampToEdge, TextureWrap::kClampToEdge, false, out.sampler);
         !e.ok()) {
         return e;
     }
@@ -162,8 +162,7 @@ Status FrameTextures::Default(const TextureBinding& binding,
     if (Status e = s_.DefaultTexture(binding.default_name, shape, image); !e.ok()) {
         return e;
     }
-    if (Status e = s_.Sampler(runtime::TextureWrap::kRepeat, runtime::TextureWrap::kRepeat, false,
-                              out.sampler);
+    if (Status e = s_.Sampler(TextureWrap::kRepeat, TextureWrap::kRepeat, false, out.sampler);
         !e.ok()) {
         return e;
     }
@@ -211,13 +210,13 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
         std::vector<uint8_t> rgba;
         std::string name;
         if (binding.source == TextureBinding::Source::kSceneImage) {
-            const runtime::SceneImage& si = scene_->images[size_t(binding.image)];
+            const SceneImage& si = scene_->images[size_t(binding.image)];
             w = si.width;
             h = si.height;
             rgba = si.rgba8;
             name = "image " + std::to_string(binding.image) + " '" + si.name + "'";
         } else {
-            Result<runtime::Rgba8Image> decoded = runtime::ReadImageRgba8(binding.file);
+            Result<Rgba8Image> decoded = ReadImageRgba8(binding.file);
             if (!decoded) {
                 return Default(binding, shape,
                                decoded.error().message + "; using the default texture", out);
@@ -248,4 +247,4 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
     return {};
 }
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime

@@ -15,7 +15,7 @@
 #include "render/material_binding.h"
 #include "render/renderer_state.h"
 
-namespace kiln::render {
+namespace kiln::runtime {
 
 struct BoundTexture {
     VkImageView view = VK_NULL_HANDLE;
@@ -33,8 +33,7 @@ TextureBinding UnsetTexture(std::string_view name);
 
 class FrameTextures {
   public:
-    FrameTextures(runtime::Renderer::State& s, const runtime::Scene& scene)
-        : s_(s), scene_(&scene) {}
+    FrameTextures(Renderer::State& s, const Scene& scene) : s_(s), scene_(&scene) {}
     ~FrameTextures();
     FrameTextures(const FrameTextures&) = delete;
     FrameTextures& operator=(const FrameTextures&) = delete;
@@ -43,7 +42,7 @@ class FrameTextures {
     // binding's default texture in its shape, with a warning.
     Status Get(const TextureBinding& binding, vk::ImageShape shape, BoundTexture& out);
     // The scene object of this frame (a copy of the same scene is drawn with the same images).
-    void SetScene(const runtime::Scene& scene) { scene_ = &scene; }
+    void SetScene(const Scene& scene) { scene_ = &scene; }
 
   private:
     Status Default(const TextureBinding& binding,
@@ -51,8 +50,8 @@ class FrameTextures {
                    std::string warning,
                    BoundTexture& out);
     Status Ambient(vk::ImageShape shape, BoundTexture& out);
-    runtime::Renderer::State& s_;
-    const runtime::Scene* scene_;
+    Renderer::State& s_;
+    const Scene* scene_;
     // (source key, srgb) -> uploaded image, with the warning its upload gave (downscaled); the
     // key is "#<image>" or the file path.
     struct Uploaded {
@@ -62,14 +61,14 @@ class FrameTextures {
     std::map<std::pair<std::string, bool>, Uploaded> images_;
     std::map<vk::ImageShape, vk::Image> ambient_;  // Source::kAmbient, per shape
     struct AmbientKey {                            // the ambient ambient_ holds
-        runtime::AmbientMode mode = runtime::AmbientMode::kFlat;
+        AmbientMode mode = AmbientMode::kFlat;
         glm::vec3 sky{-1.0f}, equator{-1.0f}, ground{-1.0f};
-        const runtime::Sky* image = nullptr;
+        const Sky* image = nullptr;
         bool operator==(const AmbientKey&) const = default;
     };
     AmbientKey ambient_key_;
 };
 
-}  // namespace kiln::render
+}  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_TEXTURES_H_

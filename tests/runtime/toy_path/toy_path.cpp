@@ -23,12 +23,12 @@ using runtime::PlanInputs;
 
 class ToyPlan final : public PathPlan {
   public:
-    void Requests(std::vector<const render::DrawRequest*>& out) const override {
-        for (const render::DrawRequest& r : draws) {
+    void Requests(std::vector<const runtime::DrawRequest*>& out) const override {
+        for (const runtime::DrawRequest& r : draws) {
             out.push_back(&r);
         }
     }
-    void Materials(std::vector<const render::MaterialInstance*>& out) const override {
+    void Materials(std::vector<const runtime::MaterialInstance*>& out) const override {
         out.insert(out.end(), list.materials.begin(), list.materials.end());
     }
     uint32_t Objects() const override { return uint32_t(draws.size()); }
@@ -45,7 +45,7 @@ class ToyPlan final : public PathPlan {
         pass.colors = {0};
         pass.depth = 1;
         in.builder.BeginPass(frame, pass);
-        for (const render::DrawRequest& r : draws) {
+        for (const runtime::DrawRequest& r : draws) {
             if (Status e = in.builder.Build(r, pass.draws); !e.ok()) {
                 return e;
             }
@@ -53,8 +53,8 @@ class ToyPlan final : public PathPlan {
         return {};
     }
 
-    render::DrawList list;  // the requests point into it
-    std::vector<render::DrawRequest> draws;
+    runtime::DrawList list;  // the requests point into it
+    std::vector<runtime::DrawRequest> draws;
 };
 
 class ToyPath final : public runtime::PathRenderer {
@@ -65,20 +65,20 @@ class ToyPath final : public runtime::PathRenderer {
     }
     Result<std::unique_ptr<PathPlan>> Plan(const PlanInputs& in) const override {
         auto plan = std::make_unique<ToyPlan>();
-        if (Status e = render::BuildDrawList(in.packs, in.scene, in.settings, in.camera.position,
-                                             in.color, in.materials, plan->list, in.warnings);
+        if (Status e = runtime::BuildDrawList(in.packs, in.scene, in.settings, in.camera.position,
+                                              in.color, in.materials, plan->list, in.warnings);
             !e.ok()) {
             return e.error();
         }
-        for (const render::DrawItem& item : plan->list.items) {
-            const render::MaterialInstance& m = *item.material;
-            const render::ShaderPasses passes = render::PassesOf(*in.packs[m.pack], m.shader);
+        for (const runtime::DrawItem& item : plan->list.items) {
+            const runtime::MaterialInstance& m = *item.material;
+            const runtime::ShaderPasses passes = runtime::PassesOf(*in.packs[m.pack], m.shader);
             for (uint32_t pass : passes.base) {
                 if (in.packs[m.pack]->GrabTexture(pass)) {
                     continue;  // a copy, not a draw
                 }
-                render::DrawRequest r = render::ObjectRequest(item, pass);
-                r.reason = render::Requester(in.scene, item) + "toy path, unlit";
+                runtime::DrawRequest r = runtime::ObjectRequest(item, pass);
+                r.reason = runtime::Requester(in.scene, item) + "toy path, unlit";
                 plan->draws.push_back(std::move(r));
                 break;
             }

@@ -9,10 +9,10 @@
 
 namespace kiln::tools {
 
-using render::CameraSetup;
-using render::ForwardPlan;
+using runtime::CameraSetup;
 using runtime::ComputeBounds;
 using runtime::DrawPlan;
+using runtime::ForwardPlan;
 namespace {
 
 const glm::vec3 kEye(0.0f, 0.6f, 2.4f);

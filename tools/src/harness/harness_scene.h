@@ -16,8 +16,8 @@
 
 namespace kiln::tools {
 
-using render::CameraSetup;
-using render::MaterialInstance;
+using runtime::CameraSetup;
+using runtime::MaterialInstance;
 // Sphere (centre (0, 0.5, 0), radius 0.5) first, then the plane y = 0; camera 0 looks at the
 // sphere's centre from +Z.
 runtime::Scene HarnessScene();

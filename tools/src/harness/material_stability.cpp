@@ -163,8 +163,8 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
         return Error{DiagCode::kBadCommandLine,
                      "the stability image must be odd, 9 to 1025 pixels"};
     }
-    render::MaterialInstance m;
-    if (Status e = render::InstanceFromMaterialFile(s.PackList(), material, color, m); !e.ok()) {
+    runtime::MaterialInstance m;
+    if (Status e = runtime::InstanceFromMaterialFile(s.PackList(), material, color, m); !e.ok()) {
         return e.error();
     }
     const pack::Pack& pk = s.packs[m.pack]->pack;
@@ -176,8 +176,8 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
     FrameSettings settings;
     settings.width = settings.height = options.size;
     settings.camera = 0;
-    render::CameraSetup camera;
-    if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok()) {
+    runtime::CameraSetup camera;
+    if (Status e = runtime::ChooseCamera(scene, settings, camera); !e.ok()) {
         return e.error();
     }
     // The material's values, then each Range property at its ends.
@@ -221,7 +221,7 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
                                                               : LightType::kDirectional;
             for (const LightSetup& setup : Setups(type)) {
                 for (const auto& [properties, vals] : values) {
-                    render::MaterialInstance at = m;
+                    runtime::MaterialInstance at = m;
                     at.values = vals;
                     HarnessPass draw;
                     draw.material = &at;

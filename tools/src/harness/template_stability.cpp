@@ -284,8 +284,8 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
         return Error{DiagCode::kBadCommandLine, std::string("no loaded pack has the shader \"") +
                                                     pack::kShaderStabilityGrid + "\""};
     }
-    render::MaterialInstance m;
-    render::InstanceFromDefaults(s.packs[pack_index]->pack, pack_index, *shader, color, m);
+    runtime::MaterialInstance m;
+    runtime::InstanceFromDefaults(s.packs[pack_index]->pack, pack_index, *shader, color, m);
     m.name = "kiln stability grid";
     runtime::Scene scene = StabilityScene();
     scene.instances.pop_back();  // the plane alone fills the view
@@ -315,8 +315,8 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
         FrameSettings settings;
         settings.width = settings.height = std::max(side, 2u);
         settings.camera = 0;
-        render::CameraSetup camera;
-        if (Status e = render::ChooseCamera(scene, settings, camera); !e.ok())
+        runtime::CameraSetup camera;
+        if (Status e = runtime::ChooseCamera(scene, settings, camera); !e.ok())
             return e.error();
         HarnessPass draw;
         draw.material = &m;

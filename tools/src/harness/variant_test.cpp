@@ -87,7 +87,7 @@ struct Harness {
     const ColorPipeline& color;
     const VariantTestOptions& options;
     Scene scene = HarnessScene();
-    render::CameraSetup camera;
+    runtime::CameraSetup camera;
     VariantTestReport report;
 
     FrameSettings Settings(bool additive) const {
@@ -111,8 +111,8 @@ struct Harness {
                                : point   ? LightType::kPoint
                                : spot    ? LightType::kSpot
                                          : LightType::kDirectional;
-        render::MaterialInstance m;  // the draw plan's material: lives for this frame
-        render::InstanceFromDefaults(pk, c.pack, c.shader, color, m);
+        runtime::MaterialInstance m;  // the draw plan's material: lives for this frame
+        runtime::InstanceFromDefaults(pk, c.pack, c.shader, color, m);
         // A main colour (`_Color`, Unity's Material.color) that defaults to black would hide
         // every lighting check (Ronja's tutorial shaders tint with black by default): the
         // harness draws it white.
@@ -318,7 +318,7 @@ Result<VariantTestReport> TestVariants(Renderer& renderer,
         return Error{DiagCode::kBadCommandLine, "the harness image must be 16 to 4096 pixels"};
     }
     Harness h{s, color, options, HarnessScene(), {}, {}};
-    if (Status e = render::ChooseCamera(h.scene, h.Settings(false), h.camera); !e.ok()) {
+    if (Status e = runtime::ChooseCamera(h.scene, h.Settings(false), h.camera); !e.ok()) {
         return e.error();
     }
     for (const Case& c : Cases(s, options, h.report.skipped)) {
