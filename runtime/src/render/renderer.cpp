@@ -441,6 +441,10 @@ Renderer::State& Renderer::internal_state() {
     return *state_;
 }
 
+const Renderer::State& Renderer::internal_state() const {
+    return *state_;
+}
+
 std::string Renderer::DeviceName() const {
     return state_->context.properties.deviceName;
 }

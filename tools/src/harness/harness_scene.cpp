@@ -5,13 +5,10 @@
 
 #include <cmath>
 
-#include "render/forward_plan.h"
-
 namespace kiln::tools {
 
 using runtime::CameraSetup;
 using runtime::ComputeBounds;
-using runtime::DrawPlan;
 using runtime::ForwardPlan;
 namespace {
 
@@ -115,7 +112,7 @@ runtime::Scene StabilityScene() {
     return scene;
 }
 
-Status DrawHarnessPass(runtime::Renderer::State& s,
+Status DrawHarnessPass(runtime::Renderer& renderer,
                        const runtime::ColorPipeline& color,
                        const runtime::Scene& scene,
                        const runtime::FrameSettings& settings,
@@ -144,8 +141,8 @@ Status DrawHarnessPass(runtime::Renderer::State& s,
     }
     plan.objects = uint32_t(scene.instances.size());
     plan.list.materials.push_back(draw.material);
-    runtime::FrameStats stats;
-    return DrawPlan(s, s.ResourcesFor(scene, color), scene, settings, camera, plan, out, stats);
+    return runtime::tool_access::DrawForwardPlan(renderer, color, scene, settings, camera, plan,
+                                                 out);
 }
 
 runtime::Scene HarnessScene() {

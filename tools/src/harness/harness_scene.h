@@ -10,9 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "kiln/runtime/scene.h"
-#include "render/frame_values.h"
-#include "render/material_binding.h"
-#include "render/renderer_state.h"
+#include "render/tool_access.h"
 
 namespace kiln::tools {
 
@@ -48,7 +46,7 @@ struct HarnessPass {
     std::vector<runtime::Light> lights;
     bool pixel_light = true, vertex_light = false;
 };
-Status DrawHarnessPass(runtime::Renderer::State& s,
+Status DrawHarnessPass(runtime::Renderer& renderer,
                        const runtime::ColorPipeline& color,
                        const runtime::Scene& scene,
                        const runtime::FrameSettings& settings,

@@ -158,16 +158,17 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
                                                       const ColorPipeline& color,
                                                       const std::string& material,
                                                       const MaterialStabilityOptions& options) {
-    Renderer::State& s = renderer.internal_state();
     if (options.size < 9 || options.size > 1025 || options.size % 2 == 0) {
         return Error{DiagCode::kBadCommandLine,
                      "the stability image must be odd, 9 to 1025 pixels"};
     }
     runtime::MaterialInstance m;
-    if (Status e = runtime::InstanceFromMaterialFile(s.PackList(), material, color, m); !e.ok()) {
+    if (Status e = runtime::InstanceFromMaterialFile(runtime::tool_access::Packs(renderer),
+                                                     material, color, m);
+        !e.ok()) {
         return e.error();
     }
-    const pack::Pack& pk = s.packs[m.pack]->pack;
+    const pack::Pack& pk = renderer.pack(m.pack);
     const pack::ShaderRec sr = pk.Shader(m.shader).value();
     MaterialStabilityReport report;
     report.material = material;
@@ -232,7 +233,8 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
                     draw.vertex_light = !additive && has(pack::kKeywordVertexLight);
                     LinearImage image;
                     ++report.renders;
-                    if (Status e = DrawHarnessPass(s, color, scene, settings, camera, draw, image);
+                    if (Status e =
+                            DrawHarnessPass(renderer, color, scene, settings, camera, draw, image);
                         !e.ok()) {
                         return e.error();
                     }

@@ -273,11 +273,10 @@ std::vector<EnergyReport> WhiteFurnaceReport() {
 Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
                                                       const ColorPipeline& color,
                                                       const TemplateStabilityOptions& options) {
-    Renderer::State& s = renderer.internal_state();
     std::optional<uint32_t> shader;
     uint32_t pack_index = 0;
-    for (; pack_index < s.packs.size(); ++pack_index) {
-        if ((shader = s.packs[pack_index]->pack.FindShader(pack::kShaderStabilityGrid)))
+    for (; pack_index < renderer.pack_count(); ++pack_index) {
+        if ((shader = renderer.pack(pack_index).FindShader(pack::kShaderStabilityGrid)))
             break;
     }
     if (!shader) {
@@ -285,7 +284,7 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
                                                     pack::kShaderStabilityGrid + "\""};
     }
     runtime::MaterialInstance m;
-    runtime::InstanceFromDefaults(s.packs[pack_index]->pack, pack_index, *shader, color, m);
+    runtime::InstanceFromDefaults(renderer.pack(pack_index), pack_index, *shader, color, m);
     m.name = "kiln stability grid";
     runtime::Scene scene = StabilityScene();
     scene.instances.pop_back();  // the plane alone fills the view
@@ -320,10 +319,11 @@ Result<TemplateStabilityReport> TestTemplateStability(Renderer& renderer,
             return e.error();
         HarnessPass draw;
         draw.material = &m;
-        draw.pass = s.packs[pack_index]->pack.Shader(*shader).value().first_pass;
+        draw.pass = renderer.pack(pack_index).Shader(*shader).value().first_pass;
         draw.pixel_light = false;
         LinearImage image;
-        if (Status e = DrawHarnessPass(s, color, scene, settings, camera, draw, image); !e.ok()) {
+        if (Status e = DrawHarnessPass(renderer, color, scene, settings, camera, draw, image);
+            !e.ok()) {
             return e.error();
         }
         GridCaseReport r;

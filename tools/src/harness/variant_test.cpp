@@ -10,10 +10,6 @@
 #include "harness/harness_scene.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
-#include "render/forward_plan.h"
-#include "render/frame_values.h"
-#include "render/renderer_state.h"
-#include "vk/context.h"
 
 namespace kiln::tools {
 
@@ -83,7 +79,7 @@ float CentreMax(const LinearImage& img, float background) {
 }
 
 struct Harness {
-    Renderer::State& s;
+    Renderer& renderer;
     const ColorPipeline& color;
     const VariantTestOptions& options;
     Scene scene = HarnessScene();
@@ -104,7 +100,7 @@ struct Harness {
                 const std::vector<std::string>& keywords,
                 const Setup& setup,
                 LinearImage& out) {
-        const pack::Pack& pk = s.packs[c.pack]->pack;
+        const pack::Pack& pk = renderer.pack(c.pack);
         const bool point = std::count(keywords.begin(), keywords.end(), pack::kKeywordPoint) > 0;
         const bool spot = std::count(keywords.begin(), keywords.end(), pack::kKeywordSpot) > 0;
         const LightType type = !additive ? LightType::kDirectional
@@ -134,7 +130,7 @@ struct Harness {
         draw.pixel_light = !setup.no_light;
         draw.vertex_light = !additive && !setup.no_light &&
                             std::count(keywords.begin(), keywords.end(), pack::kKeywordVertexLight);
-        return DrawHarnessPass(s, color, scene, Settings(additive), camera, draw, out);
+        return DrawHarnessPass(renderer, color, scene, Settings(additive), camera, draw, out);
     }
 
     void Fail(const Case& c,
@@ -143,8 +139,8 @@ struct Harness {
               std::string check,
               std::string message,
               LinearImage image) {
-        const pack::Pack& pk = s.packs[c.pack]->pack;
-        report.failures.push_back({s.packs[c.pack]->path,
+        const pack::Pack& pk = renderer.pack(c.pack);
+        report.failures.push_back({runtime::tool_access::PackPath(renderer, c.pack),
                                    std::string(pk.String(pk.Shader(c.shader).value().name)),
                                    pack::PassLabel(pk, c.pass), keywords, setup.properties,
                                    std::move(check), std::move(message), std::move(image)});
@@ -157,13 +153,13 @@ struct Harness {
              const std::vector<std::string>& keywords,
              const Setup& setup,
              LinearImage& out) {
-        const size_t messages = vk::ValidationMessages(s.context).size();
+        const size_t messages = renderer.ValidationMessages().size();
         ++report.renders;
         if (Status e = Draw(c, additive, keywords, setup, out); !e.ok()) {
             Fail(c, keywords, setup, "pipeline", e.error().message, {});
             return false;
         }
-        const std::vector<std::string> all = vk::ValidationMessages(s.context);
+        const std::vector<std::string> all = renderer.ValidationMessages();
         if (all.size() > messages) {
             Fail(c, keywords, setup, "validation", all[messages], out);
         }
@@ -195,7 +191,7 @@ struct Harness {
     }
 
     void Test(const Case& c) {
-        const pack::Pack& pk = s.packs[c.pack]->pack;
+        const pack::Pack& pk = renderer.pack(c.pack);
         const std::vector<std::string> keywords =
             pk.KeywordsOf(c.pass, pack::VariantKey(pk.Variant(c.variant).value().key));
         const std::string_view mode = pack::LightModeOf(pk, c.pass);
@@ -237,7 +233,7 @@ struct Harness {
     }
 
     std::vector<RangeProperty> Ranges(const Case& c) const {
-        const pack::Pack& pk = s.packs[c.pack]->pack;
+        const pack::Pack& pk = renderer.pack(c.pack);
         const pack::ShaderRec sr = pk.Shader(c.shader).value();
         std::vector<RangeProperty> out;
         for (uint32_t i = sr.first_property; i < sr.first_property + sr.property_count; ++i) {
@@ -251,12 +247,12 @@ struct Harness {
 };
 
 // Every variant of the passes the forward path draws; the others are listed as skipped.
-std::vector<Case> Cases(const Renderer::State& s,
+std::vector<Case> Cases(const Renderer& renderer,
                         const VariantTestOptions& options,
                         std::vector<std::string>& skipped) {
     std::vector<Case> out;
-    for (uint32_t p = 0; p < s.packs.size(); ++p) {
-        const pack::Pack& pk = s.packs[p]->pack;
+    for (uint32_t p = 0; p < renderer.pack_count(); ++p) {
+        const pack::Pack& pk = renderer.pack(p);
         for (uint32_t sh = 0; sh < pk.Count(pack::SectionTag::kShaders); ++sh) {
             const pack::ShaderRec sr = pk.Shader(sh).value();
             const std::string name(pk.String(sr.name));
@@ -310,18 +306,17 @@ std::vector<Case> Cases(const Renderer::State& s,
 Result<VariantTestReport> TestVariants(Renderer& renderer,
                                        const ColorPipeline& color,
                                        const VariantTestOptions& options) {
-    Renderer::State& s = renderer.internal_state();
-    if (s.packs.empty()) {
+    if (renderer.pack_count() == 0) {
         return Error{DiagCode::kRenderFailed, "no variant pack loaded"};
     }
     if (options.size < 16 || options.size > 4096) {
         return Error{DiagCode::kBadCommandLine, "the harness image must be 16 to 4096 pixels"};
     }
-    Harness h{s, color, options, HarnessScene(), {}, {}};
+    Harness h{renderer, color, options, HarnessScene(), {}, {}};
     if (Status e = runtime::ChooseCamera(h.scene, h.Settings(false), h.camera); !e.ok()) {
         return e.error();
     }
-    for (const Case& c : Cases(s, options, h.report.skipped)) {
+    for (const Case& c : Cases(renderer, options, h.report.skipped)) {
         h.Test(c);
     }
     return std::move(h.report);

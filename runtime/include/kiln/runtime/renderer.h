@@ -167,10 +167,11 @@ class Renderer {
 
     struct State;  // opaque: defined inside the library
 
-    // For Kiln's own tools (kiln_tools: kiln test's harness, kiln stability), which draw with the
-    // renderer's device, packs and pipelines through the runtime's internal headers
-    // (render/renderer_state.h, not installed). An engine has no use for it: State is opaque.
+    // For the runtime's own internals (render/tool_access.h, the one internal header Kiln's own
+    // tools include, implements their access with it). An engine has no use for it: State is
+    // opaque.
     State& internal_state();
+    const State& internal_state() const;
 
   private:
     std::unique_ptr<State> state_;
