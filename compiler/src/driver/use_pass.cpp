@@ -62,8 +62,10 @@ const ShaderUnit* LoadFromPath(CompileState& st,
                 continue;
             ShaderUnit unit;
             unit.file = std::make_shared<const SourceFile>(std::move(read).value());
-            DiagnosticList ignored;  // its own problems are reported when it is compiled
-            unit.ast = shaderlab::ParseAndCheck(*unit.file, ignored);
+            // Parsed only: its own problems are reported, by the checks table, when it is
+            // compiled itself; what UsePass takes from it is its passes.
+            DiagnosticList ignored;
+            unit.ast = shaderlab::Parse(*unit.file, ignored);
             if (!unit.ast || !Answers(unit.ast->name, name))
                 continue;
             st.files.Put(unit.file);

@@ -2,12 +2,23 @@
 
 namespace kiln::worker {
 
+std::string ContentHashes::Of(const std::shared_ptr<const SourceFile>& file) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        if (auto it = hashes_.find(file); it != hashes_.end())
+            return it->second;
+    }
+    std::string hash = ContentHash(file->text());  // outside the lock: files hash in parallel
+    std::lock_guard<std::mutex> lock(mu_);
+    return hashes_.emplace(file, std::move(hash)).first->second;
+}
+
 std::string FileServer::Answer(const std::string& path) {
     FileAnswer a;
     a.path = path;
     if (const auto file = files_.Get(path)) {
         a.found = true;
-        a.hash = ContentHash(file->text());
+        a.hash = hashes_.Of(file);
         std::lock_guard<std::mutex> lock(mu_);
         if (sent_.insert(a.hash).second) {
             a.with_content = true;

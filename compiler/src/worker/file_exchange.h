@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -17,11 +18,23 @@
 
 namespace kiln::worker {
 
+// The content hash of each file a compile serves, computed once however many connections ask for
+// it (each worker of a pool asks for the same includes). Keeps the files it hashed. Thread-safe.
+class ContentHashes {
+  public:
+    std::string Of(const std::shared_ptr<const SourceFile>& file);
+
+  private:
+    std::mutex mu_;
+    std::map<std::shared_ptr<const SourceFile>, std::string> hashes_;
+};
+
 // The client's side of one connection: answers kNeedFile from the compile's FileCache (which
-// reads each file once), sending each content once. Thread-safe.
+// reads each file once) with its hash from `hashes` (shared by the connections), sending each
+// content once. Thread-safe.
 class FileServer {
   public:
-    explicit FileServer(hlsl::FileCache& files) : files_(files) {}
+    FileServer(hlsl::FileCache& files, ContentHashes& hashes) : files_(files), hashes_(hashes) {}
     // The kFile frame that answers a kNeedFile for `path`.
     std::string Answer(const std::string& path);
     // A new connection: the peer has nothing yet.
@@ -29,6 +42,7 @@ class FileServer {
 
   private:
     hlsl::FileCache& files_;
+    ContentHashes& hashes_;
     std::mutex mu_;
     std::set<std::string> sent_;  // hashes whose content this connection has
 };

@@ -41,7 +41,7 @@ constexpr int kLastWordsMs = 500;
 class InProcessExecutor : public Executor {
   public:
     explicit InProcessExecutor(hlsl::FileCache& files)
-        : server_(files),
+        : server_(files, hashes_),
           remote_([this](const std::string& path) -> std::optional<FileAnswer> {
               const std::string frame = server_.Answer(path);
               const auto f = SplitWholeFrame(frame);
@@ -81,6 +81,7 @@ class InProcessExecutor : public Executor {
             return DecodeResponse(f->payload);
     }
 
+    ContentHashes hashes_;
     FileServer server_;
     RemoteFiles remote_;
     hlsl::FileCache worker_files_;
@@ -108,25 +109,61 @@ struct Worker {
     std::unique_ptr<FileServer> files;  // what this connection was sent
 };
 
+// What one look at a worker's socket found.
+enum class Arrival {
+    kFrame,      // a whole frame
+    kNone,       // nothing whole yet
+    kGone,       // the connection closed or failed: the worker is gone
+    kOversized,  // a frame announced over the size limit: not the protocol
+};
+
+// Waits up to `ms` for `w`'s socket to be readable, then reads what has arrived without
+// blocking, never past the end of one frame (which goes to `payload`).
+Arrival Receive(Worker& w, int ms, std::string& payload) {
+    pollfd p{w.fd, POLLIN, 0};
+    const int ready = poll(&p, 1, ms);
+    if (ready < 0)
+        return errno == EINTR ? Arrival::kNone : Arrival::kGone;
+    while (ready > 0) {
+        const std::span<char> room = w.reader.Room();
+        const ssize_t n = recv(w.fd, room.data(), room.size(), MSG_DONTWAIT);
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
+            return Arrival::kNone;
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return Arrival::kGone;
+        if (w.reader.Advance(static_cast<size_t>(n))) {
+            payload = w.reader.Take();
+            return Arrival::kFrame;
+        }
+        if (w.reader.bad())
+            return Arrival::kOversized;
+    }
+    return Arrival::kNone;
+}
+
 // The next frame from `w` within `ms` milliseconds; nullopt when none came whole.
 std::optional<std::string> ReceiveWithin(Worker& w, int ms) {
     const auto give_up = Clock::now() + std::chrono::milliseconds(ms);
+    std::string payload;
     while (Clock::now() < give_up) {
-        pollfd p{w.fd, POLLIN, 0};
-        if (poll(&p, 1, kTickMs) <= 0)
-            continue;
-        const std::span<char> room = w.reader.Room();
-        const ssize_t n = recv(w.fd, room.data(), room.size(), MSG_DONTWAIT);
-        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR))
-            continue;
-        if (n <= 0 || w.reader.bad())
-            return std::nullopt;
-        if (w.reader.Advance(static_cast<size_t>(n)))
-            return w.reader.Take();
-        if (w.reader.bad())
+        const Arrival a = Receive(w, kTickMs, payload);
+        if (a == Arrival::kFrame)
+            return payload;
+        if (a != Arrival::kNone)
             return std::nullopt;
     }
     return std::nullopt;
+}
+
+// The outcome a worker's failure frame reports (`f` null: malformed). A crash's last words come
+// before the worker dies by its signal.
+Outcome::Status FailureStatus(const std::optional<Failure>& f) {
+    return !f                      ? Outcome::Status::kBroken
+           : f->reason == "crash"  ? Outcome::Status::kCrashed
+           : f->reason == "memory" ? Outcome::Status::kOutOfMemory
+                                   : Outcome::Status::kBroken;
 }
 
 class WorkerPool : public Executor {
@@ -136,7 +173,7 @@ class WorkerPool : public Executor {
           workers_(std::max(1u, options_.workers)),
           busy_(workers_.size(), false) {
         for (Worker& w : workers_)
-            w.files = std::make_unique<FileServer>(files);
+            w.files = std::make_unique<FileServer>(files, hashes_);
     }
 
     ~WorkerPool() override {
@@ -174,6 +211,7 @@ class WorkerPool : public Executor {
     void Stop(Worker& w, bool kill_now, Outcome* o = nullptr) const;
 
     PoolOptions options_;
+    ContentHashes hashes_;  // before workers_: their servers use it
     std::vector<Worker> workers_;
     std::mutex mu_;
     std::condition_variable cv_;
@@ -343,65 +381,48 @@ Outcome WorkerPool::RunOn(Worker& w, const Request& request) const {
                                       std::chrono::duration<double>(options_.timeout_seconds));
     auto next_memory_check = start;
     for (;;) {
-        pollfd p{w.fd, POLLIN, 0};
-        const int ready = poll(&p, 1, kTickMs);
-        if (ready < 0 && errno != EINTR)
-            return fail(Outcome::Status::kCrashed, true);
-        // Everything that has arrived, without blocking.
-        while (ready > 0) {
-            const std::span<char> room = w.reader.Room();
-            const ssize_t n = recv(w.fd, room.data(), room.size(), MSG_DONTWAIT);
-            if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
-                break;
-            if (n < 0 && errno == EINTR)
-                continue;
-            if (n <= 0)
+        std::string payload;
+        switch (Receive(w, kTickMs, payload)) {
+            case Arrival::kGone:
                 return fail(Outcome::Status::kCrashed, false);
-            if (!w.reader.Advance(static_cast<size_t>(n))) {
-                if (w.reader.bad()) {
-                    o.detail = "a frame over the size limit";
+            case Arrival::kOversized:
+                o.detail = "a frame over the size limit";
+                return fail(Outcome::Status::kBroken, true);
+            case Arrival::kNone:
+                break;
+            case Arrival::kFrame: {
+                const std::optional<Frame> frame = SplitFrame(payload);
+                if (!frame) {
+                    o.detail = "an unknown frame";
                     return fail(Outcome::Status::kBroken, true);
                 }
-                continue;
-            }
-            const std::string payload = w.reader.Take();
-            const std::optional<Frame> frame = SplitFrame(payload);
-            if (!frame) {
-                o.detail = "an unknown frame";
-                return fail(Outcome::Status::kBroken, true);
-            }
-            if (frame->type == FrameType::kNeedFile) {
-                const std::optional<std::string> path = DecodeNeedFile(frame->payload);
-                if (!path) {
-                    o.detail = "a malformed file request";
+                if (frame->type == FrameType::kNeedFile) {
+                    const std::optional<std::string> path = DecodeNeedFile(frame->payload);
+                    if (!path) {
+                        o.detail = "a malformed file request";
+                        return fail(Outcome::Status::kBroken, true);
+                    }
+                    if (!SendFrame(w.fd, w.files->Answer(*path)))
+                        return fail(Outcome::Status::kCrashed, false);
+                    continue;  // the request goes on
+                }
+                if (frame->type == FrameType::kFailure) {
+                    const auto f = DecodeFailure(frame->payload);
+                    o.detail = f ? f->detail : "";
+                    if (f && f->component != Component::kNone)
+                        o.component = f->component;
+                    return fail(FailureStatus(f), false);
+                }
+                std::optional<Response> resp;
+                if (frame->type == FrameType::kResponse)
+                    resp = DecodeResponse(frame->payload);
+                if (!resp) {
+                    o.detail = "a malformed response";
                     return fail(Outcome::Status::kBroken, true);
                 }
-                if (!SendFrame(w.fd, w.files->Answer(*path)))
-                    return fail(Outcome::Status::kCrashed, false);
-                continue;
+                o.response = std::move(*resp);
+                return o;
             }
-            if (frame->type == FrameType::kFailure) {
-                const auto f = DecodeFailure(frame->payload);
-                o.detail = f ? f->detail : "";
-                if (f && f->component != Component::kNone)
-                    o.component = f->component;
-                // A crash's last words come before the worker dies by its signal.
-                const Outcome::Status status = !f                     ? Outcome::Status::kBroken
-                                               : f->reason == "crash" ? Outcome::Status::kCrashed
-                                               : f->reason == "memory"
-                                                   ? Outcome::Status::kOutOfMemory
-                                                   : Outcome::Status::kBroken;
-                return fail(status, false);
-            }
-            std::optional<Response> resp;
-            if (frame->type == FrameType::kResponse)
-                resp = DecodeResponse(frame->payload);
-            if (!resp) {
-                o.detail = "a malformed response";
-                return fail(Outcome::Status::kBroken, true);
-            }
-            o.response = std::move(*resp);
-            return o;
         }
         const auto now = Clock::now();
         if (now >= deadline)

@@ -253,7 +253,8 @@ TEST(FileExchange, AnAnswerWithoutBytesNeverOvertakesTheOneWithThem) {
         return path.rfind("/client/", 0) == 0 ? std::optional<std::string>("float4 Same;\n")
                                               : std::nullopt;
     });
-    FileServer server(client);
+    ContentHashes hashes;
+    FileServer server(client, hashes);
     RemoteFiles remote([&](const std::string& path) -> std::optional<FileAnswer> {
         const std::string frame = server.Answer(path);
         const auto f = SplitWholeFrame(frame);
@@ -278,6 +279,32 @@ TEST(FileExchange, AnAnswerWithoutBytesNeverOvertakesTheOneWithThem) {
         th.join();
     EXPECT_EQ(missing.load(), 0);
     EXPECT_EQ(remote.error(), "");
+}
+
+// Each connection (a worker) is sent a file's bytes once; a second connection is sent them again.
+// The hash is the compile's, shared by the connections, and names the bytes.
+TEST(FileExchange, EachConnectionGetsTheBytesOnceUnderOneSharedHash) {
+    hlsl::FileCache client([](const std::string&) -> std::optional<std::string> {
+        return std::optional<std::string>("float4 Shared;\n");
+    });
+    ContentHashes hashes;
+    FileServer first(client, hashes), second(client, hashes);
+    auto answer = [](FileServer& server) {
+        const std::string frame = server.Answer("/client/a.cginc");
+        const auto f = SplitWholeFrame(frame);
+        return f ? DecodeFile(f->payload) : std::nullopt;
+    };
+    const std::optional<FileAnswer> a1 = answer(first), a2 = answer(first), b1 = answer(second);
+    ASSERT_TRUE(a1 && a2 && b1);
+    EXPECT_TRUE(a1->with_content);
+    EXPECT_EQ(a1->content, "float4 Shared;\n");
+    EXPECT_FALSE(a2->with_content);  // this connection has it
+    EXPECT_TRUE(b1->with_content);   // that one does not yet
+    EXPECT_EQ(a1->hash, a2->hash);
+    EXPECT_EQ(a1->hash, b1->hash);
+    EXPECT_EQ(a1->hash, hashes.Of(client.Get("/client/a.cginc")));
+    first.Reset();  // a new worker on the first connection's slot
+    EXPECT_TRUE(answer(first)->with_content);
 }
 
 }  // namespace
