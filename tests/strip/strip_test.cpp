@@ -258,6 +258,17 @@ TEST(SceneStrip, DiffCountsVariantsAndBytesPerPassWithABudget) {
     EXPECT_EQ(RunKiln("diff --max-added-bytes 1000 " + sun + " " + full).exit_code, 1);
 }
 
+// The shaders the demo scene's materials use, with the deferred light pass: a command line's list.
+std::string DemoShaders() {
+    std::string shaders;
+    for (const char* s : {"Unlit", "Lambert", "LambertAmbient", "BlinnPhong", "BlinnPhongTextured",
+                          "EnergyConserving", "Standard", "StandardMetallic", "MultiLight",
+                          "Deferred", "internal/DeferredShading"}) {
+        shaders += DataPath(std::string("../materials/") + s + ".shader") + " ";
+    }
+    return shaders;
+}
+
 // --path deferred plans the deferred path's lookups: the G-buffer passes of the objects that have
 // one, the light pass's variants per light (a mask and a bounded draw for ranged lights), and the
 // forward passes of the rest; the stripped pack then renders the demo scene deferred (and not
@@ -265,12 +276,7 @@ TEST(SceneStrip, DiffCountsVariantsAndBytesPerPassWithABudget) {
 TEST(SceneStrip, TheDeferredPathStripsToItsOwnLookups) {
     ScratchDir dir;
     const std::string out = dir.path() + "/deferred.kpack";
-    std::string shaders;
-    for (const char* s : {"Unlit", "Lambert", "LambertAmbient", "BlinnPhong", "BlinnPhongTextured",
-                          "EnergyConserving", "Standard", "StandardMetallic", "MultiLight",
-                          "Deferred", "internal/DeferredShading"}) {
-        shaders += DataPath(std::string("../materials/") + s + ".shader") + " ";
-    }
+    const std::string shaders = DemoShaders();
     const std::string demo = DataPath("../scenes/demo/demo.gltf");
     const RunResult r = RunKiln("compile " + shaders + "--no-cache -o " + out + " --scene " + demo +
                                 " --path deferred --verify-scene");
@@ -298,12 +304,8 @@ TEST(SceneStrip, TheDeferredPathStripsToItsOwnLookups) {
 TEST(SceneStrip, DeferredShadowsStripToTheLightPassShadowVariants) {
     ScratchDir dir;
     const std::string out = dir.path() + "/deferred_shadows.kpack";
-    std::string shaders;
-    for (const char* s : {"Unlit", "Lambert", "LambertAmbient", "BlinnPhong", "BlinnPhongTextured",
-                          "EnergyConserving", "Standard", "StandardMetallic", "MultiLight",
-                          "Deferred", "internal/DeferredShading", "internal/ScreenSpaceShadows"}) {
-        shaders += DataPath(std::string("../materials/") + s + ".shader") + " ";
-    }
+    const std::string shaders =
+        DemoShaders() + DataPath("../materials/internal/ScreenSpaceShadows.shader") + " ";
     const std::string demo = DataPath("../scenes/demo/demo.gltf");
     const RunResult r = RunKiln("compile " + shaders + "--no-cache -o " + out + " --scene " + demo +
                                 " --path deferred --shadows soft --verify-scene");

@@ -24,6 +24,14 @@ Result<runtime::Renderer> MakeRenderer(const runtime::RendererOptions& options,
 
 namespace kiln::cli {
 
+runtime::RendererOptions HarnessRendererOptions(bool validation, const std::string& device) {
+    runtime::RendererOptions options;
+    options.validation = validation;
+    options.device_filter = device;
+    options.float32_target = true;
+    return options;
+}
+
 void AddPathOption(CLI::App& cmd, std::string& name) {
     const std::vector<runtime::RenderPathInfo> paths = runtime::RenderPaths();
     std::string help = "Render path (default forward): ", names;

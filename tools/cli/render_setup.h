@@ -17,6 +17,11 @@ Result<runtime::Renderer> MakeRenderer(const runtime::RendererOptions& options,
                                        const std::vector<std::string>& packs,
                                        std::string* failed_pack = nullptr);
 
+// The renderer options of the harness commands (kiln test, kiln stability): 32-bit float targets,
+// as their checks read linear values (fp16 would turn large finite values into Inf), the
+// validation layer as asked, the --device filter.
+runtime::RendererOptions HarnessRendererOptions(bool validation, const std::string& device);
+
 // --path: a registered render path's name (runtime::RenderPaths, any case), stored as it is
 // registered into `name`; another name is refused with the registered ones and the closest.
 void AddPathOption(CLI::App& cmd, std::string& name);

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "render_setup.h"
 #include "commands.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
 #include "kiln/tools/accuracy_report.h"
+#include "render_setup.h"
 
 namespace kiln::cli {
 namespace {

@@ -20,6 +20,7 @@
 #include "kiln/runtime/renderer.h"
 #include "kiln/tools/stability.h"
 #include "kiln/tools/template_stability.h"
+#include "render_setup.h"
 
 namespace kiln::cli {
 namespace {
@@ -230,10 +231,7 @@ std::function<int()> AddStabilityCommand(CLI::App* cmd, const GlobalOptions& glo
         if (!made_color)
             return run.Fail(made_color.error(), "");
         const runtime::ColorPipeline color = std::move(made_color).value();
-        runtime::RendererOptions options;
-        options.validation = true;
-        options.device_filter = a->device;
-        options.float32_target = true;  // fp16 targets would turn large finite values into Inf
+        const runtime::RendererOptions options = HarnessRendererOptions(true, a->device);
         auto validation = [&](const runtime::Renderer& renderer) {
             for (const std::string& m : renderer.ValidationMessages())
                 diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);

@@ -8,12 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render_setup.h"
 #include "commands.h"
 #include "kiln/pack/variant_selector.h"
 #include "kiln/runtime/color.h"
 #include "kiln/runtime/renderer.h"
 #include "kiln/tools/variant_test.h"
+#include "render_setup.h"
 
 namespace kiln::cli {
 namespace {
@@ -64,10 +64,8 @@ std::function<int()> AddTestCommand(CLI::App* cmd, const GlobalOptions& global) 
         if (!made_color)
             return run.Fail(made_color.error(), "");
         const runtime::ColorPipeline color = std::move(made_color).value();
-        runtime::RendererOptions options;
-        options.validation = !a->no_validation;
-        options.device_filter = a->device;
-        options.float32_target = true;  // the checks compare linear values
+        const runtime::RendererOptions options =
+            HarnessRendererOptions(!a->no_validation, a->device);
         std::string failed_pack;
         Result<runtime::Renderer> made = MakeRenderer(options, a->packs, &failed_pack);
         if (!made)
