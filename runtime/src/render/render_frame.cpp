@@ -109,8 +109,8 @@ Status RenderFrame(Renderer::State& s,
     if (drawn.shadows != Shadows::kOff && !resources.bounds) {
         resources.bounds = SceneBounds(scene);
     }
-    const PlanInputs in{s.PackList(),        scene,         drawn, camera, color,
-                        resources.materials, stats.warnings};
+    const std::vector<const pack::Pack*> packs = s.PackList();
+    const PlanInputs in{packs, scene, drawn, camera, color, resources.materials, stats.warnings};
     Result<std::unique_ptr<PathPlan>> planned = path->Plan(in);
     if (!planned) {
         return planned.error();
