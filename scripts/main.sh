@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 # The images this job promises (README): it fails unless each is in out/ and decodes as its format.
 samples=(Box BoxTextured TextureCoordinateTest TextureEncodingTest MetalRoughSpheresNoTextures
          NormalTangentTest LightsPunctualLamp)
-images=(out/demo.png out/demo.exr)
+images=(out/demo.png out/demo.exr out/demo-deferred.png)
 if [ -d ../shared/gltf-samples ]; then
     for s in "${samples[@]}"; do images+=("out/$s.png"); done
 fi
@@ -59,6 +59,10 @@ mkdir -p out
 build/release/bin/kiln render scenes/demo/demo.gltf --validation --width 1280 --height 720 \
     --shadows soft \
     -o out/demo.png --exr out/demo.exr
+echo
+echo "== kiln render: the same scene on the deferred path, its light pass shadowed"
+build/release/bin/kiln render scenes/demo/demo.gltf --validation --width 1280 --height 720 \
+    --path deferred --shadows soft -o out/demo-deferred.png
 echo
 echo "== kiln render: the glTF samples in ../shared/gltf-samples"
 if [ -d ../shared/gltf-samples ]; then

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <vector>
 
@@ -137,6 +138,31 @@ TEST_F(RuntimeTest, DeferredAgreesWithForwardOnAnOpaqueScene) {
         SCOPED_TRACE(material);
         ExpectAgree(d);
     }
+}
+
+// With soft shadows of every light (a sun, two point lights, a spot), the deferred path's light
+// passes sample the same shadow passes as the forward path's passes do: the images agree within
+// the G-buffer's tolerance above. The shadows do change the image (a mean of more than two
+// display steps), so this is not a comparison of two unshadowed frames.
+TEST_F(RuntimeTest, DeferredAgreesWithForwardWithShadows) {
+    const runtime::Scene scene = LitScene(RuntimeData("deferred_metallic.material"));
+    runtime::FrameSettings forward_settings = PathSettings(runtime::RenderPath::kForward);
+    runtime::FrameSettings deferred_settings = PathSettings(runtime::RenderPath::kDeferred);
+    forward_settings.shadows = deferred_settings.shadows = runtime::Shadows::kSoft;
+    runtime::FrameStats fs, ds;
+    const runtime::LinearImage forward = Render(scene, forward_settings, &fs);
+    const runtime::LinearImage deferred = Render(scene, deferred_settings, &ds);
+    EXPECT_GT(ds.shadow_draws, 0u);
+    EXPECT_EQ(ds.shadow_draws, fs.shadow_draws);  // the same shadow passes
+    EXPECT_EQ(ds.light_passes, 4u);
+    EXPECT_TRUE(ds.warnings.all().empty());
+    const Difference d = Compare(forward, deferred);
+    std::cout << "forward vs deferred, soft shadows: " << d << "\n";
+    ExpectAgree(d);
+    const Difference shadowed =
+        Compare(deferred, Render(scene, PathSettings(runtime::RenderPath::kDeferred)));
+    std::cout << "deferred with vs without shadows: " << shadowed << "\n";
+    EXPECT_GT(shadowed.mean, 2.0 / 255) << shadowed;
 }
 
 // The G-buffer normal formats and encodings, whose error the setting exists to measure: Unity's
