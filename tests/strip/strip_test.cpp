@@ -258,6 +258,58 @@ TEST(SceneStrip, DiffCountsVariantsAndBytesPerPassWithABudget) {
     EXPECT_EQ(RunKiln("diff --max-added-bytes 1000 " + sun + " " + full).exit_code, 1);
 }
 
+// kiln diff names the keyword sets a pass gained and lost (text and JSON): from the one-sun pack to
+// the lamps pack (point lights past --pixel-lights 1 become vertex lights), the base pass trades
+// its plain variant for VERTEXLIGHT_ON and the additive pass gains POINT. Past 16 sets a pass
+// lists 16 and says how many more; --json lists every one.
+TEST(SceneStrip, DiffNamesTheKeywordSetsAddedAndRemoved) {
+    ScratchDir dir;
+    const std::string sun = dir.path() + "/sun.kpack", lamps = dir.path() + "/lamps.kpack";
+    ASSERT_EQ(CompileStripLight(sun, "sun.gltf").exit_code, 0);
+    ASSERT_EQ(CompileStripLight(lamps, "lamps.gltf", "--pixel-lights 1").exit_code, 0);
+    const RunResult text = RunKiln("diff " + sun + " " + lamps);
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("pass \"FORWARD\": 0 variants, "), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("  + VERTEXLIGHT_ON\n  - (no keywords)\n"), std::string::npos)
+        << text.out;
+    EXPECT_NE(text.out.find("pass \"FORWARD_DELTA\": +1 variants, "), std::string::npos)
+        << text.out;
+    EXPECT_NE(text.out.find("  + POINT\n"), std::string::npos) << text.out;
+    const RunResult json = RunKiln("diff --json " + sun + " " + lamps);
+    ASSERT_EQ(json.exit_code, 0);
+    std::map<std::string, nlohmann::json> sets;
+    const nlohmann::json doc = nlohmann::json::parse(json.out);
+    for (const auto& p : doc["passes"])
+        sets[p["pass"].get<std::string>()] = p["keyword_sets"];
+    EXPECT_EQ(sets["FORWARD"]["added"], nlohmann::json::array({"VERTEXLIGHT_ON"}));
+    EXPECT_EQ(sets["FORWARD"]["removed"], nlohmann::json::array({"(no keywords)"}));
+    EXPECT_EQ(sets["FORWARD_DELTA"]["added"], nlohmann::json::array({"POINT"}));
+    EXPECT_EQ(sets["FORWARD_DELTA"]["removed"], nlohmann::json::array());
+    EXPECT_EQ(sets["DEFERRED"]["added"], nlohmann::json::array());
+
+    // 32 keyword sets in one pass (each keyword changes the program): 16 listed, then the count.
+    std::string pragmas, uses;
+    for (const char* k : {"A", "B", "C", "D", "E"}) {
+        pragmas += std::string("#pragma multi_compile _ KW_") + k + "\n";
+        uses += std::string("#ifdef KW_") + k + "\nc += 0.1;\n#endif\n";
+    }
+    const std::string many = dir.Write(
+        "Many.shader",
+        "Shader \"Test/Many\" { SubShader { Pass { CGPROGRAM\n#pragma vertex v\n#pragma "
+        "fragment f\n" +
+            pragmas +
+            "float4 v(float4 p : POSITION) : SV_POSITION { return p; }\nfloat4 f() : SV_Target {\n"
+            "float c = 0;\n" +
+            uses + "return c;\n}\nENDCG } } }\n");
+    const std::string many_pack = dir.path() + "/many.kpack";
+    ASSERT_EQ(RunKiln("compile " + many + " --no-cache -o " + many_pack).exit_code, 0);
+    const RunResult capped = RunKiln("diff " + sun + " " + many_pack);
+    ASSERT_EQ(capped.exit_code, 0) << capped.err;
+    EXPECT_NE(capped.out.find("  ... 16 more added (--json lists every one)\n"), std::string::npos)
+        << capped.out;
+    EXPECT_NE(capped.out.find("  + KW_A KW_B KW_C KW_D KW_E\n"), std::string::npos) << capped.out;
+}
+
 // The shaders the demo scene's materials use, with the deferred light pass: a command line's list.
 std::string DemoShaders() {
     std::string shaders;

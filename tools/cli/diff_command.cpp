@@ -1,17 +1,23 @@
 // kiln diff OLD.kpack NEW.kpack [--max-added-variants N] [--max-added-bytes B] [--json]: variants
-// and bytes added or removed per shader and pass, for CI: "+48 variants, +310 KiB". A pass's bytes
-// are the SPIR-V of the distinct modules its variants use; the total is the packs' file sizes.
+// and bytes added or removed per shader and pass, for CI: "+48 variants, +310 KiB", and which
+// keyword sets those variants are ("+ POINT SHADOWS_CUBE"). A pass's bytes are the SPIR-V of the
+// distinct modules its variants use; the total is the packs' file sizes.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <set>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "kiln/base/text.h"
 #include "kiln/pack/pass_id.h"
+#include "kiln/pack/variant_selector.h"
 
 namespace kiln::cli {
 namespace {
@@ -20,7 +26,11 @@ using namespace kiln::pack;
 
 struct PassSize {
     uint64_t variants = 0, bytes = 0;
+    std::set<std::string> keyword_sets;  // each variant's, as kiln variants spells it
 };
+
+// Keyword sets listed per pass and direction in the text output; --json lists every one.
+constexpr size_t kListedSets = 16;
 using Sizes = std::map<std::pair<std::string, std::string>, PassSize>;  // (shader, pass)
 
 Sizes SizesOf(const Pack& p) {
@@ -34,6 +44,9 @@ Sizes SizesOf(const Pack& p) {
         for (uint32_t v = rec.first_variant; v < rec.first_variant + rec.variant_count; ++v) {
             const VariantRec vr = p.Variant(v).value();
             modules.insert({vr.vertex_module, vr.fragment_module});
+            // Pack strings are untrusted bytes: escaped as diagnostics escape them.
+            size.keyword_sets.insert(
+                base::EscapeForTerminal(JoinKeywords(p.KeywordsOf(pass, VariantKey(vr.key)))));
         }
         for (uint32_t m : modules)
             size.bytes += p.Module(m).value().spirv_size;
@@ -43,6 +56,25 @@ Sizes SizesOf(const Pack& p) {
 
 std::string Signed(int64_t n, const char* unit) {
     return (n > 0 ? "+" : "") + std::to_string(n) + unit;
+}
+
+// The sets in `a` and not in `b`, sorted.
+std::vector<std::string> Minus(const std::set<std::string>& a, const std::set<std::string>& b) {
+    std::vector<std::string> out;
+    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+    return out;
+}
+
+// "  + POINT\n" per set, at most kListedSets of them, then how many more.
+std::string ListSets(const std::vector<std::string>& sets, char sign, const char* what) {
+    std::string out;
+    for (size_t i = 0; i < sets.size() && i < kListedSets; ++i)
+        out += std::string("  ") + sign + " " + sets[i] + "\n";
+    if (sets.size() > kListedSets) {
+        out += "  ... " + std::to_string(sets.size() - kListedSets) + " more " + what +
+               " (--json lists every one)\n";
+    }
+    return out;
 }
 
 // "+310 KiB", "-2.5 KiB", "+0 KiB".
@@ -97,10 +129,12 @@ std::function<int()> AddDiffCommand(CLI::App* cmd, const GlobalOptions& global) 
             const int64_t dv = int64_t(now.variants) - int64_t(was.variants);
             const int64_t db = int64_t(now.bytes) - int64_t(was.bytes);
             added_variants += dv;
-            const char* status = b == before.end()  ? "added"
-                                 : a == after.end() ? "removed"
-                                 : dv || db         ? "changed"
-                                                    : "unchanged";
+            const std::vector<std::string> gained = Minus(now.keyword_sets, was.keyword_sets);
+            const std::vector<std::string> lost = Minus(was.keyword_sets, now.keyword_sets);
+            const char* status = b == before.end()                              ? "added"
+                                 : a == after.end()                             ? "removed"
+                                 : dv || db || !gained.empty() || !lost.empty() ? "changed"
+                                                                                : "unchanged";
             // Pack strings are untrusted bytes: escaped as diagnostics escape them.
             const std::string shader = base::EscapeForTerminal(key.first);
             const std::string pass = base::EscapeForTerminal(key.second);
@@ -108,12 +142,14 @@ std::function<int()> AddDiffCommand(CLI::App* cmd, const GlobalOptions& global) 
                               {"pass", pass},
                               {"status", status},
                               {"variants", {{"old", was.variants}, {"new", now.variants}}},
-                              {"bytes", {{"old", was.bytes}, {"new", now.bytes}}}});
+                              {"bytes", {{"old", was.bytes}, {"new", now.bytes}}},
+                              {"keyword_sets", {{"added", gained}, {"removed", lost}}}});
             if (std::string(status) == "unchanged")
                 continue;
             text += "shader \"" + shader + "\" pass \"" + pass + "\": " + Signed(dv, " variants") +
                     ", " + KiB(db) + " (" + status + ", " + std::to_string(was.variants) + " -> " +
-                    std::to_string(now.variants) + " variants)\n";
+                    std::to_string(now.variants) + " variants)\n" + ListSets(gained, '+', "added") +
+                    ListSets(lost, '-', "removed");
         }
         const int64_t added_bytes =
             int64_t(new_file.bytes().size()) - int64_t(old_file.bytes().size());
