@@ -1,7 +1,10 @@
 // The frame debugger as a person uses it: `kiln render --frame-debug DIR` on the demo scene, on
 // both paths, writes a page that headless Chromium (Debian's chromium, installed by
 // scripts/setup.sh) opens. The page lists every pass of the frame with its steps, every step's
-// images load in the browser, and the records say what each step drew.
+// images load in the browser and are shown at their target's aspect ratio, steps are numbered
+// one way (from 1: list, heading, counter, #step-N links, frame.json), a #step-N link opens that
+// step, labels name material files relative to the scene, and the records say what each step
+// drew.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -21,11 +24,14 @@ namespace {
 namespace fs = std::filesystem;
 
 // The DOM of `page` after its load event, as headless Chromium serializes it; empty when Chromium
-// is missing or fails.
-std::string DumpDom(const std::string& page) {
+// is missing or fails. The window is narrow (headless Chromium's narrowest, 500 pixels), so the
+// 320-pixel targets are shown smaller than their size, which is where an image could lose its
+// aspect ratio.
+std::string DumpDom(const std::string& page, const std::string& fragment = "") {
     const std::string command =
-        "chromium --headless --no-sandbox --disable-gpu --dump-dom 'file://" +
-        fs::absolute(page).string() + "' 2>/dev/null";
+        "chromium --headless --no-sandbox --disable-gpu --window-size=400,800 --dump-dom "
+        "'file://" +
+        fs::absolute(page).string() + fragment + "' 2>/dev/null";
     std::string out;
     if (FILE* p = popen(command.c_str(), "r")) {
         char buffer[4096];
@@ -66,7 +72,7 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
     ScratchDir dir;
     const std::string out = dir.path() + "/debug";
     const RunResult r = RunKiln("render " + DataPath("../scenes/demo/demo.gltf") +
-                                " --width 240 --height 135 --validation --path " + path.name +
+                                " --width 320 --height 180 --validation --path " + path.name +
                                 " -o " + dir.path() + "/frame.png --frame-debug " + out);
     ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
     EXPECT_NE(r.out.find(out + "/index.html: "), std::string::npos) << r.out;
@@ -111,8 +117,22 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
                   std::string::npos)
             << "pass " << pass << " not listed";
     }
-    size_t n = 0;
+    EXPECT_EQ(Attribute(dom, "data-images-in-proportion"), long(images))
+        << "images shown at another aspect ratio than their target's";
+    // Without a link the page opens on the last step.
+    EXPECT_EQ(Attribute(dom, "data-current"), long(frame["steps"].size()));
+    // One numbering: frame.json's steps count from 1, as the page's ids and counter do.
+    EXPECT_EQ(frame["steps"][0]["step"].get<int>(), 1);
+    EXPECT_NE(dom.find("step " + std::to_string(frame["steps"].size()) + " of " +
+                       std::to_string(frame["steps"].size())),
+              std::string::npos);
+    // Material files are named relative to the scene's folder, never by an absolute path.
+    EXPECT_NE(dom.find("../../materials/Lambert.material on node 'Lambert'"), std::string::npos);
+    EXPECT_EQ(dom.find(DataPath("../materials")), std::string::npos);
+    size_t n = 1;
     for (const auto& step : frame["steps"]) {
+        EXPECT_EQ(step["step"].get<size_t>(), n);
+        EXPECT_EQ(step["object"].get<std::string>().find('/') == 0, false) << step.dump();
         const std::string id = "id=\"step-" + std::to_string(n++) + "\"";
         const size_t section = dom.find(id);
         ASSERT_NE(section, std::string::npos) << id;
@@ -123,6 +143,27 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
             EXPECT_LT(img, end) << image["file"] << " is not shown in " << id;
         }
     }
+}
+
+// A #step-N link opens step N (the section shown, the others hidden, the list's link current).
+TEST(FrameDebug, AStepLinkOpensThatStep) {
+    ASSERT_TRUE(HaveChromium())
+        << "chromium is not installed (scripts/setup.sh installs Debian's chromium package)";
+    ScratchDir dir;
+    const std::string out = dir.path() + "/debug";
+    const RunResult r = RunKiln("render " + DataPath("../scenes/demo/demo.gltf") +
+                                " --width 96 --height 54 -o " + dir.path() +
+                                "/frame.png --frame-debug " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string dom = DumpDom(out + "/index.html", "#step-3");
+    ASSERT_FALSE(dom.empty());
+    EXPECT_EQ(Attribute(dom, "data-current"), 3);
+    EXPECT_NE(dom.find("<section class=\"step\" id=\"step-3\""), std::string::npos) << dom;
+    EXPECT_NE(dom.find("<section class=\"step hidden\" id=\"step-2\""), std::string::npos);
+    EXPECT_NE(dom.find("class=\"current\"><span class=\"n\">3</span>"), std::string::npos);
+    EXPECT_NE(dom.find("step 3 of "), std::string::npos);
+    // A link past the last step is ignored: the page opens on the last step.
+    EXPECT_GT(Attribute(DumpDom(out + "/index.html", "#step-100000"), "data-current"), 3);
 }
 
 INSTANTIATE_TEST_SUITE_P(Paths,

@@ -1,8 +1,10 @@
 // WriteFrameDebug: a captured frame (kiln/runtime/frame_capture.h) as files a person opens in a
 // browser. The page lists every pass with its steps and every step's images in static HTML, so
-// it reads without script too; its script shows one step at a time (the list, the buttons, or
-// the arrow keys) and, once the page has loaded, counts the images that loaded into
-// <body data-images-loaded>, which the headless-browser test reads.
+// it reads without script too; its script shows one step at a time (the list, the buttons, the
+// arrow keys, or a #step-N link), and, once the page has loaded, counts the images that loaded
+// into <body data-images-loaded> and those shown at their target's aspect ratio into
+// data-images-in-proportion, which the headless-browser test reads. Steps are numbered from 1,
+// one way everywhere: the list, the titles, the counter, the links and frame.json.
 #include "kiln/tools/frame_debug.h"
 
 #include <cstdio>
@@ -64,23 +66,41 @@ std::string Slug(const std::string& s) {
     return out.empty() ? "target" : out;
 }
 
+// A draw's object label with the material file's path relative to the scene's folder:
+// "../materials/Lambert.material on node 'Lambert'" rather than an absolute path.
+std::string RelativeLabel(const std::string& object, const std::string& scene) {
+    const size_t on = object.find(" on ");
+    const std::string name = object.substr(0, on);
+    if (name.find('/') == std::string::npos) {
+        return object;  // "glTF material 'x'", a name without a folder
+    }
+    std::error_code ec;
+    const fs::path base = fs::absolute(fs::path(scene).parent_path(), ec).lexically_normal();
+    const fs::path file = fs::absolute(name, ec).lexically_normal();
+    const fs::path relative = file.lexically_relative(base);
+    if (ec || relative.empty()) {
+        return object;
+    }
+    return relative.string() + (on == std::string::npos ? "" : object.substr(on));
+}
+
 std::string ImageFile(size_t step, const DebugImage& image) {
-    char number[16];
+    char number[24];
     std::snprintf(number, sizeof number, "%04zu", step);
     return std::string("steps/") + number + "-" + Slug(image.target) + ".png";
 }
 
-std::string StepTitle(size_t n, const DebugStep& s) {
+// What a step did, without its number (which the list and the heading give).
+std::string StepTitle(const DebugStep& s, const std::string& scene) {
     if (!s.copy.empty()) {
-        return "#" + std::to_string(n) + " copy " + s.copy;
+        return "copy " + s.copy;
     }
     if (s.draw < 0) {
-        return "#" + std::to_string(n) + " clear";
+        return "clear";
     }
-    std::string t = "#" + std::to_string(n) + " draw " + std::to_string(s.draw) + ": " + s.shader +
-                    " / " + s.shader_pass;
+    std::string t = "draw " + s.shader + " / " + s.shader_pass;
     if (!s.object.empty()) {
-        t += " on " + s.object;
+        t += " on " + RelativeLabel(s.object, scene);
     }
     if (!s.light.empty()) {
         t += ", " + s.light;
@@ -88,7 +108,7 @@ std::string StepTitle(size_t n, const DebugStep& s) {
     return t;
 }
 
-nlohmann::json Record(size_t n, const DebugStep& s) {
+nlohmann::json Record(size_t n, const DebugStep& s, const std::string& scene) {
     nlohmann::json j = {{"step", n},
                         {"pass", s.pass},
                         {"draw", s.draw},
@@ -98,7 +118,7 @@ nlohmann::json Record(size_t n, const DebugStep& s) {
                         {"keywords", s.keywords},
                         {"state", s.state},
                         {"light", s.light},
-                        {"object", s.object},
+                        {"object", RelativeLabel(s.object, scene)},
                         {"copy", s.copy}};
     j["gpu_ms"] = s.gpu_ms >= 0 ? nlohmann::json(s.gpu_ms) : nlohmann::json(nullptr);
     nlohmann::json images = nlohmann::json::array();
@@ -116,15 +136,22 @@ main{flex:1;padding:.5em 1em}h2{font-size:1em;margin:.8em 0 .2em}
 nav ol{margin:0;padding-left:1.2em}nav a{color:#036;text-decoration:none}
 nav a.current{font-weight:bold}table{border-collapse:collapse;margin:.4em 0}
 td{padding:1px 8px;vertical-align:top}td:first-child{color:#666}
-figure{display:inline-block;margin:0 1em 1em 0}img{border:1px solid #999;max-width:48vw}
+figure{display:inline-block;margin:0 1em 1em 0;max-width:48vw}
+img{border:1px solid #999;max-width:100%;height:auto;image-rendering:pixelated}
+nav ol{list-style:none;padding-left:0}.n{color:#666;display:inline-block;min-width:2.5em}
 .hidden{display:none})";
 
 constexpr const char* kScript = R"(const steps=[...document.querySelectorAll('section.step')];
 const links=[...document.querySelectorAll('nav a[data-step]')];let current=0;
-function show(i){current=Math.max(0,Math.min(steps.length-1,i));
+function show(i,keepHash){current=Math.max(0,Math.min(steps.length-1,i));
 steps.forEach((s,k)=>s.classList.toggle('hidden',k!==current));
 links.forEach((a,k)=>a.classList.toggle('current',k===current));
-document.getElementById('position').textContent=(current+1)+' / '+steps.length;}
+document.body.dataset.current=current+1;
+document.getElementById('position').textContent='step '+(current+1)+' of '+steps.length;
+if(!keepHash&&location.hash!=='#step-'+(current+1))history.replaceState(null,'','#step-'+(current+1));}
+function fromHash(){const m=/^#step-([0-9]+)$/.exec(location.hash);
+if(m&&+m[1]>=1&&+m[1]<=steps.length){show(+m[1]-1,true);return true;}return false;}
+window.addEventListener('hashchange',fromHash);
 links.forEach((a,k)=>a.addEventListener('click',e=>{e.preventDefault();show(k);}));
 document.getElementById('prev').onclick=()=>show(current-1);
 document.getElementById('next').onclick=()=>show(current+1);
@@ -133,8 +160,12 @@ if(e.key==='ArrowUp'||e.key==='ArrowLeft')show(current-1);});
 window.addEventListener('load',()=>{const imgs=[...document.images];
 const ok=imgs.filter(i=>i.complete&&i.naturalWidth>0).length;
 document.body.dataset.imagesLoaded=ok;
+const shown=current;steps.forEach(s=>s.classList.remove('hidden'));
+document.body.dataset.imagesInProportion=imgs.filter(i=>{const r=i.getBoundingClientRect();
+return i.naturalWidth>0&&r.width>0&&Math.abs(r.width/r.height-i.naturalWidth/i.naturalHeight)<
+0.02*i.naturalWidth/i.naturalHeight;}).length;show(shown,true);
 document.getElementById('status').textContent=ok+' of '+imgs.length+' images loaded';});
-show(steps.length-1);)";
+if(!fromHash())show(steps.length-1,true);)";
 
 std::string Page(const FrameCapture& capture) {
     size_t image_count = 0;
@@ -158,10 +189,12 @@ std::string Page(const FrameCapture& capture) {
                 h += "</ol></div>\n";
             }
             h += "<div class=\"pass\" data-pass=\"" + Escape(s.pass) + "\"><h2>Pass " +
-                 Escape(s.pass) + "</h2><ol start=\"" + std::to_string(n) + "\">\n";
+                 Escape(s.pass) + "</h2><ol>\n";
         }
-        h += "<li><a href=\"#step-" + std::to_string(n) + "\" data-step=\"" + std::to_string(n) +
-             "\">" + Escape(StepTitle(n, s)) + "</a></li>\n";
+        const std::string number = std::to_string(n + 1);
+        h += "<li><a href=\"#step-" + number + "\" data-step=\"" + number +
+             "\"><span class=\"n\">" + number + "</span>" + Escape(StepTitle(s, capture.scene)) +
+             "</a></li>\n";
     }
     if (!capture.steps.empty()) {
         h += "</ol></div>\n";
@@ -169,9 +202,10 @@ std::string Page(const FrameCapture& capture) {
     h += "</nav>\n<main>\n";
     for (size_t n = 0; n < capture.steps.size(); ++n) {
         const DebugStep& s = capture.steps[n];
-        h += "<section class=\"step\" id=\"step-" + std::to_string(n) + "\" data-pass=\"" +
-             Escape(s.pass) + "\">\n<h2>Pass " + Escape(s.pass) + ", " + Escape(StepTitle(n, s)) +
-             "</h2>\n<table>\n";
+        const std::string number = std::to_string(n + 1);
+        h += "<section class=\"step\" id=\"step-" + number + "\" data-pass=\"" + Escape(s.pass) +
+             "\">\n<h2>Step " + number + ", pass " + Escape(s.pass) + ": " +
+             Escape(StepTitle(s, capture.scene)) + "</h2>\n<table>\n";
         auto row = [&](const char* label, const std::string& value) {
             if (!value.empty()) {
                 h += "<tr><td>" + std::string(label) + "</td><td>" + Escape(value) + "</td></tr>\n";
@@ -183,7 +217,7 @@ std::string Page(const FrameCapture& capture) {
         row("keywords", s.draw >= 0 && s.keywords.empty() ? "(none)" : s.keywords);
         row("render state", s.state);
         row("light", s.light);
-        row("object", s.object);
+        row("object", RelativeLabel(s.object, capture.scene));
         if (s.draw >= 0) {
             char ms[32];
             std::snprintf(ms, sizeof ms, "%.3f ms", s.gpu_ms);
@@ -191,11 +225,14 @@ std::string Page(const FrameCapture& capture) {
         }
         h += "</table>\n<div class=\"images\">\n";
         for (const DebugImage& image : s.images) {
-            const std::string alt = image.target + " after step " + std::to_string(n);
-            h += "<figure><img src=\"" + ImageFile(n, image) + "\" alt=\"" + Escape(alt) +
-                 "\" width=\"" + std::to_string(image.width) + "\" height=\"" +
-                 std::to_string(image.height) + "\"><figcaption>" + Escape(image.target) +
-                 "</figcaption></figure>\n";
+            const std::string alt = image.target + " after step " + number;
+            const std::string file = ImageFile(n + 1, image);
+            // Click: the image at its full size, in a tab of its own.
+            h += "<figure><a href=\"" + file + "\" target=\"_blank\"><img src=\"" + file +
+                 "\" alt=\"" + Escape(alt) + "\" width=\"" + std::to_string(image.width) +
+                 "\" height=\"" + std::to_string(image.height) + "\"></a><figcaption>" +
+                 Escape(image.target) + " (" + std::to_string(image.width) + "x" +
+                 std::to_string(image.height) + ")</figcaption></figure>\n";
         }
         h += "</div>\n</section>\n";
     }
@@ -222,13 +259,13 @@ Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
     nlohmann::json steps = nlohmann::json::array();
     for (size_t n = 0; n < capture.steps.size(); ++n) {
         for (const DebugImage& image : capture.steps[n].images) {
-            if (Status e = WritePng((fs::path(dir) / ImageFile(n, image)).string(), image.width,
+            if (Status e = WritePng((fs::path(dir) / ImageFile(n + 1, image)).string(), image.width,
                                     image.height, image.rgba8, replace_links);
                 !e.ok()) {
                 return e;
             }
         }
-        steps.push_back(Record(n, capture.steps[n]));
+        steps.push_back(Record(n + 1, capture.steps[n], capture.scene));
     }
     const nlohmann::json frame = {{"scene", capture.scene},
                                   {"path", capture.path},
