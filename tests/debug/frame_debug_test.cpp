@@ -71,9 +71,25 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
     const Path& path = GetParam();
     ScratchDir dir;
     const std::string out = dir.path() + "/debug";
-    const RunResult r = RunKiln("render " + DataPath("../scenes/demo/demo.gltf") +
-                                " --width 320 --height 180 --validation --path " + path.name +
-                                " -o " + dir.path() + "/frame.png --frame-debug " + out);
+    // The demo's materials, its textured sphere with an image file (a 3x2 PNG) for its albedo.
+    fs::copy_file(DataPath("fuzz/corpus/image/png_3x2.png"), dir.path() + "/albedo.png");
+    const std::string textured = dir.Write(
+        "textured.material",
+        R"({"kiln_material": 1, "shader": "Kiln/BlinnPhongTextured", "properties": {"_MainTex": "albedo.png"}})");
+    nlohmann::json sidecar =
+        nlohmann::json::parse(ReadFile(DataPath("../scenes/demo/demo.kiln.json")));
+    for (auto& [name, file] : sidecar["materials"].items()) {
+        file = name == "BlinnPhongTextured"
+                   ? textured
+                   : fs::absolute(DataPath("../scenes/demo/" + file.get<std::string>()))
+                         .lexically_normal()
+                         .string();
+    }
+    const std::string materials = dir.Write("demo.kiln.json", sidecar.dump());
+    const RunResult r =
+        RunKiln("render " + DataPath("../scenes/demo/demo.gltf") + " --materials " + materials +
+                " --width 320 --height 180 --validation --path " + path.name + " -o " + dir.path() +
+                "/frame.png --frame-debug " + out);
     ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
     EXPECT_NE(r.out.find(out + "/index.html: "), std::string::npos) << r.out;
 
@@ -82,6 +98,7 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
     std::vector<std::string> passes;
     size_t images = 0;
     bool additive = false, light_pass = false;
+    size_t thumbnails = 0;
     for (const auto& step : frame["steps"]) {
         const std::string pass = step["pass"];
         if (passes.empty() || passes.back() != pass) {
@@ -97,12 +114,37 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
             EXPECT_FALSE(step["shader"].get<std::string>().empty()) << step.dump();
             EXPECT_FALSE(step["state"].get<std::string>().empty()) << step.dump();
             EXPECT_TRUE(step["gpu_ms"].is_number()) << "lavapipe has timestamps: " << step.dump();
+            // What the draw drew with: its mesh and counts, its uniform values by name.
+            EXPECT_FALSE(step["mesh"].get<std::string>().empty()) << step.dump();
+            EXPECT_GT(step["vertices"].get<int>(), 0) << step.dump();
+            EXPECT_EQ(step["indices"].get<int>() % 3, 0) << step.dump();
+            EXPECT_FALSE(step["values"].empty()) << step.dump();
+            for (const auto& t : step["textures"]) {
+                EXPECT_GT(t["width"].get<int>(), 0) << t.dump();
+                EXPECT_FALSE(t["source"].get<std::string>().empty()) << t.dump();
+                if (t["thumbnail"].is_string()) {
+                    EXPECT_TRUE(fs::is_regular_file(out + "/" + t["thumbnail"].get<std::string>()))
+                        << t.dump();
+                    ++images;
+                    ++thumbnails;
+                }
+            }
+            if (step["object"].get<std::string>().find("Lambert.material") == 0) {
+                // The material's colour as bound, and the sphere's mesh.
+                EXPECT_TRUE(step["values"].contains("_Color")) << step.dump();
+            }
+            if (step["shader"] == "Hidden/Internal-DeferredShading") {
+                EXPECT_EQ(step["mesh"], "the full-screen triangle");
+                EXPECT_EQ(step["indices"], 3);
+            }
         }
         additive |= step["light_mode"] == "ForwardAdd" &&
                     step["light"].get<std::string>().find("point light") == 0;
         light_pass |= step["shader"] == "Hidden/Internal-DeferredShading";
     }
     EXPECT_EQ(passes, path.passes);
+    // The textured sphere binds an image file: its thumbnail is kept.
+    EXPECT_GT(thumbnails, 0u);
     EXPECT_TRUE(additive) << "no additive pass of a point light recorded";
     EXPECT_EQ(light_pass, std::string(path.name) == "deferred");
 
@@ -118,7 +160,8 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
             << "pass " << pass << " not listed";
     }
     EXPECT_EQ(Attribute(dom, "data-images-in-proportion"), long(images))
-        << "images shown at another aspect ratio than their target's";
+        << "images shown at another aspect ratio than their target's: "
+        << dom.substr(dom.find("data-images-out-of-proportion"), 300);
     // Without a link the page opens on the last step.
     EXPECT_EQ(Attribute(dom, "data-current"), long(frame["steps"].size()));
     // One numbering: frame.json's steps count from 1, as the page's ids and counter do.
@@ -142,6 +185,17 @@ TEST_P(FrameDebugTest, ThePageListsEveryPassWithItsImagesInHeadlessChromium) {
                 dom.find("src=\"" + image["file"].get<std::string>() + "\"", section);
             EXPECT_LT(img, end) << image["file"] << " is not shown in " << id;
         }
+        for (const auto& t : step.value("textures", nlohmann::json::array())) {
+            const size_t row =
+                dom.find("<tr><td>" + t["name"].get<std::string>() + "</td>", section);
+            EXPECT_LT(row, end) << t.dump() << " is not listed in " << id;
+        }
+        if (step["draw"].get<int>() >= 0) {
+            EXPECT_LT(
+                dom.find("Uniform values (" + std::to_string(step["values"].size()) + ")", section),
+                end)
+                << id;
+        }
     }
 }
 
@@ -151,9 +205,9 @@ TEST(FrameDebug, AStepLinkOpensThatStep) {
         << "chromium is not installed (scripts/setup.sh installs Debian's chromium package)";
     ScratchDir dir;
     const std::string out = dir.path() + "/debug";
-    const RunResult r = RunKiln("render " + DataPath("../scenes/demo/demo.gltf") +
-                                " --width 96 --height 54 -o " + dir.path() +
-                                "/frame.png --frame-debug " + out);
+    const RunResult r =
+        RunKiln("render " + DataPath("../scenes/demo/demo.gltf") + " --width 96 --height 54 -o " +
+                dir.path() + "/frame.png --frame-debug " + out);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string dom = DumpDom(out + "/index.html", "#step-3");
     ASSERT_FALSE(dom.empty());

@@ -78,6 +78,36 @@ std::vector<uint8_t> StoredImage(const FrameTarget& t, const std::vector<uint8_t
     return out;
 }
 
+// The format's name without VK_FORMAT_, for the frame debugger.
+std::string FormatName(VkFormat f) {
+    switch (f) {
+        case VK_FORMAT_R8G8B8A8_SRGB:
+            return "R8G8B8A8_SRGB";
+        case VK_FORMAT_R8G8B8A8_UNORM:
+            return "R8G8B8A8_UNORM";
+        case VK_FORMAT_R8_UNORM:
+            return "R8_UNORM";
+        case VK_FORMAT_R16G16B16A16_SFLOAT:
+            return "R16G16B16A16_SFLOAT";
+        case VK_FORMAT_R32G32B32A32_SFLOAT:
+            return "R32G32B32A32_SFLOAT";
+        case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+            return "A2B10G10R10_UNORM_PACK32";
+        case VK_FORMAT_D32_SFLOAT:
+            return "D32_SFLOAT";
+        case VK_FORMAT_D16_UNORM:
+            return "D16_UNORM";
+        case VK_FORMAT_D32_SFLOAT_S8_UINT:
+            return "D32_SFLOAT_S8_UINT";
+        case VK_FORMAT_D24_UNORM_S8_UINT:
+            return "D24_UNORM_S8_UINT";
+        case VK_FORMAT_UNDEFINED:
+            return "";
+        default:
+            return "VkFormat " + std::to_string(int(f));
+    }
+}
+
 }  // namespace
 
 StepObserver CaptureObserver(const glm::mat4& projection,
@@ -106,6 +136,22 @@ StepObserver CaptureObserver(const glm::mat4& projection,
             step.state = info.state;
             step.light = info.light;
             step.object = info.object;
+            step.mesh = info.mesh;
+            step.vertex_count = info.vertex_count;
+            step.index_count = info.index_count;
+            step.values = info.values;
+            for (const Draw::Info::Texture& t : info.textures) {
+                DebugTexture& dt = step.textures.emplace_back();
+                dt.name = t.name;
+                dt.source = t.source;
+                dt.width = t.width;
+                dt.height = t.height;
+                dt.format = FormatName(t.format);
+                if (t.thumbnail && !t.thumbnail->rgba8.empty()) {
+                    dt.thumbnail = {t.name, t.thumbnail->width, t.thumbnail->height,
+                                    t.thumbnail->rgba8};
+                }
+            }
         }
         for (const CapturedTarget& ct : targets) {
             const FrameTarget& t = frame.targets[ct.target];

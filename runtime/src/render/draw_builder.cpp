@@ -194,6 +194,13 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
                 const float fw = float(frame_->width), fh = float(frame_->height);
                 out.texel_sizes[name + "_TexelSize"] = {1.0f / fw, 1.0f / fh, fw, fh};
                 out.textures.push_back(w);
+                if (record_info_ && kind != pack::ResourceKind::kSeparateSampler) {
+                    const FrameTarget& ft = frame_->targets[target];
+                    const uint32_t side = ft.size;
+                    out.texture_info.push_back({name, "frame target '" + ft.name + "'",
+                                                side ? side : frame_->width,
+                                                side ? side : frame_->height, ft.format, nullptr});
+                }
                 continue;
             }
             if (name == pack::kTextureShadowMap && (kind == pack::ResourceKind::kSeparateImage ||
@@ -217,6 +224,11 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
                 }
                 out.texel_sizes[name + "_TexelSize"] = {1, 1, 1, 1};
                 out.textures.push_back(w);
+                if (record_info_ && kind == pack::ResourceKind::kSeparateImage) {
+                    out.texture_info.push_back(
+                        {name, "no shadow map drawn: the renderer's map at depth 1 (lit)", 1, 1,
+                         VK_FORMAT_UNDEFINED, nullptr});
+                }
                 continue;
             }
             vk::ImageShape shape = vk::ImageShape::k2D;  // a lone sampler has none
@@ -241,6 +253,10 @@ Status DrawBuilder::Textures(const MaterialInstance& m,
             }
             out.texel_sizes[name + "_TexelSize"] = {1.0f / float(t.width), 1.0f / float(t.height),
                                                     float(t.width), float(t.height)};
+            if (record_info_ && kind != pack::ResourceKind::kSeparateSampler) {
+                out.texture_info.push_back(
+                    {name, t.source, t.width, t.height, t.format, t.thumbnail});
+            }
             Draw::Write w{res.set, res.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
             w.image = {t.sampler, t.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
             if (kind == pack::ResourceKind::kSeparateImage) {
@@ -349,6 +365,7 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
         if (request.instance) {
             d.info.object = ObjectLabel(scene_, *request.instance, m);
         }
+        d.info.textures = binding.texture_info;
     }
     if (request.instance) {
         const uint32_t mesh = request.instance->mesh;
@@ -359,12 +376,22 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
             return e;
         }
         d.index_count = uint32_t(request.primitive->indices.size());
+        if (record_info_) {
+            d.info.mesh =
+                "mesh '" + scene_.meshes[mesh].name + "', primitive " + std::to_string(primitive);
+            d.info.vertex_count = uint32_t(request.primitive->vertices.size());
+        }
     } else {
         if (Status e = s_.ScreenTriangle(d.vertices, d.indices); !e.ok()) {
             return e;
         }
         d.index_count = 3;
+        if (record_info_) {
+            d.info.mesh = "the full-screen triangle";
+            d.info.vertex_count = 3;
+        }
     }
+    d.info.index_count = record_info_ ? d.index_count : 0;
 
     Values light_values =
         LightValues(request.light, additive ? std::vector<const Light*>{} : request.vertex);
@@ -393,7 +420,20 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
         auto found = m.values.find(std::string(name));
         return found == m.values.end() ? nullptr : &found->second;
     };
-    Uniforms(pack, v, lookup, d);
+    if (!record_info_) {
+        Uniforms(pack, v, lookup, d);
+    } else {  // the frame debugger's record of every member as written
+        std::map<std::string, std::vector<float>, std::less<>> seen;
+        const ValueLookup recording = [&](std::string_view name) -> const std::vector<float>* {
+            const std::vector<float>* found = lookup(name);
+            if (found) {
+                seen.try_emplace(std::string(name), *found);
+            }
+            return found;
+        };
+        Uniforms(pack, v, recording, d);
+        d.info.values.assign(seen.begin(), seen.end());
+    }
     draws.push_back(std::move(d));
     return {};
 }

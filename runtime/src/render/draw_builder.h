@@ -52,6 +52,7 @@ class DrawBuilder {
         std::vector<Draw::Write> textures;
         Values texel_sizes;
         std::string state;  // the render state as ShaderLab spells it (when recording info)
+        std::vector<Draw::Info::Texture> texture_info;  // when recording info
     };
 
     void Warn(DiagCode code, std::string message);

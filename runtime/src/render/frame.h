@@ -7,11 +7,14 @@
 #ifndef KILN_RUNTIME_RENDER_FRAME_H_
 #define KILN_RUNTIME_RENDER_FRAME_H_
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/renderer_state.h"
+#include "render/textures.h"
 
 namespace kiln::runtime {
 
@@ -41,6 +44,19 @@ struct Draw {
     // What the frame debugger records about the draw.
     struct Info {
         std::string shader, pass, light_mode, keywords, state, light, object;
+        std::string mesh;  // "mesh 'sphere', primitive 0", or the full-screen triangle
+        uint32_t vertex_count = 0, index_count = 0;
+        // Each bound texture by the shader's name for it: where it comes from, its size and
+        // format, and a small copy of its image where the runtime has one (files, glTF images).
+        struct Texture {
+            std::string name, source;
+            uint32_t width = 0, height = 0;
+            VkFormat format = VK_FORMAT_UNDEFINED;
+            std::shared_ptr<const Thumbnail> thumbnail;
+        };
+        std::vector<Texture> textures;
+        // The uniform blocks' members by name, as written ("(not set)" members are absent).
+        std::vector<std::pair<std::string, std::vector<float>>> values;
     };
     Info info;
 };

@@ -151,8 +151,49 @@ Status FrameTextures::Ambient(vk::ImageShape shape, BoundTexture& out) {
         return e;
     }
     out.view = it->second.view;
+    out.width = it->second.width;
+    out.height = it->second.height;
+    out.format = it->second.format;
+    out.source = shape == vk::ImageShape::kCube ? "the scene's ambient (reflection probe)"
+                                                : "the scene's ambient (mean radiance)";
     return {};
 }
+
+namespace {
+
+// `rgba` (w x h) averaged down to at most Thumbnail::kThumbnailSize texels a side.
+std::shared_ptr<const Thumbnail> MakeThumbnail(uint32_t w,
+                                               uint32_t h,
+                                               const std::vector<uint8_t>& rgba) {
+    auto t = std::make_shared<Thumbnail>();
+    if (w == 0 || h == 0 || rgba.size() < size_t(w) * h * 4) {
+        return t;
+    }
+    const uint32_t step =
+        std::max((std::max(w, h) + Thumbnail::kThumbnailSize - 1) / Thumbnail::kThumbnailSize, 1u);
+    t->width = (w + step - 1) / step;
+    t->height = (h + step - 1) / step;
+    t->rgba8.resize(size_t(t->width) * t->height * 4);
+    for (uint32_t y = 0; y < t->height; ++y) {
+        for (uint32_t x = 0; x < t->width; ++x) {
+            uint32_t sum[4] = {0, 0, 0, 0}, n = 0;
+            for (uint32_t sy = y * step; sy < std::min(h, (y + 1) * step); ++sy) {
+                for (uint32_t sx = x * step; sx < std::min(w, (x + 1) * step); ++sx, ++n) {
+                    for (int c = 0; c < 4; ++c) {
+                        sum[c] += rgba[(size_t(sy) * w + sx) * 4 + size_t(c)];
+                    }
+                }
+            }
+            for (int c = 0; c < 4; ++c) {
+                t->rgba8[(size_t(y) * t->width + x) * 4 + size_t(c)] =
+                    uint8_t(n ? (sum[c] + n / 2) / n : 0);
+            }
+        }
+    }
+    return t;
+}
+
+}  // namespace
 
 Status FrameTextures::Default(const TextureBinding& binding,
                               vk::ImageShape shape,
@@ -168,6 +209,8 @@ Status FrameTextures::Default(const TextureBinding& binding,
     }
     out.view = image->view;
     out.width = out.height = 1;
+    out.format = image->format;
+    out.source = "default '" + binding.default_name + "'";
     out.warning = std::move(warning);
     return {};
 }
@@ -214,7 +257,7 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
             w = si.width;
             h = si.height;
             rgba = si.rgba8;
-            name = "image " + std::to_string(binding.image) + " '" + si.name + "'";
+            name = "glTF image " + std::to_string(binding.image) + " '" + si.name + "'";
         } else {
             Result<Rgba8Image> decoded = ReadImageRgba8(binding.file);
             if (!decoded) {
@@ -224,7 +267,7 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
             w = decoded.value().width;
             h = decoded.value().height;
             rgba = std::move(decoded.value().rgba);
-            name = "'" + binding.file + "'";
+            name = "file '" + binding.file + "'";
         }
         const uint32_t limit = s_.context.properties.limits.maxImageDimension2D;
         const uint32_t w0 = w, h0 = h;
@@ -238,11 +281,17 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
         if (Status e = vk::CreateTexture(s_.context, w, h, rgba, binding.srgb, image); !e.ok()) {
             return e;
         }
-        it = images_.emplace(std::pair{key, binding.srgb}, Uploaded{image, warning}).first;
+        it = images_
+                 .emplace(std::pair{key, binding.srgb},
+                          Uploaded{image, warning, name, MakeThumbnail(w, h, rgba)})
+                 .first;
     }
     out.view = it->second.image.view;
     out.width = it->second.image.width;
     out.height = it->second.image.height;
+    out.format = it->second.image.format;
+    out.source = it->second.source;
+    out.thumbnail = it->second.thumbnail;
     out.warning = it->second.warning;
     return {};
 }

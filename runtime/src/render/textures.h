@@ -7,8 +7,10 @@
 #include <glm/vec3.hpp>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "vk/resources.h"
 
@@ -17,11 +19,22 @@
 
 namespace kiln::runtime {
 
+// A texture's image scaled down to at most kThumbnailSize texels a side (RGBA8, as decoded), for
+// the frame debugger's record of what a draw bound.
+struct Thumbnail {
+    static constexpr uint32_t kThumbnailSize = 64;
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;
+};
+
 struct BoundTexture {
     VkImageView view = VK_NULL_HANDLE;
     VkSampler sampler = VK_NULL_HANDLE;
     uint32_t width = 1, height = 1;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::string source;   // "file 'x.png'", "glTF image 2 'albedo'", "default 'white'", ...
     std::string warning;  // why a default texture stands in
+    std::shared_ptr<const Thumbnail> thumbnail;  // image files and scene images
 };
 
 // The shape a shader declares for a sampled resource; nullopt for 1D and buffer textures.
@@ -57,6 +70,8 @@ class FrameTextures {
     struct Uploaded {
         vk::Image image;
         std::string warning;
+        std::string source;
+        std::shared_ptr<const Thumbnail> thumbnail;
     };
     std::map<std::pair<std::string, bool>, Uploaded> images_;
     std::map<vk::ImageShape, vk::Image> ambient_;  // Source::kAmbient, per shape

@@ -108,6 +108,34 @@ std::string StepTitle(const DebugStep& s, const std::string& scene) {
     return t;
 }
 
+// The file of step `step`'s thumbnail of a texture.
+std::string ThumbnailFile(size_t step, const runtime::DebugTexture& t) {
+    char number[24];
+    std::snprintf(number, sizeof number, "%04zu", step);
+    return std::string("textures/") + number + "-" + Slug(t.name) + ".png";
+}
+
+// "0.5, 1, 2.25": a value as the uniform block holds it.
+std::string Floats(const std::vector<float>& v) {
+    std::string out;
+    char buf[32];
+    for (float f : v) {
+        std::snprintf(buf, sizeof buf, "%g", double(f));
+        out += (out.empty() ? "" : ", ") + std::string(buf);
+    }
+    return out;
+}
+
+// "mesh 'sphere', primitive 0: 2145 vertices, 12288 indices (4096 triangles)".
+std::string MeshLine(const DebugStep& s) {
+    if (s.mesh.empty()) {
+        return "";
+    }
+    return s.mesh + ": " + std::to_string(s.vertex_count) + " vertices, " +
+           std::to_string(s.index_count) + " indices (" + std::to_string(s.index_count / 3) +
+           " triangles)";
+}
+
 nlohmann::json Record(size_t n, const DebugStep& s, const std::string& scene) {
     nlohmann::json j = {{"step", n},
                         {"pass", s.pass},
@@ -126,6 +154,28 @@ nlohmann::json Record(size_t n, const DebugStep& s, const std::string& scene) {
         images.push_back({{"target", image.target}, {"file", ImageFile(n, image)}});
     }
     j["images"] = images;
+    if (s.draw >= 0) {
+        j["mesh"] = s.mesh;
+        j["vertices"] = s.vertex_count;
+        j["indices"] = s.index_count;
+        nlohmann::json textures = nlohmann::json::array();
+        for (const runtime::DebugTexture& t : s.textures) {
+            textures.push_back(
+                {{"name", t.name},
+                 {"source", t.source},
+                 {"width", t.width},
+                 {"height", t.height},
+                 {"format", t.format},
+                 {"thumbnail", t.thumbnail.rgba8.empty() ? nlohmann::json(nullptr)
+                                                         : nlohmann::json(ThumbnailFile(n, t))}});
+        }
+        j["textures"] = textures;
+        nlohmann::json values = nlohmann::json::object();
+        for (const auto& [name, v] : s.values) {
+            values[name] = v;
+        }
+        j["values"] = values;
+    }
     return j;
 }
 
@@ -138,6 +188,8 @@ nav a.current{font-weight:bold}table{border-collapse:collapse;margin:.4em 0}
 td{padding:1px 8px;vertical-align:top}td:first-child{color:#666}
 figure{display:inline-block;margin:0 1em 1em 0;max-width:48vw}
 img{border:1px solid #999;max-width:100%;height:auto;image-rendering:pixelated}
+h3{font-size:.95em;margin:.6em 0 .2em}img.thumb{width:64px;height:auto;max-height:64px;
+object-fit:contain;background:#eee}details.values td:last-child{font-family:monospace}
 nav ol{list-style:none;padding-left:0}.n{color:#666;display:inline-block;min-width:2.5em}
 .hidden{display:none})";
 
@@ -161,16 +213,21 @@ window.addEventListener('load',()=>{const imgs=[...document.images];
 const ok=imgs.filter(i=>i.complete&&i.naturalWidth>0).length;
 document.body.dataset.imagesLoaded=ok;
 const shown=current;steps.forEach(s=>s.classList.remove('hidden'));
-document.body.dataset.imagesInProportion=imgs.filter(i=>{const r=i.getBoundingClientRect();
-return i.naturalWidth>0&&r.width>0&&Math.abs(r.width/r.height-i.naturalWidth/i.naturalHeight)<
-0.02*i.naturalWidth/i.naturalHeight;}).length;show(shown,true);
+const inProportion=imgs.filter(i=>{const w=i.clientWidth,h=i.clientHeight;
+const r=i.naturalWidth/i.naturalHeight;return i.naturalWidth>0&&h>0&&Math.abs(w/h-r)<0.02*r+1/h;});
+document.body.dataset.imagesInProportion=inProportion.length;
+document.body.dataset.imagesOutOfProportion=imgs.filter(i=>!inProportion.includes(i))
+.map(i=>i.getAttribute('src')+' '+i.clientWidth+'x'+i.clientHeight).join(';');show(shown,true);
 document.getElementById('status').textContent=ok+' of '+imgs.length+' images loaded';});
 if(!fromHash())show(steps.length-1,true);)";
 
 std::string Page(const FrameCapture& capture) {
-    size_t image_count = 0;
+    size_t image_count = 0;  // the targets' images and the textures' thumbnails
     for (const DebugStep& s : capture.steps) {
         image_count += s.images.size();
+        for (const runtime::DebugTexture& t : s.textures) {
+            image_count += t.thumbnail.rgba8.empty() ? 0 : 1;
+        }
     }
     std::string h = "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" +
                     Escape("Kiln frame debugger: " + capture.scene) + "</title>\n<style>" + kStyle +
@@ -218,12 +275,38 @@ std::string Page(const FrameCapture& capture) {
         row("render state", s.state);
         row("light", s.light);
         row("object", RelativeLabel(s.object, capture.scene));
+        row("mesh", MeshLine(s));
         if (s.draw >= 0) {
             char ms[32];
             std::snprintf(ms, sizeof ms, "%.3f ms", s.gpu_ms);
             row("GPU time", s.gpu_ms >= 0 ? std::string(ms) : "not measured (no timestamps)");
         }
-        h += "</table>\n<div class=\"images\">\n";
+        h += "</table>\n";
+        if (!s.textures.empty()) {
+            h += "<h3>Textures</h3>\n<table class=\"textures\">\n";
+            for (const runtime::DebugTexture& t : s.textures) {
+                std::string thumb;
+                if (!t.thumbnail.rgba8.empty()) {
+                    thumb = "<img class=\"thumb\" src=\"" + ThumbnailFile(n + 1, t) + "\" alt=\"" +
+                            Escape(t.name) + "\" width=\"" + std::to_string(t.thumbnail.width) +
+                            "\" height=\"" + std::to_string(t.thumbnail.height) + "\">";
+                }
+                h += "<tr><td>" + Escape(t.name) + "</td><td>" + thumb + "</td><td>" +
+                     Escape(RelativeLabel(t.source, capture.scene)) + ", " +
+                     std::to_string(t.width) + "x" + std::to_string(t.height) +
+                     (t.format.empty() ? std::string() : ", " + Escape(t.format)) + "</td></tr>\n";
+            }
+            h += "</table>\n";
+        }
+        if (!s.values.empty()) {
+            h += "<details class=\"values\"><summary>Uniform values (" +
+                 std::to_string(s.values.size()) + ")</summary>\n<table>\n";
+            for (const auto& [name, v] : s.values) {
+                h += "<tr><td>" + Escape(name) + "</td><td>" + Escape(Floats(v)) + "</td></tr>\n";
+            }
+            h += "</table></details>\n";
+        }
+        h += "<div class=\"images\">\n";
         for (const DebugImage& image : s.images) {
             const std::string alt = image.target + " after step " + number;
             const std::string file = ImageFile(n + 1, image);
@@ -255,12 +338,32 @@ Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
                      dir + ": cannot create the frame-debug folder" +
                          (ec ? ": " + ec.message() : std::string(": steps is not a folder"))};
     }
+    const fs::path textures_dir = fs::path(dir) / "textures";
+    if (fs::is_symlink(fs::symlink_status(textures_dir, ec)))
+        fs::remove(textures_dir, ec);
+    fs::create_directories(textures_dir, ec);
+    if (ec || !fs::is_directory(fs::symlink_status(textures_dir, ec))) {
+        return Error{DiagCode::kCannotWriteFile,
+                     dir + ": cannot create the frame-debug folder's textures" +
+                         (ec ? ": " + ec.message() : std::string(": not a folder"))};
+    }
     const base::WriteOptions replace_links{.follow_symlinks = false};
     nlohmann::json steps = nlohmann::json::array();
     for (size_t n = 0; n < capture.steps.size(); ++n) {
         for (const DebugImage& image : capture.steps[n].images) {
             if (Status e = WritePng((fs::path(dir) / ImageFile(n + 1, image)).string(), image.width,
                                     image.height, image.rgba8, replace_links);
+                !e.ok()) {
+                return e;
+            }
+        }
+        for (const runtime::DebugTexture& t : capture.steps[n].textures) {
+            if (t.thumbnail.rgba8.empty()) {
+                continue;
+            }
+            if (Status e =
+                    WritePng((fs::path(dir) / ThumbnailFile(n + 1, t)).string(), t.thumbnail.width,
+                             t.thumbnail.height, t.thumbnail.rgba8, replace_links);
                 !e.ok()) {
                 return e;
             }

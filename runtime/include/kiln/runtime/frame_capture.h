@@ -1,13 +1,15 @@
 // A captured frame (Renderer::Render with a FrameCapture), what the frame debugger shows (kiln
 // render --frame-debug DIR), as Unity's Frame Debugger: a frame drawn one step at a time,
 // recording for each pass and draw what was drawn (pass, LightMode, shader, variant keywords,
-// render state, light, object, GPU time where the queue has timestamps) and an image of each
-// target the pass writes after the step. kiln/tools/frame_debug.h writes it out.
+// render state, light, object, mesh with its vertex and index counts, the textures bound and the
+// uniform values written, GPU time where the queue has timestamps) and an image of each target
+// the pass writes after the step. kiln/tools/frame_debug.h writes it out.
 #ifndef KILN_RUNTIME_FRAME_CAPTURE_H_
 #define KILN_RUNTIME_FRAME_CAPTURE_H_
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kiln::runtime {
@@ -21,6 +23,15 @@ struct DebugImage {
     std::vector<uint8_t> rgba8;
 };
 
+// A texture a draw bound, by the shader's name for it.
+struct DebugTexture {
+    std::string name;    // "_MainTex"
+    std::string source;  // "file 'x.png'", "glTF image 0 'albedo'", "default 'white'", a target
+    uint32_t width = 0, height = 0;
+    std::string format;    // "R8G8B8A8_SRGB"; "" when not known
+    DebugImage thumbnail;  // at most 64 texels a side; empty where the runtime keeps no copy
+};
+
 struct DebugStep {
     std::string pass;  // the frame pass: "forward", "gbuffer", "lighting"
     int draw = -1;     // index of the draw within the pass; -1: the pass's clear or copy
@@ -28,6 +39,12 @@ struct DebugStep {
     std::string copy;
     // What was drawn (empty for a clear).
     std::string shader, shader_pass, light_mode, keywords, state, light, object;
+    std::string mesh;  // "mesh 'sphere', primitive 0", or "the full-screen triangle"
+    uint32_t vertex_count = 0, index_count = 0;
+    std::vector<DebugTexture> textures;
+    // The uniform blocks' members as written, by name (material properties, the object's and
+    // the light's values, the frame's globals).
+    std::vector<std::pair<std::string, std::vector<float>>> values;
     double gpu_ms = -1;  // timestamp queries around the draw; negative: not supported
     std::vector<DebugImage> images;
 };
