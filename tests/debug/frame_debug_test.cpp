@@ -220,6 +220,77 @@ TEST(FrameDebug, AStepLinkOpensThatStep) {
     EXPECT_GT(Attribute(DumpDom(out + "/index.html", "#step-100000"), "data-current"), 3);
 }
 
+// The captured frame is the frame rendered: with --shadows soft --msaa 4 the shadow passes (each
+// map at its own size, a point light's cube face by face) and the collector appear as steps, the
+// forward pass shows its colour resolved, and the final image is the one drawn without
+// --frame-debug (32-bit float EXR files compared byte for byte), with 0 validation messages.
+TEST(FrameDebug, ShadowPassesAndTheMsaaResolveAreSteps) {
+    ScratchDir dir;
+    const std::string out = dir.path() + "/debug";
+    const std::string render = "render " + DataPath("../scenes/demo/demo.gltf") +
+                               " --width 96 --height 54 --shadows soft --shadow-resolution 64 "
+                               "--msaa 4 --validation -o " +
+                               dir.path() + "/frame.png --exr ";
+    const RunResult r = RunKiln(render + dir.path() + "/captured.exr --frame-debug " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("MSAA is off"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("shadows are off"), std::string::npos) << r.err;
+    const RunResult plain = RunKiln(render + dir.path() + "/plain.exr");
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    EXPECT_EQ(ReadFile(dir.path() + "/captured.exr"), ReadFile(dir.path() + "/plain.exr"));
+
+    const nlohmann::json frame = nlohmann::json::parse(ReadFile(out + "/frame.json"));
+    std::vector<std::string> passes;
+    std::set<std::string> faces;
+    for (const auto& step : frame["steps"]) {
+        if (passes.empty() || passes.back() != step["pass"]) {
+            passes.push_back(step["pass"]);
+        }
+        for (const auto& image : step["images"]) {
+            const std::string target = image["target"];
+            if (target.find("shadow map: directional") == 0 ||
+                target.find("shadow map: spot") == 0) {
+                EXPECT_EQ(image["file"].get<std::string>().empty(), false);
+            }
+            if (target.find("shadow map: point light 'Blue point' (face ") == 0) {
+                faces.insert(target);
+            }
+        }
+    }
+    const std::vector<std::string> expected = {"shadows: directional light 'Sun'",
+                                               "camera depth",
+                                               "screen-space shadows: directional light 'Sun'",
+                                               "shadows: spot light 'Pink spot'",
+                                               "shadows: point light 'Blue point' +X",
+                                               "shadows: point light 'Blue point' -X",
+                                               "shadows: point light 'Blue point' +Y",
+                                               "shadows: point light 'Blue point' -Y",
+                                               "shadows: point light 'Blue point' +Z",
+                                               "shadows: point light 'Blue point' -Z",
+                                               "forward"};
+    EXPECT_EQ(passes, expected);
+    EXPECT_EQ(faces.size(), 6u);  // each face read back after the pass that drew it
+    // A map at its own size (64; a cube face half that), the forward pass's colour resolved.
+    for (const auto& step : frame["steps"]) {
+        for (const auto& image : step["images"]) {
+            const std::string file = out + "/" + image["file"].get<std::string>();
+            const std::string png = ReadFile(file);
+            ASSERT_GE(png.size(), 24u) << file;
+            const uint32_t width = uint32_t(uint8_t(png[16])) << 24 |
+                                   uint32_t(uint8_t(png[17])) << 16 |
+                                   uint32_t(uint8_t(png[18])) << 8 | uint32_t(uint8_t(png[19]));
+            const std::string target = image["target"];
+            const uint32_t want = target.find("shadow map: point") == 0 ? 32u
+                                  : target.find("shadow map:") == 0     ? 64u
+                                                                        : 96u;
+            EXPECT_EQ(width, want) << target;
+        }
+    }
+    const auto& last = frame["steps"].back()["images"];
+    ASSERT_EQ(last.size(), 1u);  // the multisampled attachments are shown through the resolve
+    EXPECT_EQ(last[0]["target"], "color (resolved)");
+}
+
 INSTANTIATE_TEST_SUITE_P(Paths,
                          FrameDebugTest,
                          ::testing::Values(Path{"forward", {"forward"}},

@@ -216,7 +216,7 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
     AddPathOption(*cmd, a->frame.path.name);
     cmd->add_option("--msaa", a->frame.msaa,
                     "Samples per pixel on the forward path, resolved before the display "
-                    "transform (default 1; the deferred path and --frame-debug draw 1)")
+                    "transform (default 1; the deferred path draws 1)")
         ->check(CLI::IsMember({1u, 2u, 4u, 8u}).description(""))
         ->option_text("1|2|4|8");
     cmd->add_option("--shadows", a->frame.shadows,

@@ -17,17 +17,21 @@ uint8_t Byte(double v) {
 }
 
 // Depth as distance from the camera, shown near white to far dark grey; nothing drawn is black.
+// A shadow map (drawn from a light, not the camera) shows its stored depth the same way.
 std::vector<uint8_t> DepthImage(const FrameTarget& t,
                                 const std::vector<uint8_t>& bytes,
                                 const glm::mat4& inverse_projection) {
-    const size_t n = bytes.size() / 4;
+    const bool d16 = t.format == VK_FORMAT_D16_UNORM;
+    const size_t n = bytes.size() / (d16 ? 2 : 4);
     std::vector<double> distance(n, -1.0);
     double lo = 1e300, hi = -1e300;
     for (size_t i = 0; i < n; ++i) {
-        uint32_t bits;
-        std::memcpy(&bits, bytes.data() + i * 4, 4);
+        uint32_t bits = 0;
+        std::memcpy(&bits, bytes.data() + i * (d16 ? 2 : 4), d16 ? 2 : 4);
         float z;
-        if (t.format == VK_FORMAT_D24_UNORM_S8_UINT) {
+        if (d16) {
+            z = float(bits) / 65535.0f;
+        } else if (t.format == VK_FORMAT_D24_UNORM_S8_UINT) {
             z = float(bits & 0xFFFFFFu) / 16777215.0f;
         } else {
             std::memcpy(&z, &bits, 4);
@@ -35,8 +39,11 @@ std::vector<uint8_t> DepthImage(const FrameTarget& t,
         if (!(z < 1.0f)) {
             continue;  // the clear value: nothing drawn
         }
-        const glm::vec4 v = inverse_projection * glm::vec4(0, 0, z, 1);
-        const double d = std::abs(double(v.w)) > 0 ? -double(v.z) / double(v.w) : 0.0;
+        double d = double(z);
+        if (!t.shadow_map) {
+            const glm::vec4 v = inverse_projection * glm::vec4(0, 0, z, 1);
+            d = std::abs(double(v.w)) > 0 ? -double(v.z) / double(v.w) : 0.0;
+        }
         distance[i] = d;
         lo = std::min(lo, d);
         hi = std::max(hi, d);
@@ -68,6 +75,10 @@ std::vector<uint8_t> StoredImage(const FrameTarget& t, const std::vector<uint8_t
         const std::vector<float> f = TargetFloats(t, bytes);
         for (size_t i = 0; i + 4 <= f.size(); i += 4) {
             out.insert(out.end(), {Byte(f[i]), Byte(f[i + 1]), Byte(f[i + 2]), 255});
+        }
+    } else if (t.format == VK_FORMAT_R8_UNORM) {  // one channel, shown grey
+        for (uint8_t v : bytes) {
+            out.insert(out.end(), {v, v, v, 255});
         }
     } else {  // 8-bit RGBA, sRGB or UNORM
         out = bytes;
@@ -156,9 +167,9 @@ StepObserver CaptureObserver(const glm::mat4& projection,
         for (const CapturedTarget& ct : targets) {
             const FrameTarget& t = frame.targets[ct.target];
             DebugImage& image = step.images.emplace_back();
-            image.target = t.name;
-            image.width = frame.width;
-            image.height = frame.height;
+            image.target = t.cube ? t.name + " (face " + std::to_string(ct.layer) + ")" : t.name;
+            image.width = ct.width;
+            image.height = ct.height;
             if (t.depth) {
                 image.rgba8 = DepthImage(t, ct.bytes, inverse);
             } else if (t.display && (t.format == VK_FORMAT_R16G16B16A16_SFLOAT ||

@@ -77,10 +77,13 @@ struct FrameTarget {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     // A shadow map (depth only): `size` x `size` texels whatever the frame's size, sampled with a
     // depth-comparison sampler; `cube`: six layers (+X, -X, +Y, -Y, +Z, -Z) sampled as a cube, one
-    // pass drawing each (FramePass::layer). Not read back by the frame debugger.
+    // pass drawing each (FramePass::layer). The frame debugger reads back the face a pass drew.
     bool shadow_map = false;
     uint32_t size = 0;
     bool cube = false;
+    // Read back by the frame debugger after each step that writes it (not: an attachment no
+    // draw writes, the shadow passes' masked-off colour).
+    bool shown = true;
 };
 
 struct FramePass {
@@ -122,6 +125,8 @@ VkExtent2D ExtentOf(const Frame& frame, const FramePass& pass);
 // target's depth aspect, 4 bytes each).
 struct CapturedTarget {
     uint32_t target = 0;
+    uint32_t layer = 0;  // a cube target's face the pass drew
+    uint32_t width = 0, height = 0;
     std::vector<uint8_t> bytes;
 };
 

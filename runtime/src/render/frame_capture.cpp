@@ -29,18 +29,27 @@ Status RecordFrameSteps(Renderer::State& s,
     vk::Timestamps timer(c, 2);  // around each step's draws
     Layouts layouts{frame, f.targets,
                     std::vector<VkImageLayout>(frame.targets.size(), VK_IMAGE_LAYOUT_UNDEFINED)};
-    const VkRect2D full{{0, 0}, {frame.width, frame.height}};
-    // The targets pass `p` writes, read back where the steps left them.
+    // The targets pass `p` writes, read back where the steps left them: a multisampled
+    // attachment through the target the pass resolves it into, a cube map's face the pass drew.
     auto capture = [&](size_t p, int draw, double ms) -> Status {
         const FramePass& pass = frame.passes[p];
         std::vector<CapturedTarget> targets;
-        for (uint32_t t : Attachments(pass)) {
-            if (frame.targets[t].depth && pass.depth_read_only) {
-                continue;  // unchanged by the pass
+        std::vector<uint32_t> written = Attachments(pass);
+        written.insert(written.end(), pass.resolves.begin(), pass.resolves.end());
+        for (uint32_t t : written) {
+            const FrameTarget& target = frame.targets[t];
+            if ((target.depth && pass.depth_read_only) || target.samples != VK_SAMPLE_COUNT_1_BIT ||
+                !target.shown) {
+                continue;  // unchanged by the pass, shown resolved, or never written
             }
             CapturedTarget& ct = targets.emplace_back();
             ct.target = t;
-            if (Status e = ReadTarget(c, frame, f, t, layouts.current[t], ct.bytes); !e.ok()) {
+            ct.layer = target.cube ? pass.layer : 0;
+            const VkExtent2D extent = ExtentOf(frame, target);
+            ct.width = extent.width;
+            ct.height = extent.height;
+            if (Status e = ReadTarget(c, frame, f, t, ct.layer, layouts.current[t], ct.bytes);
+                !e.ok()) {
                 return e;
             }
         }
@@ -103,7 +112,8 @@ Status RecordFrameSteps(Renderer::State& s,
             BeginPass(cmd, frame, f, p, load);
             timer.Mark(cmd, 0, false);
             RecordDraws(cmd, std::span(pass.draws).subspan(first, i + 1 - first),
-                        std::span(f.sets[p]).subspan(first, i + 1 - first), full);
+                        std::span(f.sets[p]).subspan(first, i + 1 - first),
+                        {{0, 0}, ExtentOf(frame, pass)});
             timer.Mark(cmd, 1, true);
             vkCmdEndRenderPass(cmd);
             if (Status e = vk::SubmitAndWait(c, cmd); !e.ok()) {

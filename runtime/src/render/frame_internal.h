@@ -78,12 +78,14 @@ void RecordDraws(VkCommandBuffer cmd,
                  std::span<const std::vector<VkDescriptorSet>> sets,
                  const VkRect2D& full);
 
-// Copies target `t` (in `layout`, where it is left) to host memory: colour texels, or the depth
-// aspect of a depth target (4 bytes a texel).
+// Copies layer `layer` of target `t` (in `layout`, where it is left) to host memory at the
+// target's extent (ExtentOf): colour texels, or the depth aspect of a depth target (4 bytes a
+// texel). Single-sample targets only.
 Status ReadTarget(const vk::Context& c,
                   const Frame& frame,
                   const FrameObjects& f,
                   uint32_t t,
+                  uint32_t layer,
                   VkImageLayout layout,
                   std::vector<uint8_t>& out);
 

@@ -27,6 +27,10 @@ uint32_t TexelBytes(const FrameTarget& t) {
             return 16;
         case VK_FORMAT_R16G16B16A16_SFLOAT:
             return 8;
+        case VK_FORMAT_R8_UNORM:
+            return 1;  // the screen-space shadows
+        case VK_FORMAT_D16_UNORM:
+            return 2;  // a shadow map where the device lacks D32
         default:
             return 4;  // RGBA8, A2B10G10R10, and a depth aspect (D32 float or D24 in 32 bits)
     }
@@ -36,10 +40,12 @@ Status ReadTarget(const vk::Context& c,
                   const Frame& frame,
                   const FrameObjects& f,
                   uint32_t t,
+                  uint32_t layer,
                   VkImageLayout layout,
                   std::vector<uint8_t>& out) {
     const FrameTarget& target = frame.targets[t];
-    const VkDeviceSize size = VkDeviceSize{frame.width} * frame.height * TexelBytes(target);
+    const VkExtent2D extent = ExtentOf(frame, target);
+    const VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * TexelBytes(target);
     vk::Buffer staging;
     if (Status e = vk::CreateBuffer(c, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging); !e.ok()) {
         return e;
@@ -54,15 +60,15 @@ Status ReadTarget(const vk::Context& c,
         b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         b.image = image;
-        b.subresourceRange = {AspectsOf(target), 0, 1, 0, 1};
+        b.subresourceRange = {AspectsOf(target), 0, 1, layer, 1};  // the face the pass drew
         const VkPipelineStageFlags before = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                                             VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
         vkCmdPipelineBarrier(cmd, before, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
                              1, &b);
         VkBufferImageCopy copy{};
         copy.imageSubresource = {
-            target.depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {frame.width, frame.height, 1};
+            target.depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
+        copy.imageExtent = {extent.width, extent.height, 1};
         vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1,
                                &copy);
         // Back where the frame left it, for the steps after this one.
@@ -93,7 +99,7 @@ Status ReadOutput(const vk::Context& c,
                   VkImageLayout layout,
                   LinearImage& out) {
     std::vector<uint8_t> bytes;
-    if (Status e = ReadTarget(c, frame, f, frame.output, layout, bytes); !e.ok()) {
+    if (Status e = ReadTarget(c, frame, f, frame.output, 0, layout, bytes); !e.ok()) {
         return e;
     }
     out.width = frame.width;

@@ -1,7 +1,8 @@
 // RenderFrame: one frame along the path FrameSettings::path names (render/render_path.h). What
-// every path shares is here: the settings' checks, the camera, the frame debugger's observer,
-// the settings a capture cannot draw with, the DrawBuilder, and recording the built Frame. What
-// a path draws is the path's: its plan and its frame's targets and passes.
+// every path shares is here: the settings' checks, the camera, the frame debugger's observer
+// (which records the frame as drawn: shadow passes and MSAA included), the DrawBuilder, and
+// recording the built Frame. What a path draws is the path's: its plan and its frame's targets
+// and passes.
 #include "kiln/runtime/frame_capture.h"
 #include "render/capture.h"
 #include "render/render_path.h"
@@ -46,22 +47,6 @@ Status CheckSamples(const Renderer::State& s, uint32_t samples) {
                      std::to_string(samples) + " samples per pixel (it has " + counts + ")"};
 }
 
-// The frame debugger reads every target back at the frame's size: one sample per pixel (as
-// Unity's), and no shadow maps.
-void AdjustForCapture(FrameSettings& settings, const Scene& scene, DiagnosticList& warnings) {
-    if (settings.msaa > 1) {
-        settings.msaa = 1;
-        warnings.Warning(DiagCode::kRenderWarning, scene.path, kNoPosition,
-                         "MSAA is off for the frame debugger, which reads every target back: "
-                         "drawn with 1 sample per pixel");
-    }
-    if (settings.shadows != Shadows::kOff) {
-        settings.shadows = Shadows::kOff;
-        warnings.Warning(DiagCode::kRenderWarning, scene.path, kNoPosition,
-                         "shadows are off for the frame debugger: drawn without them");
-    }
-}
-
 }  // namespace
 
 Status RenderFrame(Renderer::State& s,
@@ -100,7 +85,6 @@ Status RenderFrame(Renderer::State& s,
         capture->scene = scene.path.empty() ? std::string("(scene)") : scene.path;
         capture->path = std::string(path->Name());
         observer = CaptureObserver(camera.projection, color, *capture);
-        AdjustForCapture(drawn, scene, stats.warnings);
     }
     path->Adjust(drawn, scene, stats.warnings);
     if (Status e = CheckSamples(s, drawn.msaa); !e.ok()) {

@@ -16,6 +16,7 @@ uint32_t UnusedColor(Frame& frame, uint32_t size, ShadowFrame& out) {
     }
     FrameTarget color{"unused colour of the shadow passes", VK_FORMAT_R8_UNORM, false, {}, false};
     color.size = size;
+    color.shown = false;
     frame.targets.push_back(color);
     return out.unused_colors[size] = uint32_t(frame.targets.size() - 1);
 }

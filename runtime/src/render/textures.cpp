@@ -257,7 +257,7 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
             w = si.width;
             h = si.height;
             rgba = si.rgba8;
-            name = "glTF image " + std::to_string(binding.image) + " '" + si.name + "'";
+            name = "image " + std::to_string(binding.image) + " '" + si.name + "'";
         } else {
             Result<Rgba8Image> decoded = ReadImageRgba8(binding.file);
             if (!decoded) {
@@ -267,7 +267,7 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
             w = decoded.value().width;
             h = decoded.value().height;
             rgba = std::move(decoded.value().rgba);
-            name = "file '" + binding.file + "'";
+            name = "'" + binding.file + "'";
         }
         const uint32_t limit = s_.context.properties.limits.maxImageDimension2D;
         const uint32_t w0 = w, h0 = h;
@@ -282,8 +282,13 @@ Status FrameTextures::Get(const TextureBinding& binding, vk::ImageShape shape, B
             return e;
         }
         it = images_
-                 .emplace(std::pair{key, binding.srgb},
-                          Uploaded{image, warning, name, MakeThumbnail(w, h, rgba)})
+                 .emplace(
+                     std::pair{key, binding.srgb},
+                     Uploaded{image, warning,
+                              (binding.source == TextureBinding::Source::kSceneImage ? "glTF "
+                                                                                     : "file ") +
+                                  name,
+                              MakeThumbnail(w, h, rgba)})
                  .first;
     }
     out.view = it->second.image.view;

@@ -168,8 +168,9 @@ Status CreateShadowMap(const Context& c, uint32_t size, VkFormat format, bool cu
     info.arrayLayers = cube ? 6 : 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    // Transfer source: the frame debugger reads each face back.
     info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     if (Status e =
             CreateImageAndView(c, info, cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D,

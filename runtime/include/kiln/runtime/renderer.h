@@ -89,11 +89,9 @@ struct FrameSettings {
     glm::vec3 background{0.0f};  // linear clear colour
     bool default_light = true;   // light a scene without lights by one directional light
     // Samples per pixel (MSAA: 1, 2, 4 or 8) on the forward path, resolved before the display
-    // transform; the deferred path and the frame debugger draw 1 with a warning, as Unity's
-    // deferred path does.
+    // transform; the deferred path draws 1 with a warning, as Unity's deferred path does.
     uint32_t msaa = 1;
-    // Off by default, as a scene file says nothing about shadows; the frame debugger draws
-    // without them (a K0010 warning).
+    // Off by default, as a scene file says nothing about shadows.
     Shadows shadows = Shadows::kOff;
     uint32_t shadow_resolution = 2048;  // texels a side of each map (a cube's faces: half)
 };
