@@ -131,9 +131,10 @@ std::string MeshLine(const DebugStep& s) {
     if (s.mesh.empty()) {
         return "";
     }
+    const uint32_t triangles = s.index_count / 3;
     return s.mesh + ": " + std::to_string(s.vertex_count) + " vertices, " +
-           std::to_string(s.index_count) + " indices (" + std::to_string(s.index_count / 3) +
-           " triangles)";
+           std::to_string(s.index_count) + " indices (" + std::to_string(triangles) +
+           (triangles == 1 ? " triangle)" : " triangles)");
 }
 
 nlohmann::json Record(size_t n, const DebugStep& s, const std::string& scene) {
