@@ -108,17 +108,20 @@ std::function<int()> AddTestCommand(CLI::App* cmd, const GlobalOptions& global) 
                                                 {"variants", report.variants},
                                                 {"renders", report.renders},
                                                 {"skipped", report.skipped},
+                                                {"skipped_variants", report.skipped_variants},
                                                 {"failures", failures},
                                                 {"passed", report.failures.empty()}};
             std::printf("%s\n", doc.dump(2).c_str());
         } else {
             for (const std::string& s : report.skipped)
                 std::printf("skipped %s\n", s.c_str());
+            const size_t skips = report.skipped.size();
             std::printf(
-                "kiln test: %zu variants, %zu renders on '%s', %zu passes skipped: %zu "
-                "failures\n",
-                report.variants, report.renders, renderer.DeviceName().c_str(),
-                report.skipped.size(), report.failures.size());
+                "kiln test: %zu of %zu variants tested (%zu skipped in %zu %s, each listed above "
+                "with why), %zu renders on '%s': %zu failures\n",
+                report.variants, report.variants + report.skipped_variants, report.skipped_variants,
+                skips, skips == 1 ? "pass or shader" : "passes or shaders", report.renders,
+                renderer.DeviceName().c_str(), report.failures.size());
         }
         return run.Finish(ExitCodeFor(diags));
     };

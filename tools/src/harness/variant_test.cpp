@@ -249,7 +249,20 @@ struct Harness {
 // Every variant of the passes the forward path draws; the others are listed as skipped.
 std::vector<Case> Cases(const Renderer& renderer,
                         const VariantTestOptions& options,
-                        std::vector<std::string>& skipped) {
+                        VariantTestReport& report) {
+    // A skipped pass or shader, with its variant count.
+    auto skip = [&](std::string what, size_t variants) {
+        report.skipped.push_back(what + " (" + std::to_string(variants) + " variant" +
+                                 (variants == 1 ? ")" : "s)"));
+        report.skipped_variants += variants;
+    };
+    auto shader_variants = [](const pack::Pack& pk, const pack::ShaderRec& sr) {
+        size_t n = 0;
+        for (uint32_t pass = sr.first_pass; pass < sr.first_pass + sr.pass_count; ++pass) {
+            n += pk.Pass(pass).value().variant_count;
+        }
+        return n;
+    };
     std::vector<Case> out;
     for (uint32_t p = 0; p < renderer.pack_count(); ++p) {
         const pack::Pack& pk = renderer.pack(p);
@@ -263,16 +276,18 @@ std::vector<Case> Cases(const Renderer& renderer,
             }
             if (name == pack::kShaderDeferredShading) {
                 // Drawn over a G-buffer, never on an object: the harness's scene cannot draw it.
-                skipped.push_back("shader \"" + name +
-                                  "\": the deferred path's light pass, drawn over a G-buffer, "
-                                  "not on an object");
+                skip("shader \"" + name +
+                         "\": the deferred path's light pass, drawn over a G-buffer, not on an "
+                         "object",
+                     shader_variants(pk, sr));
                 continue;
             }
             if (name == pack::kShaderScreenSpaceShadows) {
                 // Drawn over the camera's depth with a light's shadow map, never on an object.
-                skipped.push_back("shader \"" + name +
-                                  "\": the screen-space shadow collector, drawn over the "
-                                  "camera's depth, not on an object");
+                skip("shader \"" + name +
+                         "\": the screen-space shadow collector, drawn over the camera's "
+                         "depth, not on an object",
+                     shader_variants(pk, sr));
                 continue;
             }
             for (uint32_t pass = sr.first_pass; pass < sr.first_pass + sr.pass_count; ++pass) {
@@ -280,9 +295,10 @@ std::vector<Case> Cases(const Renderer& renderer,
                 const std::string_view mode = pack::LightModeOf(pk, pass);
                 if (!(mode.empty() || mode == pack::kLightModeAlways ||
                       mode == pack::kLightModeForwardBase || mode == pack::kLightModeForwardAdd)) {
-                    skipped.push_back("shader \"" + name + "\" pass \"" +
-                                      pack::PassLabel(pk, pass) + "\": LightMode " +
-                                      std::string(mode) + " is not drawn by the forward path");
+                    skip("shader \"" + name + "\" pass \"" + pack::PassLabel(pk, pass) +
+                             "\": LightMode " + std::string(mode) +
+                             " is not drawn by the forward path",
+                         rec.variant_count);
                     continue;
                 }
                 for (uint32_t v = rec.first_variant; v < rec.first_variant + rec.variant_count; ++v)
@@ -316,7 +332,7 @@ Result<VariantTestReport> TestVariants(Renderer& renderer,
     if (Status e = runtime::ChooseCamera(h.scene, h.Settings(false), h.camera); !e.ok()) {
         return e.error();
     }
-    for (const Case& c : Cases(renderer, options, h.report.skipped)) {
+    for (const Case& c : Cases(renderer, options, h.report)) {
         h.Test(c);
     }
     return std::move(h.report);

@@ -51,11 +51,13 @@ struct VariantTestFailure {
 };
 
 struct VariantTestReport {
-    size_t variants = 0, renders = 0;
+    size_t variants = 0, renders = 0;  // variants tested, renders drawn
     std::vector<VariantTestFailure> failures;
     // Passes the forward path does not draw (Deferred, ShadowCaster, Meta, ...): not run, each
-    // with the reason.
+    // with the reason and its variant count; `skipped_variants` in all, so that variants +
+    // skipped_variants is every variant of the packs (of --shader's shaders).
     std::vector<std::string> skipped;
+    size_t skipped_variants = 0;
 };
 
 // Runs the harness over every pack `renderer` holds. An error only when the harness itself
