@@ -1,27 +1,24 @@
-// The report's plot: FLIP mean (y) against time per frame (x), one point per configuration
-// numbered as the table's rows, the Pareto front joined in time order. SVG with text; the PNG is
-// rasterised here (no font library): axes, ticks, points and the rows' numbers in a 3x5 digit
-// font.
+// The report's figure: mean FLIP (y) against time per frame (x), one point per configuration
+// named by its table row and name, the Pareto front joined in time order. One drawing, made with
+// cairo, renders both the PNG and the SVG (fonts through fontconfig: DejaVu Sans, installed by
+// scripts/setup.sh). The FLIP axis is logarithmic where the worst value is more than 8 times the
+// best; labels are placed around their point so that none overlaps another, a point, the legend
+// or the edge (AccuracyPlotTexts gives their boxes to the test that checks it).
+#include <cairo-svg.h>
+#include <cairo.h>
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "kiln/tools/accuracy_report.h"
 
 namespace kiln::tools {
 namespace {
 
-struct Layout {
-    double width, height;
-    double left = 70, right = 30, top = 40, bottom = 55;
-    double time_max = 1, flip_max = 0.01;
-
-    double X(double ms) const { return left + (width - left - right) * ms / time_max; }
-    double Y(double flip) const {
-        return height - bottom - (height - top - bottom) * flip / flip_max;
-    }
-};
+constexpr double kLeft = 84, kRight = 24, kTop = 48, kBottom = 62;
+constexpr double kPoint = 5;  // a point's radius
 
 double TimeOf(const AccuracyRow& row) {
     return row.gpu_ms.median >= 0 ? row.gpu_ms.median : row.cpu_ms.median;
@@ -39,170 +36,340 @@ double TickStep(double max) {
     return 10 * p;
 }
 
-Layout LayoutOf(const AccuracyReport& r, double width, double height) {
-    Layout l{width, height};
-    for (const AccuracyRow& row : r.rows) {
-        l.time_max = std::max(l.time_max, TimeOf(row));
-        l.flip_max = std::max(l.flip_max, row.flip);
-    }
-    l.time_max =
-        TickStep(l.time_max * 1.1) * std::ceil(l.time_max * 1.1 / TickStep(l.time_max * 1.1));
-    l.flip_max =
-        TickStep(l.flip_max * 1.1) * std::ceil(l.flip_max * 1.1 / TickStep(l.flip_max * 1.1));
-    return l;
-}
-
-std::vector<const AccuracyRow*> Front(const AccuracyReport& r) {
-    std::vector<const AccuracyRow*> front;
-    for (const AccuracyRow& row : r.rows) {
-        if (row.pareto) {
-            front.push_back(&row);
-        }
-    }
-    std::sort(front.begin(), front.end(),
-              [](const AccuracyRow* a, const AccuracyRow* b) { return TimeOf(*a) < TimeOf(*b); });
-    return front;
-}
-
 std::string F(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
 }
 
-// The rasteriser: an RGBA8 canvas with lines, discs and digits.
-struct Canvas {
-    uint32_t w, h;
-    std::vector<uint8_t> px;
+// Where the axes put a value.
+struct Axes {
+    double width, height;
+    double time_max = 1;
+    bool log = false;
+    double flip_min = 0, flip_max = 0.01;  // log: powers of ten around the values
 
-    void Dot(int x, int y, std::array<uint8_t, 3> c) {
-        if (x < 0 || y < 0 || x >= int(w) || y >= int(h)) {
-            return;
+    double X(double ms) const { return kLeft + (width - kLeft - kRight) * ms / time_max; }
+    double Y(double flip) const {
+        const double plot = height - kTop - kBottom;
+        if (log) {
+            const double f = std::max(flip, flip_min);
+            return height - kBottom -
+                   plot * (std::log10(f) - std::log10(flip_min)) /
+                       (std::log10(flip_max) - std::log10(flip_min));
         }
-        uint8_t* p = &px[(size_t(y) * w + size_t(x)) * 4];
-        p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
-    }
-    void Line(double x0, double y0, double x1, double y1, std::array<uint8_t, 3> c, int thick) {
-        const int steps = int(std::max(std::abs(x1 - x0), std::abs(y1 - y0))) + 1;
-        for (int i = 0; i <= steps; ++i) {
-            const double t = double(i) / steps;
-            const int x = int(std::lround(x0 + (x1 - x0) * t)),
-                      y = int(std::lround(y0 + (y1 - y0) * t));
-            for (int dy = 0; dy < thick; ++dy) {
-                for (int dx = 0; dx < thick; ++dx) {
-                    Dot(x + dx - thick / 2, y + dy - thick / 2, c);
-                }
-            }
-        }
-    }
-    void Disc(double cx, double cy, double r, std::array<uint8_t, 3> c) {
-        for (int y = int(cy - r) - 1; y <= int(cy + r) + 1; ++y) {
-            for (int x = int(cx - r) - 1; x <= int(cx + r) + 1; ++x) {
-                if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) {
-                    Dot(x, y, c);
-                }
-            }
-        }
-    }
-    // Digits and '.', each 3x5 cells of `scale` pixels, the text's top left at (x, y).
-    void Text(int x, int y, const std::string& s, int scale, std::array<uint8_t, 3> c) {
-        static constexpr uint16_t kGlyphs[11] = {0x7B6F, 0x2C97, 0x73E7, 0x73CF, 0x5BC9, 0x79CF,
-                                                 0x79EF, 0x7249, 0x7BEF, 0x7BCF, 0x0002};
-        for (char ch : s) {
-            const int g = ch == '.' ? 10 : ch - '0';
-            if (g >= 0 && g <= 10) {
-                for (int row = 0; row < 5; ++row) {
-                    for (int col = 0; col < 3; ++col) {
-                        if (kGlyphs[g] >> (14 - (row * 3 + col)) & 1) {
-                            for (int k = 0; k < scale * scale; ++k) {
-                                Dot(x + col * scale + k % scale, y + row * scale + k / scale, c);
-                            }
-                        }
-                    }
-                }
-            }
-            x += 4 * scale;
-        }
+        return height - kBottom - plot * flip / flip_max;
     }
 };
 
+Axes AxesOf(const AccuracyReport& r, double width, double height) {
+    Axes a{width, height};
+    double lo = 1e300, hi = 0;
+    for (const AccuracyRow& row : r.rows) {
+        a.time_max = std::max(a.time_max, TimeOf(row));
+        if (row.flip > 0) {
+            lo = std::min(lo, row.flip);
+        }
+        hi = std::max(hi, row.flip);
+    }
+    const double t = TickStep(a.time_max * 1.1);
+    a.time_max = t * std::ceil(a.time_max * 1.1 / t);
+    // The worst more than 8 times the best: a log axis, or the accurate configurations (most of
+    // them) would sit in the bottom few percent of the plot, on the time axis.
+    a.log = hi > 0 && lo < 1e300 && hi / lo > 8;
+    if (a.log) {
+        a.flip_min = std::pow(10.0, std::floor(std::log10(lo)));
+        a.flip_max = std::pow(10.0, std::ceil(std::log10(hi * 1.05)));
+    } else {
+        a.flip_max = std::max(hi, 0.01);
+        const double f = TickStep(a.flip_max * 1.1);
+        a.flip_max = f * std::ceil(a.flip_max * 1.1 / f);
+    }
+    return a;
+}
+
+struct Box {
+    double x, y, w, h;
+    bool Overlaps(const Box& o) const {
+        return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h;
+    }
+    bool Inside(double x0, double y0, double x1, double y1) const {
+        return x >= x0 && y >= y0 && x + w <= x1 && y + h <= y1;
+    }
+};
+
+// The drawing, with every text it drew and where.
+class Figure {
+  public:
+    Figure(cairo_t* cr, const AccuracyReport& r, double w, double h)
+        : cr_(cr), r_(r), a_(AxesOf(r, w, h)) {}
+
+    std::vector<PlotText> Draw();
+
+  private:
+    // Draws `s` with its top-left corner at (x, y); returns its box.
+    Box Text(const std::string& s, double x, double y, double size, bool bold = false) {
+        cairo_select_font_face(cr_, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr_, size);
+        cairo_font_extents_t fe;
+        cairo_font_extents(cr_, &fe);
+        cairo_text_extents_t te;
+        cairo_text_extents(cr_, s.c_str(), &te);
+        cairo_move_to(cr_, x, y + fe.ascent);
+        cairo_show_text(cr_, s.c_str());
+        return {x, y, te.x_advance, fe.ascent + fe.descent};
+    }
+    double TextWidth(const std::string& s, double size) {
+        cairo_select_font_face(cr_, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr_, size);
+        cairo_text_extents_t te;
+        cairo_text_extents(cr_, s.c_str(), &te);
+        return te.x_advance;
+    }
+    void Color(double r, double g, double b) { cairo_set_source_rgb(cr_, r, g, b); }
+    void Line(double x0, double y0, double x1, double y1, double width) {
+        cairo_set_line_width(cr_, width);
+        cairo_move_to(cr_, x0, y0);
+        cairo_line_to(cr_, x1, y1);
+        cairo_stroke(cr_);
+    }
+    void AxesAndTicks();
+    void Legend();
+    void Points();
+
+    cairo_t* cr_;
+    const AccuracyReport& r_;
+    Axes a_;
+    std::vector<PlotText> texts_;
+    std::vector<Box> taken_;  // points, labels and the legend: what a label must not cover
+};
+
+void Figure::AxesAndTicks() {
+    const bool gpu = !r_.rows.empty() && r_.rows[0].gpu_ms.median >= 0;
+    Color(0, 0, 0);
+    const std::string title_text =
+        (gpu ? "Mean FLIP against GPU time: " : "Mean FLIP against CPU time: ") + r_.scene;
+    const Box title = Text(title_text, kLeft, 12, 15, true);
+    texts_.push_back({"title", title_text, title.x, title.y, title.w, title.h, 0});
+    const double x0 = a_.X(0), y0 = a_.Y(a_.log ? a_.flip_min : 0);
+    Line(x0, a_.Y(a_.flip_max), x0, y0, 1.2);
+    Line(x0, y0, a_.X(a_.time_max), y0, 1.2);
+    for (double t = 0; t <= a_.time_max * 1.0001; t += TickStep(a_.time_max)) {
+        Line(a_.X(t), y0, a_.X(t), y0 + 5, 1);
+        const std::string s = F(t);
+        Text(s, a_.X(t) - TextWidth(s, 11) / 2, y0 + 8, 11);
+    }
+    auto y_tick = [&](double f, bool labelled) {
+        Line(x0 - (labelled ? 5 : 3), a_.Y(f), x0, a_.Y(f), 1);
+        if (labelled) {
+            const std::string s = F(f);
+            Text(s, x0 - 8 - TextWidth(s, 11), a_.Y(f) - 7, 11);
+        }
+    };
+    if (a_.log) {
+        for (double decade = a_.flip_min; decade <= a_.flip_max * 1.0001; decade *= 10) {
+            y_tick(decade, true);
+            for (double m : {2.0, 5.0}) {
+                if (decade * m < a_.flip_max) {
+                    y_tick(decade * m, false);
+                }
+            }
+        }
+    } else {
+        for (double f = 0; f <= a_.flip_max * 1.0001; f += TickStep(a_.flip_max)) {
+            y_tick(f, true);
+        }
+    }
+    const std::string x_title = std::string(gpu ? "GPU" : "CPU") +
+                                " time per frame, ms (median of " + std::to_string(r_.frames) +
+                                " frames)";
+    const double plot_mid = (kLeft + a_.width - kRight) / 2;
+    const Box xt = Text(x_title, plot_mid - TextWidth(x_title, 12) / 2, a_.height - 24, 12);
+    texts_.push_back({"x-axis", x_title, xt.x, xt.y, xt.w, xt.h, 0});
+    const std::string y_title = std::string("mean FLIP against the reference, 0 = identical") +
+                                (a_.log ? " (log scale)" : "");
+    cairo_save(cr_);
+    const double y_mid = (kTop + a_.height - kBottom) / 2;
+    cairo_translate(cr_, 14, y_mid + TextWidth(y_title, 12) / 2);
+    cairo_rotate(cr_, -M_PI / 2);
+    Text(y_title, 0, 0, 12);
+    cairo_restore(cr_);
+    texts_.push_back(
+        {"y-axis", y_title, 14, y_mid - TextWidth(y_title, 12) / 2, 16, TextWidth(y_title, 12), 0});
+}
+
+void Figure::Legend() {
+    const std::string front = "Pareto front: no other configuration is faster and more accurate";
+    const std::string other = "other configurations";
+    const double w = std::max(TextWidth(front, 11), TextWidth(other, 11)) + 30;
+    const double x = a_.width - kRight - w - 6, y = kTop;
+    Color(1, 1, 1);
+    cairo_rectangle(cr_, x, y, w, 40);
+    cairo_fill(cr_);
+    Color(0.6, 0.6, 0.6);
+    cairo_set_line_width(cr_, 1);
+    cairo_rectangle(cr_, x, y, w, 40);
+    cairo_stroke(cr_);
+    const double rows[2][3] = {{0.84, 0.15, 0.16}, {0.12, 0.47, 0.71}};
+    for (int i = 0; i < 2; ++i) {
+        Color(rows[i][0], rows[i][1], rows[i][2]);
+        cairo_arc(cr_, x + 12, y + 12 + 16 * i, 4.5, 0, 2 * M_PI);
+        cairo_fill(cr_);
+        Color(0, 0, 0);
+        Text(i == 0 ? front : other, x + 22, y + 5 + 16 * i, 11);
+    }
+    taken_.push_back({x, y, w, 40});
+    texts_.push_back({"legend", front + "; " + other, x, y, w, 40, 0});
+}
+
+void Figure::Points() {
+    std::vector<const AccuracyRow*> front;
+    for (const AccuracyRow& row : r_.rows) {
+        if (row.pareto) {
+            front.push_back(&row);
+        }
+        taken_.push_back({a_.X(TimeOf(row)) - kPoint - 1, a_.Y(row.flip) - kPoint - 1,
+                          2 * kPoint + 2, 2 * kPoint + 2});
+    }
+    std::sort(front.begin(), front.end(),
+              [](const AccuracyRow* a, const AccuracyRow* b) { return TimeOf(*a) < TimeOf(*b); });
+    Color(0.84, 0.15, 0.16);
+    cairo_set_line_width(cr_, 2);
+    for (size_t i = 0; i < front.size(); ++i) {
+        const double x = a_.X(TimeOf(*front[i])), y = a_.Y(front[i]->flip);
+        i == 0 ? cairo_move_to(cr_, x, y) : cairo_line_to(cr_, x, y);
+    }
+    cairo_stroke(cr_);
+    for (const AccuracyRow& row : r_.rows) {
+        row.pareto ? Color(0.84, 0.15, 0.16) : Color(0.12, 0.47, 0.71);
+        cairo_arc(cr_, a_.X(TimeOf(row)), a_.Y(row.flip), kPoint, 0, 2 * M_PI);
+        cairo_fill(cr_);
+    }
+    // Each label at the first place around its point, nearest first, that covers nothing placed
+    // yet and stays in the plot; farther than the nearest ring, a leader line joins it.
+    const double x_min = kLeft + 2, y_min = kTop, x_max = a_.width - kRight,
+                 y_max = a_.height - kBottom - 2;
+    for (size_t i = 0; i < r_.rows.size(); ++i) {
+        const AccuracyRow& row = r_.rows[i];
+        const std::string s = std::to_string(i + 1) + " " + row.config.name;
+        const double w = TextWidth(s, 11), h = 14;
+        const double px = a_.X(TimeOf(row)), py = a_.Y(row.flip);
+        Box chosen{px + 8, py - h - 2, w, h};
+        bool found = false;
+        for (int ring = 1; ring <= 12 && !found; ++ring) {
+            const double d = 8 + (ring - 1) * 12;
+            for (int k = 0; k < 16 && !found; ++k) {
+                const double angle = -M_PI / 4 + k * M_PI / 8;
+                const double cx = px + std::cos(angle) * d, cy = py - std::sin(angle) * d;
+                // The box hangs off the point on the side it lies.
+                const Box b{std::cos(angle) >= -1e-9 ? cx : cx - w,
+                            std::sin(angle) >= -1e-9 ? cy - h : cy, w, h};
+                if (!b.Inside(x_min, y_min, x_max, y_max)) {
+                    continue;
+                }
+                if (std::none_of(taken_.begin(), taken_.end(),
+                                 [&](const Box& t) { return t.Overlaps(b); })) {
+                    chosen = b;
+                    found = true;
+                    if (ring > 1) {  // a leader from the point to the label's nearest corner
+                        Color(0.55, 0.55, 0.55);
+                        const double lx = std::clamp(px, b.x, b.x + b.w);
+                        const double ly = std::clamp(py, b.y, b.y + b.h);
+                        Line(px, py, lx, ly, 0.8);
+                    }
+                }
+            }
+        }
+        Color(0, 0, 0);
+        Text(s, chosen.x, chosen.y, 11);
+        taken_.push_back(chosen);
+        texts_.push_back({"label", s, chosen.x, chosen.y, chosen.w, chosen.h, i});
+    }
+}
+
+std::vector<PlotText> Figure::Draw() {
+    Color(1, 1, 1);
+    cairo_paint(cr_);
+    AxesAndTicks();
+    Legend();
+    Points();
+    return texts_;
+}
+
+cairo_status_t AppendTo(void* closure, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+}
+
 }  // namespace
 
+std::vector<PlotText> AccuracyPlotTexts(const AccuracyReport& r, double width, double height) {
+    cairo_surface_t* surface = cairo_recording_surface_create(CAIRO_CONTENT_COLOR, nullptr);
+    cairo_t* cr = cairo_create(surface);
+    std::vector<PlotText> texts = Figure(cr, r, width, height).Draw();
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    return texts;
+}
+
+std::string XmlEscape(const std::string& s) {
+    std::string out;
+    for (char ch : s) {
+        out += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+    }
+    return out;
+}
+
 std::string AccuracyPlotSvg(const AccuracyReport& r) {
-    const Layout l = LayoutOf(r, 800, 500);
-    const bool gpu = !r.rows.empty() && r.rows[0].gpu_ms.median >= 0;
-    std::string svg =
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"500\" "
-        "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"800\" height=\"500\" "
-        "fill=\"white\"/>\n";
-    svg += "<text x=\"400\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">FLIP against " +
-           std::string(gpu ? "GPU" : "CPU") + " time: " + r.scene + "</text>\n";
-    const double x0 = l.X(0), y0 = l.Y(0);
-    svg += "<path d=\"M" + F(x0) + " " + F(l.Y(l.flip_max)) + " V" + F(y0) + " H" +
-           F(l.X(l.time_max)) + "\" stroke=\"black\" fill=\"none\"/>\n";
-    for (double t = 0; t <= l.time_max * 1.0001; t += TickStep(l.time_max)) {
-        svg += "<line x1=\"" + F(l.X(t)) + "\" y1=\"" + F(y0) + "\" x2=\"" + F(l.X(t)) +
-               "\" y2=\"" + F(y0 + 5) + "\" stroke=\"black\"/><text x=\"" + F(l.X(t)) + "\" y=\"" +
-               F(y0 + 18) + "\" text-anchor=\"middle\">" + F(t) + "</text>\n";
+    std::string svg;
+    cairo_surface_t* surface = cairo_svg_surface_create_for_stream(AppendTo, &svg, 960, 600);
+    cairo_t* cr = cairo_create(surface);
+    const std::vector<PlotText> texts = Figure(cr, r, 960, 600).Draw();
+    cairo_destroy(cr);
+    cairo_surface_finish(surface);
+    cairo_surface_destroy(surface);
+    // Cairo draws text as glyph outlines: the words go into the SVG's <title> and <desc> too,
+    // for screen readers, search and a reader of the file.
+    std::string title, desc;
+    for (const PlotText& t : texts) {
+        if (t.kind == "title") {
+            title = t.text;
+        } else {
+            desc += (desc.empty() ? "" : "; ") + t.kind + ": " + t.text;
+        }
     }
-    for (double f = 0; f <= l.flip_max * 1.0001; f += TickStep(l.flip_max)) {
-        svg += "<line x1=\"" + F(x0 - 5) + "\" y1=\"" + F(l.Y(f)) + "\" x2=\"" + F(x0) +
-               "\" y2=\"" + F(l.Y(f)) + "\" stroke=\"black\"/><text x=\"" + F(x0 - 8) + "\" y=\"" +
-               F(l.Y(f) + 4) + "\" text-anchor=\"end\">" + F(f) + "</text>\n";
+    if (const size_t open = svg.find("<svg"); open != std::string::npos) {
+        if (const size_t end = svg.find('>', open); end != std::string::npos) {
+            svg.insert(end + 1, "\n<title>" + XmlEscape(title) + "</title>\n<desc>" +
+                                    XmlEscape(desc) + "</desc>");
+        }
     }
-    svg += "<text x=\"" + F((l.left + l.width - l.right) / 2) + "\" y=\"" + F(l.height - 12) +
-           "\" text-anchor=\"middle\">" + (gpu ? "GPU" : "CPU") +
-           " ms per frame (median)</text>\n<text transform=\"translate(16 " +
-           F((l.top + l.height - l.bottom) / 2) +
-           ") rotate(-90)\" text-anchor=\"middle\">mean FLIP against the reference</text>\n";
-    std::string front;
-    for (const AccuracyRow* row : Front(r)) {
-        front += (front.empty() ? "M" : " L") + F(l.X(TimeOf(*row))) + " " + F(l.Y(row->flip));
-    }
-    if (!front.empty()) {
-        svg += "<path d=\"" + front + "\" stroke=\"#d62728\" stroke-width=\"2\" fill=\"none\"/>\n";
-    }
-    for (size_t i = 0; i < r.rows.size(); ++i) {
-        const AccuracyRow& row = r.rows[i];
-        const double x = l.X(TimeOf(row)), y = l.Y(row.flip);
-        svg += "<circle cx=\"" + F(x) + "\" cy=\"" + F(y) + "\" r=\"5\" fill=\"" +
-               (row.pareto ? "#d62728" : "#1f77b4") + "\"/><text x=\"" + F(x + 8) + "\" y=\"" +
-               F(y - 6) + "\">" + std::to_string(i + 1) + " " + row.config.name +
-               (row.config.label.empty() ? "" : " (" + row.config.label + ")") + "</text>\n";
-    }
-    svg += "<text x=\"" + F(l.width - l.right) + "\" y=\"" + F(l.top) +
-           "\" text-anchor=\"end\" fill=\"#d62728\">red: the Pareto front</text>\n</svg>\n";
     return svg;
 }
 
 std::vector<uint8_t> AccuracyPlotImage(const AccuracyReport& r, uint32_t width, uint32_t height) {
-    Canvas c{width, height, std::vector<uint8_t>(size_t(width) * height * 4, 255)};
-    const Layout l = LayoutOf(r, width, height);
-    const std::array<uint8_t, 3> black{0, 0, 0}, red{214, 39, 40}, blue{31, 119, 180};
-    c.Line(l.X(0), l.Y(0), l.X(l.time_max), l.Y(0), black, 2);
-    c.Line(l.X(0), l.Y(0), l.X(0), l.Y(l.flip_max), black, 2);
-    for (double t = 0; t <= l.time_max * 1.0001; t += TickStep(l.time_max)) {
-        c.Line(l.X(t), l.Y(0), l.X(t), l.Y(0) + 6, black, 1);
-        const std::string s = F(t);
-        c.Text(int(l.X(t)) - int(s.size()) * 4, int(l.Y(0)) + 10, s, 2, black);
+    cairo_surface_t* surface =
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, int(width), int(height));
+    cairo_t* cr = cairo_create(surface);
+    Figure(cr, r, width, height).Draw();
+    cairo_destroy(cr);
+    cairo_surface_flush(surface);
+    // Cairo's RGB24 is a native-endian 32-bit word per pixel, 0x00RRGGBB, rows `stride` apart.
+    std::vector<uint8_t> rgba(size_t(width) * height * 4, 255);
+    const unsigned char* data = cairo_image_surface_get_data(surface);
+    const int stride = cairo_image_surface_get_stride(surface);
+    for (uint32_t y = 0; y < height && data; ++y) {
+        for (uint32_t x = 0; x < width; ++x) {
+            uint32_t word;
+            std::memcpy(&word, data + size_t(y) * size_t(stride) + x * 4, 4);
+            uint8_t* p = &rgba[(size_t(y) * width + x) * 4];
+            p[0] = uint8_t(word >> 16), p[1] = uint8_t(word >> 8), p[2] = uint8_t(word);
+        }
     }
-    for (double f = 0; f <= l.flip_max * 1.0001; f += TickStep(l.flip_max)) {
-        c.Line(l.X(0) - 6, l.Y(f), l.X(0), l.Y(f), black, 1);
-        const std::string s = F(f);
-        c.Text(int(l.X(0)) - 10 - int(s.size()) * 8, int(l.Y(f)) - 5, s, 2, black);
-    }
-    const std::vector<const AccuracyRow*> front = Front(r);
-    for (size_t i = 1; i < front.size(); ++i) {
-        c.Line(l.X(TimeOf(*front[i - 1])), l.Y(front[i - 1]->flip), l.X(TimeOf(*front[i])),
-               l.Y(front[i]->flip), red, 2);
-    }
-    for (size_t i = 0; i < r.rows.size(); ++i) {
-        const AccuracyRow& row = r.rows[i];
-        const double x = l.X(TimeOf(row)), y = l.Y(row.flip);
-        c.Disc(x, y, 5, row.pareto ? red : blue);
-        c.Text(int(x) + 8, int(y) - 14, std::to_string(i + 1), 2, black);
-    }
-    return c.px;
+    cairo_surface_destroy(surface);
+    return rgba;
 }
 
 }  // namespace kiln::tools

@@ -93,12 +93,23 @@ Status WriteAccuracyReport(const AccuracyReport& report,
                            const ColorPipeline& color,
                            const std::string& dir);
 
-// The plot alone: FLIP mean against time (GPU where measured, else CPU), as SVG text and as an
-// RGBA8 image of width x height.
+// The plot alone: mean FLIP against time (GPU where measured, else CPU), one drawing (cairo)
+// as an SVG document (960x600) and as an RGBA8 image of width x height.
 std::string AccuracyPlotSvg(const AccuracyReport& report);
 std::vector<uint8_t> AccuracyPlotImage(const AccuracyReport& report,
                                        uint32_t width,
                                        uint32_t height);
+
+// A text the figure drew: what it is ("title", "x-axis", "y-axis", "legend", "label"), its words,
+// its box in the figure's pixels (top-left origin; an axis title's box as it stands on the page)
+// and, for a label, its table row (from 0).
+struct PlotText {
+    std::string kind, text;
+    double x = 0, y = 0, width = 0, height = 0;
+    size_t row = 0;
+};
+// The texts of the figure drawn at width x height, where AccuracyPlotImage draws them.
+std::vector<PlotText> AccuracyPlotTexts(const AccuracyReport& report, double width, double height);
 
 }  // namespace kiln::tools
 
