@@ -104,5 +104,32 @@ TEST(AccuracyPlot, ThePngAndTheSvgAreOneDrawing) {
     EXPECT_GT(blue, 10u * 50u);  // ten other points, about 80 pixels each
 }
 
+// The Pareto flags treat differences inside the noise as ties: a configuration a millisecond
+// slower than another, whose frames vary by six, stays on the front; one slower by more than the
+// spread and no more accurate leaves it; a more accurate one stays whatever its time.
+TEST(AccuracyPlot, TheParetoFrontIgnoresDifferencesInsideTheNoise) {
+    auto row = [](const char* name, double ms, double spread, double flip) {
+        AccuracyRow r;
+        r.config.name = name;
+        r.gpu_ms = {ms, ms - spread / 2, ms + spread / 2};
+        r.flip = flip;
+        return r;
+    };
+    std::vector<AccuracyRow> rows = {row("a", 10, 6, 0.0100), row("b", 11, 6, 0.0100),
+                                     row("c", 20, 2, 0.0101), row("d", 5, 0.2, 0.30),
+                                     row("e", 30, 2, 0.0050)};
+    tools::MarkParetoFront(rows);
+    EXPECT_TRUE(rows[0].pareto);   // a
+    EXPECT_TRUE(rows[1].pareto);   // b: 1 ms slower than a, inside a's and b's 3 ms noise
+    EXPECT_FALSE(rows[2].pareto);  // c: slower than a beyond the noise, FLIP tied within 1e-4
+    EXPECT_TRUE(rows[3].pareto);   // d: the fastest
+    EXPECT_TRUE(rows[4].pareto);   // e: the most accurate
+    // Without noise b is slower than a for the same error: off the front.
+    rows[0].gpu_ms = {10, 10, 10};
+    rows[1].gpu_ms = {11, 11, 11};
+    tools::MarkParetoFront(rows);
+    EXPECT_FALSE(rows[1].pareto);
+}
+
 }  // namespace
 }  // namespace kiln::test

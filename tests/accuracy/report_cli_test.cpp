@@ -17,6 +17,7 @@ TEST(ReportCli, WritesTheTablesPlotAndHeatMapsOfTheDemoScene) {
     const std::string dir = FreshTempDir("kiln_report_cli");
     const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " + dir +
                                 " --only pixel --only vertex --only deferred-rgba8-oct"
+                                " --only auto-4-fp16"
                                 " --width 192 --height 108 --supersample 2 --frames 2"
                                 " --validation");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -27,8 +28,8 @@ TEST(ReportCli, WritesTheTablesPlotAndHeatMapsOfTheDemoScene) {
         EXPECT_TRUE(fs::exists(fs::path(dir) / f)) << f;
     }
     const nlohmann::json j = nlohmann::json::parse(ReadFile(dir + "/report.json"));
-    // The three asked for, and fp16 (auto-4 with materials-half.kpack: lavapipe has
-    // shaderFloat16), which --only does not leave out.
+    // The four asked for, fp16 among them (auto-4 with materials-half.kpack: lavapipe has
+    // shaderFloat16).
     ASSERT_EQ(j["configurations"].size(), 4u);
     EXPECT_EQ(j["configurations"][3]["configuration"], "auto-4-fp16");
     // Binary16 where the templates say half changes the image little: auto-4 is pixel's image
@@ -44,7 +45,21 @@ TEST(ReportCli, WritesTheTablesPlotAndHeatMapsOfTheDemoScene) {
     EXPECT_TRUE(j["configurations"][2]["gpu_ms_per_pass"].contains("lighting"));
     const std::string svg = ReadFile(dir + "/plot.svg");
     EXPECT_NE(svg.find("Pareto"), std::string::npos);
-    EXPECT_NE(ReadFile(dir + "/report.md").find("| 3 | deferred-rgba8-oct |"), std::string::npos);
+    const std::string md = ReadFile(dir + "/report.md");
+    EXPECT_NE(md.find("| 3 | deferred-rgba8-oct |"), std::string::npos);
+    // Each configuration explained in one line, and how the Pareto flags are decided.
+    EXPECT_NE(md.find("1. `pixel`: forward, every light per pixel"), std::string::npos) << md;
+    EXPECT_NE(md.find("3. `deferred-rgba8-oct`: the deferred path, G-buffer normals RGBA8, "
+                      "octahedral encoding."),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("4. `auto-4-fp16`: auto-4 with the shipped shaders compiled with "
+                      "--precision half"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("Pareto: no other configuration is both faster and more accurate, each "
+                      "beyond the measurements' noise"),
+              std::string::npos);
     fs::remove_all(dir);
 }
 
@@ -68,6 +83,18 @@ TEST(ReportCli, ABrdfChoiceBuiltIntoOnePackIsComparedWithTheDefaultModel) {
     // (0.022 against 0.038 FLIP here; auto-4 alone matches pixel on this scene).
     EXPECT_GT(j["configurations"][1]["flip_mean"].get<double>(),
               j["configurations"][0]["flip_mean"].get<double>() + 0.005);
+    fs::remove_all(dir);
+}
+
+// --only means only: without auto-4-fp16 among its names, the fp16 configuration is not drawn.
+TEST(ReportCli, OnlyMeansOnly) {
+    const std::string dir = FreshTempDir("kiln_report_only");
+    const RunResult r = RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " -o " + dir +
+                                " --only sh --width 64 --height 36 --supersample 1 --frames 1");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(ReadFile(dir + "/report.json"));
+    ASSERT_EQ(j["configurations"].size(), 1u);
+    EXPECT_EQ(j["configurations"][0]["configuration"], "sh");
     fs::remove_all(dir);
 }
 

@@ -27,8 +27,11 @@ struct ReportArgs {
 
 // With the shipped packs, the fp16 configuration: auto-4 drawn with the shipped shaders compiled
 // with --precision half, where the device has shaderFloat16 (a warning where it has none).
+constexpr const char* kFp16Config = "auto-4-fp16";
 Status AddFp16Comparison(ReportArgs& a, DiagnosticList& diags) {
-    if (!a.packs.empty() || a.no_fp16)
+    // --only means only: the fp16 configuration too when it is named.
+    const bool named = std::find(a.only.begin(), a.only.end(), kFp16Config) != a.only.end();
+    if (!a.packs.empty() || a.no_fp16 || (!a.only.empty() && !named))
         return {};
     const std::string half = ShippedPackPath(kShippedHalfPack);
     if (!std::filesystem::exists(half))
@@ -65,11 +68,9 @@ Result<std::vector<tools::AccuracyConfig>> Configs(const ReportArgs& a) {
     for (const tools::AccuracyConfig& c : all) {
         names.push_back(c.name);
     }
+    names.push_back(kFp16Config);
     for (const std::string& want : a.only) {
-        bool found = false;
-        for (const tools::AccuracyConfig& c : all) {
-            found = found || c.name == want;
-        }
+        const bool found = std::find(names.begin(), names.end(), want) != names.end();
         if (!found) {
             std::string list;
             for (const std::string& n : names) {
@@ -89,6 +90,10 @@ Result<std::vector<tools::AccuracyConfig>> Configs(const ReportArgs& a) {
         c.group = "packs";
         c.renderer = i + 1;
         c.name += "-" + SplitCompare(a.compare[i]).first;
+        c.description = c.name == kFp16Config
+                            ? "auto-4 with the shipped shaders compiled with --precision half "
+                              "(binary16 where the templates say half)"
+                            : "auto-4 with the shaders of " + SplitCompare(a.compare[i]).second;
         out.push_back(c);
     }
     return out;
@@ -109,7 +114,9 @@ std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global
                     "packs, as LABEL=PACK (repeatable; e.g. O0=materials-O0.kpack, or a pack of "
                     "one shader built with -D KILN_BRDF_F_EXACT)")
         ->option_text("LABEL=PACK");
-    cmd->add_option("--only", a->only, "Only these of the default configurations (repeatable)");
+    cmd->add_option("--only", a->only,
+                    "Only these configurations (repeatable): default ones by name, or "
+                    "auto-4-fp16; nothing else is drawn");
     cmd->add_flag("--no-fp16", a->no_fp16,
                   "Leave out the fp16 configuration (the shipped shaders compiled with "
                   "--precision half, drawn where the device has shaderFloat16)");

@@ -20,17 +20,27 @@ namespace {
 
 constexpr uint32_t kEveryLight = 64;  // pixel lights per object: more than any scene asks for
 
-AccuracyConfig Config(std::string name, std::string group, LightMode mode, uint32_t pixel_lights) {
+AccuracyConfig Config(std::string name,
+                      std::string group,
+                      LightMode mode,
+                      uint32_t pixel_lights,
+                      std::string description) {
     AccuracyConfig c;
     c.name = std::move(name);
     c.group = std::move(group);
     c.settings.light_mode = mode;
     c.settings.pixel_lights = pixel_lights;
+    c.description = std::move(description);
     return c;
 }
 
-AccuracyConfig Deferred(std::string name, GBufferSettings::Normals normals, bool octahedral) {
-    AccuracyConfig c = Config(std::move(name), "path", LightMode::kPixel, kEveryLight);
+AccuracyConfig Deferred(std::string name,
+                        GBufferSettings::Normals normals,
+                        bool octahedral,
+                        std::string normals_text) {
+    AccuracyConfig c = Config(std::move(name), "path", LightMode::kPixel, kEveryLight,
+                              "the deferred path, G-buffer normals " + normals_text +
+                                  (octahedral ? ", octahedral encoding" : ", xyz encoding"));
     c.settings.path = RenderPath::kDeferred;
     c.settings.gbuffer.normals = normals;
     c.settings.gbuffer.octahedral = octahedral;
@@ -58,20 +68,6 @@ double MillisecondsSince(Clock::time_point start) {
 // Time: GPU where measured, else CPU.
 double TimeOf(const AccuracyRow& row) {
     return row.gpu_ms.median >= 0 ? row.gpu_ms.median : row.cpu_ms.median;
-}
-
-void MarkPareto(std::vector<AccuracyRow>& rows) {
-    for (AccuracyRow& a : rows) {
-        a.pareto = true;
-        for (const AccuracyRow& b : rows) {
-            const bool no_worse = TimeOf(b) <= TimeOf(a) && b.flip <= a.flip;
-            const bool better = TimeOf(b) < TimeOf(a) || b.flip < a.flip;
-            if (&a != &b && no_worse && better) {
-                a.pareto = false;
-                break;
-            }
-        }
-    }
 }
 
 struct State {
@@ -159,20 +155,58 @@ Status State::Row(Renderer& r, const AccuracyConfig& config, AccuracyRow& row) {
 
 }  // namespace
 
+// Half the spread (max - min) of a row's frame times: what a difference in time must exceed to
+// count. Timed on lavapipe, frames vary by a few milliseconds from run to run.
+double TimeNoise(const AccuracyRow& row) {
+    const Spread& s = row.gpu_ms.median >= 0 ? row.gpu_ms : row.cpu_ms;
+    return s.max >= s.min ? 0.5 * (s.max - s.min) : 0.0;
+}
+
+// A configuration is on the Pareto front unless another is at least as fast and as accurate and
+// better on one, each beyond its noise: time by the larger of the two rows' TimeNoise, FLIP by
+// kParetoFlipTolerance. Differences inside the noise are ties, so the flags do not change
+// between runs with the timings' jitter.
+void MarkParetoFront(std::vector<AccuracyRow>& rows) {
+    for (AccuracyRow& a : rows) {
+        a.pareto = true;
+        for (const AccuracyRow& b : rows) {
+            const double tol = std::max(TimeNoise(a), TimeNoise(b));
+            const bool no_slower = TimeOf(b) <= TimeOf(a) + tol;
+            const bool no_worse = b.flip <= a.flip + kParetoFlipTolerance;
+            const bool better =
+                TimeOf(b) < TimeOf(a) - tol || b.flip < a.flip - kParetoFlipTolerance;
+            if (&a != &b && no_slower && no_worse && better) {
+                a.pareto = false;
+                break;
+            }
+        }
+    }
+}
+
 std::vector<AccuracyConfig> DefaultAccuracyConfigs() {
     using N = GBufferSettings::Normals;
-    return {Config("pixel", "light mode", LightMode::kPixel, kEveryLight),
-            Config("auto-4", "light mode", LightMode::kAuto, 4),
-            Config("auto-2", "light mode", LightMode::kAuto, 2),
-            Config("auto-1", "light mode", LightMode::kAuto, 1),
-            Config("auto-0", "light mode", LightMode::kAuto, 0),
-            Config("vertex", "light mode", LightMode::kVertex, 0),
-            Config("sh", "light mode", LightMode::kSH, 0),
-            Deferred("deferred-rgb10a2", N::kRGB10A2, false),
-            Deferred("deferred-rgba8", N::kRGBA8, false),
-            Deferred("deferred-rgba16f", N::kRGBA16F, false),
-            Deferred("deferred-rgb10a2-oct", N::kRGB10A2, true),
-            Deferred("deferred-rgba8-oct", N::kRGBA8, true)};
+    auto automatic = [](const char* name, uint32_t n) {
+        return Config(name, "light mode", LightMode::kAuto, n,
+                      "forward, Unity's ranking: the brightest " + std::to_string(n) +
+                          " lights per pixel, 4 point lights per vertex, the rest in SH" +
+                          (n == 4 ? " (Unity's default)" : ""));
+    };
+    return {Config("pixel", "light mode", LightMode::kPixel, kEveryLight,
+                   "forward, every light per pixel (the reference's lighting, without "
+                   "supersampling)"),
+            automatic("auto-4", 4),
+            automatic("auto-2", 2),
+            automatic("auto-1", 1),
+            automatic("auto-0", 0),
+            Config("vertex", "light mode", LightMode::kVertex, 0,
+                   "forward, the main light per pixel, 4 point lights per vertex, the rest in SH"),
+            Config("sh", "light mode", LightMode::kSH, 0,
+                   "forward, the main light per pixel, every other light in SH"),
+            Deferred("deferred-rgb10a2", N::kRGB10A2, false, "RGB10A2 (Unity's)"),
+            Deferred("deferred-rgba8", N::kRGBA8, false, "RGBA8"),
+            Deferred("deferred-rgba16f", N::kRGBA16F, false, "RGBA16F"),
+            Deferred("deferred-rgb10a2-oct", N::kRGB10A2, true, "RGB10A2"),
+            Deferred("deferred-rgba8-oct", N::kRGBA8, true, "RGBA8")};
 }
 
 Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
@@ -206,7 +240,7 @@ Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
     report.renderer_labels.assign(labels.begin(), labels.end());
     State state{scene, color, options, report, {}};
 
-    AccuracyConfig ref = Config("reference", "reference", LightMode::kPixel, kEveryLight);
+    AccuracyConfig ref = Config("reference", "reference", LightMode::kPixel, kEveryLight, "");
     FrameSettings settings = state.SettingsOf(ref);
     settings.width *= ss;
     settings.height *= ss;
@@ -232,7 +266,7 @@ Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
             row.config.label = labels[c.renderer];
         }
     }
-    MarkPareto(report.rows);
+    MarkParetoFront(report.rows);
     return report;
 }
 

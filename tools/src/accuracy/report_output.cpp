@@ -51,6 +51,17 @@ std::string Markdown(const AccuracyReport& r) {
           "Render call (planning, recording, waiting, read-back); the first frame apart, with the "
           "pipelines it created. FLIP: mean over the image (0 identical, 1 most different); "
           "RMSE, max and PSNR in linear light.\n\n";
+    md += "Configurations:\n\n";
+    for (size_t i = 0; i < r.rows.size(); ++i) {
+        const AccuracyConfig& c = r.rows[i].config;
+        md += std::to_string(i + 1) + ". `" + c.name +
+              "`: " + (c.description.empty() ? c.group : c.description) + ".\n";
+    }
+    md +=
+        "\nPareto: no other configuration is both faster and more accurate, each beyond the "
+        "measurements' noise: faster by more than half the larger of the two frame-time spreads "
+        "(max - min), more accurate by more than " +
+        Num(kParetoFlipTolerance, 4) + " FLIP.\n\n";
     md +=
         "| # | configuration | group | packs | FLIP | RMSE | max abs | PSNR dB | GPU ms | "
         "CPU ms | first frame ms (pipelines) | Pareto |\n";

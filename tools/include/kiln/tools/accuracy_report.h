@@ -26,11 +26,12 @@ using runtime::LinearImage;
 using runtime::Renderer;
 using runtime::Scene;
 struct AccuracyConfig {
-    std::string name;        // "auto-4", "deferred-rgba8-oct", ... (also a file name)
-    std::string group;       // what it varies: "light mode", "path", "pack"
-    FrameSettings settings;  // its size and camera are the report's
-    size_t renderer = 0;     // which of the renderers draws it
-    std::string label;       // which packs, for the tables: the renderer's label
+    std::string name;         // "auto-4", "deferred-rgba8-oct", ... (also a file name)
+    std::string group;        // what it varies: "light mode", "path", "pack"
+    FrameSettings settings;   // its size and camera are the report's
+    size_t renderer = 0;      // which of the renderers draws it
+    std::string label;        // which packs, for the tables: the renderer's label
+    std::string description;  // one line for report.md: what the configuration draws
 };
 
 // The configurations a report compares by default, drawn by renderer 0: the light modes (every
@@ -62,10 +63,17 @@ struct AccuracyRow {
     Spread cpu_ms;  // Renderer::Render's wall time: planning, recording, waiting, read-back
     double first_frame_ms = 0;     // the first frame's CPU time, pipelines included
     uint32_t first_pipelines = 0;  // pipelines the first frame created (new to its renderer)
-    bool pareto = false;           // no other configuration is both faster and more accurate
+    // No other configuration is both faster and more accurate, beyond the measurements' noise:
+    // faster by more than half the larger of the two frame-time spreads (max - min), more
+    // accurate by more than kParetoFlipTolerance (MarkPareto, report.cpp).
+    bool pareto = false;
     LinearImage image;
     std::vector<float> flip_map;  // per pixel, for the heat map
 };
+
+// FLIP differences below this are ties for the Pareto front (FLIP is deterministic for one
+// device and build; this is a fraction of the smallest difference between the light modes).
+inline constexpr double kParetoFlipTolerance = 1e-4;
 
 struct AccuracyReport {
     std::string scene, device;
@@ -92,6 +100,9 @@ Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
 Status WriteAccuracyReport(const AccuracyReport& report,
                            const ColorPipeline& color,
                            const std::string& dir);
+
+// Sets each row's `pareto` flag (AccuracyRow::pareto), with the tolerances said there.
+void MarkParetoFront(std::vector<AccuracyRow>& rows);
 
 // The plot alone: mean FLIP against time (GPU where measured, else CPU), one drawing (cairo)
 // as an SVG document (960x600) and as an RGBA8 image of width x height.
