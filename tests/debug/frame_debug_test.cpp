@@ -216,6 +216,11 @@ TEST(FrameDebug, AStepLinkOpensThatStep) {
     EXPECT_NE(dom.find("<section class=\"step hidden\" id=\"step-2\""), std::string::npos);
     EXPECT_NE(dom.find("class=\"current\"><span class=\"n\">3</span>"), std::string::npos);
     EXPECT_NE(dom.find("step 3 of "), std::string::npos);
+    // The zoom (?zoom=2, or the page's select): every target's image at twice its size.
+    const std::string zoomed = DumpDom(out + "/index.html", "?zoom=2#step-3");
+    EXPECT_EQ(Attribute(zoomed, "data-zoom"), 2);
+    EXPECT_GT(Attribute(zoomed, "data-zoomed-ok"), 0);
+    EXPECT_EQ(Attribute(zoomed, "data-zoomed-ok"), Attribute(zoomed, "data-images"));
     // A link past the last step is ignored: the page opens on the last step.
     EXPECT_GT(Attribute(DumpDom(out + "/index.html", "#step-100000"), "data-current"), 3);
 }

@@ -220,6 +220,20 @@ document.body.dataset.imagesInProportion=inProportion.length;
 document.body.dataset.imagesOutOfProportion=imgs.filter(i=>!inProportion.includes(i))
 .map(i=>i.getAttribute('src')+' '+i.clientWidth+'x'+i.clientHeight).join(';');show(shown,true);
 document.getElementById('status').textContent=ok+' of '+imgs.length+' images loaded';});
+const targets=[...document.querySelectorAll('img.target')];
+function zoom(z){targets.forEach(i=>{
+i.style.width=z==='fit'?'':(i.naturalWidth*+z)+'px';i.style.maxWidth=z==='fit'?'':'none';
+i.closest('figure').style.maxWidth=z==='fit'?'':'none';});document.body.dataset.zoom=z;
+document.getElementById('zoom').value=z;}
+document.getElementById('zoom').onchange=e=>zoom(e.target.value);
+window.addEventListener('load',()=>{const z=new URLSearchParams(location.search).get('zoom');
+if(['1','2','4'].includes(z)){zoom(z);const shown=current;steps.forEach(s=>s.classList.remove('hidden'));
+document.body.dataset.zoomedOk=targets.filter(i=>i.clientWidth===i.naturalWidth*+z).length;
+show(shown,true);}});
+targets.forEach(i=>i.addEventListener('mousemove',e=>{const r=i.getBoundingClientRect();
+const x=Math.floor((e.clientX-r.left-i.clientLeft)/i.clientWidth*i.naturalWidth);
+const y=Math.floor((e.clientY-r.top-i.clientTop)/i.clientHeight*i.naturalHeight);
+document.getElementById('pixel').textContent='texel '+x+', '+y+' of '+i.alt;}));
 if(!fromHash())show(steps.length-1,true);)";
 
 std::string Page(const FrameCapture& capture) {
@@ -238,7 +252,10 @@ std::string Page(const FrameCapture& capture) {
          Escape(capture.path) + " path, " + std::to_string(capture.width) + "x" +
          std::to_string(capture.height) + ", " + std::to_string(capture.steps.size()) +
          " steps</p>\n<p><button id=\"prev\">previous</button> <span id=\"position\"></span> "
-         "<button id=\"next\">next</button></p>\n<p id=\"status\"></p>\n";
+         "<button id=\"next\">next</button></p>\n<p>zoom <select id=\"zoom\"><option>fit</option>"
+         "<option value=\"1\">1x</option><option value=\"2\">2x</option><option "
+         "value=\"4\">4x</option></select> (square texels)</p>\n<p id=\"pixel\">texel under "
+         "the cursor</p>\n<p id=\"status\"></p>\n";
     std::string open_pass;
     for (size_t n = 0; n < capture.steps.size(); ++n) {
         const DebugStep& s = capture.steps[n];
@@ -312,8 +329,8 @@ std::string Page(const FrameCapture& capture) {
             const std::string alt = image.target + " after step " + number;
             const std::string file = ImageFile(n + 1, image);
             // Click: the image at its full size, in a tab of its own.
-            h += "<figure><a href=\"" + file + "\" target=\"_blank\"><img src=\"" + file +
-                 "\" alt=\"" + Escape(alt) + "\" width=\"" + std::to_string(image.width) +
+            h += "<figure><a href=\"" + file + "\" target=\"_blank\"><img class=\"target\" src=\"" +
+                 file + "\" alt=\"" + Escape(alt) + "\" width=\"" + std::to_string(image.width) +
                  "\" height=\"" + std::to_string(image.height) + "\"></a><figcaption>" +
                  Escape(image.target) + " (" + std::to_string(image.width) + "x" +
                  std::to_string(image.height) + ")</figcaption></figure>\n";
