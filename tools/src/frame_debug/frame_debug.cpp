@@ -341,29 +341,31 @@ std::string Page(const FrameCapture& capture) {
     return h;
 }
 
+// DIR/name as a folder Kiln fills: a symbolic link planted there (as steps/, frame.json,
+// index.html or an image) is replaced, never written through, so it cannot aim a write at
+// another file.
+Status MakeFolder(const std::string& dir, const char* name) {
+    std::error_code ec;
+    const fs::path folder = fs::path(dir) / name;
+    if (fs::is_symlink(fs::symlink_status(folder, ec)))
+        fs::remove(folder, ec);
+    fs::create_directories(folder, ec);
+    if (ec || !fs::is_directory(fs::symlink_status(folder, ec))) {
+        return Error{
+            DiagCode::kCannotWriteFile,
+            dir + ": cannot create the frame-debug folder" +
+                (ec ? ": " + ec.message() : ": " + std::string(name) + " is not a folder")};
+    }
+    return {};
+}
+
 }  // namespace
 
 Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
-    // Kiln fills this folder: a symbolic link planted in it (steps/, frame.json, index.html, an
-    // image) is replaced, never written through, so it cannot aim a write at another file.
-    std::error_code ec;
-    const fs::path steps_dir = fs::path(dir) / "steps";
-    if (fs::is_symlink(fs::symlink_status(steps_dir, ec)))
-        fs::remove(steps_dir, ec);
-    fs::create_directories(steps_dir, ec);
-    if (ec || !fs::is_directory(fs::symlink_status(steps_dir, ec))) {
-        return Error{DiagCode::kCannotWriteFile,
-                     dir + ": cannot create the frame-debug folder" +
-                         (ec ? ": " + ec.message() : std::string(": steps is not a folder"))};
-    }
-    const fs::path textures_dir = fs::path(dir) / "textures";
-    if (fs::is_symlink(fs::symlink_status(textures_dir, ec)))
-        fs::remove(textures_dir, ec);
-    fs::create_directories(textures_dir, ec);
-    if (ec || !fs::is_directory(fs::symlink_status(textures_dir, ec))) {
-        return Error{DiagCode::kCannotWriteFile,
-                     dir + ": cannot create the frame-debug folder's textures" +
-                         (ec ? ": " + ec.message() : std::string(": not a folder"))};
+    for (const char* folder : {"steps", "textures"}) {
+        if (Status e = MakeFolder(dir, folder); !e.ok()) {
+            return e;
+        }
     }
     const base::WriteOptions replace_links{.follow_symlinks = false};
     nlohmann::json steps = nlohmann::json::array();
