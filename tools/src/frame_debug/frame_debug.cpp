@@ -310,8 +310,8 @@ std::string Page(const FrameCapture& capture) {
                             "\" height=\"" + std::to_string(t.thumbnail.height) + "\">";
                 }
                 h += "<tr><td>" + Escape(t.name) + "</td><td>" + thumb + "</td><td>" +
-                     Escape(RelativeLabel(t.source, capture.scene)) + ", " +
-                     std::to_string(t.width) + "x" + std::to_string(t.height) +
+                     Escape(t.source) + ", " + std::to_string(t.width) + "x" +
+                     std::to_string(t.height) +
                      (t.format.empty() ? std::string() : ", " + Escape(t.format)) + "</td></tr>\n";
             }
             h += "</table>\n";
