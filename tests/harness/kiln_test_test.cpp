@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -23,43 +24,71 @@ TEST(KilnTest, EveryVariantOfTheShippedMaterialsPasses) {
     const nlohmann::json report = nlohmann::json::parse(r.out);
     EXPECT_TRUE(report["passed"].get<bool>());
     EXPECT_TRUE(report["failures"].empty()) << report["failures"].dump(1);
-    // Every variant of every pass the forward path draws; the G-buffer passes, the deferred
-    // path's light pass, the ShadowCaster pass and the screen-space shadow collector are listed
-    // as skipped, and are every variant not tested.
+    // Every variant of every pass is tested (forward passes, G-buffer passes, ShadowCaster
+    // passes, the screen-space shadow collector) but the deferred light pass's combinations no
+    // frame draws. Its LIGHT and LIGHT_BOUNDED passes have 3 light types x 2 normal encodings x
+    // 4 shadow keywords (none, SCREEN, DEPTH, CUBE) x 2 (SHADOWS_SOFT) = 48 variants each; a
+    // frame draws per encoding DIRECTIONAL with none or SCREEN, POINT with none, CUBE or CUBE
+    // SOFT, SPOT with none, DEPTH or DEPTH SOFT: 16 in LIGHT, and the 12 of point and spot
+    // lights in LIGHT_BOUNDED; its LIGHT_MASK has 1. So 97 - 29 = 68 are never drawn.
     pack::MappedFile file;
     pack::Pack pk;
     ASSERT_TRUE(MapInto(KILN_MATERIALS_PACK, file));
     ASSERT_TRUE(OpenInto(file.bytes(), pk));
-    size_t untested = 0, casters = 0;
-    for (uint32_t p = 0; p < pk.Count(pack::SectionTag::kPasses); ++p) {
-        casters += pack::LightModeOf(pk, p) == pack::kLightModeShadowCaster;
-        const pack::PassRec rec = pk.Pass(p).value();
-        const pack::ShaderRec sr = pk.Shader(rec.shader).value();
-        if (pack::LightModeOf(pk, p) == pack::kLightModeDeferred ||
-            pack::LightModeOf(pk, p) == pack::kLightModeShadowCaster ||
-            pk.String(sr.name) == pack::kShaderDeferredShading ||
-            pk.String(sr.name) == pack::kShaderScreenSpaceShadows) {
-            untested += rec.variant_count;
-        }
-    }
-    EXPECT_EQ(report["variants"].get<size_t>() + untested, pk.Count(pack::SectionTag::kVariants));
-    EXPECT_EQ(report["skipped_variants"].get<size_t>(), untested);  // the summary counts them
-    // The two Deferred passes, the two internal shaders and one line per ShadowCaster pass.
-    ASSERT_EQ(report["skipped"].size(), 4u + casters) << report["skipped"].dump(1);
-    std::string skipped;
+    const size_t all = pk.Count(pack::SectionTag::kVariants);
+    EXPECT_EQ(report["variants"].get<size_t>() + report["skipped_variants"].get<size_t>(), all);
+    EXPECT_EQ(report["skipped_variants"].get<size_t>(), 68u);
+    ASSERT_FALSE(report["skipped"].empty());
     for (const auto& line : report["skipped"]) {
-        skipped += line.get<std::string>() + "\n";
+        const std::string s = line.get<std::string>();
+        EXPECT_EQ(s.rfind("shader \"Hidden/Internal-DeferredShading\" pass \"LIGHT", 0), 0u) << s;
+        EXPECT_NE(s.find(": never drawn: "), std::string::npos) << s;
     }
-    for (const char* expected :
-         {"shader \"Kiln/Deferred\" pass \"DEFERRED\": LightMode Deferred",
-          "shader \"Kiln/StandardMetallic\" pass \"DEFERRED\": LightMode Deferred",
-          "shader \"Hidden/Internal-DeferredShading\": the deferred path's light pass",
-          "shader \"Kiln/StandardMetallic\" pass \"ShadowCaster\": LightMode ShadowCaster",
-          "shader \"Hidden/Internal-ScreenSpaceShadows\": the screen-space shadow collector"}) {
-        EXPECT_NE(skipped.find(expected), std::string::npos) << expected << "\n" << skipped;
-    }
-    // Defaults, intensity 0, no light, then each Range() property at both ends.
+    // Defaults, intensity 0, no light, then each Range() property at both ends for the forward
+    // passes; one frame for each other pass (two for a shadowed light pass).
     EXPECT_GT(report["renders"].get<size_t>(), 3 * report["variants"].get<size_t>());
+}
+
+// The passes other paths draw fail their own checks: a ShadowCaster whose depth is NaN, moved or
+// flat, and a Deferred pass that writes NaN or a short normal; the healthy variants pass.
+TEST(KilnTest, ABrokenShadowCasterAndDeferredPassFail) {
+    ScratchDir dir;
+    const std::string pack = dir.path() + "/broken.kpack";
+    ASSERT_EQ(
+        RunKiln("compile " + DataPath("harness/BrokenPasses.shader") + " --no-cache -o " + pack)
+            .exit_code,
+        0);
+    // The shipped pack lights the G-buffer (its internal light pass).
+    const RunResult r =
+        RunKiln("test --json " + pack + " " + KILN_MATERIALS_PACK +
+                " --shader Test/BrokenPasses --keep-failures " + dir.path() + "/failures");
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    const nlohmann::json report = nlohmann::json::parse(r.out);
+    EXPECT_EQ(report["variants"], 12);  // 1 forward, 3 Deferred, 2 x 4 ShadowCaster
+    EXPECT_EQ(report["skipped_variants"], 0);
+    std::set<std::string> seen;
+    for (const auto& f : report["failures"]) {
+        std::string keywords;
+        for (const auto& k : f["keywords"]) {
+            keywords += (keywords.empty() ? "" : " ") + k.get<std::string>();
+        }
+        seen.insert(f["pass"].get<std::string>() + " " + keywords + ": " +
+                    f["check"].get<std::string>());
+    }
+    const std::set<std::string> expected = {
+        "DEFERRED NAN_EMISSION: finite",
+        "DEFERRED NAN_EMISSION: lit",
+        "DEFERRED SHORT_NORMAL: normal",
+        "ShadowCaster SHADOWS_DEPTH NAN_DEPTH: coverage",
+        "ShadowCaster SHADOWS_CUBE NAN_DEPTH: coverage",
+        "ShadowCaster SHADOWS_DEPTH SHIFTED: coverage",
+        "ShadowCaster SHADOWS_DEPTH SHIFTED: depth",
+        "ShadowCaster SHADOWS_CUBE SHIFTED: coverage",
+        "ShadowCaster SHADOWS_CUBE SHIFTED: depth",
+        "ShadowCaster SHADOWS_DEPTH FLAT_DEPTH: depth",
+        "ShadowCaster SHADOWS_CUBE FLAT_DEPTH: depth",
+    };
+    EXPECT_EQ(seen, expected) << report["failures"].dump(1);
 }
 
 TEST(KilnTest, ABrokenShaderFailsNamingKeywordsPropertyValuesAndCheck) {

@@ -116,12 +116,15 @@ std::function<int()> AddTestCommand(CLI::App* cmd, const GlobalOptions& global) 
             for (const std::string& s : report.skipped)
                 std::printf("skipped %s\n", s.c_str());
             const size_t skips = report.skipped.size();
+            const std::string skipped =
+                skips == 0 ? ""
+                           : " (" + std::to_string(report.skipped_variants) +
+                                 " not tested, for the " + std::to_string(skips) + " reason" +
+                                 (skips == 1 ? "" : "s") + " listed above)";
             std::printf(
-                "kiln test: %zu of %zu variants tested (%zu skipped in %zu %s, each listed above "
-                "with why), %zu renders on '%s': %zu failures\n",
-                report.variants, report.variants + report.skipped_variants, report.skipped_variants,
-                skips, skips == 1 ? "pass or shader" : "passes or shaders", report.renders,
-                renderer.DeviceName().c_str(), report.failures.size());
+                "kiln test: %zu of %zu variants tested%s, %zu renders on '%s': %zu failures\n",
+                report.variants, report.variants + report.skipped_variants, skipped.c_str(),
+                report.renders, renderer.DeviceName().c_str(), report.failures.size());
         }
         return run.Finish(ExitCodeFor(diags));
     };

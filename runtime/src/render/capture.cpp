@@ -21,21 +21,12 @@ uint8_t Byte(double v) {
 std::vector<uint8_t> DepthImage(const FrameTarget& t,
                                 const std::vector<uint8_t>& bytes,
                                 const glm::mat4& inverse_projection) {
-    const bool d16 = t.format == VK_FORMAT_D16_UNORM;
-    const size_t n = bytes.size() / (d16 ? 2 : 4);
+    const std::vector<float> stored = DecodeTexels(t, bytes);
+    const size_t n = stored.size();
     std::vector<double> distance(n, -1.0);
     double lo = 1e300, hi = -1e300;
     for (size_t i = 0; i < n; ++i) {
-        uint32_t bits = 0;
-        std::memcpy(&bits, bytes.data() + i * (d16 ? 2 : 4), d16 ? 2 : 4);
-        float z;
-        if (d16) {
-            z = float(bits) / 65535.0f;
-        } else if (t.format == VK_FORMAT_D24_UNORM_S8_UINT) {
-            z = float(bits & 0xFFFFFFu) / 16777215.0f;
-        } else {
-            std::memcpy(&z, &bits, 4);
-        }
+        const float z = stored[i];
         if (!(z < 1.0f)) {
             continue;  // the clear value: nothing drawn
         }

@@ -213,35 +213,48 @@ Status BuildDeferredFrame(BuildInputs& in, const DeferredPlan& plan, Frame& fram
     return {};
 }
 
-class DeferredPathPlan final : public PathPlan {
+// A deferred plan as a PathPlan: the path's own (DeferredPathPlan), or one its caller keeps.
+class DeferredPlanView : public PathPlan {
   public:
+    explicit DeferredPlanView(const DeferredPlan& plan) : plan_(plan) {}
     void Requests(std::vector<const DrawRequest*>& out) const override {
-        for (const DrawRequest& r : plan.gbuffer) {
+        for (const DrawRequest& r : plan_.gbuffer) {
             out.push_back(&r);
         }
-        for (const LightDraw& l : plan.lights) {
+        for (const LightDraw& l : plan_.lights) {
             out.push_back(&l.request);
         }
-        for (const DrawRequest& r : plan.forward) {
+        for (const DrawRequest& r : plan_.forward) {
             out.push_back(&r);
         }
-        ShadowRequests(plan.shadows, out);
+        ShadowRequests(plan_.shadows, out);
     }
     void Materials(std::vector<const MaterialInstance*>& out) const override {
-        out.insert(out.end(), plan.list.materials.begin(), plan.list.materials.end());
-        if (plan.light_material) {
-            out.push_back(&*plan.light_material);
+        out.insert(out.end(), plan_.list.materials.begin(), plan_.list.materials.end());
+        if (plan_.light_material) {
+            out.push_back(&*plan_.light_material);
         }
-        if (plan.shadows.collect) {
-            out.push_back(&*plan.shadows.collector);
+        if (plan_.shadows.collect) {
+            out.push_back(&*plan_.shadows.collector);
         }
     }
-    uint32_t Objects() const override { return plan.objects; }
+    uint32_t Objects() const override { return plan_.objects; }
     Status Build(BuildInputs& in, Frame& frame) const override {
-        return BuildDeferredFrame(in, plan, frame);
+        return BuildDeferredFrame(in, plan_, frame);
     }
 
+  private:
+    const DeferredPlan& plan_;
+};
+
+struct DeferredPlanStore {
     DeferredPlan plan;
+};
+
+class DeferredPathPlan final : private DeferredPlanStore, public DeferredPlanView {
+  public:
+    DeferredPathPlan() : DeferredPlanView(DeferredPlanStore::plan) {}
+    DeferredPlan& Store() { return DeferredPlanStore::plan; }
 };
 
 class DeferredPath final : public PathRenderer {
@@ -264,7 +277,7 @@ class DeferredPath final : public PathRenderer {
     Result<std::unique_ptr<PathPlan>> Plan(const PlanInputs& in) const override {
         auto out = std::make_unique<DeferredPathPlan>();
         if (Status e = PlanDeferred(in.packs, in.scene, in.settings, in.camera.position, in.color,
-                                    in.materials, out->plan, in.warnings);
+                                    in.materials, out->Store(), in.warnings);
             !e.ok()) {
             return e.error();
         }
@@ -280,6 +293,10 @@ class DeferredPath final : public PathRenderer {
 
 std::unique_ptr<PathRenderer> MakeDeferredPath() {
     return std::make_unique<DeferredPath>();
+}
+
+std::unique_ptr<PathPlan> ViewDeferredPlan(const DeferredPlan& plan) {
+    return std::make_unique<DeferredPlanView>(plan);
 }
 
 }  // namespace kiln::runtime

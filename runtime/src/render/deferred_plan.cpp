@@ -80,6 +80,15 @@ Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
         !e.ok()) {
         return e;
     }
+    return PlanDeferredRequests(packs, scene, settings, color, out, warnings);
+}
+
+Status PlanDeferredRequests(const std::vector<const pack::Pack*>& packs,
+                            const Scene& scene,
+                            const FrameSettings& settings,
+                            const ColorPipeline& color,
+                            DeferredPlan& out,
+                            DiagnosticList& warnings) {
     const bool octahedral = settings.gbuffer.octahedral;
     std::vector<const DrawItem*> forward;
     for (const DrawItem& item : out.list.items) {

@@ -47,6 +47,13 @@ Status PlanDeferred(const std::vector<const pack::Pack*>& packs,
                     MaterialCache& materials,
                     DeferredPlan& out,
                     DiagnosticList& warnings);
+// PlanDeferred after its draw list: the requests of `out.list`, built by the caller.
+Status PlanDeferredRequests(const std::vector<const pack::Pack*>& packs,
+                            const Scene& scene,
+                            const FrameSettings& settings,
+                            const ColorPipeline& color,
+                            DeferredPlan& out,
+                            DiagnosticList& warnings);
 
 }  // namespace kiln::runtime
 

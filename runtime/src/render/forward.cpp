@@ -59,26 +59,39 @@ Status BuildForwardFrame(BuildInputs& in, const ForwardPlan& plan, Frame& frame)
     return {};
 }
 
-class ForwardPathPlan final : public PathPlan {
+// A forward plan as a PathPlan: the path's own (ForwardPathPlan), or one its caller keeps.
+class ForwardPlanView : public PathPlan {
   public:
+    explicit ForwardPlanView(const ForwardPlan& plan) : plan_(plan) {}
     void Requests(std::vector<const DrawRequest*>& out) const override {
-        for (const DrawRequest& r : plan.draws) {
+        for (const DrawRequest& r : plan_.draws) {
             out.push_back(&r);
         }
-        ShadowRequests(plan.shadows, out);
+        ShadowRequests(plan_.shadows, out);
     }
     void Materials(std::vector<const MaterialInstance*>& out) const override {
-        out.insert(out.end(), plan.list.materials.begin(), plan.list.materials.end());
-        if (plan.shadows.collect) {
-            out.push_back(&*plan.shadows.collector);
+        out.insert(out.end(), plan_.list.materials.begin(), plan_.list.materials.end());
+        if (plan_.shadows.collect) {
+            out.push_back(&*plan_.shadows.collector);
         }
     }
-    uint32_t Objects() const override { return plan.objects; }
+    uint32_t Objects() const override { return plan_.objects; }
     Status Build(BuildInputs& in, Frame& frame) const override {
-        return BuildForwardFrame(in, plan, frame);
+        return BuildForwardFrame(in, plan_, frame);
     }
 
+  private:
+    const ForwardPlan& plan_;
+};
+
+struct ForwardPlanStore {
     ForwardPlan plan;
+};
+
+class ForwardPathPlan final : private ForwardPlanStore, public ForwardPlanView {
+  public:
+    ForwardPathPlan() : ForwardPlanView(ForwardPlanStore::plan) {}
+    ForwardPlan& Store() { return ForwardPlanStore::plan; }
 };
 
 class ForwardPath final : public PathRenderer {
@@ -91,7 +104,7 @@ class ForwardPath final : public PathRenderer {
     Result<std::unique_ptr<PathPlan>> Plan(const PlanInputs& in) const override {
         auto out = std::make_unique<ForwardPathPlan>();
         if (Status e = PlanForward(in.packs, in.scene, in.settings, in.camera.position, in.color,
-                                   in.materials, out->plan, in.warnings);
+                                   in.materials, out->Store(), in.warnings);
             !e.ok()) {
             return e.error();
         }
@@ -105,27 +118,8 @@ std::unique_ptr<PathRenderer> MakeForwardPath() {
     return std::make_unique<ForwardPath>();
 }
 
-Status DrawPlan(Renderer::State& s,
-                SceneResources& resources,
-                const Scene& scene,
-                const FrameSettings& settings,
-                const CameraSetup& camera,
-                const ForwardPlan& plan,
-                LinearImage& out,
-                FrameStats& stats,
-                const StepObserver* observer) {
-    Frame frame;
-    frame.width = settings.width;
-    frame.height = settings.height;
-    DrawBuilder builder(s, resources, scene, FrameValues(scene, settings, camera), stats,
-                        observer != nullptr);
-    BuildInputs in{s, resources, builder, scene, settings, camera, stats};
-    if (Status e = BuildForwardFrame(in, plan, frame); !e.ok()) {
-        return e;
-    }
-    stats.objects = plan.objects;
-    frame.uniforms = builder.TakeUniforms();
-    return RecordFrame(s, frame, out, stats, observer);
+std::unique_ptr<PathPlan> ViewForwardPlan(const ForwardPlan& plan) {
+    return std::make_unique<ForwardPlanView>(plan);
 }
 
 }  // namespace kiln::runtime

@@ -180,6 +180,15 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
         !e.ok()) {
         return e;
     }
+    return PlanForwardRequests(packs, scene, settings, color, out, warnings);
+}
+
+Status PlanForwardRequests(const std::vector<const pack::Pack*>& packs,
+                           const Scene& scene,
+                           const FrameSettings& settings,
+                           const ColorPipeline& color,
+                           ForwardPlan& out,
+                           DiagnosticList& warnings) {
     for (const DrawItem& item : out.list.items) {
         if (AddForwardRequests(packs, scene, settings, out.list, item, out.draws, warnings)) {
             ++out.objects;

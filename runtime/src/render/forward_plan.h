@@ -118,6 +118,14 @@ Status PlanForward(const std::vector<const pack::Pack*>& packs,
                    MaterialCache& materials,
                    ForwardPlan& out,
                    DiagnosticList& warnings);
+// PlanForward after its draw list: the requests of `out.list`, built by the caller (kiln test
+// builds its own, one material on every object).
+Status PlanForwardRequests(const std::vector<const pack::Pack*>& packs,
+                           const Scene& scene,
+                           const FrameSettings& settings,
+                           const ColorPipeline& color,
+                           ForwardPlan& out,
+                           DiagnosticList& warnings);
 
 }  // namespace kiln::runtime
 

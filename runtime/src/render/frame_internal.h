@@ -14,6 +14,12 @@ namespace kiln::runtime {
 float HalfToFloat(uint16_t h);
 // The texels of a float target (RGBA16F or RGBA32F) as read back, as floats.
 std::vector<float> TargetFloats(const FrameTarget& t, const std::vector<uint8_t>& bytes);
+// The texels of any target as read back, decoded to the values a shader reads from it: depth
+// as stored (one channel), R8 one channel in [0, 1], UNORM channels in [0, 1], sRGB colour
+// channels to linear (alpha as stored), float channels as they are.
+std::vector<float> DecodeTexels(const FrameTarget& t, const std::vector<uint8_t>& bytes);
+// The channels per texel DecodeTexels gives: 1 (depth, R8) or 4.
+uint32_t DecodedChannels(const FrameTarget& t);
 
 // A pass's targets in attachment order: the colours, then the depth buffer.
 std::vector<uint32_t> Attachments(const FramePass& pass);

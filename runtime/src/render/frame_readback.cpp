@@ -1,5 +1,6 @@
 // Reading a frame's targets back to the host: the output image, and every target after each step
 // for the frame debugger.
+#include <cmath>
 #include <cstring>
 
 #include "render/frame_internal.h"
@@ -16,6 +17,64 @@ std::vector<float> TargetFloats(const FrameTarget& t, const std::vector<uint8_t>
             uint16_t half;
             std::memcpy(&half, bytes.data() + i * 2, 2);
             out[i] = HalfToFloat(half);
+        }
+    }
+    return out;
+}
+
+namespace {
+
+float SrgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace
+
+uint32_t DecodedChannels(const FrameTarget& t) {
+    return t.depth || t.format == VK_FORMAT_R8_UNORM ? 1 : 4;
+}
+
+std::vector<float> DecodeTexels(const FrameTarget& t, const std::vector<uint8_t>& bytes) {
+    if (t.format == VK_FORMAT_R16G16B16A16_SFLOAT || t.format == VK_FORMAT_R32G32B32A32_SFLOAT) {
+        return TargetFloats(t, bytes);
+    }
+    std::vector<float> out;
+    if (t.format == VK_FORMAT_R8_UNORM) {
+        for (uint8_t v : bytes) {
+            out.push_back(float(v) / 255.0f);
+        }
+        return out;
+    }
+    const size_t size = t.format == VK_FORMAT_D16_UNORM ? 2 : 4;
+    for (size_t i = 0; i + size <= bytes.size(); i += size) {
+        uint32_t bits = 0;
+        std::memcpy(&bits, bytes.data() + i, size);
+        switch (t.format) {
+            case VK_FORMAT_D16_UNORM:
+                out.push_back(float(bits) / 65535.0f);
+                break;
+            case VK_FORMAT_D24_UNORM_S8_UINT:
+                out.push_back(float(bits & 0xFFFFFFu) / 16777215.0f);
+                break;
+            case VK_FORMAT_D32_SFLOAT:
+            case VK_FORMAT_D32_SFLOAT_S8_UINT: {
+                float z;
+                std::memcpy(&z, &bits, 4);
+                out.push_back(z);
+                break;
+            }
+            case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+                out.insert(out.end(),
+                           {float(bits & 0x3FF) / 1023.0f, float((bits >> 10) & 0x3FF) / 1023.0f,
+                            float((bits >> 20) & 0x3FF) / 1023.0f, float(bits >> 30) / 3.0f});
+                break;
+            default: {  // 8-bit RGBA, sRGB or UNORM
+                const bool srgb = t.format == VK_FORMAT_R8G8B8A8_SRGB;
+                for (int c = 0; c < 4; ++c) {
+                    const float v = float((bits >> (8 * c)) & 0xFF) / 255.0f;
+                    out.push_back(srgb && c < 3 ? SrgbToLinear(v) : v);
+                }
+            }
         }
     }
     return out;

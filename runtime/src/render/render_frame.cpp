@@ -49,6 +49,29 @@ Status CheckSamples(const Renderer::State& s, uint32_t samples) {
 
 }  // namespace
 
+Status DrawPlan(Renderer::State& s,
+                SceneResources& resources,
+                const Scene& scene,
+                const FrameSettings& settings,
+                const CameraSetup& camera,
+                const PathPlan& plan,
+                LinearImage& out,
+                FrameStats& stats,
+                const StepObserver* observer) {
+    Frame frame;
+    frame.width = settings.width;
+    frame.height = settings.height;
+    DrawBuilder builder(s, resources, scene, FrameValues(scene, settings, camera), stats,
+                        observer != nullptr);
+    BuildInputs in{s, resources, builder, scene, settings, camera, stats};
+    if (Status e = plan.Build(in, frame); !e.ok()) {
+        return e;
+    }
+    stats.objects = plan.Objects();
+    frame.uniforms = builder.TakeUniforms();
+    return RecordFrame(s, frame, out, stats, observer);
+}
+
 Status RenderFrame(Renderer::State& s,
                    const Scene& scene,
                    const FrameSettings& settings,
@@ -105,21 +128,11 @@ Status RenderFrame(Renderer::State& s,
     s.NoteMaterials(used);
     stats.materials_resolved = uint32_t(resources.materials.size() - materials);
 
-    Frame frame;
-    frame.width = drawn.width;
-    frame.height = drawn.height;
-    DrawBuilder builder(s, resources, scene, FrameValues(scene, drawn, camera), stats,
-                        capture != nullptr);
-    BuildInputs build{s, resources, builder, scene, drawn, camera, stats};
-    if (Status e = plan.Build(build, frame); !e.ok()) {
-        return e;
-    }
-    stats.objects = plan.Objects();
+    const Status drawn_frame = DrawPlan(s, resources, scene, drawn, camera, plan, out, stats,
+                                        capture ? &observer : nullptr);
     stats.path_counts = path->Counts(stats);
-    frame.uniforms = builder.TakeUniforms();
-    const Status recorded = RecordFrame(s, frame, out, stats, capture ? &observer : nullptr);
     stats.buffers_uploaded = resources.uploads - uploads;
-    return recorded;
+    return drawn_frame;
 }
 
 }  // namespace kiln::runtime

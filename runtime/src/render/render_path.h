@@ -101,6 +101,26 @@ Error UnknownPath(std::string_view name);
 std::unique_ptr<PathRenderer> MakeForwardPath();
 std::unique_ptr<PathRenderer> MakeDeferredPath();
 
+// A plan its caller built and keeps, drawn as the path draws its own (kiln test plans its own
+// frames: render/tool_access.h).
+struct DeferredPlan;
+std::unique_ptr<PathPlan> ViewForwardPlan(const ForwardPlan& plan);
+std::unique_ptr<PathPlan> ViewDeferredPlan(const DeferredPlan& plan);
+
+// Builds and records `plan`'s frame (what RenderFrame does after planning), with
+// settings.msaa samples per pixel resolved before the read-back; `observer`: the frame recorded
+// step by step (render/frame.h), each draw's Draw::Info filled. The meshes and textures come
+// from `resources`.
+Status DrawPlan(Renderer::State& state,
+                SceneResources& resources,
+                const Scene& scene,
+                const FrameSettings& settings,
+                const CameraSetup& camera,
+                const PathPlan& plan,
+                LinearImage& out,
+                FrameStats& stats,
+                const StepObserver* observer = nullptr);
+
 }  // namespace kiln::runtime
 
 #endif  // KILN_RUNTIME_RENDER_RENDER_PATH_H_

@@ -23,8 +23,6 @@
 
 namespace kiln::runtime {
 struct CameraSetup;
-struct DeferredPlan;
-struct ForwardPlan;
 class FrameTextures;
 }  // namespace kiln::runtime
 
@@ -154,19 +152,6 @@ Status RenderFrame(Renderer::State& state,
                    LinearImage& out,
                    FrameStats& stats,
                    FrameCapture* capture = nullptr);
-// Draws a planned frame: each request's variant, pipeline, uniforms and descriptors, then one
-// command buffer (what RenderFrame does after planning; kiln test plans its own frames), with
-// settings.msaa samples per pixel resolved before the read-back. The meshes and textures come
-// from `resources`.
-Status DrawPlan(Renderer::State& state,
-                SceneResources& resources,
-                const Scene& scene,
-                const FrameSettings& settings,
-                const CameraSetup& camera,
-                const ForwardPlan& plan,
-                LinearImage& out,
-                FrameStats& stats,
-                const StepObserver* observer = nullptr);
 
 }  // namespace kiln::runtime
 

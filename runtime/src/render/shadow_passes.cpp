@@ -71,13 +71,10 @@ Status AddShadowPasses(Renderer::State& s,
     if (Status e = s.ShadowMapFormat(format); !e.ok()) {
         return e;
     }
-    const uint32_t resolution = std::clamp(settings.shadow_resolution, 16u, 8192u);
     std::optional<uint32_t> camera_depth;
     for (const Light* light : plan.lights) {
-        // A point light's cube has six faces of half the resolution (a quarter of the texels
-        // each), as Unity sizes them: 1.5 times a 2D map's memory instead of 6.
         const bool cube = light->type == LightType::kPoint;
-        const uint32_t size = cube ? std::max(resolution / 2, 16u) : resolution;
+        const uint32_t size = ShadowMapSize(settings, *light);
         const LightShadow& shadow = out.shadows.emplace_back(ShadowOf(*light, *bounds, size));
         FrameTarget map{"shadow map: " + LightName(light), format, true, {}, false};
         map.clear.depthStencil = {1.0f, 0};

@@ -71,6 +71,11 @@ float FarthestCorner(const std::pair<glm::vec3, glm::vec3>& b, const glm::vec3& 
 
 }  // namespace
 
+uint32_t ShadowMapSize(const FrameSettings& settings, const Light& light) {
+    const uint32_t resolution = std::clamp(settings.shadow_resolution, 16u, 8192u);
+    return light.type == LightType::kPoint ? std::max(resolution / 2, 16u) : resolution;
+}
+
 const char* ReceiverKeyword(const Light& light) {
     return light.type == LightType::kPoint  ? pack::kKeywordShadowsCube
            : light.type == LightType::kSpot ? pack::kKeywordShadowsDepth

@@ -40,6 +40,11 @@ LightShadow ShadowOf(const Light& light,
                      const std::pair<glm::vec3, glm::vec3>& bounds,
                      uint32_t resolution);
 
+// The side of `light`'s map in texels: settings.shadow_resolution (16 to 8192); a point light's
+// cube faces half that (a quarter of the texels each), as Unity sizes them: 1.5 times a 2D map's
+// memory instead of 6.
+uint32_t ShadowMapSize(const FrameSettings& settings, const Light& light);
+
 // The keyword a receiver of `light`'s shadow asks for.
 const char* ReceiverKeyword(const Light& light);
 

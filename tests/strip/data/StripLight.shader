@@ -56,13 +56,17 @@ Shader "Test/StripLight"
     float4 StripBaseFragment(StripInterpolators i) : SV_TARGET { return StripShade(i, true); }
     float4 StripAddFragment(StripInterpolators i) : SV_TARGET { return StripShade(i, false); }
 
+    // Unity's layout (UnityGBuffer.cginc): diffuse, specular and smoothness, normal, light.
     void StripGBuffer(StripInterpolators i, out float4 rt0 : SV_Target0,
-                      out float4 rt2 : SV_Target1) {
+                      out float4 rt1 : SV_Target1, out float4 rt2 : SV_Target2,
+                      out float4 rt3 : SV_Target3) {
         rt0 = _Color;
     #if defined(UNITY_HDR_ON)
         rt0.rgb *= 2.0;
     #endif
+        rt1 = float4(0.04, 0.04, 0.04, _Smoothness);
         rt2 = float4(SafeNormalize(i.normal) * 0.5 + 0.5, 1.0);
+        rt3 = float4(0, 0, 0, 1);
     }
     ENDCG
 

@@ -12,8 +12,8 @@ using runtime::ComputeBounds;
 using runtime::ForwardPlan;
 namespace {
 
-const glm::vec3 kEye(0.0f, 0.6f, 2.4f);
-const glm::vec3 kTarget(0.0f, 0.5f, 0.0f);
+const glm::vec3 kEye = kHarnessEye;
+const glm::vec3 kTarget = kHarnessSphereCentre;
 
 runtime::MeshVertex Vertex(glm::vec3 p, glm::vec3 n, glm::vec2 uv, glm::vec3 t) {
     runtime::MeshVertex v{};
@@ -58,8 +58,9 @@ runtime::Primitive Sphere(uint32_t segments, uint32_t rings, glm::vec3 centre, f
 runtime::Primitive Plane() {
     runtime::Primitive p;
     const glm::vec3 up(0, 1, 0), t(1, 0, 0);
-    p.vertices = {Vertex({-2, 0, -2}, up, {0, 0}, t), Vertex({-2, 0, 2}, up, {0, 1}, t),
-                  Vertex({2, 0, 2}, up, {1, 1}, t), Vertex({2, 0, -2}, up, {1, 0}, t)};
+    const float h = kHarnessPlaneHalf;
+    p.vertices = {Vertex({-h, 0, -h}, up, {0, 0}, t), Vertex({-h, 0, h}, up, {0, 1}, t),
+                  Vertex({h, 0, h}, up, {1, 1}, t), Vertex({h, 0, -h}, up, {1, 0}, t)};
     p.indices = {0, 1, 2, 0, 2, 3};
     p.has_tangents = true;
     return p;
@@ -148,7 +149,7 @@ Status DrawHarnessPass(runtime::Renderer& renderer,
 runtime::Scene HarnessScene() {
     runtime::Scene scene;
     scene.path = "<kiln test harness>";
-    scene.meshes.push_back({"sphere", {Sphere(32, 16, kTarget, 0.5f)}});
+    scene.meshes.push_back({"sphere", {Sphere(32, 16, kTarget, kHarnessSphereRadius)}});
     scene.meshes.push_back({"plane", {Plane()}});
     scene.instances.push_back({0, glm::mat4(1.0f), "sphere"});
     scene.instances.push_back({1, glm::mat4(1.0f), "plane"});

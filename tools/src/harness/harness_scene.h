@@ -16,8 +16,12 @@ namespace kiln::tools {
 
 using runtime::CameraSetup;
 using runtime::MaterialInstance;
-// Sphere (centre (0, 0.5, 0), radius 0.5) first, then the plane y = 0; camera 0 looks at the
-// sphere's centre from +Z.
+// Sphere (centre (0, 0.5, 0), radius 0.5) first, then the plane y = 0 (|x|, |z| <= 2); camera 0
+// looks at the sphere's centre from kHarnessEye.
+inline constexpr glm::vec3 kHarnessSphereCentre{0.0f, 0.5f, 0.0f};
+inline constexpr float kHarnessSphereRadius = 0.5f;
+inline constexpr float kHarnessPlaneHalf = 2.0f;
+inline constexpr glm::vec3 kHarnessEye{0.0f, 0.6f, 2.4f};
 runtime::Scene HarnessScene();
 
 // A light of `type` at the harness camera, shining along its view; `intensity` in lux (directional)
