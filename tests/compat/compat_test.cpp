@@ -427,6 +427,15 @@ const std::map<std::string, std::string> kHarnessInapplicable = {
      "the terrain sets _WaveAndDistance; at zero its grass fades out and is clipped"},
     {"Hidden/TerrainEngine/Details/BillboardWavingDoublePass",
      "the terrain sets _WaveAndDistance; at zero its grass fades out and is clipped"},
+    {"Nature/Terrain/Diffuse",
+     "the terrain sets _Control, weights summing to 1; the default grey texture sums to 2, which "
+     "doubles its weighted G-buffer normals"},
+    {"Nature/Terrain/Specular",
+     "the terrain sets _Control, weights summing to 1; the default grey texture sums to 2, which "
+     "doubles its weighted G-buffer normals"},
+    {"Nature/Terrain/Standard",
+     "the terrain sets _Control, weights summing to 1; the default grey texture sums to 2, which "
+     "doubles its weighted G-buffer normals"},
     {"Tutorial/022_stencil_buffer/read", "_StencilRef at 255 fails its stencil test"},
     {"Tutorial/027_layered_noise/2d", "its noise goes negative at the Range ends"},
     {"Tutorial/027_layered_noise/3d", "its noise goes negative at the Range ends"},

@@ -213,6 +213,32 @@ TEST_F(RuntimeTest, DeferredDrawsObjectsWithoutADeferredPassForward) {
     EXPECT_EQ(Compare(forward, deferred).max, 0.0);
 }
 
+// A shader in a transparent queue (its SubShader's "Queue" tag above 2500) is drawn forward by
+// the deferred path though it has a Deferred pass, as Unity draws it, after the opaque objects.
+TEST(DeferredPath, ATransparentQueueShaderIsDrawnForward) {
+    PinVulkanLibraries();
+    runtime::RendererOptions options;
+    options.validation = true;
+    runtime::Renderer renderer;
+    ASSERT_TRUE(CreateInto(options, renderer));
+    for (const char* pack : {KILN_MATERIALS_PACK, KILN_PROBE_PACK}) {
+        ASSERT_TRUE(Ok(renderer.AddPack(pack)));
+    }
+    runtime::ColorPipeline color;
+    ASSERT_TRUE(CreateColorInto({}, color));
+    runtime::Scene scene = SphereOnFloor(RuntimeData("transparent_queue.material"));
+    runtime::FrameSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    settings.path = runtime::RenderPath::kDeferred;
+    runtime::LinearImage image;
+    runtime::FrameStats stats;
+    ASSERT_TRUE(Ok(renderer.Render(scene, settings, color, image, stats)));
+    EXPECT_EQ(stats.gbuffer_draws, 0u);
+    EXPECT_GT(stats.base_passes, 0u);
+    EXPECT_TRUE(renderer.ValidationMessages().empty());
+}
+
 // The lecture's scaling argument: the deferred path's cost grows with lights, not with lights x
 // objects. 1, 8 and 64 point lights on both paths, with no validation message (the fixture
 // fails on any), agreeing within the tolerance; a ranged light behind the camera gets no pass.

@@ -4,6 +4,7 @@
 
 #include "checks/check_functions.h"
 #include "kiln/pack/engine_names.h"
+#include "kiln/pack/pass_id.h"
 #include "kiln/pack/property_keywords.h"
 #include "kiln/pack/render_state.h"
 
@@ -62,35 +63,6 @@ void LintShaderPropertyKeywords(CompileState& st, size_t s) {
             }
         }
     }
-}
-
-// Unity's render queue of a "Queue" tag value: a name (Background 1000, Geometry 2000, AlphaTest
-// 2450, Transparent 3000, Overlay 4000) with an optional +N/-N, or a number; nullopt when absent
-// or unreadable.
-std::optional<int> QueueOf(const std::string& value) {
-    static const std::pair<const char*, int> kNames[] = {{"Background", 1000},
-                                                         {"Geometry", 2000},
-                                                         {"AlphaTest", 2450},
-                                                         {"Transparent", 3000},
-                                                         {"Overlay", 4000}};
-    for (const auto& [name, base] : kNames) {
-        const std::string n(name);
-        if (value.compare(0, n.size(), n) != 0)
-            continue;
-        const std::string rest = value.substr(n.size());
-        if (rest.empty())
-            return base;
-        if ((rest[0] == '+' || rest[0] == '-') && rest.size() > 1 && rest.size() < 7 &&
-            rest.find_first_not_of("0123456789", 1) == std::string::npos) {
-            return base + std::stoi(rest);
-        }
-        return std::nullopt;
-    }
-    if (!value.empty() && value.size() < 7 &&
-        value.find_first_not_of("0123456789") == std::string::npos) {
-        return std::stoi(value);
-    }
-    return std::nullopt;
 }
 
 // Which state fields of a pass refer to a property (a material decides them: not checked).
@@ -152,12 +124,13 @@ void LintOnePassState(CompileState& st, const PassUnit& pu, const pack::Pack& pa
                                "set): the base pass wrote it already; add ZWrite Off");
         }
     }
-    const std::optional<int> queue = QueueOf(TagValue(fp, "Queue"));
+    const std::optional<int> queue = pack::RenderQueue(TagValue(fp, pack::kTagQueue));
     // (ForwardAdd's own depth-write check above covers it.)
     const bool color_pass =
         mode.empty() || mode == pack::kLightModeAlways || mode == pack::kLightModeForwardBase;
-    if (queue && *queue > 2500 && color_pass && !zwrite_by_material && s.zwrite) {
-        problems.push_back(name + " is in the transparent queue (" + TagValue(fp, "Queue") +
+    if (queue && *queue > pack::kRenderQueueTransparentAbove && color_pass && !zwrite_by_material &&
+        s.zwrite) {
+        problems.push_back(name + " is in the transparent queue (" + TagValue(fp, pack::kTagQueue) +
                            ") but writes depth (ZWrite is On unless set): objects behind it are "
                            "hidden instead of blended; add ZWrite Off");
     }

@@ -7,6 +7,7 @@
 #include "kiln/base/files.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/names.h"
+#include "kiln/pack/pass_id.h"
 #include "scene/gltf_input.h"
 
 namespace kiln::runtime {
@@ -67,6 +68,7 @@ void InstanceFromDefaults(const pack::Pack& pack,
     MaterialInstance m;
     m.pack = pack_index;
     m.shader = shader;
+    m.transparent = pack::IsTransparentShader(pack, shader);  // its Queue tag
     m.name = "shader '" + std::string(pack.String(pack.Shader(shader).value().name)) + "' defaults";
     const pack::ShaderRec s = pack.Shader(shader).value();
     for (uint32_t i = 0; i < s.property_count; ++i) {

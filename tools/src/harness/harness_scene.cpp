@@ -119,7 +119,8 @@ Status DrawHarnessPass(runtime::Renderer& renderer,
                        const runtime::FrameSettings& settings,
                        const CameraSetup& camera,
                        const HarnessPass& draw,
-                       runtime::LinearImage& out) {
+                       runtime::LinearImage& out,
+                       std::vector<runtime::tool_access::TargetValues>* targets) {
     ForwardPlan plan;
     plan.list.lights = draw.lights;  // the requests point into it: not resized after this
     const runtime::Light* light =
@@ -139,11 +140,12 @@ Status DrawHarnessPass(runtime::Renderer& renderer,
                               {},
                               draw.keywords,
                               "kiln test"});
+        plan.draws.back().mirrored_view = draw.mirrored;
     }
     plan.objects = uint32_t(scene.instances.size());
     plan.list.materials.push_back(draw.material);
     return runtime::tool_access::DrawForwardPlan(renderer, color, scene, settings, camera, plan,
-                                                 out);
+                                                 out, targets);
 }
 
 runtime::Scene HarnessScene() {

@@ -49,14 +49,17 @@ struct HarnessPass {
     std::vector<std::string> keywords;
     std::vector<runtime::Light> lights;
     bool pixel_light = true, vertex_light = false;
+    bool mirrored = false;  // the view mirrors the winding (a cube map face's)
 };
+// `targets`: every target of the frame read back too.
 Status DrawHarnessPass(runtime::Renderer& renderer,
                        const runtime::ColorPipeline& color,
                        const runtime::Scene& scene,
                        const runtime::FrameSettings& settings,
                        const CameraSetup& camera,
                        const HarnessPass& draw,
-                       runtime::LinearImage& out);
+                       runtime::LinearImage& out,
+                       std::vector<runtime::tool_access::TargetValues>* targets = nullptr);
 
 }  // namespace kiln::tools
 

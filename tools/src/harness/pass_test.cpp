@@ -9,6 +9,7 @@
 #include "harness/shadow_map_check.h"
 #include "kiln/pack/engine_names.h"
 #include "kiln/pack/pass_id.h"
+#include "kiln/pack/render_state.h"
 
 namespace kiln::tools {
 
@@ -92,6 +93,46 @@ LinearImage DepthImage(const TargetValues& t) {
 
 }  // namespace
 
+std::optional<ShadowReference> PassTest::ObjectSeenFrom(const glm::mat4& view_projection,
+                                                        uint32_t size,
+                                                        const MaterialInstance& m,
+                                                        const runtime::Light& light,
+                                                        bool mirrored) {
+    const runtime::ShaderPasses passes = runtime::PassesOf(h.renderer.pack(c.pack), c.shader);
+    if (passes.base.empty()) {
+        return std::nullopt;
+    }
+    FrameSettings settings = h.Settings(false);
+    settings.width = settings.height = size;
+    runtime::CameraSetup camera;
+    camera.name = "the light";
+    camera.projection = view_projection;  // unity_MatrixVP is projection x view
+    camera.position = light.position;
+    HarnessPass draw;
+    draw.material = &m;
+    draw.pass = passes.base[0];
+    draw.keywords = m.keywords;
+    draw.pixel_light = false;
+    draw.mirrored = mirrored;
+    LinearImage drawn;
+    std::vector<TargetValues> frame;
+    if (!DrawHarnessPass(h.renderer, h.color, h.scene, settings, camera, draw, drawn, &frame)
+             .ok()) {
+        return std::nullopt;
+    }
+    const TargetValues* depth = Target(frame, "depth");
+    if (!depth || depth->values.size() * 4 != drawn.rgba.size()) {
+        return std::nullopt;
+    }
+    ShadowReference out;
+    out.depth = depth->values;
+    for (size_t i = 0; i < out.depth.size(); ++i) {
+        // Covered: depth written, or alpha coverage (a pass without ZWrite).
+        out.covered.push_back(out.depth[i] < 1.0f || drawn.rgba[i * 4 + 3] > 0.5f);
+    }
+    return out;
+}
+
 void PassTest::ShadowCaster() {
     const bool cube = Has(keywords, pack::kKeywordShadowsCube);
     properties = std::string("(defaults), ") + (cube ? "point" : "spot") + " light's map";
@@ -122,8 +163,11 @@ void PassTest::ShadowCaster() {
             continue;
         }
         ++faces;
+        const std::optional<ShadowReference> reference =
+            ObjectSeenFrom(shadow.view_projection[t.layer], t.width, m, light, cube);
         const ShadowMapCheck check =
-            CheckShadowMap(t, shadow.view_projection[t.layer], shadow.depth_bias);
+            CheckShadowMap(t, shadow.view_projection[t.layer], shadow.depth_bias,
+                           reference ? &*reference : nullptr);
         if (!check.coverage.empty() || !check.depth.empty()) {
             image = DepthImage(t);  // what a failure keeps: the map, not the empty frame
         }
@@ -156,11 +200,27 @@ void PassTest::Deferred() {
         return;
     }
     if (plan.gbuffer.empty()) {
-        h.Skip(c,
-               "its material's defaults are transparent, which the deferred path draws "
-               "forward");
+        h.Skip(c, "its shader is in a transparent queue, which the deferred path draws forward");
         return;
     }
+    // A G-buffer pass without depth writes is a decal over a surface drawn before it (Unity's
+    // terrain add passes): the light pass lights only pixels with depth.
+    const pack::Pack& pk = h.renderer.pack(c.pack);
+    const Result<pack::PassState> state = pack::ResolvePassState(
+        pk, c.pass,
+        [&](std::string_view name) -> std::optional<float> {
+            const auto it = m.values.find(std::string(name));
+            return it != m.values.end() && !it->second.empty() ? std::optional(it->second[0])
+                                                               : std::nullopt;
+        },
+        m.overrides);
+    if (state && !state.value().zwrite) {
+        h.Skip(c,
+               "its Deferred pass writes no depth (a decal over what was drawn before it), so "
+               "the light pass lights none of it");
+        return;
+    }
+
     for (DrawRequest& r : plan.gbuffer) {
         r.pass = c.pass;
         r.keywords = keywords;

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "harness/shadow_map_check.h"
 #include "harness/variant_harness.h"
 
 namespace kiln::tools {
@@ -96,6 +97,13 @@ struct PassTest {
     }
 
     void ShadowCaster();  // harness/pass_test.cpp
+    // The object as its shader's first forward pass draws it, seen through a map face's
+    // projection (harness/shadow_map_check.h); none without a forward pass.
+    std::optional<ShadowReference> ObjectSeenFrom(const glm::mat4& view_projection,
+                                                  uint32_t size,
+                                                  const MaterialInstance& m,
+                                                  const runtime::Light& light,
+                                                  bool mirrored);
     void Deferred();
     void CheckNormals(bool octahedral);
     void LightPass();  // harness/internal_pass_test.cpp

@@ -73,6 +73,40 @@ glm::vec3 Unproject(const glm::mat4& inverse, float x, float y, float z) {
     return glm::vec3(p) / p.w;
 }
 
+// Texels within `radius` of a texel of the other value in `covered` (w x h): near the outline.
+std::vector<uint8_t> NearOutline(const std::vector<uint8_t>& covered,
+                                 uint32_t w,
+                                 uint32_t h,
+                                 int radius) {
+    // The window's minimum and maximum, separably: rows, then columns.
+    std::vector<uint8_t> lo(covered.size()), hi(covered.size());
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            uint8_t a = 1, b = 0;
+            for (int d = -radius; d <= radius; ++d) {
+                const int64_t xx = std::clamp<int64_t>(int64_t(x) + d, 0, w - 1);
+                a = std::min(a, covered[size_t(y) * w + size_t(xx)]);
+                b = std::max(b, covered[size_t(y) * w + size_t(xx)]);
+            }
+            lo[size_t(y) * w + x] = a;
+            hi[size_t(y) * w + x] = b;
+        }
+    }
+    std::vector<uint8_t> out(covered.size());
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            uint8_t a = 1, b = 0;
+            for (int d = -radius; d <= radius; ++d) {
+                const int64_t yy = std::clamp<int64_t>(int64_t(y) + d, 0, h - 1);
+                a = std::min(a, lo[size_t(yy) * w + x]);
+                b = std::max(b, hi[size_t(yy) * w + x]);
+            }
+            out[size_t(y) * w + x] = a != b;
+        }
+    }
+    return out;
+}
+
 std::string Texel(size_t i, uint32_t width) {
     return std::to_string(i % width) + ", " + std::to_string(i / width);
 }
@@ -81,10 +115,18 @@ std::string Texel(size_t i, uint32_t width) {
 
 ShadowMapCheck CheckShadowMap(const runtime::tool_access::TargetValues& map,
                               const glm::mat4& view_projection,
-                              float depth_bias) {
+                              float depth_bias,
+                              const ShadowReference* reference) {
     ShadowMapCheck out;
     const glm::mat4 inverse = glm::inverse(view_projection);
     const float margin = 4 * depth_bias, tolerance = 5 * depth_bias + 0.02f;
+    if (reference && (reference->covered.size() != map.values.size() ||
+                      reference->depth.size() != map.values.size())) {
+        reference = nullptr;
+    }
+    const std::vector<uint8_t> outline =
+        reference ? NearOutline(reference->covered, map.width, map.height, 8)
+                  : std::vector<uint8_t>();
     size_t missing = 0, extra = 0, wrong = 0, first_coverage = 0, first_depth = 0;
     float worst = 0;
     for (size_t i = 0; i < map.values.size(); ++i) {
@@ -98,17 +140,27 @@ ShadowMapCheck CheckShadowMap(const runtime::tool_access::TargetValues& map,
         const float z = map.values[i];
         const bool covered = z < 1.0f;
         out.covered += covered;
-        if (hit.cover == Cover::kEdge) {
+        const bool judged = reference ? !outline[i] : hit.cover != Cover::kEdge;
+        const bool expected = reference ? reference->covered[i] != 0 : hit.cover == Cover::kIn;
+        if (!judged) {
             continue;
         }
-        if (covered != (hit.cover == Cover::kIn)) {
+        if (covered != expected) {
             first_coverage = missing + extra == 0 ? i : first_coverage;
             (covered ? extra : missing) += 1;
             continue;
         }
-        // Surfaces facing the light within 72 degrees (cos 0.3), where the biases are bounded.
-        if (!covered || !hit.depth_known || glm::dot(hit.normal, -d) < 0.3f) {
+        // Surfaces facing the light within 72 degrees (cos 0.3), where the biases are bounded,
+        // and where the object is where the traced scene is.
+        if (!covered || hit.cover != Cover::kIn || !hit.depth_known ||
+            glm::dot(hit.normal, -d) < 0.3f) {
             continue;
+        }
+        if (reference) {
+            const float t = glm::dot(Unproject(inverse, cx, cy, reference->depth[i]) - near, d);
+            if (!(std::abs(t - hit.t) <= 0.02f)) {
+                continue;
+            }
         }
         ++out.checked;
         const float t = glm::dot(Unproject(inverse, cx, cy, z) - near, d);
@@ -123,9 +175,10 @@ ShadowMapCheck CheckShadowMap(const runtime::tool_access::TargetValues& map,
         map.name + (map.layer ? " (face " + std::to_string(map.layer) + ")" : "");
     if (missing + extra > 0) {
         out.coverage = face + ": " + std::to_string(missing) +
-                       " texels that see the scene hold no depth and " + std::to_string(extra) +
-                       " that see nothing hold one (the first at texel " +
-                       Texel(first_coverage, map.width) + ")";
+                       " texels that see the object hold no depth and " + std::to_string(extra) +
+                       " that see nothing hold one (the object as " +
+                       (reference ? "its forward pass draws it" : "the traced scene has it") +
+                       "; the first at texel " + Texel(first_coverage, map.width) + ")";
     }
     if (wrong > 0) {
         out.depth = face + ": " + std::to_string(wrong) + " of " + std::to_string(out.checked) +

@@ -12,10 +12,22 @@
 #include <cstdint>
 #include <string_view>
 
+#include <utility>
+
 namespace kiln::pack {
 
 // The pass tag that says which pipeline step draws a pass.
 inline constexpr const char* kTagLightMode = "LightMode";
+
+// The SubShader (or pass) tag that says when an object draws: Unity's render queue, a name with
+// an optional +N / -N or a number. Queues above kRenderQueueTransparentAbove are transparent.
+inline constexpr const char* kTagQueue = "Queue";
+inline constexpr std::pair<const char*, int> kRenderQueues[] = {{"Background", 1000},
+                                                                {"Geometry", 2000},
+                                                                {"AlphaTest", 2450},
+                                                                {"Transparent", 3000},
+                                                                {"Overlay", 4000}};
+inline constexpr int kRenderQueueTransparentAbove = 2500;
 
 // LightMode tag values (the full list of known ones: KnownLightModes(), kiln/pack/names.h).
 inline constexpr const char* kLightModeAlways = "Always";

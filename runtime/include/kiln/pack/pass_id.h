@@ -35,6 +35,17 @@ std::string PassLabel(const Pack& pack, uint32_t pass);
 // The LightMode tag of a pack's pass, or "".
 std::string_view LightModeOf(const Pack& pack, uint32_t pass);
 
+// Unity's render queue of a "Queue" tag value (kiln/pack/engine_names.h: a name with an optional
+// +N or -N, or a number); nullopt when unreadable.
+std::optional<int> RenderQueue(std::string_view queue_tag);
+// The render queue of a pack's pass (its own or its SubShader's Queue tag), nullopt when it has
+// none; Unity's default for a shader without one is Geometry (2000).
+std::optional<int> RenderQueueOf(const Pack& pack, uint32_t pass);
+// Whether `shader` draws in a transparent queue (above kRenderQueueTransparentAbove, as Unity
+// sorts and draws them: after the opaque ones, back to front, and forward on the deferred path),
+// by its first pass's Queue tag.
+bool IsTransparentShader(const Pack& pack, uint32_t shader);
+
 }  // namespace kiln::pack
 
 #endif  // KILN_PACK_PASS_ID_H_
