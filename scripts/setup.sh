@@ -15,7 +15,7 @@ PACKAGES=(
     # utilities
     nlohmann-json3-dev libcli11-dev libxxhash-dev
     # the accuracy report's figure (PNG and SVG from one drawing, with real fonts)
-    libcairo2-dev fonts-dejavu-core
+    libcairo2-dev fonts-dejavu-core zlib1g-dev
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
     # the frame debugger's page, opened headless by its test

@@ -6,11 +6,14 @@
 // step, labels name material files relative to the scene, and the records say what each step
 // drew.
 #include <gtest/gtest.h>
+#include <stb/stb_image.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -27,11 +30,13 @@ namespace fs = std::filesystem;
 // is missing or fails. The window is narrow (headless Chromium's narrowest, 500 pixels), so the
 // 320-pixel targets are shown smaller than their size, which is where an image could lose its
 // aspect ratio.
-std::string DumpDom(const std::string& page, const std::string& fragment = "") {
+// `budget_ms`: virtual time the page's asynchronous work (the texel readout's scripts and
+// inflation) may take before the DOM is dumped.
+std::string DumpDom(const std::string& page, const std::string& fragment = "", int budget_ms = 0) {
     const std::string command =
-        "chromium --headless --no-sandbox --disable-gpu --window-size=400,800 --dump-dom "
-        "'file://" +
-        fs::absolute(page).string() + fragment + "' 2>/dev/null";
+        "chromium --headless --no-sandbox --disable-gpu --window-size=400,800 " +
+        (budget_ms > 0 ? "--virtual-time-budget=" + std::to_string(budget_ms) + " " : "") +
+        "--dump-dom 'file://" + fs::absolute(page).string() + fragment + "' 2>/dev/null";
     std::string out;
     if (FILE* p = popen(command.c_str(), "r")) {
         char buffer[4096];
@@ -223,6 +228,73 @@ TEST(FrameDebug, AStepLinkOpensThatStep) {
     EXPECT_EQ(Attribute(zoomed, "data-zoomed-ok"), Attribute(zoomed, "data-images"));
     // A link past the last step is ignored: the page opens on the last step.
     EXPECT_GT(Attribute(DumpDom(out + "/index.html", "#step-100000"), "data-current"), 3);
+}
+
+// The readout of what the target under the cursor holds at a texel (?probe=X,Y reads it for the
+// current step's images as a hover does): on the demo's last step, the colour target's linear
+// RGBA where the scene is (alpha 1: covered) and the bytes shown, which are the PNG's; the depth
+// there below 1; at the top-left corner, sky, the colour's alpha 0 and the depth cleared.
+TEST(FrameDebug, TheReadoutShowsATexelsLinearAndShownValues) {
+    ASSERT_TRUE(HaveChromium())
+        << "chromium is not installed (scripts/setup.sh installs Debian's chromium package)";
+    ScratchDir dir;
+    const std::string out = dir.path() + "/debug";
+    const RunResult r =
+        RunKiln("render " + DataPath("../scenes/demo/demo.gltf") + " --width 96 --height 54 -o " +
+                dir.path() + "/frame.png --frame-debug " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // "texel X, Y of TARGET after step N: linear R G B A; shown r g b" / "...: depth D; shown".
+    const std::regex readout(
+        "<img class=\"target\" src=\"([^\"]+)\"[^>]*alt=\"([a-z]+) after "
+        "step [0-9]+\"[^>]*data-readout=\"texel ([0-9]+), ([0-9]+) of [^:]+: "
+        "([^;]+); shown ([0-9]+) ([0-9]+) ([0-9]+)\"");
+    struct Probe {
+        std::string png, linear;
+        int shown[3];
+    };
+    auto probe = [&](int x, int y) {
+        const std::string dom = DumpDom(
+            out + "/index.html", "?probe=" + std::to_string(x) + "," + std::to_string(y), 10000);
+        EXPECT_EQ(Attribute(dom, "data-probed"), 2) << dom.substr(0, 2000);  // colour, depth
+        std::map<std::string, Probe> by_target;
+        for (auto it = std::sregex_iterator(dom.begin(), dom.end(), readout);
+             it != std::sregex_iterator(); ++it) {
+            const std::smatch& m = *it;
+            EXPECT_EQ(std::stoi(m[3]), x);
+            EXPECT_EQ(std::stoi(m[4]), y);
+            by_target[m[2]] = {m[1], m[5], {std::stoi(m[6]), std::stoi(m[7]), std::stoi(m[8])}};
+        }
+        return by_target;
+    };
+    // The bytes shown are the image's.
+    auto png_bytes = [&](const std::string& png, int x, int y, int* rgb) {
+        int w = 0, h = 0, n = 0;
+        unsigned char* p = stbi_load((out + "/" + png).c_str(), &w, &h, &n, 3);
+        ASSERT_NE(p, nullptr) << png;
+        for (int c = 0; c < 3; ++c)
+            rgb[c] = p[(y * w + x) * 3 + c];
+        stbi_image_free(p);
+    };
+    std::map<std::string, Probe> centre = probe(48, 30);
+    ASSERT_EQ(centre.count("color"), 1u);
+    ASSERT_EQ(centre.count("depth"), 1u);
+    std::istringstream linear(centre["color"].linear.substr(centre["color"].linear.find(' ')));
+    float rgba[4] = {-1, -1, -1, -1};
+    linear >> rgba[0] >> rgba[1] >> rgba[2] >> rgba[3];
+    EXPECT_EQ(centre["color"].linear.rfind("linear ", 0), 0u) << centre["color"].linear;
+    EXPECT_GT(rgba[0] + rgba[1] + rgba[2], 0.0f);
+    EXPECT_EQ(rgba[3], 1.0f);  // covered
+    int rgb[3];
+    png_bytes(centre["color"].png, 48, 30, rgb);
+    EXPECT_EQ(std::vector<int>(rgb, rgb + 3),
+              std::vector<int>(centre["color"].shown, centre["color"].shown + 3));
+    const std::string depth = centre["depth"].linear;
+    ASSERT_EQ(depth.rfind("depth ", 0), 0u) << depth;
+    EXPECT_LT(std::stof(depth.substr(6)), 1.0f);
+    std::map<std::string, Probe> corner = probe(0, 0);
+    EXPECT_EQ(corner["depth"].linear, "depth 1 (cleared)");
+    EXPECT_NE(corner["color"].linear.find(" 0"), std::string::npos);
+    EXPECT_EQ(corner["color"].linear.substr(corner["color"].linear.rfind(' ')), " 0");  // alpha
 }
 
 // The captured frame is the frame rendered: with --shadows soft --msaa 4 the shadow passes (each

@@ -80,6 +80,24 @@ std::vector<uint8_t> StoredImage(const FrameTarget& t, const std::vector<uint8_t
     return out;
 }
 
+// The target's values for the readout: four channels as halves, one as floats.
+void StoreValues(const FrameTarget& t, const std::vector<uint8_t>& bytes, DebugImage& out) {
+    if (DecodedChannels(t) == 1) {
+        out.single = DecodeTexels(t, bytes);
+        return;
+    }
+    if (t.format == VK_FORMAT_R16G16B16A16_SFLOAT) {  // already halves: as stored
+        out.half.resize(bytes.size() / 2);
+        std::memcpy(out.half.data(), bytes.data(), out.half.size() * 2);
+        return;
+    }
+    const std::vector<float> values = DecodeTexels(t, bytes);
+    out.half.reserve(values.size());
+    for (float v : values) {
+        out.half.push_back(FloatToHalf(v));
+    }
+}
+
 // The format's name without VK_FORMAT_, for the frame debugger.
 std::string FormatName(VkFormat f) {
     switch (f) {
@@ -161,6 +179,8 @@ StepObserver CaptureObserver(const glm::mat4& projection,
             image.target = t.cube ? t.name + " (face " + std::to_string(ct.layer) + ")" : t.name;
             image.width = ct.width;
             image.height = ct.height;
+            StoreValues(t, ct.bytes, image);
+            image.depth = t.depth;
             if (t.depth) {
                 image.rgba8 = DepthImage(t, ct.bytes, inverse);
             } else if (t.display && (t.format == VK_FORMAT_R16G16B16A16_SFLOAT ||

@@ -30,6 +30,39 @@ float SrgbToLinear(float c) {
 
 }  // namespace
 
+uint16_t FloatToHalf(float f) {
+    uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    const uint16_t sign = uint16_t((bits >> 16) & 0x8000);
+    const uint32_t abs = bits & 0x7FFFFFFFu;
+    if (abs > 0x7F800000u) {
+        return uint16_t(sign | 0x7E00);  // NaN
+    }
+    if (abs >= 0x477FF000u) {  // rounds to 65520 or more: infinity
+        return uint16_t(sign | 0x7C00);
+    }
+    if (abs < 0x38800000u) {  // below 2^-14: a subnormal half (or zero)
+        if (abs < 0x33000000u) {
+            return sign;  // below half the smallest subnormal
+        }
+        const uint32_t mant = (abs & 0x7FFFFF) | 0x800000;
+        const uint32_t shift = 126 - (abs >> 23);  // the half is mant x 2^(exp - 126)
+        const uint32_t half = mant >> shift;
+        const uint32_t rest = mant & ((1u << shift) - 1), mid = 1u << (shift - 1);
+        uint32_t h = half;
+        if (rest > mid || (rest == mid && (h & 1))) {
+            ++h;
+        }
+        return uint16_t(sign | h);
+    }
+    uint32_t h = ((abs >> 23) - 112) << 10 | ((abs >> 13) & 0x3FF);
+    const uint32_t rest = abs & 0x1FFF;
+    if (rest > 0x1000 || (rest == 0x1000 && (h & 1))) {
+        ++h;  // may carry into the exponent: still the nearest
+    }
+    return uint16_t(sign | h);
+}
+
 uint32_t DecodedChannels(const FrameTarget& t) {
     return t.depth || t.format == VK_FORMAT_R8_UNORM ? 1 : 4;
 }

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frame_debug/texel_values.h"
 #include "kiln/base/files.h"
 #include "kiln/runtime/color.h"
 
@@ -88,6 +89,12 @@ std::string ImageFile(size_t step, const DebugImage& image) {
     char number[24];
     std::snprintf(number, sizeof number, "%04zu", step);
     return std::string("steps/") + number + "-" + Slug(image.target) + ".png";
+}
+
+// The script with the image's texel values (frame_debug/texel_values.h).
+std::string ValuesFile(size_t step, const DebugImage& image) {
+    std::string png = ImageFile(step, image);
+    return png.substr(0, png.size() - 4) + ".js";
 }
 
 // What a step did, without its number (which the list and the heading give).
@@ -230,10 +237,16 @@ window.addEventListener('load',()=>{const z=new URLSearchParams(location.search)
 if(['1','2','4'].includes(z)){zoom(z);const shown=current;steps.forEach(s=>s.classList.remove('hidden'));
 document.body.dataset.zoomedOk=targets.filter(i=>i.clientWidth===i.naturalWidth*+z).length;
 show(shown,true);}});
+let moves=0;const pixel=document.getElementById('pixel');
 targets.forEach(i=>i.addEventListener('mousemove',e=>{const r=i.getBoundingClientRect();
 const x=Math.floor((e.clientX-r.left-i.clientLeft)/i.clientWidth*i.naturalWidth);
 const y=Math.floor((e.clientY-r.top-i.clientTop)/i.clientHeight*i.naturalHeight);
-document.getElementById('pixel').textContent='texel '+x+', '+y+' of '+i.alt;}));
+const n=++moves;pixel.textContent='texel '+x+', '+y+' of '+i.alt;
+readout(i,x,y).then(t=>{if(n===moves)pixel.textContent=t;});}));
+window.addEventListener('load',()=>{const m=/^([0-9]+),([0-9]+)$/.exec(new URLSearchParams(location.search).get('probe')||'');
+if(!m)return;const shown=[...steps[current].querySelectorAll('img.target')];
+Promise.all(shown.map(i=>readout(i,+m[1],+m[2]).then(t=>{i.dataset.readout=t;})))
+.then(()=>{document.body.dataset.probed=shown.length;});});
 if(!fromHash())show(steps.length-1,true);)";
 
 std::string Page(const FrameCapture& capture) {
@@ -254,8 +267,8 @@ std::string Page(const FrameCapture& capture) {
          " steps</p>\n<p><button id=\"prev\">previous</button> <span id=\"position\"></span> "
          "<button id=\"next\">next</button></p>\n<p>zoom <select id=\"zoom\"><option>fit</option>"
          "<option value=\"1\">1x</option><option value=\"2\">2x</option><option "
-         "value=\"4\">4x</option></select> (square texels)</p>\n<p id=\"pixel\">texel under "
-         "the cursor</p>\n<p id=\"status\"></p>\n";
+         "value=\"4\">4x</option></select> (square texels)</p>\n<p id=\"pixel\">the texel under "
+         "the cursor, with its values</p>\n<p id=\"status\"></p>\n";
     std::string open_pass;
     for (size_t n = 0; n < capture.steps.size(); ++n) {
         const DebugStep& s = capture.steps[n];
@@ -329,15 +342,20 @@ std::string Page(const FrameCapture& capture) {
             const std::string alt = image.target + " after step " + number;
             const std::string file = ImageFile(n + 1, image);
             // Click: the image at its full size, in a tab of its own.
+            const std::string values = image.half.empty() && image.single.empty()
+                                           ? std::string()
+                                           : " data-values=\"" + ValuesFile(n + 1, image) + "\"" +
+                                                 (image.depth ? " data-depth=\"1\"" : "");
             h += "<figure><a href=\"" + file + "\" target=\"_blank\"><img class=\"target\" src=\"" +
-                 file + "\" alt=\"" + Escape(alt) + "\" width=\"" + std::to_string(image.width) +
-                 "\" height=\"" + std::to_string(image.height) + "\"></a><figcaption>" +
-                 Escape(image.target) + " (" + std::to_string(image.width) + "x" +
-                 std::to_string(image.height) + ")</figcaption></figure>\n";
+                 file + "\"" + values + " alt=\"" + Escape(alt) + "\" width=\"" +
+                 std::to_string(image.width) + "\" height=\"" + std::to_string(image.height) +
+                 "\"></a><figcaption>" + Escape(image.target) + " (" + std::to_string(image.width) +
+                 "x" + std::to_string(image.height) + ")</figcaption></figure>\n";
         }
         h += "</div>\n</section>\n";
     }
-    h += "</main>\n<script>\n" + std::string(kScript) + "\n</script>\n</body></html>\n";
+    h += "</main>\n<script>\n" + std::string(kTexelReadoutScript) + "\n" + std::string(kScript) +
+         "\n</script>\n</body></html>\n";
     return h;
 }
 
@@ -373,6 +391,19 @@ Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
         for (const DebugImage& image : capture.steps[n].images) {
             if (Status e = WritePng((fs::path(dir) / ImageFile(n + 1, image)).string(), image.width,
                                     image.height, image.rgba8, replace_links);
+                !e.ok()) {
+                return e;
+            }
+            const std::string key = ValuesFile(n + 1, image);
+            Result<std::string> script = TexelValuesScript(key, image);
+            if (!script) {
+                return script.error();
+            }
+            if (script.value().empty()) {
+                continue;
+            }
+            if (Status e = base::WriteFileAtomically((fs::path(dir) / key).string(), script.value(),
+                                                     replace_links);
                 !e.ok()) {
                 return e;
             }

@@ -21,6 +21,13 @@ struct DebugImage {
     std::string target;  // the frame target's name: "color", "gbuffer2 (normal)", "depth", ...
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;
+    // The texels as the target holds them, decoded to what a shader reads (linear light, G-buffer
+    // data, stored depth), rows top first, for a readout of a texel's value: a four-channel
+    // target's as IEEE half floats (`half`, RGBA), a one-channel target's (depth, a mask) as
+    // floats (`single`: 24-bit depth needs them). Empty for thumbnails.
+    std::vector<uint16_t> half;
+    std::vector<float> single;
+    bool depth = false;  // a depth target: `single` holds its stored depth (1: cleared)
 };
 
 // A texture a draw bound, by the shader's name for it.
