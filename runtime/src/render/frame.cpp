@@ -1,8 +1,11 @@
 #include "render/frame.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <map>
 
+#include "render/frame_cache.h"
 #include "render/frame_internal.h"
 #include "vk/timestamps.h"
 
@@ -12,91 +15,6 @@ namespace {
 bool HasStencil(VkFormat f) {
     return f == VK_FORMAT_D32_SFLOAT_S8_UINT || f == VK_FORMAT_D24_UNORM_S8_UINT ||
            f == VK_FORMAT_D16_UNORM_S8_UINT || f == VK_FORMAT_S8_UINT;
-}
-
-// One descriptor pool sized for every set of every draw of the frame; null when no draw has a set.
-Status CreatePool(const vk::Context& c, const Frame& frame, VkDescriptorPool& out) {
-    std::map<VkDescriptorType, uint32_t> counts;
-    uint32_t set_count = 0;
-    for (const FramePass& pass : frame.passes) {
-        for (const Draw& d : pass.draws) {
-            set_count += uint32_t(d.pipeline->layout.sets.size());
-            for (const auto& bindings : d.pipeline->layout.bindings) {
-                for (const auto& b : bindings) {
-                    counts[b.descriptorType] += b.descriptorCount;
-                }
-            }
-        }
-    }
-    if (set_count == 0) {
-        return {};
-    }
-    std::vector<VkDescriptorPoolSize> sizes;
-    for (const auto& [type, n] : counts) {
-        sizes.push_back({type, n});
-    }
-    if (sizes.empty()) {  // sets without bindings still need a non-empty pool description
-        sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1});
-    }
-    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool.maxSets = set_count;
-    pool.poolSizeCount = uint32_t(sizes.size());
-    pool.pPoolSizes = sizes.data();
-    if (VkResult r = vkCreateDescriptorPool(c.device, &pool, nullptr, &out); r != VK_SUCCESS) {
-        return vk::VkError("cannot create the frame's descriptor pool", r);
-    }
-    return {};
-}
-
-// A draw's descriptor sets, allocated from `pool` and written.
-Status WriteSets(const vk::Context& c,
-                 VkDescriptorPool pool,
-                 const vk::Buffer& uniforms,
-                 const Frame& frame,
-                 const FramePass& pass,
-                 const std::vector<VkImageView>& sampled_views,
-                 const Draw& draw,
-                 std::vector<VkDescriptorSet>& out) {
-    const vk::VariantLayout& layout = draw.pipeline->layout;
-    if (layout.sets.empty()) {
-        return {};
-    }
-    out.resize(layout.sets.size());
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = pool;
-    alloc.descriptorSetCount = uint32_t(layout.sets.size());
-    alloc.pSetLayouts = layout.sets.data();
-    if (VkResult r = vkAllocateDescriptorSets(c.device, &alloc, out.data()); r != VK_SUCCESS) {
-        return vk::VkError("cannot allocate descriptor sets", r);
-    }
-    std::vector<VkDescriptorBufferInfo> buffer_infos(draw.writes.size());
-    std::vector<VkDescriptorImageInfo> image_infos(draw.writes.size());
-    std::vector<VkWriteDescriptorSet> writes;
-    for (size_t k = 0; k < draw.writes.size(); ++k) {
-        const Draw::Write& dw = draw.writes[k];
-        if (dw.set >= out.size()) {
-            continue;
-        }
-        VkWriteDescriptorSet wr{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        wr.dstSet = out[dw.set];
-        wr.dstBinding = dw.binding;
-        wr.descriptorCount = 1;
-        wr.descriptorType = dw.type;
-        if (dw.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
-            buffer_infos[k] = {uniforms.buffer, dw.offset, dw.range};
-            wr.pBufferInfo = &buffer_infos[k];
-        } else if (dw.target >= 0 && size_t(dw.target) < sampled_views.size()) {
-            image_infos[k] = dw.image;
-            image_infos[k].imageView = sampled_views[size_t(dw.target)];
-            image_infos[k].imageLayout = SampledLayout(frame, pass, uint32_t(dw.target));
-            wr.pImageInfo = &image_infos[k];
-        } else {
-            wr.pImageInfo = &dw.image;
-        }
-        writes.push_back(wr);
-    }
-    vkUpdateDescriptorSets(c.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
-    return {};
 }
 
 }  // namespace
@@ -258,119 +176,6 @@ void Layouts::Before(VkCommandBuffer cmd, const FramePass& pass) {
     }
 }
 
-Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f) {
-    const vk::Context& c = s.context;
-    for (const FrameTarget& t : frame.targets) {
-        vk::Image& image = f.targets.emplace_back();
-        if (t.shadow_map) {  // depth only, sampled with comparisons
-            if (Status e = vk::CreateShadowMap(c, t.size, t.format, t.cube, image); !e.ok()) {
-                return e;
-            }
-            f.sampled_views.push_back(image.view);
-            continue;
-        }
-        // Every single-sample target may be sampled by a later pass and read back (the frame
-        // debugger); a multisampled one is only an attachment, resolved by its pass.
-        const bool multisampled = t.samples != VK_SAMPLE_COUNT_1_BIT;
-        const VkImageUsageFlags usage =
-            (t.depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
-                     : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
-            (multisampled ? 0
-                          : VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                (t.depth ? 0 : VK_IMAGE_USAGE_TRANSFER_DST_BIT));
-        const VkExtent2D extent = ExtentOf(frame, t);
-        if (Status e = vk::CreateImage(c, extent.width, extent.height, t.format, usage,
-                                       AspectsOf(t), image, 1, t.samples);
-            !e.ok()) {
-            return e;
-        }
-        f.sampled_views.push_back(image.view);
-        if (AspectsOf(t) != (t.depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT)) {
-            VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-            view.image = image.image;
-            view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-            view.format = t.format;
-            view.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-            VkImageView depth_only = VK_NULL_HANDLE;
-            if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &depth_only);
-                r != VK_SUCCESS) {
-                return vk::VkError("cannot create a depth view", r);
-            }
-            f.own_views.push_back(depth_only);
-            f.sampled_views.back() = depth_only;
-        }
-    }
-    for (const FramePass& pass : frame.passes) {
-        if (pass.copy_from) {  // no render pass
-            f.render_passes.push_back(VK_NULL_HANDLE);
-            f.framebuffers.push_back(VK_NULL_HANDLE);
-            continue;
-        }
-        VkRenderPass rp = VK_NULL_HANDLE;
-        if (Status e = s.RenderPass(FormatsOf(frame, pass), pass.clear, pass.depth_read_only, rp);
-            !e.ok()) {
-            return e;
-        }
-        f.render_passes.push_back(rp);
-        std::vector<VkImageView> views;
-        for (uint32_t t : Attachments(pass)) {
-            views.push_back(f.targets[t].view);
-            if (frame.targets[t].cube) {  // the face the pass draws, as a 2D view
-                VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-                view.image = f.targets[t].image;
-                view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-                view.format = frame.targets[t].format;
-                view.subresourceRange = {AspectsOf(frame.targets[t]), 0, 1, pass.layer, 1};
-                VkImageView face = VK_NULL_HANDLE;
-                if (VkResult r = vkCreateImageView(c.device, &view, nullptr, &face);
-                    r != VK_SUCCESS) {
-                    return vk::VkError("cannot create a cube face view", r);
-                }
-                f.own_views.push_back(face);
-                views.back() = face;
-            }
-        }
-        for (uint32_t t : pass.resolves) {  // after the depth, as the render pass has them
-            views.push_back(f.targets[t].view);
-        }
-        VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        fb.renderPass = rp;
-        fb.attachmentCount = uint32_t(views.size());
-        fb.pAttachments = views.data();
-        const VkExtent2D extent = ExtentOf(frame, pass);
-        fb.width = extent.width;
-        fb.height = extent.height;
-        fb.layers = 1;
-        VkFramebuffer framebuffer = VK_NULL_HANDLE;
-        if (VkResult r = vkCreateFramebuffer(c.device, &fb, nullptr, &framebuffer);
-            r != VK_SUCCESS) {
-            return vk::VkError("cannot create a framebuffer", r);
-        }
-        f.framebuffers.push_back(framebuffer);
-    }
-    if (Status e = vk::CreateBufferWithData(c, frame.uniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                            f.uniforms);
-        !e.ok()) {
-        return e;
-    }
-    if (Status e = CreatePool(c, frame, f.pool); !e.ok()) {
-        return e;
-    }
-    // Descriptor sets per draw, written before recording.
-    f.sets.resize(frame.passes.size());
-    for (size_t p = 0; p < frame.passes.size(); ++p) {
-        f.sets[p].resize(frame.passes[p].draws.size());
-        for (size_t i = 0; i < frame.passes[p].draws.size(); ++i) {
-            if (Status e = WriteSets(c, f.pool, f.uniforms, frame, frame.passes[p], f.sampled_views,
-                                     frame.passes[p].draws[i], f.sets[p][i]);
-                !e.ok()) {
-                return e;
-            }
-        }
-    }
-    return {};
-}
-
 void BeginPass(VkCommandBuffer cmd,
                const Frame& frame,
                const FrameObjects& f,
@@ -455,39 +260,51 @@ Status RecordFrame(Renderer::State& s,
                    const Frame& frame,
                    LinearImage& out,
                    FrameStats& stats,
-                   const StepObserver* observer) {
+                   const StepObserver* observer,
+                   std::chrono::steady_clock::time_point started) {
     if (observer) {
         return RecordFrameSteps(s, frame, out, *observer);
     }
-    const vk::Context& c = s.context;
-    FrameObjects f(c);
-    if (Status e = PrepareFrame(s, frame, f); !e.ok()) {
+    FrameCache& cache = s.Frames();
+    FrameObjects* f = nullptr;
+    if (Status e = cache.Prepare(s, frame, f, stats.allocations); !e.ok()) {
         return e;
     }
-    VkCommandBuffer cmd = vk::BeginOneShot(c);
-    if (cmd == VK_NULL_HANDLE) {
-        return Error{DiagCode::kRenderFailed, "cannot allocate a command buffer"};
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    if (Status e = cache.Begin(cmd, stats.allocations); !e.ok()) {
+        return e;
     }
-    Layouts layouts{frame, f.targets,
+    Layouts layouts{frame, f->targets,
                     std::vector<VkImageLayout>(frame.targets.size(), VK_IMAGE_LAYOUT_UNDEFINED)};
     // A mark before each pass and one after the last: the intervals are the passes' times.
     const uint32_t passes = uint32_t(frame.passes.size());
-    vk::Timestamps timer(c, passes + 1);
-    timer.Reset(cmd);
+    vk::Timestamps& timer = cache.Timer(cmd, passes + 1, stats.allocations);
     for (uint32_t p = 0; p < passes; ++p) {
         layouts.Before(cmd, frame.passes[p]);
         timer.Mark(cmd, p, p > 0);
         if (frame.passes[p].copy_from) {
-            RecordCopy(cmd, frame, f, frame.passes[p]);
+            RecordCopy(cmd, frame, *f, frame.passes[p]);
             continue;
         }
-        BeginPass(cmd, frame, f, p, f.render_passes[p]);
-        RecordDraws(cmd, frame.passes[p].draws, f.sets[p],
+        BeginPass(cmd, frame, *f, p, f->render_passes[p]);
+        RecordDraws(cmd, frame.passes[p].draws, f->sets[p],
                     {{0, 0}, ExtentOf(frame, frame.passes[p])});
         vkCmdEndRenderPass(cmd);
     }
     timer.Mark(cmd, passes, true);
-    if (Status e = vk::SubmitAndWait(c, cmd); !e.ok()) {
+    // The output's read-back in the same submission.
+    const FrameTarget& output = frame.targets[frame.output];
+    const VkDeviceSize bytes =
+        VkDeviceSize{frame.width} * frame.height * VkDeviceSize{TexelBytes(output)};
+    vk::Buffer* staging = nullptr;
+    if (Status e = cache.Staging(bytes, staging, stats.allocations); !e.ok()) {
+        return e;
+    }
+    RecordTargetCopy(cmd, frame, *f, frame.output, 0, layouts.current[frame.output],
+                     staging->buffer);
+    const auto submitted = std::chrono::steady_clock::now();
+    stats.cpu_ms = std::chrono::duration<double, std::milli>(submitted - started).count();
+    if (Status e = cache.SubmitAndWait(cmd, stats.allocations); !e.ok()) {
         return e;
     }
     const std::vector<double> ms = timer.Intervals();
@@ -497,7 +314,14 @@ Status RecordFrame(Renderer::State& s,
         stats.pass_times.push_back({frame.passes[p].name, ms[p]});
         stats.gpu_ms += ms[p];
     }
-    return ReadOutput(c, frame, f, layouts.current[frame.output], out);
+    const auto* p = static_cast<const uint8_t*>(staging->mapped);
+    out.width = frame.width;
+    out.height = frame.height;
+    out.rgba = TargetFloats(output, std::vector<uint8_t>(p, p + bytes));
+    stats.readback_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - submitted)
+            .count();
+    return {};
 }
 
 }  // namespace kiln::runtime

@@ -7,6 +7,7 @@
 #ifndef KILN_RUNTIME_RENDER_FRAME_H_
 #define KILN_RUNTIME_RENDER_FRAME_H_
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -133,13 +134,17 @@ struct CapturedTarget {
 // Records and submits the frame and reads the output back. With `observer` (the frame debugger)
 // each pass's clear and each draw is submitted on its own, and after each the targets the pass
 // writes are read back and handed to the observer with the draw's GPU time (timestamp queries;
-// negative where the queue has none) — the image is the same. Without it the passes are timed
-// into stats.gpu_ms and stats.pass_times.
-Status RecordFrame(Renderer::State& s,
-                   const Frame& frame,
-                   LinearImage& out,
-                   FrameStats& stats,
-                   const StepObserver* observer = nullptr);
+// negative where the queue has none) — the image is the same. Without it the frame reuses the
+// renderer's frame objects (render/frame_cache.h; stats.allocations counts what it made), the
+// passes are timed into stats.gpu_ms and stats.pass_times, the CPU time from `started` to the
+// submission into stats.cpu_ms, and the output is read back in the same submission.
+Status RecordFrame(
+    Renderer::State& s,
+    const Frame& frame,
+    LinearImage& out,
+    FrameStats& stats,
+    const StepObserver* observer = nullptr,
+    std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
 
 }  // namespace kiln::runtime
 

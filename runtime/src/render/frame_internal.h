@@ -4,7 +4,9 @@
 #ifndef KILN_RUNTIME_RENDER_FRAME_INTERNAL_H_
 #define KILN_RUNTIME_RENDER_FRAME_INTERNAL_H_
 
+#include <map>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "render/frame.h"
@@ -48,12 +50,30 @@ struct FrameObjects {
     std::vector<VkRenderPass> render_passes;  // per pass, as it clears or loads (the state's)
     std::vector<VkFramebuffer> framebuffers;
     VkDescriptorPool pool = VK_NULL_HANDLE;
-    vk::Buffer uniforms;
+    uint32_t pool_sets = 0;                           // what the pool holds
+    std::map<VkDescriptorType, uint32_t> pool_sizes;  // ... per descriptor type
+    vk::Buffer uniforms;  // at least the frame's uniform bytes (it grows, render/frame_cache.h)
     std::vector<std::vector<std::vector<VkDescriptorSet>>> sets;  // per pass, per draw
+    std::string shape;  // ShapeOf the frames the targets were made for
 };
 
-// Creates the targets, render passes, framebuffers and uniform buffer, and writes every draw's
-// descriptor sets.
+// What a frame's targets, views and framebuffers depend on: its size, its targets' formats,
+// sizes, samples and kinds, and its passes' attachments, clears and layers. Frames of one path
+// at one size have one shape.
+std::string ShapeOf(const Frame& frame);
+// Creates the targets, their views, the render passes (the state's) and framebuffers;
+// `allocations` counts the Vulkan objects made.
+Status CreateTargets(Renderer::State& s,
+                     const Frame& frame,
+                     FrameObjects& f,
+                     uint32_t& allocations);
+// Writes the frame's uniforms (the buffer grown when too small) and every draw's descriptor sets
+// (from the pool, reset, or grown when too small).
+Status PrepareDraws(const vk::Context& c,
+                    const Frame& frame,
+                    FrameObjects& f,
+                    uint32_t& allocations);
+// Both, into fresh objects (the frame debugger's step-by-step recording).
 Status PrepareFrame(Renderer::State& s, const Frame& frame, FrameObjects& f);
 
 // Moves the frame's targets into the layouts each pass uses them in, after whatever wrote them.
@@ -85,6 +105,17 @@ void RecordDraws(VkCommandBuffer cmd,
                  std::span<const Draw> draws,
                  std::span<const std::vector<VkDescriptorSet>> sets,
                  const VkRect2D& full);
+
+// Records the copy of layer `layer` of target `t` (in `layout`, where it is left) into `dst`, made
+// visible to the host: ReadTarget's, and RecordFrame's of its output in the frame's own
+// submission.
+void RecordTargetCopy(VkCommandBuffer cmd,
+                      const Frame& frame,
+                      const FrameObjects& f,
+                      uint32_t t,
+                      uint32_t layer,
+                      VkImageLayout layout,
+                      VkBuffer dst);
 
 // Copies layer `layer` of target `t` (in `layout`, where it is left) to host memory at the
 // target's extent (ExtentOf): colour texels, or the depth aspect of a depth target (4 bytes a

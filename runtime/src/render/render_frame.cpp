@@ -57,7 +57,8 @@ Status DrawPlan(Renderer::State& s,
                 const PathPlan& plan,
                 LinearImage& out,
                 FrameStats& stats,
-                const StepObserver* observer) {
+                const StepObserver* observer,
+                std::chrono::steady_clock::time_point started) {
     Frame frame;
     frame.width = settings.width;
     frame.height = settings.height;
@@ -69,7 +70,7 @@ Status DrawPlan(Renderer::State& s,
     }
     stats.objects = plan.Objects();
     frame.uniforms = builder.TakeUniforms();
-    return RecordFrame(s, frame, out, stats, observer);
+    return RecordFrame(s, frame, out, stats, observer, started);
 }
 
 Status RenderFrame(Renderer::State& s,
@@ -79,6 +80,7 @@ Status RenderFrame(Renderer::State& s,
                    LinearImage& out,
                    FrameStats& stats,
                    FrameCapture* capture) {
+    const auto started = std::chrono::steady_clock::now();
     if (Status e = CheckSettings(s, scene, settings); !e.ok()) {
         return e;
     }
@@ -129,7 +131,7 @@ Status RenderFrame(Renderer::State& s,
     stats.materials_resolved = uint32_t(resources.materials.size() - materials);
 
     const Status drawn_frame = DrawPlan(s, resources, scene, drawn, camera, plan, out, stats,
-                                        capture ? &observer : nullptr);
+                                        capture ? &observer : nullptr, started);
     stats.path_counts = path->Counts(stats);
     stats.buffers_uploaded = resources.uploads - uploads;
     return drawn_frame;

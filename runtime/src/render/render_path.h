@@ -11,6 +11,7 @@
 #ifndef KILN_RUNTIME_RENDER_RENDER_PATH_H_
 #define KILN_RUNTIME_RENDER_RENDER_PATH_H_
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -119,7 +120,8 @@ Status DrawPlan(Renderer::State& state,
                 const PathPlan& plan,
                 LinearImage& out,
                 FrameStats& stats,
-                const StepObserver* observer = nullptr);
+                const StepObserver* observer = nullptr,
+                std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
 
 }  // namespace kiln::runtime
 

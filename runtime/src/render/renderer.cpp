@@ -5,16 +5,25 @@
 #include <utility>
 
 #include "kiln/pack/engine_names.h"
+#include "render/frame_cache.h"
 #include "render/renderer_state.h"
 #include "render/textures.h"
 #include "vk/pipeline_cache.h"
 
 namespace kiln::runtime {
+FrameCache& Renderer::State::Frames() {
+    if (!frame_cache) {
+        frame_cache = std::make_unique<FrameCache>(context);
+    }
+    return *frame_cache;
+}
+
 Renderer::State::~State() {
     if (!context.device) {
         return;
     }
     vkDeviceWaitIdle(context.device);
+    frame_cache.reset();
     scene_resources.reset();
     if (pipeline_cache) {
         if (!options.pipeline_cache.empty()) {

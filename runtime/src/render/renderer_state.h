@@ -23,6 +23,7 @@
 
 namespace kiln::runtime {
 struct CameraSetup;
+class FrameCache;
 class FrameTextures;
 }  // namespace kiln::runtime
 
@@ -100,6 +101,7 @@ struct Renderer::State {
     std::unique_ptr<vk::ModuleChecker> module_checker;  // null when the packs are trusted
     std::unique_ptr<SceneResources> scene_resources;    // of the last scene drawn
     vk::Buffer screen_vertices, screen_indices;         // ScreenTriangle's, made on first use
+    std::unique_ptr<FrameCache> frame_cache;            // Frames()'s, made on first use
 
     ~State();
     Status GetPipeline(uint32_t pack,
@@ -136,6 +138,8 @@ struct Renderer::State {
     // the shape the shader declares.
     Status DefaultTexture(const std::string& name, vk::ImageShape shape, const vk::Image*& out);
     std::vector<const pack::Pack*> PackList() const;
+    // The device objects frames reuse (render/frame_cache.h).
+    FrameCache& Frames();
     // Records a frame's materials (with their shaders) for the usage file.
     void NoteMaterials(const std::vector<const MaterialInstance*>& materials);
     // A triangle covering the whole frame in clip space (x, y in -1..3), in the mesh vertex

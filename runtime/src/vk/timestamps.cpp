@@ -1,5 +1,7 @@
 #include "vk/timestamps.h"
 
+#include <algorithm>
+
 namespace kiln::vk {
 
 Timestamps::Timestamps(const Context& c, uint32_t count) : c_(c), count_(count) {
@@ -26,14 +28,15 @@ Timestamps::~Timestamps() {
     }
 }
 
-void Timestamps::Reset(VkCommandBuffer cmd) {
+void Timestamps::Reset(VkCommandBuffer cmd, uint32_t used) {
+    used_ = std::min(used, count_);
     if (pool_) {
-        vkCmdResetQueryPool(cmd, pool_, 0, count_);
+        vkCmdResetQueryPool(cmd, pool_, 0, used_);
     }
 }
 
 void Timestamps::Mark(VkCommandBuffer cmd, uint32_t index, bool end) {
-    if (pool_ && index < count_) {
+    if (pool_ && index < used_) {
         vkCmdWriteTimestamp(
             cmd, end ? VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT : VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
             pool_, index);
@@ -41,18 +44,18 @@ void Timestamps::Mark(VkCommandBuffer cmd, uint32_t index, bool end) {
 }
 
 std::vector<double> Timestamps::Intervals() const {
-    if (!pool_) {
+    if (!pool_ || used_ < 2) {
         return {};
     }
-    std::vector<uint64_t> t(count_);
-    if (vkGetQueryPoolResults(c_.device, pool_, 0, count_, t.size() * sizeof(uint64_t), t.data(),
+    std::vector<uint64_t> t(used_);
+    if (vkGetQueryPoolResults(c_.device, pool_, 0, used_, t.size() * sizeof(uint64_t), t.data(),
                               sizeof(uint64_t),
                               VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) != VK_SUCCESS) {
         return {};
     }
     const double period_ms = double(c_.properties.limits.timestampPeriod) * 1e-6;
     std::vector<double> out;
-    for (uint32_t i = 1; i < count_; ++i) {
+    for (uint32_t i = 1; i < used_; ++i) {
         const uint64_t ticks = ((t[i] & mask_) - (t[i - 1] & mask_)) & mask_;
         out.push_back(double(ticks) * period_ms);
     }

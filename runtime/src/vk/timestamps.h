@@ -20,8 +20,10 @@ class Timestamps {
     Timestamps& operator=(const Timestamps&) = delete;
 
     bool active() const { return pool_ != VK_NULL_HANDLE; }
-    // Outside a render pass, before the marks of a submission.
-    void Reset(VkCommandBuffer cmd);
+    // Outside a render pass, before the marks of a submission: `used` marks of the pool's
+    // (all by default), which Intervals reads.
+    void Reset(VkCommandBuffer cmd, uint32_t used = UINT32_MAX);
+    uint32_t count() const { return count_; }
     // Query `index`: the top of the pipe for a start mark, the bottom for an end mark.
     void Mark(VkCommandBuffer cmd, uint32_t index, bool end);
     // After the submission completed: the times between consecutive marks, in milliseconds
@@ -30,7 +32,7 @@ class Timestamps {
 
   private:
     const Context& c_;
-    uint32_t count_ = 0;
+    uint32_t count_ = 0, used_ = 0;
     VkQueryPool pool_ = VK_NULL_HANDLE;
     uint64_t mask_ = 0;
 };

@@ -57,6 +57,8 @@ Spread SpreadOf(std::vector<double> v) {
     s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
     s.min = v.front();
     s.max = v.back();
+    s.q1 = v[(n - 1) / 4];
+    s.q3 = v[n - 1 - (n - 1) / 4];
     return s;
 }
 
@@ -99,43 +101,65 @@ struct State {
         }
         return {};
     }
-    Status Row(Renderer& r, const AccuracyConfig& config, AccuracyRow& row);
-};
-
-Status State::Row(Renderer& r, const AccuracyConfig& config, AccuracyRow& row) {
-    row.config = config;
-    const FrameSettings settings = SettingsOf(config);
-    FrameStats stats;
-    std::vector<double> gpu, cpu;
-    std::vector<std::vector<double>> passes;
-    const uint32_t total = std::max(options.warmup, 1u) + std::max(options.frames, 1u);
-    for (uint32_t i = 0; i < total; ++i) {
+    // A configuration's first frame (timed apart, with the pipelines it creates) and its image.
+    Status First(Renderer& r, AccuracyRow& row) {
+        FrameStats stats;
         const Clock::time_point start = Clock::now();
-        if (Status e = Frame(r, settings, row.image, stats); !e.ok()) {
+        if (Status e = Frame(r, SettingsOf(row.config), row.image, stats); !e.ok()) {
             return e;
         }
-        const double ms = MillisecondsSince(start);
-        if (i == 0) {
-            row.first_frame_ms = ms;
-            row.first_pipelines = stats.pipelines_created;
-        }
-        if (i < std::max(options.warmup, 1u)) {
-            continue;
-        }
-        cpu.push_back(ms);
-        if (stats.gpu_ms >= 0) {
-            gpu.push_back(stats.gpu_ms);
-        }
-        passes.resize(std::max(passes.size(), stats.pass_times.size()));
-        for (size_t p = 0; p < stats.pass_times.size(); ++p) {
-            passes[p].push_back(stats.pass_times[p].gpu_ms);
+        row.first_frame_ms = MillisecondsSince(start);
+        row.first_pipelines = stats.pipelines_created;
+        return {};
+    }
+    // The timed frames: `warmup` rounds, then `frames` rounds, each round one frame of every
+    // configuration in turn (A B C A B C ...), so that every configuration is measured on a
+    // device as warm as the others' and none is timed after a pause (the error computations
+    // come after all of them).
+    Status Time(std::span<Renderer* const> renderers, std::vector<AccuracyRow>& rows);
+    // The row's errors against the reference.
+    Status Compare(AccuracyRow& row);
+};
+
+Status State::Time(std::span<Renderer* const> renderers, std::vector<AccuracyRow>& rows) {
+    const uint32_t warmup = std::max(options.warmup, 1u), frames = std::max(options.frames, 1u);
+    std::vector<std::vector<double>> gpu(rows.size()), cpu(rows.size());
+    std::vector<std::vector<std::vector<double>>> passes(rows.size());
+    std::vector<std::vector<FrameStats::PassTime>> names(rows.size());
+    LinearImage image;
+    for (uint32_t round = 0; round < warmup + frames; ++round) {
+        for (size_t k = 0; k < rows.size(); ++k) {
+            FrameStats stats;
+            if (Status e = Frame(*renderers[rows[k].config.renderer], SettingsOf(rows[k].config),
+                                 image, stats);
+                !e.ok()) {
+                return e;
+            }
+            if (round < warmup) {
+                continue;
+            }
+            cpu[k].push_back(stats.cpu_ms);
+            if (stats.gpu_ms >= 0) {
+                gpu[k].push_back(stats.gpu_ms);
+            }
+            passes[k].resize(std::max(passes[k].size(), stats.pass_times.size()));
+            for (size_t p = 0; p < stats.pass_times.size(); ++p) {
+                passes[k][p].push_back(stats.pass_times[p].gpu_ms);
+            }
+            names[k] = stats.pass_times;
         }
     }
-    row.cpu_ms = SpreadOf(cpu);
-    row.gpu_ms = SpreadOf(gpu);
-    for (size_t p = 0; p < passes.size() && p < stats.pass_times.size(); ++p) {
-        row.pass_ms.push_back({stats.pass_times[p].pass, SpreadOf(passes[p]).median});
+    for (size_t k = 0; k < rows.size(); ++k) {
+        rows[k].cpu_ms = SpreadOf(cpu[k]);
+        rows[k].gpu_ms = SpreadOf(gpu[k]);
+        for (size_t p = 0; p < passes[k].size() && p < names[k].size(); ++p) {
+            rows[k].pass_ms.push_back({names[k][p].pass, SpreadOf(passes[k][p]).median});
+        }
     }
+    return {};
+}
+
+Status State::Compare(AccuracyRow& row) {
     Result<ImageError> error = CompareLinear(report.reference, row.image);
     if (!error) {
         return error.error();
@@ -155,22 +179,33 @@ Status State::Row(Renderer& r, const AccuracyConfig& config, AccuracyRow& row) {
 
 }  // namespace
 
-// Half the spread (max - min) of a row's frame times: what a difference in time must exceed to
-// count. Timed on lavapipe, frames vary by a few milliseconds from run to run.
+namespace {
+
+// What a row's frame times vary by: their interquartile range, or half their spread.
 double TimeNoise(const AccuracyRow& row) {
     const Spread& s = row.gpu_ms.median >= 0 ? row.gpu_ms : row.cpu_ms;
+    if (s.q1 >= 0 && s.q3 >= s.q1) {
+        return s.q3 - s.q1;
+    }
     return s.max >= s.min ? 0.5 * (s.max - s.min) : 0.0;
 }
 
+}  // namespace
+
+double TimeTolerance(const AccuracyRow& a, const AccuracyRow& b) {
+    return std::max(
+        {TimeNoise(a), TimeNoise(b), kParetoTimeFraction * std::max(TimeOf(a), TimeOf(b))});
+}
+
 // A configuration is on the Pareto front unless another is at least as fast and as accurate and
-// better on one, each beyond its noise: time by the larger of the two rows' TimeNoise, FLIP by
-// kParetoFlipTolerance. Differences inside the noise are ties, so the flags do not change
-// between runs with the timings' jitter.
+// better on one, each beyond its noise: time by TimeTolerance, FLIP by kParetoFlipTolerance.
+// Differences inside the noise are ties, so the flags do not change between runs with the
+// timings' jitter.
 void MarkParetoFront(std::vector<AccuracyRow>& rows) {
     for (AccuracyRow& a : rows) {
         a.pareto = true;
         for (const AccuracyRow& b : rows) {
-            const double tol = std::max(TimeNoise(a), TimeNoise(b));
+            const double tol = TimeTolerance(a, b);
             const bool no_slower = TimeOf(b) <= TimeOf(a) + tol;
             const bool no_worse = b.flip <= a.flip + kParetoFlipTolerance;
             const bool better =
@@ -237,6 +272,7 @@ Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
     report.height = options.height;
     report.supersample = ss;
     report.frames = std::max(options.frames, 1u);
+    report.warmup = std::max(options.warmup, 1u);
     report.renderer_labels.assign(labels.begin(), labels.end());
     State state{scene, color, options, report, {}};
 
@@ -259,11 +295,20 @@ Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
 
     for (const AccuracyConfig& c : configs) {
         AccuracyRow& row = report.rows.emplace_back();
-        if (Status e = state.Row(*renderers[c.renderer], c, row); !e.ok()) {
-            return e.error();
-        }
+        row.config = c;
         if (row.config.label.empty() && c.renderer < labels.size()) {
             row.config.label = labels[c.renderer];
+        }
+        if (Status e = state.First(*renderers[c.renderer], row); !e.ok()) {
+            return e.error();
+        }
+    }
+    if (Status e = state.Time(renderers, report.rows); !e.ok()) {
+        return e.error();
+    }
+    for (AccuracyRow& row : report.rows) {
+        if (Status e = state.Compare(row); !e.ok()) {
+            return e.error();
         }
     }
     MarkParetoFront(report.rows);

@@ -41,16 +41,30 @@ std::string Ms(const Spread& s) {
     return Num(s.median, 3) + " (" + Num(s.min, 3) + "-" + Num(s.max, 3) + ")";
 }
 
+}  // namespace
+
+std::string TimingMethod(const AccuracyReport& r) {
+    return "Timing: each configuration's first frame apart (with the pipelines it created); then " +
+           std::to_string(r.warmup) + " untimed and " + std::to_string(r.frames) +
+           " timed rounds of one frame of every configuration in turn (A B C ... A B C ...), so "
+           "that each is measured on a device as warm as the others and none after a pause; "
+           "median (min-max) of the timed frames. GPU: timestamp queries around each pass, "
+           "summed. CPU: from the Render call to the submission (planning, building and "
+           "recording the draws), not the wait for the GPU nor the read-back. Frames after the "
+           "first of a configuration create no Vulkan object (docs/runtime.md, \"Frame "
+           "resources\").";
+}
+
+namespace {
+
 std::string Markdown(const AccuracyReport& r) {
     std::string md = "# Accuracy report: " + r.scene + "\n\n";
     md += "Device: " + r.device + ". Images " + std::to_string(r.width) + "x" +
           std::to_string(r.height) + ". Reference: every light per pixel, fp32 targets, " +
           std::to_string(r.supersample) + "x" + std::to_string(r.supersample) + " supersampled (" +
-          Num(r.reference_ms, 1) + " ms). Times: median (min-max) of " + std::to_string(r.frames) +
-          " frames after warm-up; GPU from timestamp queries around the passes, CPU the whole "
-          "Render call (planning, recording, waiting, read-back); the first frame apart, with the "
-          "pipelines it created. FLIP: mean over the image (0 identical, 1 most different); "
-          "RMSE, max and PSNR in linear light.\n\n";
+          Num(r.reference_ms, 1) + " ms). " + TimingMethod(r) +
+          " FLIP: mean over the image (0 identical, 1 most different); RMSE, max and PSNR in "
+          "linear light.\n\n";
     md += "Configurations:\n\n";
     for (size_t i = 0; i < r.rows.size(); ++i) {
         const AccuracyConfig& c = r.rows[i].config;
@@ -133,14 +147,11 @@ std::string Json(const AccuracyReport& r) {
                         {"first_pipelines", row.first_pipelines},
                         {"pareto", row.pareto}});
     }
-    const nlohmann::json j = {{"scene", r.scene},
-                              {"device", r.device},
-                              {"width", r.width},
-                              {"height", r.height},
-                              {"supersample", r.supersample},
-                              {"frames", r.frames},
-                              {"reference_ms", r.reference_ms},
-                              {"configurations", rows}};
+    const nlohmann::json j = {
+        {"scene", r.scene},      {"device", r.device},           {"width", r.width},
+        {"height", r.height},    {"supersample", r.supersample}, {"frames", r.frames},
+        {"warmup", r.warmup},    {"timing", TimingMethod(r)},    {"reference_ms", r.reference_ms},
+        {"configurations", rows}};
     return j.dump(1) + "\n";
 }
 

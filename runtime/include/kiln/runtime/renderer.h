@@ -125,6 +125,15 @@ struct FrameStats {
         double gpu_ms = 0;
     };
     std::vector<PassTime> pass_times;
+    // CPU time of the frame in milliseconds, from the call to the submission: planning, building
+    // the draws and recording them; not the wait for the GPU nor the read-back (readback_ms).
+    double cpu_ms = 0;
+    double readback_ms = 0;  // the wait for the GPU and the output's copy to host floats
+    // Vulkan objects the frame created: targets, views, framebuffers, buffers, descriptor and
+    // query pools, command buffers and fences (pipelines and scene uploads are counted above).
+    // The renderer keeps them for the next frames of the same size and path (docs/runtime.md,
+    // "Frame resources"): 0 in steady state.
+    uint32_t allocations = 0;
     // What the frame did not render as asked (K0012-K0015, K0024), each once; the file is the
     // scene, or the pack or cache a warning is about.
     DiagnosticList warnings;

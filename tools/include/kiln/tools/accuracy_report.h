@@ -42,8 +42,10 @@ std::vector<AccuracyConfig> DefaultAccuracyConfigs();
 struct AccuracyOptions {
     uint32_t width = 640, height = 360;
     uint32_t supersample = 4;  // the reference's samples per pixel along each axis
-    uint32_t warmup = 2;       // frames before the timed ones (the first is timed apart)
-    uint32_t frames = 10;      // timed frames per configuration
+    // Rounds of one frame of every configuration in turn (A B C A B C ...): `warmup` untimed,
+    // then `frames` timed; each configuration's first frame is timed apart before them.
+    uint32_t warmup = 2;
+    uint32_t frames = 10;
     int camera = FrameSettings::kCameraDefault;
     bool default_light = true;
     std::vector<AccuracyConfig> configs;  // empty: DefaultAccuracyConfigs()
@@ -52,6 +54,7 @@ struct AccuracyOptions {
 
 struct Spread {
     double median = -1, min = -1, max = -1;  // negative: not measured
+    double q1 = -1, q3 = -1;                 // the quartiles (negative: not known)
 };
 
 struct AccuracyRow {
@@ -60,16 +63,23 @@ struct AccuracyRow {
     double flip = 0;                            // mean FLIP on the display-transformed images
     Spread gpu_ms;                              // timestamps around the frame's passes
     std::vector<FrameStats::PassTime> pass_ms;  // each pass's median
-    Spread cpu_ms;  // Renderer::Render's wall time: planning, recording, waiting, read-back
+    Spread cpu_ms;  // FrameStats::cpu_ms: planning, building and recording, to the submission
     double first_frame_ms = 0;     // the first frame's CPU time, pipelines included
     uint32_t first_pipelines = 0;  // pipelines the first frame created (new to its renderer)
     // No other configuration is both faster and more accurate, beyond the measurements' noise:
-    // faster by more than half the larger of the two frame-time spreads (max - min), more
-    // accurate by more than kParetoFlipTolerance (MarkPareto, report.cpp).
+    // faster by more than TimeTolerance, more accurate by more than kParetoFlipTolerance
+    // (MarkParetoFront, report.cpp).
     bool pareto = false;
     LinearImage image;
     std::vector<float> flip_map;  // per pixel, for the heat map
 };
+
+// Time differences between two rows below this are ties for the Pareto front: the larger of their
+// frame times' interquartile ranges (half their spread, max - min, where the quartiles are not
+// known) and kParetoTimeFraction of the slower median. The quartiles, unlike the extremes, do not
+// move with one slow frame; the fraction covers the medians' own jitter on a busy machine.
+inline constexpr double kParetoTimeFraction = 0.05;
+double TimeTolerance(const AccuracyRow& a, const AccuracyRow& b);
 
 // FLIP differences below this are ties for the Pareto front (FLIP is deterministic for one
 // device and build; this is a fraction of the smallest difference between the light modes).
@@ -77,7 +87,7 @@ inline constexpr double kParetoFlipTolerance = 1e-4;
 
 struct AccuracyReport {
     std::string scene, device;
-    uint32_t width = 0, height = 0, supersample = 1, frames = 0;
+    uint32_t width = 0, height = 0, supersample = 1, frames = 0, warmup = 0;
     LinearImage reference;  // downsampled to width x height
     double reference_ms = 0;
     std::vector<std::string> renderer_labels;
@@ -93,6 +103,9 @@ Result<AccuracyReport> RunAccuracyReport(Renderer& reference,
                                          const Scene& scene,
                                          const ColorPipeline& color,
                                          const AccuracyOptions& options);
+
+// How the report's times were measured, in words (report.md and report.json say it).
+std::string TimingMethod(const AccuracyReport& report);
 
 // Writes into `dir` (created): report.md, report.csv, report.json, plot.svg and plot.png (error
 // against time, the Pareto front marked), reference.png, and per configuration render/NAME.png
