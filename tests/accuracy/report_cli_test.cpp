@@ -86,6 +86,35 @@ TEST(ReportCli, ABrdfChoiceBuiltIntoOnePackIsComparedWithTheDefaultModel) {
     fs::remove_all(dir);
 }
 
+// kiln report --scaling: both paths on generated scenes; the table, the crossover and the plot.
+TEST(ReportCli, ScalingWritesTheTableTheCrossoverAndThePlot) {
+    const std::string dir = FreshTempDir("kiln_report_scaling");
+    const RunResult r = RunKiln(
+        "report --scaling --scaling-objects 10,40 --scaling-lights 1,8 "
+        "--width 96 --height 54 --frames 1 -o " +
+        dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("10 objects: "), std::string::npos) << r.out;
+    const nlohmann::json j = nlohmann::json::parse(ReadFile(dir + "/scaling.json"));
+    ASSERT_EQ(j["rows"].size(), 8u);  // 2 object counts x 2 light counts x 2 paths
+    EXPECT_EQ(j["frames"], 1);
+    EXPECT_EQ(j["rows"][0]["path"], "forward");
+    EXPECT_EQ(j["rows"][1]["path"], "deferred");
+    EXPECT_TRUE(j["crossover"].contains("10"));
+    const std::string md = ReadFile(dir + "/scaling.md");
+    EXPECT_NE(md.find("| objects | lights | path | draws | GPU ms | CPU ms |"), std::string::npos);
+    EXPECT_NE(md.find("Crossover"), std::string::npos);
+    EXPECT_GT(fs::file_size(dir + "/scaling.png"), 1000u);
+    EXPECT_NE(ReadFile(dir + "/scaling.svg").find("<title>Frame time against lights"),
+              std::string::npos);
+    // A scene file with --scaling is a mistake, said as one.
+    const RunResult both =
+        RunKiln("report " + DataPath("../scenes/demo/demo.gltf") + " --scaling -o " + dir + "/x");
+    EXPECT_EQ(both.exit_code, 2) << both.err;
+    EXPECT_NE(both.err.find("--scaling draws generated scenes"), std::string::npos) << both.err;
+    fs::remove_all(dir);
+}
+
 // --only means only: without auto-4-fp16 among its names, the fp16 configuration is not drawn.
 TEST(ReportCli, OnlyMeansOnly) {
     const std::string dir = FreshTempDir("kiln_report_only");

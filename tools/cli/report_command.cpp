@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "kiln/runtime/renderer.h"
 #include "kiln/runtime/scene.h"
 #include "kiln/tools/accuracy_report.h"
+#include "kiln/tools/scaling.h"
 #include "render_setup.h"
 
 namespace kiln::cli {
@@ -23,7 +25,57 @@ struct ReportArgs {
     tools::AccuracyOptions options;
     runtime::ColorOptions color;
     bool validation = false, no_default_light = false, no_fp16 = false;
+    bool scaling = false;  // the forward/deferred sweep instead (kiln/tools/scaling.h)
+    tools::ScalingOptions sweep;
 };
+
+// kiln report --scaling: both paths on generated scenes of every object and light count.
+int RunScaling(const ReportArgs& a, CommandDiagnostics& run) {
+    runtime::RendererOptions options;
+    options.validation = a.validation;
+    options.device_filter = a.device;
+    Result<runtime::Renderer> made =
+        MakeRenderer(options, a.packs.empty() ? std::vector{ShippedPackPath()} : a.packs);
+    if (!made) {
+        return run.Fail(made.error());
+    }
+    Result<runtime::ColorPipeline> color = runtime::ColorPipeline::Create(a.color);
+    if (!color) {
+        return run.Fail(color.error());
+    }
+    tools::ScalingOptions sweep = a.sweep;
+    sweep.width = a.options.width;
+    sweep.height = a.options.height;
+    Result<tools::ScalingReport> report =
+        tools::RunScalingReport(made.value(), color.value(), sweep);
+    if (!report) {
+        return run.Fail(report.error());
+    }
+    for (const std::string& m : made.value().ValidationMessages()) {
+        run.diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);
+    }
+    if (run.diags.has_errors()) {
+        return run.Finish(int(kExitInputError));
+    }
+    if (Status written = tools::WriteScalingReport(report.value(), a.output); !written.ok()) {
+        return run.Fail(written.error(), a.output);
+    }
+    std::printf("%8s %7s %-9s %8s %12s %12s\n", "objects", "lights", "path", "draws", "GPU ms",
+                "CPU ms");
+    for (const tools::ScalingRow& row : report.value().rows) {
+        std::printf("%8u %7u %-9s %8u %12.3f %12.3f\n", row.objects, row.lights, row.path.c_str(),
+                    row.draws, row.gpu_ms.median, row.cpu_ms.median);
+    }
+    for (uint32_t n : sweep.objects) {
+        const std::optional<uint32_t> c = tools::Crossover(report.value(), n);
+        std::printf("%u objects: %s\n", n,
+                    c ? ("deferred faster from " + std::to_string(*c) + " lights").c_str()
+                      : "forward faster at every light count");
+    }
+    std::printf("%s/scaling.md: %zu frames measured, device '%s'\n", a.output.c_str(),
+                report.value().rows.size(), report.value().device.c_str());
+    return run.Finish(int(kExitOk));
+}
 
 // With the shipped packs, the fp16 configuration: auto-4 drawn with the shipped shaders compiled
 // with --precision half, where the device has shaderFloat16 (a warning where it has none).
@@ -127,10 +179,14 @@ std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global
     cmd->add_option("--supersample", a->options.supersample,
                     "The reference's samples per pixel along each axis (default 4)")
         ->check(CLI::Range(1, 8).description(""));
-    cmd->add_option("--frames", a->options.frames, "Timed frames per configuration (default 10)")
-        ->check(CLI::Range(1, 1000).description(""));
-    cmd->add_option("--warmup", a->options.warmup, "Frames before the timed ones (default 2)")
-        ->check(CLI::Range(1, 100).description(""));
+    CLI::Option* frames =
+        cmd->add_option("--frames", a->options.frames,
+                        "Timed frames per configuration (default 10; --scaling: 5 per path)")
+            ->check(CLI::Range(1, 1000).description(""));
+    CLI::Option* warmup =
+        cmd->add_option("--warmup", a->options.warmup,
+                        "Frames before the timed ones (default 2; --scaling: 1 per path)")
+            ->check(CLI::Range(1, 100).description(""));
     cmd->add_option("--materials", a->materials,
                     "Material sidecar (default: <scene>.kiln.json when present)");
     cmd->add_option("--exposure", a->color.exposure, "Exposure in stops before the view");
@@ -139,9 +195,34 @@ std::function<int()> AddReportCommand(CLI::App* cmd, const GlobalOptions& global
     cmd->add_flag("--validation", a->validation,
                   "Enable VK_LAYER_KHRONOS_validation; any message fails the report");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
-    return [a, &global] {
+    cmd->add_flag("--scaling", a->scaling,
+                  "Time the forward and deferred paths on generated scenes of N objects and M "
+                  "lights instead (scaling.md, .csv, .json, .svg, .png)");
+    cmd->add_option("--scaling-objects", a->sweep.objects,
+                    "Object counts of --scaling (default 10,100,1000,10000)")
+        ->delimiter(',')
+        ->check(CLI::Range(1u, 100000u));
+    cmd->add_option("--scaling-lights", a->sweep.lights,
+                    "Light counts of --scaling (default 1,4,16,64,256)")
+        ->delimiter(',')
+        ->check(CLI::Range(1u, 4096u));
+    return [a, &global, frames, warmup] {
+        if (frames->count() > 0) {
+            a->sweep.frames = a->options.frames;
+        }
+        if (warmup->count() > 0) {
+            a->sweep.warmup = a->options.warmup;
+        }
         CommandDiagnostics run(global);
         DiagnosticList& diags = run.diags;
+        if (a->scaling) {
+            if (!a->scene.empty()) {
+                diags.Error(DiagCode::kBadCommandLine, "", kNoPosition,
+                            "--scaling draws generated scenes: give no scene file");
+                return run.Finish(int(kExitUsageError));
+            }
+            return RunScaling(*a, run);
+        }
         if (a->scene.empty()) {
             a->scene = DemoScenePath();
             if (a->scene.empty()) {

@@ -4,7 +4,6 @@
 // scripts/setup.sh). The FLIP axis is logarithmic where the worst value is more than 8 times the
 // best; labels are placed around their point so that none overlaps another, a point, the legend
 // or the edge (AccuracyPlotTexts gives their boxes to the test that checks it).
-#include <cairo-svg.h>
 #include <cairo.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "accuracy/cairo_output.h"
 #include "kiln/tools/accuracy_report.h"
 
 namespace kiln::tools {
@@ -298,11 +298,6 @@ std::vector<PlotText> Figure::Draw() {
     return texts_;
 }
 
-cairo_status_t AppendTo(void* closure, const unsigned char* data, unsigned int length) {
-    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-    return CAIRO_STATUS_SUCCESS;
-}
-
 }  // namespace
 
 std::vector<PlotText> AccuracyPlotTexts(const AccuracyReport& r, double width, double height) {
@@ -314,24 +309,11 @@ std::vector<PlotText> AccuracyPlotTexts(const AccuracyReport& r, double width, d
     return texts;
 }
 
-std::string XmlEscape(const std::string& s) {
-    std::string out;
-    for (char ch : s) {
-        out += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
-    }
-    return out;
-}
-
 std::string AccuracyPlotSvg(const AccuracyReport& r) {
-    std::string svg;
-    cairo_surface_t* surface = cairo_svg_surface_create_for_stream(AppendTo, &svg, 960, 600);
-    cairo_t* cr = cairo_create(surface);
-    const std::vector<PlotText> texts = Figure(cr, r, 960, 600).Draw();
-    cairo_destroy(cr);
-    cairo_surface_finish(surface);
-    cairo_surface_destroy(surface);
-    // Cairo draws text as glyph outlines: the words go into the SVG's <title> and <desc> too,
-    // for screen readers, search and a reader of the file.
+    std::vector<PlotText> texts;
+    auto draw = [&](cairo_t* cr, double w, double h) { texts = Figure(cr, r, w, h).Draw(); };
+    // The texts first (the SVG's title and description), from a recording of the same drawing.
+    texts = AccuracyPlotTexts(r, 960, 600);
     std::string title, desc;
     for (const PlotText& t : texts) {
         if (t.kind == "title") {
@@ -340,36 +322,12 @@ std::string AccuracyPlotSvg(const AccuracyReport& r) {
             desc += (desc.empty() ? "" : "; ") + t.kind + ": " + t.text;
         }
     }
-    if (const size_t open = svg.find("<svg"); open != std::string::npos) {
-        if (const size_t end = svg.find('>', open); end != std::string::npos) {
-            svg.insert(end + 1, "\n<title>" + XmlEscape(title) + "</title>\n<desc>" +
-                                    XmlEscape(desc) + "</desc>");
-        }
-    }
-    return svg;
+    return CairoSvg(draw, 960, 600, title, desc);
 }
 
 std::vector<uint8_t> AccuracyPlotImage(const AccuracyReport& r, uint32_t width, uint32_t height) {
-    cairo_surface_t* surface =
-        cairo_image_surface_create(CAIRO_FORMAT_RGB24, int(width), int(height));
-    cairo_t* cr = cairo_create(surface);
-    Figure(cr, r, width, height).Draw();
-    cairo_destroy(cr);
-    cairo_surface_flush(surface);
-    // Cairo's RGB24 is a native-endian 32-bit word per pixel, 0x00RRGGBB, rows `stride` apart.
-    std::vector<uint8_t> rgba(size_t(width) * height * 4, 255);
-    const unsigned char* data = cairo_image_surface_get_data(surface);
-    const int stride = cairo_image_surface_get_stride(surface);
-    for (uint32_t y = 0; y < height && data; ++y) {
-        for (uint32_t x = 0; x < width; ++x) {
-            uint32_t word;
-            std::memcpy(&word, data + size_t(y) * size_t(stride) + x * 4, 4);
-            uint8_t* p = &rgba[(size_t(y) * width + x) * 4];
-            p[0] = uint8_t(word >> 16), p[1] = uint8_t(word >> 8), p[2] = uint8_t(word);
-        }
-    }
-    cairo_surface_destroy(surface);
-    return rgba;
+    return CairoImage([&](cairo_t* cr, double w, double h) { Figure(cr, r, w, h).Draw(); }, width,
+                      height);
 }
 
 }  // namespace kiln::tools

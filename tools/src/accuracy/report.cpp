@@ -47,21 +47,6 @@ AccuracyConfig Deferred(std::string name,
     return c;
 }
 
-Spread SpreadOf(std::vector<double> v) {
-    Spread s;
-    if (v.empty()) {
-        return s;
-    }
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    s.min = v.front();
-    s.max = v.back();
-    s.q1 = v[(n - 1) / 4];
-    s.q3 = v[n - 1 - (n - 1) / 4];
-    return s;
-}
-
 using Clock = std::chrono::steady_clock;
 double MillisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -178,6 +163,21 @@ Status State::Compare(AccuracyRow& row) {
 }
 
 }  // namespace
+
+Spread SpreadOf(std::vector<double> v) {
+    Spread s;
+    if (v.empty()) {
+        return s;
+    }
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    s.min = v.front();
+    s.max = v.back();
+    s.q1 = v[(n - 1) / 4];
+    s.q3 = v[n - 1 - (n - 1) / 4];
+    return s;
+}
 
 namespace {
 

@@ -31,7 +31,12 @@ runtime::MeshVertex Vertex(glm::vec3 p, glm::vec3 n, glm::vec2 uv, glm::vec3 t) 
     return v;
 }
 
-runtime::Primitive Sphere(uint32_t segments, uint32_t rings, glm::vec3 centre, float radius) {
+}  // namespace
+
+runtime::Primitive SpherePrimitive(uint32_t segments,
+                                   uint32_t rings,
+                                   glm::vec3 centre,
+                                   float radius) {
     runtime::Primitive p;
     const float pi = 3.14159265f;
     for (uint32_t r = 0; r <= rings; ++r) {
@@ -55,16 +60,17 @@ runtime::Primitive Sphere(uint32_t segments, uint32_t rings, glm::vec3 centre, f
     return p;
 }
 
-runtime::Primitive Plane() {
+runtime::Primitive FloorPrimitive(float h) {
     runtime::Primitive p;
     const glm::vec3 up(0, 1, 0), t(1, 0, 0);
-    const float h = kHarnessPlaneHalf;
     p.vertices = {Vertex({-h, 0, -h}, up, {0, 0}, t), Vertex({-h, 0, h}, up, {0, 1}, t),
                   Vertex({h, 0, h}, up, {1, 1}, t), Vertex({h, 0, -h}, up, {1, 0}, t)};
     p.indices = {0, 1, 2, 0, 2, 3};
     p.has_tangents = true;
     return p;
 }
+
+namespace {
 
 // The plane z = 0, |x|, |y| <= 2, as eight triangles around the origin, facing +z.
 runtime::Primitive FacingPlane() {
@@ -106,7 +112,7 @@ runtime::Scene StabilityScene() {
     scene.path = "<kiln stability scene>";
     scene.meshes.push_back({"plane", {FacingPlane()}});
     scene.meshes.push_back(
-        {"sphere", {Sphere(32, 16, kStabilitySphereCentre, kStabilitySphereRadius)}});
+        {"sphere", {SpherePrimitive(32, 16, kStabilitySphereCentre, kStabilitySphereRadius)}});
     scene.instances.push_back({0, glm::mat4(1.0f), "plane"});
     scene.instances.push_back({1, glm::mat4(1.0f), "sphere"});
     FinishScene(scene, "stability", kStabilityYFov, glm::vec3(0, 0, kStabilityEyeZ), glm::vec3(0));
@@ -151,8 +157,8 @@ Status DrawHarnessPass(runtime::Renderer& renderer,
 runtime::Scene HarnessScene() {
     runtime::Scene scene;
     scene.path = "<kiln test harness>";
-    scene.meshes.push_back({"sphere", {Sphere(32, 16, kTarget, kHarnessSphereRadius)}});
-    scene.meshes.push_back({"plane", {Plane()}});
+    scene.meshes.push_back({"sphere", {SpherePrimitive(32, 16, kTarget, kHarnessSphereRadius)}});
+    scene.meshes.push_back({"plane", {FloorPrimitive(kHarnessPlaneHalf)}});
     scene.instances.push_back({0, glm::mat4(1.0f), "sphere"});
     scene.instances.push_back({1, glm::mat4(1.0f), "plane"});
     FinishScene(scene, "harness", 0.6f, kEye, kTarget);

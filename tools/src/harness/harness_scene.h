@@ -24,6 +24,14 @@ inline constexpr float kHarnessPlaneHalf = 2.0f;
 inline constexpr glm::vec3 kHarnessEye{0.0f, 0.6f, 2.4f};
 runtime::Scene HarnessScene();
 
+// A UV sphere of `segments` x `rings` quads around `centre`, with normals, tangents and UVs.
+runtime::Primitive SpherePrimitive(uint32_t segments,
+                                   uint32_t rings,
+                                   glm::vec3 centre,
+                                   float radius);
+// A square of side 2 * `half` in the plane y = 0, facing +y.
+runtime::Primitive FloorPrimitive(float half);
+
 // A light of `type` at the harness camera, shining along its view; `intensity` in lux (directional)
 // or candela (point, spot).
 runtime::Light HarnessLight(runtime::LightType type, float intensity);

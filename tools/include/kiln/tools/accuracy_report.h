@@ -56,6 +56,8 @@ struct Spread {
     double median = -1, min = -1, max = -1;  // negative: not measured
     double q1 = -1, q3 = -1;                 // the quartiles (negative: not known)
 };
+// The spread of `values` (all negative when there are none).
+Spread SpreadOf(std::vector<double> values);
 
 struct AccuracyRow {
     AccuracyConfig config;
