@@ -302,6 +302,74 @@ void DrawBuilder::Uniforms(const pack::Pack& pack,
     }
 }
 
+void DrawBuilder::PlannedUniforms(const pack::Pack& pack,
+                                  const pack::VariantRec& v,
+                                  Binding& binding,
+                                  const ValueLookup& fixed,
+                                  std::span<const Values* const> per_draw,
+                                  Draw& d) {
+    size_t k = 0;
+    for (uint32_t module : pack.ModulesOf(v)) {
+        const pack::ModuleRec mod = pack.Module(module).value();
+        for (uint32_t b = 0; b < mod.block_count; ++b, ++k) {
+            const auto block =
+                pack.Get<pack::BlockRec>(pack::SectionTag::kBlocks, mod.first_block + b).value();
+            const bool push = pack::BlockKind(block.kind) == pack::BlockKind::kPushConstant;
+            if (k == binding.plans.size()) {  // the binding's first draw
+                Binding::BlockPlan& plan = binding.plans.emplace_back();
+                plan.base.assign(push ? d.pipeline->layout.push_constant_size : block.size, 0);
+                WriteBlock(pack, block, fixed, plan.base.data(), plan.base.size());
+                for (uint32_t i = 0; i < block.member_count; ++i) {
+                    const auto member = pack.Get<pack::MemberRec>(pack::SectionTag::kMembers,
+                                                                  block.first_member + i)
+                                            .value();
+                    plan.members.emplace_back(std::string(pack.String(member.name)), member);
+                }
+                std::sort(plan.members.begin(), plan.members.end(),
+                          [](const auto& x, const auto& y) { return x.first < y.first; });
+            }
+            const Binding::BlockPlan& plan = binding.plans[k];
+            uint8_t* dst = nullptr;
+            if (push) {
+                d.push = plan.base;
+                dst = d.push.data();
+            } else if (Written(d.writes, block.set, block.binding)) {
+                continue;  // the textures' or an earlier module's
+            } else {
+                const VkDeviceSize offset =
+                    (uniforms_.size() + alignment_ - 1) / alignment_ * alignment_;
+                uniforms_.resize(offset);
+                uniforms_.insert(uniforms_.end(), plan.base.begin(), plan.base.end());
+                dst = uniforms_.data() + offset;
+                Draw::Write w{block.set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+                w.offset = offset;
+                w.range = block.size;
+                d.writes.push_back(w);
+            }
+            for (const Values* table : per_draw) {
+                if (!table) {
+                    continue;
+                }
+                // Both sorted by name: one walk along the two.
+                auto member = plan.members.begin();
+                for (auto entry = table->begin();
+                     entry != table->end() && member != plan.members.end();) {
+                    const int order = entry->first.compare(member->first);
+                    if (order == 0) {
+                        WriteMember(member->second, entry->second, dst, plan.base.size());
+                    }
+                    if (order <= 0) {
+                        ++entry;
+                    }
+                    if (order >= 0) {
+                        ++member;
+                    }
+                }
+            }
+        }
+    }
+}
+
 Status DrawBuilder::BuildForward(std::span<const DrawRequest> requests, std::vector<Draw>& draws) {
     for (const DrawRequest& r : requests) {
         if (Status e = Build(r, draws); !e.ok()) {
@@ -328,10 +396,6 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
         Warn(DiagCode::kVariantFallback, m.name + ": " + choice.warning);
     }
     const pack::VariantRec v = pack.Variant(choice.variant).value();
-    const std::vector<std::string> chosen = pack.KeywordsOf(pass, pack::VariantKey(v.key));
-    if (!additive && std::count(chosen.begin(), chosen.end(), pack::kKeywordVertexLight)) {
-        ++stats_.vertex_lit;
-    }
     // glTF 2.0, 3.5.3: a node whose transform has a negative determinant has its winding
     // reversed.
     const bool mirrored =
@@ -341,6 +405,10 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
         bindings_.try_emplace({&m, pass, choice.variant, additive, mirrored, request.shadow_map});
     Binding& binding = it->second;
     if (fresh) {
+        const std::vector<std::string> chosen = pack.KeywordsOf(pass, pack::VariantKey(v.key));
+        binding.vertex_light =
+            std::count(chosen.begin(), chosen.end(), pack::kKeywordVertexLight) > 0;
+        binding.keywords = pack::JoinKeywords(chosen);
         if (Status e = Pipeline(m, pass, choice.variant, additive, mirrored, request.depth_only,
                                 chosen, binding);
             !e.ok()) {
@@ -352,6 +420,9 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
             return e;
         }
     }
+    if (!additive && binding.vertex_light) {
+        ++stats_.vertex_lit;
+    }
     Draw d;
     d.pipeline = binding.pipeline;
     d.writes = binding.textures;
@@ -359,7 +430,7 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
         d.info.shader = std::string(pack.String(pack.Shader(m.shader).value().name));
         d.info.pass = pack::PassLabel(pack, pass);
         d.info.light_mode = std::string(pack::LightModeOf(pack, pass));
-        d.info.keywords = pack::JoinKeywords(chosen);
+        d.info.keywords = binding.keywords;
         d.info.state = binding.state;
         d.info.light = request.light ? LightName(request.light) : std::string();
         if (request.instance) {
@@ -393,11 +464,19 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
     }
     d.info.index_count = record_info_ ? d.index_count : 0;
 
-    Values light_values =
-        LightValues(request.light, additive ? std::vector<const Light*>{} : request.vertex);
+    // A light's values once per frame, however many objects it lights.
+    auto [light_it, light_fresh] = light_values_.try_emplace(
+        {request.light, additive ? std::vector<const Light*>{} : request.vertex});
+    if (light_fresh) {
+        light_it->second = LightValues(request.light, light_it->first.second);
+    }
+    const Values* lights = &light_it->second;
+    Values with_sh;
     if (!additive && !request.sh.empty()) {
         // Read before the frame's probe: this object's ambient plus its SH lights.
-        light_values.merge(ProbeValues(scene_, request.sh, request.center));
+        with_sh = *lights;
+        with_sh.merge(ProbeValues(scene_, request.sh, request.center));
+        lights = &with_sh;
         ++stats_.sh_lit;
     }
     glm::mat4 view(1.0f);
@@ -405,11 +484,15 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
         v_it != frame_values_.end() && v_it->second.size() == 16) {
         view = glm::make_mat4(v_it->second.data());
     }
-    const Values object =
-        ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f), view);
+    auto [object_it, object_fresh] = object_values_.try_emplace(request.instance);
+    if (object_fresh) {
+        object_it->second =
+            ObjectValues(request.instance ? request.instance->world : glm::mat4(1.0f), view);
+    }
+    const Values& object = object_it->second;
     const ValueLookup lookup = [&](std::string_view name) -> const std::vector<float>* {
         for (const Values* table : std::initializer_list<const Values*>{
-                 request.values, &object, &light_values, &frame_values_, &binding.texel_sizes}) {
+                 request.values, &object, lights, &frame_values_, &binding.texel_sizes}) {
             if (!table) {
                 continue;
             }
@@ -417,11 +500,22 @@ Status DrawBuilder::Build(const DrawRequest& request, std::vector<Draw>& draws) 
                 return &found->second;
             }
         }
-        auto found = m.values.find(std::string(name));
+        auto found = m.values.find(name);
         return found == m.values.end() ? nullptr : &found->second;
     };
     if (!record_info_) {
-        Uniforms(pack, v, lookup, d);
+        // The binding's values once (its plans), the draw's own over them.
+        const ValueLookup fixed = [&](std::string_view name) -> const std::vector<float>* {
+            for (const Values* table : {&frame_values_, &binding.texel_sizes}) {
+                if (auto found = table->find(name); found != table->end()) {
+                    return &found->second;
+                }
+            }
+            auto found = m.values.find(name);
+            return found == m.values.end() ? nullptr : &found->second;
+        };
+        const Values* per_draw[] = {lights, &object, request.values};  // lowest precedence first
+        PlannedUniforms(pack, v, binding, fixed, per_draw, d);
     } else {  // the frame debugger's record of every member as written
         std::map<std::string, std::vector<float>, std::less<>> seen;
         const ValueLookup recording = [&](std::string_view name) -> const std::vector<float>* {

@@ -51,7 +51,17 @@ class DrawBuilder {
         const vk::Pipeline* pipeline = nullptr;
         std::vector<Draw::Write> textures;
         Values texel_sizes;
-        std::string state;  // the render state as ShaderLab spells it (when recording info)
+        // Per uniform block of the variant, in ModulesOf order: the block as the frame's, the
+        // textures' sizes and the material's values fill it (the same for every draw of the
+        // binding), and its members by name, which the draw's own values overwrite.
+        struct BlockPlan {
+            std::vector<uint8_t> base;
+            std::vector<std::pair<std::string, pack::MemberRec>> members;  // sorted by name
+        };
+        std::vector<BlockPlan> plans;
+        bool vertex_light = false;  // the variant has VERTEXLIGHT_ON
+        std::string keywords;       // the variant's, joined
+        std::string state;          // the render state as ShaderLab spells it (when recording info)
         std::vector<Draw::Info::Texture> texture_info;  // when recording info
     };
 
@@ -74,6 +84,15 @@ class DrawBuilder {
                   const pack::VariantRec& v,
                   const ValueLookup& lookup,
                   Draw& d);
+    // Uniforms from the binding's plans: each block's bytes copied, then the members of the
+    // draw's own tables written over them (`per_draw`, lowest precedence first); `fixed` looks
+    // up the rest when a plan is made.
+    void PlannedUniforms(const pack::Pack& pack,
+                         const pack::VariantRec& v,
+                         Binding& binding,
+                         const ValueLookup& fixed,
+                         std::span<const Values* const> per_draw,
+                         Draw& d);
 
     Renderer::State& s_;
     SceneResources& resources_;
@@ -89,6 +108,9 @@ class DrawBuilder {
     // (material, pass, variant, additive, mirrored, shadow map)
     std::map<std::tuple<const MaterialInstance*, uint32_t, uint32_t, bool, bool, int>, Binding>
         bindings_;
+    // (pixel light, vertex lights) -> LightValues, and instance -> ObjectValues: once per frame
+    std::map<std::pair<const Light*, std::vector<const Light*>>, Values> light_values_;
+    std::map<const Instance*, Values> object_values_;
 };
 
 }  // namespace kiln::runtime

@@ -241,6 +241,31 @@ void ApplyGltfMaterial(const SceneMaterial& g, MaterialInstance& m) {
     }
 }
 
+void WriteMember(const pack::MemberRec& member,
+                 const std::vector<float>& value,
+                 uint8_t* dst,
+                 size_t dst_size) {
+    if (member.offset >= dst_size) {
+        return;
+    }
+    std::memset(dst + member.offset, 0, std::min(size_t{member.size}, dst_size - member.offset));
+    const size_t bytes =
+        std::min({size_t{member.size}, value.size() * 4, dst_size - member.offset});
+    const auto base = pack::BaseType(member.base_type);
+    for (size_t k = 0; k < bytes / 4; ++k) {
+        const float f = value[k];
+        if (base == pack::BaseType::kInt || base == pack::BaseType::kBool) {
+            const int32_t x = int32_t(f);
+            std::memcpy(dst + member.offset + k * 4, &x, 4);
+        } else if (base == pack::BaseType::kUInt) {
+            const uint32_t x = f > 0 ? uint32_t(f) : 0u;
+            std::memcpy(dst + member.offset + k * 4, &x, 4);
+        } else {
+            std::memcpy(dst + member.offset + k * 4, &f, 4);
+        }
+    }
+}
+
 void WriteBlock(const pack::Pack& pack,
                 const pack::BlockRec& block,
                 const ValueLookup& lookup,
@@ -249,24 +274,8 @@ void WriteBlock(const pack::Pack& pack,
     for (uint32_t i = 0; i < block.member_count; ++i) {
         const auto member =
             pack.Get<pack::MemberRec>(SectionTag::kMembers, block.first_member + i).value();
-        const std::vector<float>* value = lookup(pack.String(member.name));
-        if (!value || member.offset >= dst_size) {
-            continue;
-        }
-        const size_t bytes =
-            std::min({size_t{member.size}, value->size() * 4, dst_size - member.offset});
-        const auto base = pack::BaseType(member.base_type);
-        for (size_t k = 0; k < bytes / 4; ++k) {
-            const float f = (*value)[k];
-            if (base == pack::BaseType::kInt || base == pack::BaseType::kBool) {
-                const int32_t x = int32_t(f);
-                std::memcpy(dst + member.offset + k * 4, &x, 4);
-            } else if (base == pack::BaseType::kUInt) {
-                const uint32_t x = f > 0 ? uint32_t(f) : 0u;
-                std::memcpy(dst + member.offset + k * 4, &x, 4);
-            } else {
-                std::memcpy(dst + member.offset + k * 4, &f, 4);
-            }
+        if (const std::vector<float>* value = lookup(pack.String(member.name))) {
+            WriteMember(member, *value, dst, dst_size);
         }
     }
 }

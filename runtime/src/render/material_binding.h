@@ -34,7 +34,8 @@ struct TextureBinding {
 struct MaterialInstance {
     std::string name;  // for messages: the .material file or "glTF material 'x'"
     uint32_t pack = 0, shader = 0;
-    std::map<std::string, std::vector<float>> values;  // Color/Vector/Float/Range + _ST vectors
+    // Color/Vector/Float/Range + _ST vectors (looked up by string_view, without a copy)
+    std::map<std::string, std::vector<float>, std::less<>> values;
     std::map<std::string, TextureBinding> textures;
     std::vector<std::string> keywords;
     std::vector<pack::StateOverride> overrides;      // every pass (Blend: not additive passes)
@@ -66,6 +67,12 @@ void ApplyGltfMaterial(const SceneMaterial& m, MaterialInstance& inout);
 // Writes a uniform or push-constant block: each member whose name `lookup` knows gets that
 // value (clipped to the member's size; floats converted for int members); others stay zero.
 using ValueLookup = std::function<const std::vector<float>*(std::string_view name)>;
+// Writes one member's value at its offset in `dst` (converted to its base type; at most its
+// size and the value's), after zeroing the member's bytes.
+void WriteMember(const pack::MemberRec& member,
+                 const std::vector<float>& value,
+                 uint8_t* dst,
+                 size_t dst_size);
 void WriteBlock(const pack::Pack& pack,
                 const pack::BlockRec& block,
                 const ValueLookup& lookup,

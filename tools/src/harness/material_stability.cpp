@@ -182,8 +182,8 @@ Result<MaterialStabilityReport> TestMaterialStability(Renderer& renderer,
         return e.error();
     }
     // The material's values, then each Range property at its ends.
-    std::vector<std::pair<std::string, std::map<std::string, std::vector<float>>>> values{
-        {"(material)", m.values}};
+    std::vector<std::pair<std::string, std::map<std::string, std::vector<float>, std::less<>>>>
+        values{{"(material)", m.values}};
     for (uint32_t i = sr.first_property; i < sr.first_property + sr.property_count; ++i) {
         const auto p = pk.Get<pack::PropertyRec>(pack::SectionTag::kProperties, i).value();
         if (pack::PropertyType(p.type) != pack::PropertyType::kRange) {
