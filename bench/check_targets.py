@@ -30,9 +30,11 @@ COUNTERS = {
 # ((benchmark, counter), (reference benchmark, counter)) -> (largest ratio of the counters, the
 # smallest over repetitions, what it stands for): a cost per unit that must not grow with size.
 COUNTER_RATIOS = {
+    # A quadratic step would make it about 7.6 (1,048 against 137 draws); caches make it more
+    # than 1: the 1,000-object frame's draw data (about 2 MB) is larger than a core's L2.
     (("BM_FrameCpu1000Objects", "per_draw_us"), ("BM_FrameCpu100Objects", "per_draw_us")):
-        (1.25, "recording a frame is linear in draws: the CPU cost per draw at 1,000 objects is "
-               "within 25% of that at 100"),
+        (1.6, "recording a frame is linear in draws: the CPU cost per draw at 1,000 objects is "
+              "at most 1.6 times that at 100"),
 }
 
 # (benchmark, reference benchmark) -> (largest ratio of their fastest times, what it stands for):
