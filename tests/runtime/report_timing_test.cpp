@@ -79,8 +79,10 @@ TEST_F(RuntimeTest, IdenticalConfigurationsTimeAlikeInEitherOrder) {
         EXPECT_LE(gpu, 1.10);
         // CPU times of a fraction of a millisecond: within 10%, or 0.05 ms (the scheduler's
         // jitter on a loaded two-core machine).
+#if !defined(__SANITIZE_ADDRESS__)  // instrumented, Kiln's CPU times say little
         EXPECT_TRUE(cpu <= 1.10 || std::abs(x.cpu_ms.median - y.cpu_ms.median) <= 0.05)
             << x.cpu_ms.median << " against " << y.cpu_ms.median;
+#endif
         EXPECT_EQ(x.flip, y.flip);  // the same image
     }
 }
