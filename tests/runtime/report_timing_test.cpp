@@ -46,12 +46,16 @@ tools::AccuracyOptions Options() {
     options.height = 180;
     options.supersample = 1;
     options.warmup = 3;
-    options.frames = 15;
+    options.frames = 31;
     options.default_light = false;
     return options;
 }
 
 // The medians of two identical configurations agree within 10% in either order, GPU and CPU.
+// An order effect is systematic (on the H200 every report read 4 to 5 times more for the second
+// of two identical configurations); lavapipe's jitter is not: on this two-core machine one
+// comparison of 31 interleaved frames each exceeded 10% about once in 60 (a busy neighbour).
+// So each order gets a second report when the first disagrees; a systematic effect fails both.
 TEST_F(RuntimeTest, IdenticalConfigurationsTimeAlikeInEitherOrder) {
     const runtime::Scene scene = TimedScene();
     runtime::Renderer* drawing[] = {&renderer_};
@@ -63,27 +67,30 @@ TEST_F(RuntimeTest, IdenticalConfigurationsTimeAlikeInEitherOrder) {
         if (swapped) {
             std::swap(options.configs[0], options.configs[1]);
         }
-        Result<tools::AccuracyReport> r =
-            tools::RunAccuracyReport(renderer_, drawing, labels, scene, color_, options);
-        ASSERT_TRUE(r) << r.error().message;
-        const tools::AccuracyRow& x = r.value().rows.at(0);
-        const tools::AccuracyRow& y = r.value().rows.at(1);
-        ASSERT_GT(x.gpu_ms.median, 0.0) << "lavapipe has timestamps";
-        const double gpu =
-            std::max(x.gpu_ms.median, y.gpu_ms.median) / std::min(x.gpu_ms.median, y.gpu_ms.median);
-        const double cpu =
-            std::max(x.cpu_ms.median, y.cpu_ms.median) / std::min(x.cpu_ms.median, y.cpu_ms.median);
-        std::cout << (swapped ? "b, a" : "a, b") << ": GPU " << x.gpu_ms.median << " and "
-                  << y.gpu_ms.median << " ms (ratio " << gpu << "), CPU " << x.cpu_ms.median
-                  << " and " << y.cpu_ms.median << " ms (ratio " << cpu << ")\n";
-        EXPECT_LE(gpu, 1.10);
-        // CPU times of a fraction of a millisecond: within 10%, or 0.05 ms (the scheduler's
-        // jitter on a loaded two-core machine).
+        bool agreed = false;
+        for (int attempt = 0; attempt < 2 && !agreed; ++attempt) {
+            Result<tools::AccuracyReport> r =
+                tools::RunAccuracyReport(renderer_, drawing, labels, scene, color_, options);
+            ASSERT_TRUE(r) << r.error().message;
+            const tools::AccuracyRow& x = r.value().rows.at(0);
+            const tools::AccuracyRow& y = r.value().rows.at(1);
+            ASSERT_GT(x.gpu_ms.median, 0.0) << "lavapipe has timestamps";
+            ASSERT_EQ(x.flip, y.flip);  // the same image
+            const double gpu = std::max(x.gpu_ms.median, y.gpu_ms.median) /
+                               std::min(x.gpu_ms.median, y.gpu_ms.median);
+            const double cpu = std::max(x.cpu_ms.median, y.cpu_ms.median) /
+                               std::min(x.cpu_ms.median, y.cpu_ms.median);
+            std::cout << (swapped ? "b, a" : "a, b") << ": GPU " << x.gpu_ms.median << " and "
+                      << y.gpu_ms.median << " ms (ratio " << gpu << "), CPU " << x.cpu_ms.median
+                      << " and " << y.cpu_ms.median << " ms (ratio " << cpu << ")\n";
+            agreed = gpu <= 1.10;
 #if !defined(__SANITIZE_ADDRESS__)  // instrumented, Kiln's CPU times say little
-        EXPECT_TRUE(cpu <= 1.10 || std::abs(x.cpu_ms.median - y.cpu_ms.median) <= 0.05)
-            << x.cpu_ms.median << " against " << y.cpu_ms.median;
+            // CPU times of a fraction of a millisecond: within 10%, or 0.05 ms.
+            agreed = agreed && (cpu <= 1.10 || std::abs(x.cpu_ms.median - y.cpu_ms.median) <= 0.05);
 #endif
-        EXPECT_EQ(x.flip, y.flip);  // the same image
+        }
+        EXPECT_TRUE(agreed) << "identical configurations timed apart in both reports, "
+                            << (swapped ? "b first" : "a first");
     }
 }
 

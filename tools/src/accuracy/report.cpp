@@ -174,8 +174,15 @@ Spread SpreadOf(std::vector<double> v) {
     s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
     s.min = v.front();
     s.max = v.back();
-    s.q1 = v[(n - 1) / 4];
-    s.q3 = v[n - 1 - (n - 1) / 4];
+    // Quartiles interpolated between the sorted values (the usual definition): with three
+    // frames the interquartile range is half the spread, not all of it.
+    auto quantile = [&](double p) {
+        const double h = double(n - 1) * p;
+        const size_t i = size_t(h);
+        return i + 1 < n ? v[i] + (h - double(i)) * (v[i + 1] - v[i]) : v[i];
+    };
+    s.q1 = quantile(0.25);
+    s.q3 = quantile(0.75);
     return s;
 }
 
