@@ -18,10 +18,10 @@ uint8_t Byte(double v) {
 
 // Depth as distance from the camera, shown near white to far dark grey; nothing drawn is black.
 // A shadow map (drawn from a light, not the camera) shows its stored depth the same way.
+// `stored`: the target's depths as DecodeTexels gives them.
 std::vector<uint8_t> DepthImage(const FrameTarget& t,
-                                const std::vector<uint8_t>& bytes,
+                                const std::vector<float>& stored,
                                 const glm::mat4& inverse_projection) {
-    const std::vector<float> stored = DecodeTexels(t, bytes);
     const size_t n = stored.size();
     std::vector<double> distance(n, -1.0);
     double lo = 1e300, hi = -1e300;
@@ -182,7 +182,7 @@ StepObserver CaptureObserver(const glm::mat4& projection,
             StoreValues(t, ct.bytes, image);
             image.depth = t.depth;
             if (t.depth) {
-                image.rgba8 = DepthImage(t, ct.bytes, inverse);
+                image.rgba8 = DepthImage(t, image.single, inverse);  // decoded once
             } else if (t.display && (t.format == VK_FORMAT_R16G16B16A16_SFLOAT ||
                                      t.format == VK_FORMAT_R32G32B32A32_SFLOAT)) {
                 std::vector<float> linear = TargetFloats(t, ct.bytes);

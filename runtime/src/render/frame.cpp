@@ -317,7 +317,7 @@ Status RecordFrame(Renderer::State& s,
     const auto* p = static_cast<const uint8_t*>(staging->mapped);
     out.width = frame.width;
     out.height = frame.height;
-    out.rgba = TargetFloats(output, std::vector<uint8_t>(p, p + bytes));
+    out.rgba = TargetFloats(output, {p, size_t(bytes)});  // from the mapped buffer, no copy
     stats.readback_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - submitted)
             .count();

@@ -17,7 +17,7 @@ float HalfToFloat(uint16_t h);
 // The nearest IEEE half (ties to even; beyond 65504 infinity, NaN kept).
 uint16_t FloatToHalf(float f);
 // The texels of a float target (RGBA16F or RGBA32F) as read back, as floats.
-std::vector<float> TargetFloats(const FrameTarget& t, const std::vector<uint8_t>& bytes);
+std::vector<float> TargetFloats(const FrameTarget& t, std::span<const uint8_t> bytes);
 // The texels of any target as read back, decoded to the values a shader reads from it: depth
 // as stored (one channel), R8 one channel in [0, 1], UNORM channels in [0, 1], sRGB colour
 // channels to linear (alpha as stored), float channels as they are.

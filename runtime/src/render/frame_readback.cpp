@@ -7,7 +7,7 @@
 
 namespace kiln::runtime {
 
-std::vector<float> TargetFloats(const FrameTarget& t, const std::vector<uint8_t>& bytes) {
+std::vector<float> TargetFloats(const FrameTarget& t, std::span<const uint8_t> bytes) {
     const bool f32 = t.format == VK_FORMAT_R32G32B32A32_SFLOAT;
     std::vector<float> out(bytes.size() / (f32 ? 4 : 2));
     for (size_t i = 0; i < out.size(); ++i) {

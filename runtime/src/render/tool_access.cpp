@@ -26,13 +26,7 @@ void HarnessDrawList(const Scene& scene,
                      std::vector<Light> lights,
                      DrawList& out) {
     out.lights = std::move(lights);
-    out.main = nullptr;
-    for (const Light& l : out.lights) {
-        if (l.type == LightType::kDirectional) {
-            out.main = &l;
-            break;
-        }
-    }
+    out.main = MainLight(out.lights);  // as BuildDrawList chooses it
     out.items.clear();
     for (const Instance& inst : scene.instances) {
         const Primitive& prim = scene.meshes[inst.mesh].primitives[0];

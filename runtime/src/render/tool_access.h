@@ -27,7 +27,7 @@ std::vector<const pack::Pack*> Packs(const Renderer& renderer);
 const std::string& PackPath(const Renderer& renderer, size_t index);
 
 // A draw list of `material` on the first primitive of every instance of `scene`, lit by
-// `lights` (the main light: the first directional one), for a path's planner
+// `lights` (the main light: the brightest directional one, MainLight), for a path's planner
 // (PlanForwardRequests, PlanDeferredRequests) to plan from.
 void HarnessDrawList(const Scene& scene,
                      const MaterialInstance& material,
