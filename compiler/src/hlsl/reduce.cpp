@@ -1,99 +1,91 @@
 #include "hlsl/reduce.h"
 
 #include <algorithm>
-#include <cctype>
-#include <set>
-#include <vector>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
 
 #include "hlsl/identifier.h"
 
 namespace kiln::hlsl {
 namespace {
 
+// A top-level declaration or function definition: its byte range and the words it uses.
 struct Item {
-    size_t begin = 0, end = 0;  // byte range in the text
+    size_t begin = 0, end = 0;
+    size_t first_word = 0, end_word = 0;  // its words: Split::words[first_word, end_word)
     bool is_function = false;
-    std::string name;              // function name
-    std::set<std::string> idents;  // identifiers used (for functions: excluding its name)
+    std::string_view name;  // a function's name
 };
 
-// Marks the bytes of directive lines (first non-blank character '#').
-std::vector<bool> DirectiveMask(const std::string& s) {
-    std::vector<bool> mask(s.size(), false);
-    size_t i = 0;
-    while (i < s.size()) {
-        size_t j = i;
-        while (j < s.size() && (s[j] == ' ' || s[j] == '\t'))
-            ++j;
-        size_t eol = s.find('\n', i);
-        if (eol == std::string::npos)
-            eol = s.size();
-        if (j < s.size() && s[j] == '#') {
-            for (size_t k = i; k < eol; ++k)
-                mask[k] = true;
-        }
-        i = eol + 1;
-    }
-    return mask;
+struct Split {
+    std::vector<Item> items;
+    // Identifiers each item uses, and the identifier-like strings it holds: a hull shader's
+    // [patchconstantfunc("PatchConstants")] is the function's only reference.
+    std::vector<std::string_view> words;
+    // Function items by name (overloads share one entry); `reached` is per entry point.
+    struct Named {
+        std::vector<uint32_t> items;
+        bool reached = false;
+    };
+    std::unordered_map<std::string_view, Named> functions;
+};
+
+bool IsTypeDeclaration(std::string_view w) {
+    return w == "struct" || w == "cbuffer" || w == "tbuffer" || w == "class" || w == "interface" ||
+           w == "namespace" || w == "typedef";
 }
 
-std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& directive) {
-    std::vector<Item> items;
+// The identifier inside a string token, or empty when the string holds anything else.
+std::string_view StringWord(std::string_view t) {
+    std::string_view inside = t.substr(1);
+    if (!inside.empty() && inside.back() == '"')
+        inside.remove_suffix(1);
+    if (inside.empty() || !IdentStart(inside[0]) ||
+        !std::all_of(inside.begin(), inside.end(), IdentChar))
+        return {};
+    return inside;
+}
+
+// Splits the tokens into top-level items: a function ends at the `}` closing its body, a
+// cbuffer, tbuffer or namespace at its `}`, anything else at a `;` outside brackets.
+Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
+    const std::string_view s(text);
+    Split out;
     Item cur;
     bool open = false;
     int depth = 0;           // {} () [] nesting
     bool saw_paren = false;  // a '(' at depth 0 before the first '{'
     bool saw_brace = false;
     bool type_decl = false;  // struct/cbuffer/...: not a function
-    std::string last_ident, first_word;
-    for (size_t i = 0; i < s.size(); ++i) {
-        if (directive[i])
-            continue;
-        const char c = s[i];
-        if (std::isspace(static_cast<unsigned char>(c)))
-            continue;
+    std::string_view last_ident, first_word;
+    for (const Token& t : tok) {
+        const std::string_view word = s.substr(t.begin, t.end - t.begin);
         if (!open) {
             cur = Item{};
-            cur.begin = i;
+            cur.begin = t.begin;
+            cur.first_word = out.words.size();
             open = true;
             saw_paren = saw_brace = type_decl = false;
-            last_ident.clear();
-            first_word.clear();
+            last_ident = first_word = {};
         }
-        if (IdentStart(c)) {
-            size_t j = i;
-            while (j < s.size() && IdentChar(s[j]))
-                ++j;
-            std::string word = s.substr(i, j - i);
+        if (t.ident) {
             if (first_word.empty()) {
                 first_word = word;
-                type_decl = word == "struct" || word == "cbuffer" || word == "tbuffer" ||
-                            word == "class" || word == "interface" || word == "namespace" ||
-                            word == "typedef";
+                type_decl = IsTypeDeclaration(word);
             }
-            cur.idents.insert(word);
+            out.words.push_back(word);
             last_ident = word;
-            i = j - 1;
             continue;
         }
-        if (std::isdigit(static_cast<unsigned char>(c))) {
-            while (i + 1 < s.size() && (IdentChar(s[i + 1]) || s[i + 1] == '.'))
-                ++i;
+        if (word[0] == '"') {
+            if (const std::string_view w = StringWord(word); !w.empty())
+                out.words.push_back(w);
             continue;
         }
-        if (c == '"') {
-            const size_t start = i + 1;
-            while (i + 1 < s.size() && s[i + 1] != '"' && s[i + 1] != '\n')
-                ++i;
-            // A string naming a function keeps it: a hull shader's
-            // [patchconstantfunc("PatchConstants")] is its only reference.
-            const std::string word = s.substr(start, i + 1 - start);
-            if (!word.empty() && IdentStart(word[0]) &&
-                std::all_of(word.begin(), word.end(), IdentChar))
-                cur.idents.insert(word);
-            ++i;
-            continue;
-        }
+        if (word.size() != 1)
+            continue;  // a number or a multi-character operator
+        const char c = word[0];
         if (c == '(' && depth == 0 && !saw_brace && !saw_paren) {
             saw_paren = true;
             cur.name = last_ident;
@@ -110,87 +102,126 @@ std::vector<Item> SplitItems(const std::string& s, const std::vector<bool>& dire
             ends_block && type_decl &&
             (first_word == "cbuffer" || first_word == "tbuffer" || first_word == "namespace");
         if ((c == ';' && depth == 0) || is_function_end || cbuffer_end) {
-            cur.end = i + 1;
+            cur.end = t.end;
+            cur.end_word = out.words.size();
             cur.is_function = is_function_end;
-            if (cur.is_function)
-                cur.idents.erase(cur.name);
-            items.push_back(std::move(cur));
+            out.items.push_back(cur);
             open = false;
         }
     }
     if (open) {
-        cur.end = s.size();
-        items.push_back(std::move(cur));
+        cur.end = text.size();
+        cur.end_word = out.words.size();
+        out.items.push_back(cur);
     }
-    return items;
+    for (size_t i = 0; i < out.items.size(); ++i) {
+        if (out.items[i].is_function)
+            out.functions[out.items[i].name].items.push_back(static_cast<uint32_t>(i));
+    }
+    return out;
+}
+
+// Which items the entry point keeps: every declaration, and the functions named by a word of a
+// kept item or by the entry point, transitively (a worklist over names).
+std::vector<char> Reachable(Split& split, const std::string& entry_point) {
+    for (auto& [name, named] : split.functions)
+        named.reached = false;
+    std::vector<char> keep(split.items.size(), 0);
+    std::vector<uint32_t> work;
+    auto reach = [&](std::string_view word) {
+        const auto it = split.functions.find(word);
+        if (it == split.functions.end() || it->second.reached)
+            return;
+        it->second.reached = true;
+        work.insert(work.end(), it->second.items.begin(), it->second.items.end());
+    };
+    auto reach_words = [&](const Item& item) {
+        for (size_t w = item.first_word; w < item.end_word; ++w)
+            reach(split.words[w]);
+    };
+    reach(entry_point);
+    for (size_t i = 0; i < split.items.size(); ++i) {
+        if (!split.items[i].is_function) {
+            keep[i] = 1;
+            reach_words(split.items[i]);
+        }
+    }
+    while (!work.empty()) {
+        const uint32_t i = work.back();
+        work.pop_back();
+        keep[i] = 1;
+        reach_words(split.items[i]);
+    }
+    return keep;
+}
+
+// A line whose first character after spaces and tabs is '#'.
+bool IsDirectiveLine(std::string_view line) {
+    const size_t j = line.find_first_not_of(" \t");
+    return j != std::string_view::npos && line[j] == '#';
+}
+
+// The text without the items not kept (their newlines stay) and with `#pragma` lines blanked;
+// every other directive line is kept, inside a dropped function too.
+std::string Assemble(const std::string& text, const Split& split, const std::vector<char>& keep) {
+    std::vector<std::pair<size_t, size_t>> dropped;
+    for (size_t i = 0; i < split.items.size(); ++i) {
+        if (!keep[i])
+            dropped.emplace_back(split.items[i].begin, split.items[i].end);
+    }
+    std::string out;
+    out.reserve(text.size());
+    size_t r = 0;  // the first dropped range that may reach past the line's start
+    for (size_t i = 0; i < text.size();) {
+        size_t eol = text.find('\n', i);
+        if (eol == std::string::npos)
+            eol = text.size();
+        const std::string_view line(text.data() + i, eol - i);
+        if (IsDirectiveLine(line)) {
+            if (line.substr(line.find('#') + 1).find("pragma") != 0)
+                out.append(line);
+        } else {
+            for (size_t p = i; p < eol;) {
+                while (r < dropped.size() && dropped[r].second <= p)
+                    ++r;
+                if (r < dropped.size() && dropped[r].first < eol) {
+                    const size_t b = std::max(dropped[r].first, p);
+                    out.append(text, p, b - p);
+                    p = std::min(dropped[r].second, eol);
+                } else {
+                    out.append(text, p, eol - p);
+                    p = eol;
+                }
+            }
+        }
+        if (eol < text.size())
+            out += '\n';
+        i = eol + 1;
+    }
+    return out;
 }
 
 }  // namespace
 
-Reduced ReduceToEntryPoint(const std::string& text, const std::string& entry_point) {
-    const std::vector<bool> directive = DirectiveMask(text);
-    std::vector<Item> items = SplitItems(text, directive);
-    Reduced out;
-    const bool entry_found = std::any_of(items.begin(), items.end(), [&](const Item& it) {
-        return it.is_function && it.name == entry_point;
-    });
-    if (!entry_found) {
-        for (const Item& it : items) {
-            if (it.is_function)
-                out.functions_if_entry_missing.push_back(it.name);
+std::vector<Reduced> ReduceToEntryPoints(const std::string& text,
+                                         const std::vector<Token>& tokens,
+                                         const std::vector<std::string>& entry_points) {
+    Split split = SplitItems(text, tokens);
+    std::vector<Reduced> out(entry_points.size());
+    for (size_t e = 0; e < entry_points.size(); ++e) {
+        if (!split.functions.count(entry_points[e])) {
+            for (const Item& it : split.items) {
+                if (it.is_function)
+                    out[e].functions_if_entry_missing.emplace_back(it.name);
+            }
         }
-    }
-
-    std::set<std::string> reachable = {entry_point};
-    for (const Item& it : items) {
-        if (!it.is_function)
-            reachable.insert(it.idents.begin(), it.idents.end());
-    }
-    std::vector<bool> keep(items.size(), false);
-    for (size_t i = 0; i < items.size(); ++i)
-        keep[i] = !items[i].is_function;
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (size_t i = 0; i < items.size(); ++i) {
-            if (keep[i] || !reachable.count(items[i].name))
-                continue;
-            keep[i] = true;
-            changed = true;
-            reachable.insert(items[i].idents.begin(), items[i].idents.end());
-        }
-    }
-
-    std::vector<bool> drop(text.size(), false);
-    for (size_t i = 0; i < items.size(); ++i) {
-        if (keep[i])
-            continue;
-        for (size_t k = items[i].begin; k < items[i].end; ++k)
-            drop[k] = true;
-    }
-    out.text.reserve(text.size());
-    size_t line_begin = 0;
-    for (size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (i == line_begin && directive[i]) {
-            size_t eol = text.find('\n', i);
-            if (eol == std::string::npos)
-                eol = text.size();
-            std::string_view line(text.data() + i, eol - i);
-            const size_t hash = line.find('#');
-            if (line.substr(hash + 1).find("pragma") != 0)
-                out.text.append(line);
-            i = eol - 1;
-            continue;
-        }
-        if (c == '\n') {
-            out.text += '\n';
-            line_begin = i + 1;
-            continue;
-        }
-        if (!drop[i])
-            out.text += c;
+        out[e].text = Assemble(text, split, Reachable(split, entry_points[e]));
     }
     return out;
+}
+
+Reduced ReduceToEntryPoint(const std::string& text, const std::string& entry_point) {
+    return std::move(ReduceToEntryPoints(text, Tokenize(text), {entry_point}).front());
 }
 
 }  // namespace kiln::hlsl

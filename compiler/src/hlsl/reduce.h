@@ -4,11 +4,16 @@
 // newlines so line numbers hold; every other declaration (structs, globals, cbuffers, textures)
 // is kept, so uniform block layouts match between the stages of a variant. `#pragma` lines are
 // blanked (they were read from the .shader already) and `#line` directives kept.
+//
+// It reads the tokens the rewrite (rewrite.h) made of the same text, so the text is walked once
+// for both; a variant's two entry points are reduced from one split of the text into items.
 #ifndef KILN_HLSL_REDUCE_H_
 #define KILN_HLSL_REDUCE_H_
 
 #include <string>
 #include <vector>
+
+#include "hlsl/tokens.h"
 
 namespace kiln::hlsl {
 
@@ -20,6 +25,12 @@ struct Reduced {
 };
 
 Reduced ReduceToEntryPoint(const std::string& preprocessed, const std::string& entry_point);
+
+// The same for each entry point, from `tokens` = Tokenize(preprocessed) (only their byte ranges
+// and identifier flags are read).
+std::vector<Reduced> ReduceToEntryPoints(const std::string& preprocessed,
+                                         const std::vector<Token>& tokens,
+                                         const std::vector<std::string>& entry_points);
 
 }  // namespace kiln::hlsl
 

@@ -242,7 +242,10 @@ RewriteResult RewriteForGlslang(const std::string& preprocessed) {
         if (stale)
             text = ApplyEdits(text, std::move(more));
     }
+    if (stale)
+        tok = Tokenize(text);
     r.text = std::move(text);
+    r.tokens = std::move(tok);
     return r;
 }
 

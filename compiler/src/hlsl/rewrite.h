@@ -47,6 +47,9 @@ struct RewriteResult {
     size_t private_globals = 0;         // globals given a private copy because the text writes them
     size_t truncated_arguments = 0;     // vector arguments to scalar parameters
     std::vector<RewriteWarning> warnings;  // Unity's warnings for what was rewritten (X3206)
+    // Tokenize(text), for the reduction (reduce.h), which then needs no walk of its own. Read
+    // their byte ranges only: a move of `text` may move the bytes their views point to.
+    std::vector<Token> tokens;
     bool changed() const {
         return one_vector_swizzles + matrix_swizzles + infinity_literals + min_precision_matrices +
                    vpos_semantics + switch_selectors + private_globals + truncated_arguments >

@@ -22,12 +22,13 @@ namespace {
 struct Param {
     bool scalar_in = false;
     bool has_default = false;
-    std::string name;
+    std::string_view name;
 };
 
 struct Candidate {
     std::vector<Param> params;
-    std::string signature;  // parameter tokens, to count a prototype and its definition once
+    std::string_view signature;  // parameter tokens, to count a prototype and its definition once
+    bool any_scalar_in = false;  // a call can need the rewrite only then
 };
 
 bool IsScalarType(std::string_view t) {
@@ -75,7 +76,7 @@ Candidate ParseCandidate(const std::string& text,
                          size_t open,
                          size_t close) {
     Candidate c;
-    c.signature = text.substr(tok[open].begin, tok[close].end - tok[open].begin);
+    c.signature = std::string_view(text).substr(tok[open].begin, tok[close].end - tok[open].begin);
     for (const auto& [b, e] : Split(tok, open, close)) {
         Param p;
         bool in = true;
@@ -86,9 +87,10 @@ Candidate ParseCandidate(const std::string& text,
         }
         p.scalar_in = in && k < e && IsScalarType(tok[k].text);
         if (k + 1 < e && tok[k + 1].ident)
-            p.name = std::string(tok[k + 1].text);
+            p.name = tok[k + 1].text;
         for (size_t m = k; m < e; ++m)
             p.has_default = p.has_default || tok[m].text == "=";
+        c.any_scalar_in = c.any_scalar_in || p.scalar_in;
         c.params.push_back(p);
     }
     return c;
@@ -195,6 +197,9 @@ size_t TruncatedArguments(const std::string& text,
         const size_t close = MatchForward(tok, k + 1);
         if (close == SIZE_MAX)
             break;
+        if (std::none_of(it->second.begin(), it->second.end(),
+                         [](const Candidate& c) { return c.any_scalar_in; }))
+            continue;  // no scalar parameter to pass a vector to
         const auto args = Split(tok, k + 1, close);
         const Candidate* only = nullptr;
         size_t fitting = 0;
@@ -232,8 +237,8 @@ size_t TruncatedArguments(const std::string& text,
                 w.token += tok[m].text;
             }
             w.message = "implicit truncation of vector type: '" + w.token + "' is a '" + vector +
-                        "' passed to scalar parameter '" + only->params[a].name + "' of '" +
-                        std::string(tok[k].text) +
+                        "' passed to scalar parameter '" + std::string(only->params[a].name) +
+                        "' of '" + std::string(tok[k].text) +
                         "', so its first component is used, as Unity's compiler does (X3206)";
             warnings.push_back(std::move(w));
             ++count;

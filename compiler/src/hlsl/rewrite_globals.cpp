@@ -11,6 +11,7 @@
 #include <regex>
 #include <set>
 #include <string_view>
+#include <unordered_map>
 
 #include "hlsl/rewrite_steps.h"
 
@@ -30,7 +31,7 @@ struct Global {
 struct State {
     const std::string& text;
     const std::vector<Token>& tok;
-    std::map<std::string_view, Global> globals;
+    std::unordered_map<std::string_view, Global> globals;
     std::vector<std::pair<size_t, size_t>> declarations_only;  // token ranges not renamed
     std::map<std::string_view, std::set<size_t>> out_params;   // function -> out/inout indices
     std::set<size_t> declaration_tokens;

@@ -2,18 +2,50 @@
 
 #include <cctype>
 #include <cstdlib>
-#include <regex>
 #include <set>
 
 #include "hlsl/identifier.h"
 
 namespace kiln::hlsl {
 
+namespace {
+
+// The length of the operator at s[i]: 3 for <<= and >>=, 2 for the two-character operators
+// (== != <= >= += -= *= /= %= &= |= ^= ++ -- && || << >> :: ->), else 1.
+size_t OperatorLength(const std::string& s, size_t i) {
+    const char c = s[i];
+    const char d = i + 1 < s.size() ? s[i + 1] : '\0';
+    switch (c) {
+        case '<':
+        case '>':
+            if (d == c)
+                return i + 2 < s.size() && s[i + 2] == '=' ? 3 : 2;
+            return d == '=' ? 2 : 1;
+        case '=':
+        case '!':
+        case '*':
+        case '/':
+        case '%':
+        case '^':
+            return d == '=' ? 2 : 1;
+        case '+':
+        case '&':
+        case '|':
+            return d == '=' || d == c ? 2 : 1;
+        case '-':
+            return d == '=' || d == '-' || d == '>' ? 2 : 1;
+        case ':':
+            return d == ':' ? 2 : 1;
+        default:
+            return 1;
+    }
+}
+
+}  // namespace
+
 std::vector<Token> Tokenize(const std::string& s) {
-    static const char* const kMulti[] = {"<<=", ">>=", "==", "!=", "<=", ">=", "+=", "-=",
-                                         "*=",  "/=",  "%=", "&=", "|=", "^=", "++", "--",
-                                         "&&",  "||",  "<<", ">>", "::", "->"};
     std::vector<Token> out;
+    out.reserve(s.size() / 4);
     bool line_start = true;
     for (size_t i = 0; i < s.size();) {
         const char c = s[i];
@@ -27,8 +59,8 @@ std::vector<Token> Tokenize(const std::string& s) {
             continue;
         }
         if (line_start && c == '#') {
-            while (i < s.size() && s[i] != '\n')
-                ++i;
+            const size_t eol = s.find('\n', i);
+            i = eol == std::string::npos ? s.size() : eol;
             continue;
         }
         line_start = false;
@@ -53,15 +85,7 @@ std::vector<Token> Tokenize(const std::string& s) {
             if (i < s.size() && s[i] == '"')
                 ++i;
         } else {
-            size_t len = 1;
-            for (const char* m : kMulti) {
-                const size_t n = std::char_traits<char>::length(m);
-                if (s.compare(i, n, m) == 0) {
-                    len = n;
-                    break;
-                }
-            }
-            i += len;
+            i += OperatorLength(s, i);
         }
         t.end = i;
         t.text = std::string_view(s).substr(t.begin, t.end - t.begin);
@@ -77,15 +101,24 @@ bool IsAssignment(std::string_view op) {
 }
 
 int NumericShape(std::string_view t) {
-    static const std::regex kType(
-        "(float|half|fixed|int|uint|bool|double|min16float|min10float|min16int|min12int|"
-        "min16uint)([1-4](x[1-4])?)?");
-    std::match_results<std::string_view::const_iterator> m;
-    if (!std::regex_match(t.begin(), t.end(), m, kType))
-        return 0;
-    if (m[3].matched)
-        return 5;
-    return m[2].matched ? m[2].str()[0] - '0' : 1;
+    // (float|half|fixed|int|uint|bool|double|min16float|min10float|min16int|min12int|min16uint)
+    // then nothing (a scalar), a size 1-4 (a vector) or RxC with R, C in 1-4 (a matrix).
+    static constexpr std::string_view kBases[] = {
+        "float",  "half",       "fixed",      "int",      "uint",     "bool",
+        "double", "min16float", "min10float", "min16int", "min12int", "min16uint"};
+    auto size = [](char c) { return c >= '1' && c <= '4'; };
+    for (const std::string_view base : kBases) {
+        if (t.substr(0, base.size()) != base)
+            continue;
+        const std::string_view rest = t.substr(base.size());
+        if (rest.empty())
+            return 1;
+        if (rest.size() == 1 && size(rest[0]))
+            return rest[0] - '0';
+        if (rest.size() == 3 && size(rest[0]) && rest[1] == 'x' && size(rest[2]))
+            return 5;
+    }
+    return 0;
 }
 
 bool IsStatementWord(std::string_view t) {

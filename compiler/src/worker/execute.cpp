@@ -50,15 +50,18 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
         resp.info_log += "WARNING: " + w.file + ":" + std::to_string(w.line) + ": '" + w.token +
                          "' : " + w.message + "\n";
     }
-    hlsl::Reduced reduced = hlsl::ReduceToEntryPoint(rewritten.text, r.entry);
-    if (!r.second_entry.empty() && StageFree(r, context, includer)) {
-        hlsl::Reduced second = hlsl::ReduceToEntryPoint(rewritten.text, r.second_entry);
+    std::vector<std::string> entries = {r.entry};
+    if (!r.second_entry.empty() && StageFree(r, context, includer))
+        entries.push_back(r.second_entry);
+    std::vector<hlsl::Reduced> reduced =
+        hlsl::ReduceToEntryPoints(rewritten.text, rewritten.tokens, entries);
+    if (reduced.size() == 2) {
         resp.second_ok = true;
-        resp.second_text = std::move(second.text);
-        resp.second_functions = std::move(second.functions_if_entry_missing);
+        resp.second_text = std::move(reduced[1].text);
+        resp.second_functions = std::move(reduced[1].functions_if_entry_missing);
     }
-    resp.text = std::move(reduced.text);
-    resp.functions = std::move(reduced.functions_if_entry_missing);
+    resp.text = std::move(reduced[0].text);
+    resp.functions = std::move(reduced[0].functions_if_entry_missing);
     if (rewritten.changed())
         resp.rewritten = std::move(rewritten.text);
     return resp;

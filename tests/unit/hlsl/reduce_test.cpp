@@ -60,5 +60,38 @@ TEST(Reduce, AMissingEntryPointListsTheFunctionsThatExist) {
     EXPECT_EQ(r.functions_if_entry_missing, (std::vector<std::string>{"vert", "frag"}));
 }
 
+// The worker reduces a variant's two stages from the rewrite's tokens, splitting the text once:
+// the same texts as reducing each alone.
+TEST(Reduce, BothEntryPointsFromOneSplitMatchEachAlone) {
+    const std::string text =
+        "#line 1 \"a.shader\"\n"
+        "struct V { float4 p : POSITION; };\n"
+        "float Patch() { return 1; }\n"
+        "float shared(float x) { return x; }\n"
+        "  #pragma fragment frag\n"
+        "[patchconstantfunc(\"Patch\")] float4 vert(V v) : SV_POSITION { return v.p * shared(2); "
+        "}\n"
+        "float onlyFrag() {\n#line 40 \"b.cginc\"\n return 3; }\n"
+        "float4 frag() : SV_Target { return onlyFrag() + shared(1); }";
+    const std::vector<Reduced> both = ReduceToEntryPoints(text, Tokenize(text), {"vert", "frag"});
+    ASSERT_EQ(both.size(), 2u);
+    EXPECT_EQ(both[0].text, ReduceToEntryPoint(text, "vert").text);
+    EXPECT_EQ(both[1].text, ReduceToEntryPoint(text, "frag").text);
+    // A dropped function keeps its #line directive and its newlines; the pragma line is blank;
+    // the string naming Patch keeps it; the last line has no newline to keep.
+    EXPECT_EQ(both[0].text,
+              "#line 1 \"a.shader\"\n"
+              "struct V { float4 p : POSITION; };\n"
+              "float Patch() { return 1; }\n"
+              "float shared(float x) { return x; }\n"
+              "\n"
+              "[patchconstantfunc(\"Patch\")] float4 vert(V v) : SV_POSITION { return v.p * "
+              "shared(2); }\n"
+              "\n#line 40 \"b.cginc\"\n\n"
+              "");
+    EXPECT_NE(both[1].text.find("onlyFrag() {"), std::string::npos);
+    EXPECT_EQ(both[1].text.find("Patch() {"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace kiln::hlsl

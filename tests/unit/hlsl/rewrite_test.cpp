@@ -184,5 +184,29 @@ TEST(Rewrite, ASwitchSelectorIsConvertedToIntAsFxcDoes) {
     EXPECT_EQ(both.text, "void h(float4x4 M) { switch ((int)(float2((M)._11, (M)._22).x)) {} }\n");
 }
 
+TEST(Tokens, OperatorsAreTheLongestOfHlsls) {
+    const std::string text = "a<<=b>>c->d::e&&f||g++<=h!=i-=j--k<l\n# define X 1\n.5e-3 \"s\"";
+    std::vector<std::string> got;
+    for (const Token& t : Tokenize(text))
+        got.emplace_back(t.text);
+    EXPECT_EQ(got,
+              (std::vector<std::string>{"a",  "<<=", "b",  ">>", "c",  "->", "d",     "::",   "e",
+                                        "&&", "f",   "||", "g",  "++", "<=", "h",     "!=",   "i",
+                                        "-=", "j",   "--", "k",  "<",  "l",  ".5e-3", "\"s\""}));
+}
+
+TEST(Tokens, NumericShapesOfTypeNames) {
+    EXPECT_EQ(NumericShape("float"), 1);
+    EXPECT_EQ(NumericShape("half1"), 1);
+    EXPECT_EQ(NumericShape("min16float3"), 3);
+    EXPECT_EQ(NumericShape("uint4x4"), 5);
+    EXPECT_EQ(NumericShape("min12int2x3"), 5);
+    EXPECT_EQ(NumericShape("float5"), 0);
+    EXPECT_EQ(NumericShape("float4x"), 0);
+    EXPECT_EQ(NumericShape("floats"), 0);
+    EXPECT_EQ(NumericShape("sampler2D"), 0);
+    EXPECT_EQ(NumericShape(""), 0);
+}
+
 }  // namespace
 }  // namespace kiln::hlsl
