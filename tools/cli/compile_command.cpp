@@ -59,6 +59,10 @@ void PrintStats(const CompileStats& s, bool json, FILE* to) {
                                             {"finish", ms.finish},
                                             {"emit", ms.emit},
                                             {"total", ms.total}}},
+                                          {"work_ms",
+                                           {{"preprocess", s.work_ms.preprocess},
+                                            {"compile", s.work_ms.compile},
+                                            {"finish", s.work_ms.finish}}},
                                           {"peak_rss_kib", s.peak_rss_kib},
                                           {"peak_worker_rss_kib", s.peak_worker_rss_kib}};
         std::fprintf(to, "%s\n", j.dump(2).c_str());
@@ -81,6 +85,8 @@ void PrintStats(const CompileStats& s, bool json, FILE* to) {
         "ms: load %.1f, expand %.1f, preprocess %.1f, compile %.1f, finish %.1f, emit %.1f, total "
         "%.1f\n",
         ms.load, ms.expand, ms.preprocess, ms.compile, ms.finish, ms.emit, ms.total);
+    std::fprintf(to, "work ms (all jobs): preprocess %.1f, compile %.1f, finish %.1f\n",
+                 s.work_ms.preprocess, s.work_ms.compile, s.work_ms.finish);
     std::fprintf(to, "peak memory: kiln %llu KiB, largest worker %llu KiB\n",
                  static_cast<unsigned long long>(s.peak_rss_kib),
                  static_cast<unsigned long long>(s.peak_worker_rss_kib));

@@ -123,6 +123,14 @@ struct CompileStats {
     struct Phases {
         double load = 0, expand = 0, preprocess = 0, compile = 0, finish = 0, emit = 0, total = 0;
     } ms;
+    // Milliseconds inside worker requests of each kind, summed over the parallel jobs:
+    // preprocessing (glslang's preprocessor, Kiln's rewrites and reduction), compiling (glslang
+    // and SPIRV-Tools on the unique programs; validating cache entries), finishing (strip and
+    // spirv-val). A program compiles as soon as it is preprocessed, so the phases of `ms`
+    // overlap; these say where the work went.
+    struct Work {
+        double preprocess = 0, compile = 0, finish = 0;
+    } work_ms;
     // Peak resident memory in KiB of this process and of the largest worker process (0 with
     // --in-process), from getrusage.
     uint64_t peak_rss_kib = 0, peak_worker_rss_kib = 0;

@@ -186,6 +186,13 @@ CompileOutput Finish(CompileState& st,
     st.exec = nullptr;
     exec.reset();
     whole.Into(out.stats.ms.total);
+    auto ms_of = [&st](worker::RequestKind k) {
+        return double(st.work_ns[size_t(k)].load()) / 1e6;
+    };
+    out.stats.work_ms = {
+        ms_of(worker::RequestKind::kPreprocess),
+        ms_of(worker::RequestKind::kCompile) + ms_of(worker::RequestKind::kValidate),
+        ms_of(worker::RequestKind::kFinish)};
     RecordPeakMemory(out.stats);
     out.files = st.files.Files();
     for (const driver::GeneratedSource& g : st.generated)
@@ -264,7 +271,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
                 return Finish(st, out, exec, whole);
             }
         }
-        driver::PreprocessAndDedup(st, out.stats);
+        driver::PreprocessAndDedup(st, out.stats, mode != Mode::kAnalyze && !options.keep_programs);
         preprocessed = true;
         if (options.keep_programs)
             KeepPrograms(st, out);

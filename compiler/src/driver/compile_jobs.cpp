@@ -90,6 +90,8 @@ std::vector<frontend::GlslangMessage> OwnMessages(const std::string& reduced_log
     return own;
 }
 
+}  // namespace
+
 // One job through glslang and SPIRV-Tools in a worker; its diagnostics go to job.diags.
 void CompileJob(CompileState& st, Job& job) {
     const StageTask& task = st.tasks[job.first_task];
@@ -111,7 +113,7 @@ void CompileJob(CompileState& st, Job& job) {
         // compile the assembled source once more for exact diagnostics (or, when a rewrite was
         // needed, the rewritten text, whose lines are right).
         const std::string reduced_log = out.info_log;
-        request.source = task.rewritten.empty() ? task.source : task.rewritten;
+        request.source = task.rewritten.empty() ? SourceOf(st, task) : task.rewritten;
         request.optimize = false;
         o = st.exec->Run(request);
         if (auto failure = OutcomeDiagnostic(st, task, o)) {
@@ -144,8 +146,6 @@ void CompileJob(CompileState& st, Job& job) {
     job.words = std::move(o.response.words);
     job.ok = true;
 }
-
-}  // namespace
 
 // A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
 // the compile that follows replaces it.
@@ -220,8 +220,8 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
         st.jobs.size(), st.options.jobs,
         [&](size_t j) {
             Job& job = st.jobs[j];
-            if (!st.tasks[job.first_task].preprocess_ok)
-                return;  // reported by PreprocessAndDedup
+            if (!st.tasks[job.first_task].preprocess_ok || job.done)
+                return;  // reported by PreprocessAndDedup, or compiled there
             if (job.ok) {
                 ++hits;  // taken from the cache with the direct mode's manifest
                 return;
@@ -243,8 +243,8 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
             }
         },
         [&](size_t done) { Progress(st.options, "compiling", done, st.jobs.size()); });
-    stats.glslang_compiles = compiles;
-    stats.cache_hits = hits;
+    stats.glslang_compiles += compiles;
+    stats.cache_hits += hits;
 }
 
 }  // namespace kiln::driver

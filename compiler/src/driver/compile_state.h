@@ -2,6 +2,8 @@
 #ifndef KILN_DRIVER_COMPILE_STATE_H_
 #define KILN_DRIVER_COMPILE_STATE_H_
 
+#include <array>
+#include <atomic>
 #include <deque>
 #include <map>
 #include <memory>
@@ -59,7 +61,6 @@ struct StageTask {
     size_t pass = 0;
     pack::VariantKey key;
     pack::Stage stage = pack::Stage::kVertex;
-    std::string source;     // assembled
     std::string reduced;    // preprocessed, rewritten (hlsl/rewrite.h), reduced to the entry point
     std::string rewritten;  // preprocessed and rewritten, kept only when a rewrite applied
     bool preprocess_ok = false;
@@ -79,6 +80,7 @@ struct Job {
     std::string cache_key;
     bool ok = false;
     bool from_cache = false;
+    bool done = false;  // compiled (or taken from the cache) as soon as it was preprocessed
     std::vector<uint32_t> words;    // optimized, before bindings
     std::vector<Diagnostic> diags;  // glslang errors/warnings, or internal errors
 };
@@ -114,6 +116,8 @@ struct CompileState {
     // The cache's direct mode (null without a cache) and each task's direct key.
     std::shared_ptr<DirectCache> direct;
     std::vector<std::string> direct_keys;
+    // Nanoseconds inside worker requests, by worker::RequestKind (CompileStats::work_ms).
+    std::array<std::atomic<uint64_t>, 8> work_ns{};
 };
 
 // The entry point of a task's stage.
@@ -143,6 +147,9 @@ inline void Progress(const CompileOptions& o, const char* phase, size_t done, si
 std::optional<PassUnit> ReadPass(CompileState& st, size_t shader, size_t flat);
 void ExpandPasses(CompileState& st);
 void CreateTasks(CompileState& st);
+// A task's assembled source (hlsl/assemble.h), built each time it is needed: the sources of all
+// tasks at once would be most of a large compile's memory.
+std::string SourceOf(const CompileState& st, const StageTask& t);
 
 // Phase 2 of a stripped compile or a skeleton pack (requests.cpp): every pass of a kept shader
 // expands exactly its requested variants (none for a skeleton).
@@ -156,7 +163,12 @@ void FillStripReport(const CompileState& st, CompileOutput& out);
 // then the tasks deduplicated by result key into jobs; jobs whose SPIR-V the cache holds are
 // loaded (validated). DedupKnown: only the dedup, for a pack taken whole from the cache.
 bool LookUpDirect(CompileState& st);
-void PreprocessAndDedup(CompileState& st, CompileStats& stats);
+// With `compile`, each new program is compiled (or taken from the cache) by the thread that
+// preprocessed it, right away, and its texts dropped when the compile said nothing: texts never
+// wait for a whole phase, so memory does not grow with the unique programs. The job's outcome is
+// the one CompileJobs would give: a program with messages is compiled again from the first task
+// of its key when another task got there first (positions in messages are that task's).
+void PreprocessAndDedup(CompileState& st, CompileStats& stats, bool compile);
 void DedupKnown(CompileState& st, CompileStats& stats);
 
 // The whole pack in the cache (pack_cache.cpp): its key (empty unless every task's result key is
@@ -171,6 +183,8 @@ void StoreCachedPack(const CompileState& st,
 
 // Phase 4, in compile_jobs.cpp: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats);
+// One job through glslang and SPIRV-Tools, from its first task's texts; diagnostics to job.diags.
+void CompileJob(CompileState& st, Job& job);
 // A cache entry, once spirv-val accepts it (a damaged or forged entry is a miss).
 std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
                                                 const Cache& cache,

@@ -113,50 +113,63 @@ void ExpandPasses(CompileState& st) {
     CheckRequestedKeywords(st);
 }
 
-// One StageTask per (variant, stage) of every pass: its assembled source.
+namespace {
+
+// What a task's stage program is assembled from.
+hlsl::AssembleInput InputOf(const CompileState& st,
+                            size_t p,
+                            pack::VariantKey key,
+                            pack::Stage stage) {
+    const PassUnit& pu = st.passes[p];
+    const ShaderUnit& unit = st.shaders[pu.shader];
+    const FlatPass& fp = unit.passes[pu.flat];
+    hlsl::AssembleInput in;
+    in.file_name = LineName((fp.source ? fp.source : unit.file)->path());
+    in.blocks = fp.blocks;
+    in.stage = stage;
+    in.shader_target = pu.pragmas.shader_target;
+    in.unity_version = st.options.unity_version;
+    in.precision = st.options.precision;
+    in.defines = st.options.defines;
+    in.undefines = st.options.undefines;
+    in.forced_includes = st.options.forced_includes;
+    in.light_mode = fp.light_mode;
+    // Unity's _vertex/_fragment keyword sets: the other stages (geometry, tessellation) see every
+    // keyword, as Unity compiles them.
+    const uint32_t skip_flag = stage == pack::Stage::kVertex     ? pack::kKeywordSetFragmentOnly
+                               : stage == pack::Stage::kFragment ? pack::kKeywordSetVertexOnly
+                                                                 : 0u;
+    for (size_t i = 0; i < pu.pragmas.sets.size(); ++i) {
+        const auto& set = pu.pragmas.sets[i];
+        const auto& layout = pu.expansion.layout[i];
+        const std::string& kw = set.keywords[key.Get(layout.shift, layout.bits)];
+        if (!kw.empty() && !(set.flags & skip_flag))
+            in.keywords.push_back(kw);
+    }
+    // Instancing needs shader model 3.5: Unity compiles the INSTANCING_ON variants of
+    // multi_compile_instancing for at least that target (UnityInstancing.cginc tests
+    // SHADER_TARGET >= 35).
+    if (std::find(in.keywords.begin(), in.keywords.end(), "INSTANCING_ON") != in.keywords.end())
+        in.shader_target = std::max(in.shader_target, 35);
+    return in;
+}
+
+}  // namespace
+
+std::string SourceOf(const CompileState& st, const StageTask& t) {
+    return hlsl::AssembleSource(InputOf(st, t.pass, t.key, t.stage));
+}
+
+// One StageTask per (variant, stage) of every pass; its source is assembled when needed.
 void CreateTasks(CompileState& st) {
     for (size_t p = 0; p < st.passes.size(); ++p) {
         PassUnit& pu = st.passes[p];
-        const ShaderUnit& unit = st.shaders[pu.shader];
-        const FlatPass& fp = unit.passes[pu.flat];
         for (pack::VariantKey key : pu.expansion.keys) {
             for (pack::Stage stage : pu.pragmas.Stages()) {
-                hlsl::AssembleInput in;
-                in.file_name = LineName((fp.source ? fp.source : unit.file)->path());
-                in.blocks = fp.blocks;
-                in.stage = stage;
-                in.shader_target = pu.pragmas.shader_target;
-                in.unity_version = st.options.unity_version;
-                in.precision = st.options.precision;
-                in.defines = st.options.defines;
-                in.undefines = st.options.undefines;
-                in.forced_includes = st.options.forced_includes;
-                in.light_mode = fp.light_mode;
-                // Unity's _vertex/_fragment keyword sets: the other stages (geometry,
-                // tessellation) see every keyword, as Unity compiles them.
-                const uint32_t skip_flag =
-                    stage == pack::Stage::kVertex     ? pack::kKeywordSetFragmentOnly
-                    : stage == pack::Stage::kFragment ? pack::kKeywordSetVertexOnly
-                                                      : 0u;
-                for (size_t i = 0; i < pu.pragmas.sets.size(); ++i) {
-                    const auto& set = pu.pragmas.sets[i];
-                    const auto& layout = pu.expansion.layout[i];
-                    const std::string& kw = set.keywords[key.Get(layout.shift, layout.bits)];
-                    if (!kw.empty() && !(set.flags & skip_flag))
-                        in.keywords.push_back(kw);
-                }
-                // Instancing needs shader model 3.5: Unity compiles the INSTANCING_ON variants of
-                // multi_compile_instancing for at least that target (UnityInstancing.cginc tests
-                // SHADER_TARGET >= 35).
-                if (std::find(in.keywords.begin(), in.keywords.end(), "INSTANCING_ON") !=
-                    in.keywords.end()) {
-                    in.shader_target = std::max(in.shader_target, 35);
-                }
                 StageTask task;
                 task.pass = p;
                 task.key = key;
                 task.stage = stage;
-                task.source = hlsl::AssembleSource(in);
                 pu.tasks.push_back(st.tasks.size());
                 st.tasks.push_back(std::move(task));
             }

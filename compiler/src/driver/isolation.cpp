@@ -1,5 +1,6 @@
 #include "driver/isolation.h"
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 
@@ -43,9 +44,26 @@ std::string StageOfPass(const CompileState& st, const StageTask& task) {
            unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label + "\"";
 }
 
-}  // namespace
+// Counts the time each request kind spends in the executor (CompileState::work_ns).
+class TimedExecutor : public worker::Executor {
+  public:
+    TimedExecutor(std::unique_ptr<worker::Executor> inner, std::array<std::atomic<uint64_t>, 8>& ns)
+        : inner_(std::move(inner)), ns_(ns) {}
+    worker::Outcome Run(const worker::Request& request) override {
+        const auto start = std::chrono::steady_clock::now();
+        worker::Outcome o = inner_->Run(request);
+        const auto spent = std::chrono::steady_clock::now() - start;
+        ns_[size_t(request.kind) % ns_.size()] +=
+            uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(spent).count());
+        return o;
+    }
 
-std::unique_ptr<worker::Executor> MakeExecutor(CompileState& st) {
+  private:
+    std::unique_ptr<worker::Executor> inner_;
+    std::array<std::atomic<uint64_t>, 8>& ns_;
+};
+
+std::unique_ptr<worker::Executor> MakeUntimedExecutor(CompileState& st) {
     const CompileOptions& o = st.options;
     if (o.isolation == Isolation::kInProcess)
         return worker::MakeInProcessExecutor(st.files);
@@ -65,6 +83,15 @@ std::unique_ptr<worker::Executor> MakeExecutor(CompileState& st) {
     pool.timeout_seconds = o.program_timeout_seconds;
     pool.memory_limit_bytes = o.program_memory_mib << 20;
     return worker::MakeWorkerPool(pool, st.files);
+}
+
+}  // namespace
+
+std::unique_ptr<worker::Executor> MakeExecutor(CompileState& st) {
+    std::unique_ptr<worker::Executor> inner = MakeUntimedExecutor(st);
+    if (!inner)
+        return nullptr;
+    return std::make_unique<TimedExecutor>(std::move(inner), st.work_ns);
 }
 
 hlsl::IncludePaths IncludePathsFor(const CompileOptions& o) {

@@ -24,8 +24,7 @@ std::string VariantName(const CompileState& st, size_t p, pack::VariantKey key) 
     const ShaderUnit& unit = st.shaders[pu.shader];
     return "shader \"" + unit.ast->name + "\" pass \"" + unit.passes[pu.flat].label +
            "\", variant " +
-           pack::JoinKeywords(
-               variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, key));
+           pack::JoinKeywords(variants::EnabledKeywords(pu.pragmas.sets, pu.expansion.layout, key));
 }
 
 const FinalModule& FinalFor(const CompileState& st, size_t p, size_t task) {
@@ -88,6 +87,8 @@ void FinishModules(CompileState& st) {
         fm.words = std::move(o.response.words);
         fm.ok = true;
     });
+    for (Job& job : st.jobs)
+        std::vector<uint32_t>().swap(job.words);  // every pass's final modules hold theirs
     for (size_t p = 0; p < st.passes.size(); ++p) {
         const PassUnit& pu = st.passes[p];
         const ShaderUnit& unit = st.shaders[pu.shader];

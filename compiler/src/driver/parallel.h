@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -25,10 +27,15 @@ inline void ParallelFor(size_t n,
                         const std::function<void(size_t)>& fn,
                         const std::function<void(size_t)>& done = {}) {
     std::atomic<size_t> next{0}, finished{0};
+    std::mutex mu;
+    std::condition_variable all_done;
     auto worker = [&] {
         for (size_t i = next++; i < n; i = next++) {
             fn(i);
-            ++finished;
+            if (++finished == n) {
+                std::lock_guard<std::mutex> lock(mu);
+                all_done.notify_all();
+            }
         }
     };
     const unsigned threads = static_cast<unsigned>(std::min<size_t>(ResolveJobs(jobs), n));
@@ -39,10 +46,16 @@ inline void ParallelFor(size_t n,
         worker();
     } else {
         std::thread last(worker);
+        // Progress every 50 ms, and no wait past the last item.
+        std::unique_lock<std::mutex> lock(mu);
         while (finished.load() < n) {
+            lock.unlock();
             done(finished.load());
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            lock.lock();
+            all_done.wait_for(lock, std::chrono::milliseconds(50),
+                              [&] { return finished.load() >= n; });
         }
+        lock.unlock();
         last.join();
         done(n);
     }

@@ -1,12 +1,14 @@
 // Phase 3 of the compile driver: every stage program preprocessed and reduced to its entry point
 // in the workers, unless the direct mode's manifest says what it gives and the compile cache
 // holds that, or another stage program with the same assembled text was preprocessed already;
-// then the reduced texts deduplicated into jobs. Only the first task of each job
-// keeps its texts (the one CompileJob reads), so memory grows with the unique programs.
+// then the reduced texts deduplicated into jobs. Only the first task of each job keeps its texts
+// (the one CompileJob reads). When streaming, a new program is compiled by the thread that
+// preprocessed it and its texts are dropped at once, so they never wait for a phase to end.
 #include <algorithm>
 #include <atomic>
 #include <map>
 #include <mutex>
+#include <set>
 #include <unordered_map>
 
 #include "driver/cache.h"
@@ -18,15 +20,41 @@
 namespace kiln::driver {
 namespace {
 
+// A program compiled as soon as it was preprocessed (streaming), and the task it came from.
+struct Early {
+    bool done = false;
+    size_t task = 0;
+    Job job;
+};
+
 struct State {
     CompileState& st;
     const Cache cache;
+    const bool stream;  // compile each new program as soon as it is preprocessed
     // Result key -> the SPIR-V the cache holds for a direct hit (nullopt: not usable).
     std::map<std::string, std::optional<std::vector<uint32_t>>> found;
+    std::mutex mu;  // guards the maps below and the texts of the keepers
     // Result key -> the task that keeps its texts (the smallest index).
-    std::mutex mu;
     std::map<std::string, size_t> keeper;
+    // Result key -> its streamed compile; `clean`: those that gave no message, whose texts no
+    // task keeps.
+    std::map<std::string, Early> early;
+    std::set<std::string> clean;
 };
+
+Job NewJob(const CompileState& st, const StageTask& t, size_t i) {
+    Job job;
+    job.stage = t.stage;
+    job.entry = EntryOf(st, t);
+    job.first_task = i;
+    return job;
+}
+
+// Drops a task's texts.
+void DropTexts(StageTask& t) {
+    std::string().swap(t.reduced);
+    std::string().swap(t.rewritten);
+}
 
 // The options that change a module: part of every key.
 std::vector<std::string> KeyParts(const CompileState& st, const StageTask& t) {
@@ -58,27 +86,66 @@ void LoadFound(State& s) {
         s.found[keys[k]] = std::move(words[k]);
 }
 
-// Keeps the texts of the first task of each result key only.
+// Keeps the texts of the first task of each result key only, and none once a streamed compile
+// of the key gave no message.
 void KeepTextsOfFirst(State& s, size_t i) {
     StageTask& t = s.st.tasks[i];
     std::lock_guard<std::mutex> lock(s.mu);
     auto [it, fresh] = s.keeper.emplace(t.result_key, i);
-    size_t drop = i;
-    if (!fresh && i < it->second) {
-        drop = it->second;
-        it->second = i;
-    } else if (fresh) {
-        return;
+    if (!fresh) {
+        size_t drop = i;
+        if (i < it->second) {
+            drop = it->second;
+            it->second = i;
+        }
+        DropTexts(s.st.tasks[drop]);
     }
-    StageTask& d = s.st.tasks[drop];
-    std::string().swap(d.source);
-    std::string().swap(d.reduced);
-    std::string().swap(d.rewritten);
+    if (s.clean.count(t.result_key)) {
+        DropTexts(s.st.tasks[it->second]);
+    }
+}
+
+// Streaming: compiles task i's program when no other task of its key has (or the direct mode's
+// entry holds it). Task i's texts are its own thread's until KeepTextsOfFirst registers it.
+void CompileEarly(State& s, size_t i) {
+    CompileState& st = s.st;
+    const StageTask& t = st.tasks[i];
+    if (!s.stream)
+        return;
+    {
+        std::lock_guard<std::mutex> lock(s.mu);
+        if (const auto f = s.found.find(t.result_key); f != s.found.end() && f->second)
+            return;
+        if (!s.early.emplace(t.result_key, Early{}).second)
+            return;
+    }
+    Job job = NewJob(st, t, i);
+    job.cache_key = t.result_key;
+    if (auto cached = LoadCached(st, s.cache, job.cache_key)) {
+        job.words = std::move(*cached);
+        job.ok = job.from_cache = true;
+    } else {
+        CompileJob(st, job);
+        if (job.ok)
+            s.cache.Store(job.cache_key, job.words);
+    }
+    std::lock_guard<std::mutex> lock(s.mu);
+    Early& e = s.early[t.result_key];
+    e.done = true;
+    e.task = i;
+    e.job = std::move(job);
+    if (!e.job.diags.empty())
+        return;
+    s.clean.insert(t.result_key);
+    if (const auto k = s.keeper.find(t.result_key); k != s.keeper.end()) {
+        DropTexts(st.tasks[k->second]);  // another task of the key, registered meanwhile
+    }
 }
 
 // Takes a preprocessed and reduced text as task i's: its result key, its manifest, its texts.
 void Accept(State& s,
             size_t i,
+            const std::string& source,
             std::string reduced,
             std::string rewritten,
             std::vector<std::string> functions,
@@ -96,7 +163,8 @@ void Accept(State& s,
     t.result_key = HashKey(parts);
     // A preprocess with messages is done again each time, so that they are shown each time.
     if (st.direct && t.preprocess_log.empty())
-        st.direct->Record(st.direct_keys[i], ShaderOf(st, t), t.source, files_read, t.result_key);
+        st.direct->Record(st.direct_keys[i], ShaderOf(st, t), source, files_read, t.result_key);
+    CompileEarly(s, i);
     KeepTextsOfFirst(s, i);
 }
 
@@ -109,13 +177,12 @@ bool Preprocess(State& s, size_t i, size_t partner = std::string::npos) {
     if (!t.result_key.empty()) {
         if (const auto it = s.found.find(t.result_key); it != s.found.end() && it->second) {
             t.preprocess_ok = t.direct = true;
-            std::string().swap(t.source);
             return false;
         }
         t.result_key.clear();  // its entry is gone or damaged: preprocess as if unknown
     }
     worker::Request request = StageRequest(st, t, worker::RequestKind::kPreprocess);
-    request.source = t.source;
+    request.source = SourceOf(st, t);
     if (partner != std::string::npos)
         request.second_entry = EntryOf(st, st.tasks[partner]);
     worker::Outcome o = st.exec->Run(request);
@@ -131,11 +198,11 @@ bool Preprocess(State& s, size_t i, size_t partner = std::string::npos) {
     }
     const bool paired = partner != std::string::npos && r.second_ok;
     if (paired) {
-        Accept(s, partner, std::move(r.second_text), r.rewritten, std::move(r.second_functions),
-               r.info_log, r.files_read);
+        Accept(s, partner, SourceOf(st, st.tasks[partner]), std::move(r.second_text), r.rewritten,
+               std::move(r.second_functions), r.info_log, r.files_read);
     }
-    Accept(s, i, std::move(r.text), std::move(r.rewritten), std::move(r.functions), r.info_log,
-           r.files_read);
+    Accept(s, i, request.source, std::move(r.text), std::move(r.rewritten), std::move(r.functions),
+           r.info_log, r.files_read);
     return paired;
 }
 
@@ -160,7 +227,8 @@ std::vector<size_t> Leaders(const CompileState& st) {
     std::vector<std::string> keys(st.tasks.size());
     ParallelFor(st.tasks.size(), st.options.jobs, [&](size_t i) {
         const StageTask& t = st.tasks[i];
-        keys[i] = HashKey({ShaderOf(st, t), pack::StageName(t.stage), EntryOf(st, t), t.source});
+        keys[i] =
+            HashKey({ShaderOf(st, t), pack::StageName(t.stage), EntryOf(st, t), SourceOf(st, t)});
     });
     std::vector<size_t> leader(st.tasks.size());
     std::unordered_map<std::string, size_t> first;
@@ -169,16 +237,26 @@ std::vector<size_t> Leaders(const CompileState& st) {
     return leader;
 }
 
-Job NewJob(const CompileState& st, const StageTask& t, size_t i) {
-    Job job;
-    job.stage = t.stage;
-    job.entry = EntryOf(st, t);
-    job.first_task = i;
-    return job;
+// The streamed compile of key `key` as the job of its first task `first` (when there is one it
+// can be: compiled from that task, or with no message that a task's positions would change).
+bool TakeEarly(State& s, const std::string& key, size_t first, Job& job, CompileStats& stats) {
+    const auto e = s.early.find(key);
+    if (e == s.early.end() || !e->second.done ||
+        (e->second.task != first && !e->second.job.diags.empty()))
+        return false;
+    Job& early = e->second.job;
+    job.words = std::move(early.words);
+    job.ok = early.ok;
+    job.from_cache = early.from_cache;
+    job.done = true;
+    for (Diagnostic& d : early.diags)
+        job.diags.push_back(std::move(d));
+    ++(early.from_cache ? stats.cache_hits : stats.glslang_compiles);
+    return true;
 }
 
 // Tasks with the same result key share a job; a failing preprocess is a job of its own.
-void Dedup(CompileState& st, const State* s, CompileStats& stats) {
+void Dedup(CompileState& st, State* s, CompileStats& stats) {
     std::map<std::string, size_t> by_key;
     for (size_t i = 0; i < st.tasks.size(); ++i) {
         StageTask& t = st.tasks[i];
@@ -188,8 +266,8 @@ void Dedup(CompileState& st, const State* s, CompileStats& stats) {
             Job job = NewJob(st, t, i);
             if (t.failure)
                 job.diags.push_back(*t.failure);
-            else
-                AppendGlslangLog(st, t.preprocess_log, job.diags, &t.source);
+            else if (const std::string source = SourceOf(st, t); !t.preprocess_log.empty())
+                AppendGlslangLog(st, t.preprocess_log, job.diags, &source);
             t.job = st.jobs.size();
             st.jobs.push_back(std::move(job));
             continue;
@@ -200,14 +278,18 @@ void Dedup(CompileState& st, const State* s, CompileStats& stats) {
             job.cache_key = t.result_key;
             // The preprocessor's and the rewrite's warnings (X3206); tasks sharing the job have
             // the same text, so the same warnings.
-            if (!t.preprocess_log.empty())
-                AppendGlslangLog(st, t.preprocess_log, job.diags, &t.source);
+            if (!t.preprocess_log.empty()) {
+                const std::string source = SourceOf(st, t);
+                AppendGlslangLog(st, t.preprocess_log, job.diags, &source);
+            }
             if (s == nullptr) {
                 job.ok = job.from_cache = true;  // a pack from the cache: no words needed
             } else if (const auto f = s->found.find(t.result_key);
                        f != s->found.end() && f->second) {
                 job.words = *f->second;  // loaded and validated by LoadFound
                 job.ok = job.from_cache = true;
+            } else {
+                TakeEarly(*s, t.result_key, i, job, stats);
             }
             st.jobs.push_back(std::move(job));
         }
@@ -226,7 +308,7 @@ bool LookUpDirect(CompileState& st) {
     std::atomic<size_t> hits{0};
     ParallelFor(st.tasks.size(), o.jobs, [&](size_t i) {
         StageTask& t = st.tasks[i];
-        st.direct_keys[i] = st.direct->KeyFor(KeyParts(st, t), t.source, ShaderOf(st, t));
+        st.direct_keys[i] = st.direct->KeyFor(KeyParts(st, t), SourceOf(st, t), ShaderOf(st, t));
         if (auto result = st.direct->Lookup(st.direct_keys[i], ShaderOf(st, t))) {
             t.result_key = *result;
             ++hits;
@@ -241,8 +323,8 @@ void DedupKnown(CompileState& st, CompileStats& stats) {
     Dedup(st, nullptr, stats);
 }
 
-void PreprocessAndDedup(CompileState& st, CompileStats& stats) {
-    State s{st, Cache(st.options.cache_dir), {}, {}, {}};
+void PreprocessAndDedup(CompileState& st, CompileStats& stats, bool compile) {
+    State s{st, Cache(st.options.cache_dir), compile, {}, {}, {}, {}, {}};
     if (st.direct)
         LoadFound(s);
     const size_t n = st.tasks.size();
@@ -256,7 +338,7 @@ void PreprocessAndDedup(CompileState& st, CompileStats& stats) {
         const StageTask& f = st.tasks[i + 1];
         if (leader[i] == i && leader[i + 1] == i + 1 && v.stage == pack::Stage::kVertex &&
             f.stage == pack::Stage::kFragment && v.pass == f.pass && v.key == f.key &&
-            SameButStage(v.source, f.source)) {
+            SameButStage(SourceOf(st, v), SourceOf(st, f))) {
             partner[i] = i + 1;
             carried[i + 1] = 1;
         }
@@ -297,7 +379,6 @@ void PreprocessAndDedup(CompileState& st, CompileStats& stats) {
         t.preprocess_ok = true;
         t.direct = l.direct;
         t.result_key = l.result_key;
-        std::string().swap(t.source);
         ++shared;
     }
     ParallelFor(again.size(), st.options.jobs, [&](size_t k) { Preprocess(s, again[k]); });

@@ -32,7 +32,7 @@ uint32_t PackBuilder::AddModule(Stage stage,
             std::memcmp(spirv_.data() + m.spirv_offset, words.data(), words.size_bytes()) != 0) {
             continue;
         }
-        if (reflections_[it->second] == reflection)
+        if (*reflections_[it->second] == reflection)
             return it->second;
     }
 
@@ -68,7 +68,7 @@ uint32_t PackBuilder::AddModule(Stage stage,
     m.resource_count = static_cast<uint32_t>(reflection.resources.size());
     const uint32_t index = static_cast<uint32_t>(modules_.size());
     modules_.push_back(m);
-    reflections_.push_back(reflection);
+    reflections_.push_back(&reflection);
     module_by_hash_.emplace(hash, index);
     return index;
 }
@@ -131,7 +131,7 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
     sections.push_back(Records(SectionTag::kBlocks, blocks_));
     sections.push_back(Records(SectionTag::kMembers, members_));
     sections.push_back(Records(SectionTag::kResources, resources_));
-    sections.push_back({SectionTag::kSpirv, 0, spirv_});
+    sections.push_back({SectionTag::kSpirv, 0, std::move(spirv_)});
     sections.push_back({SectionTag::kStrings, 0, {strings_.begin(), strings_.end()}});
 
     const uint32_t count = static_cast<uint32_t>(sections.size());
@@ -147,6 +147,7 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
     header.file_size = offset;
 
     ByteWriter w;
+    w.bytes().reserve(offset);  // one allocation: a large pack is not copied as it grows
     w.Record(header);
     for (const SectionEntry& e : table)
         w.Record(e);

@@ -21,7 +21,7 @@ class PackBuilder {
   public:
     pack::StrRef Str(std::string_view s);
     // Adds a module unless an identical one (same stage, bytes and reflection) exists; returns
-    // its index.
+    // its index. `reflection` is compared with later modules' and must outlive the builder.
     uint32_t AddModule(pack::Stage stage,
                        std::span<const uint32_t> words,
                        const spirv::Reflection& reflection);
@@ -44,7 +44,7 @@ class PackBuilder {
 
     uint32_t module_count() const { return static_cast<uint32_t>(modules_.size()); }
 
-    // Serializes everything, with the checksum filled in.
+    // Serializes everything, with the checksum filled in; once (the SPIR-V moves into the pack).
     std::vector<uint8_t> Finish(pack::MetaRec meta);
 
   private:
@@ -52,7 +52,7 @@ class PackBuilder {
     std::unordered_map<std::string, uint32_t> string_offsets_;
     std::vector<uint8_t> spirv_;
     std::vector<pack::ModuleRec> modules_;
-    std::vector<spirv::Reflection> reflections_;  // per module, for the dedup comparison
+    std::vector<const spirv::Reflection*> reflections_;  // per module, for the dedup comparison
     std::multimap<uint64_t, uint32_t> module_by_hash_;
     std::vector<pack::InterfaceVarRec> interface_;
     std::vector<pack::BlockRec> blocks_;

@@ -93,5 +93,46 @@ TEST(PreprocessSharing, AFailingSharedPreprocessIsReportedForEveryVariant) {
     EXPECT_NE(brief.find("3 of 6 variants"), std::string::npos) << brief;
 }
 
+// Streaming: a program is compiled by the thread that preprocessed it, as soon as it is. The
+// pack and the messages are what compiling after the whole phase gives (keep_programs turns
+// streaming off, as the kept texts must outlive the phase), whichever variant got there first.
+TEST(PreprocessSharing, StreamedCompilesGiveThePackAndMessagesOfAPhaseAfterPhaseCompile) {
+    ScratchDir dir;
+    std::string text = Shader();
+    text.replace(text.find("multi_compile_fragment"), 22, "multi_compile");
+    const std::string path = dir.Write("streamed.shader", text);
+    for (unsigned jobs : {1u, 2u, 4u}) {
+        CompileOptions streamed, phased;
+        streamed.jobs = phased.jobs = jobs;
+        phased.keep_programs = true;
+        const CompileRun a = Compile({path}, streamed);
+        const CompileRun b = Compile({path}, phased);
+        ASSERT_TRUE(a.out.ok) << Brief(a.diags);
+        EXPECT_EQ(a.out.pack, b.out.pack) << jobs;
+        EXPECT_EQ(a.out.stats.glslang_compiles, b.out.stats.glslang_compiles);
+        EXPECT_EQ(a.out.stats.unique_programs, b.out.stats.unique_programs);
+        EXPECT_GT(a.out.stats.work_ms.preprocess, 0);
+        EXPECT_GT(a.out.stats.work_ms.compile, 0);
+    }
+    // An error that RED and BLUE share (one program, two tasks) and one of BIG's own: the same
+    // messages at the same places either way.
+    std::string broken = text;
+    broken.replace(broken.find("return float4(1, 0, 0, 1);"), 26, "return missing_red(1);");
+    broken.replace(broken.find("return float4(0, 0, 1, 1);"), 26, "return missing_red(1);");
+    broken.replace(broken.find("p.xyz *= 2;"), 11, "p.xyz *= missing_big;");
+    const std::string bad = dir.Write("broken.shader", broken);
+    for (unsigned jobs : {1u, 4u}) {
+        CompileOptions streamed, phased;
+        streamed.jobs = phased.jobs = jobs;
+        phased.keep_programs = true;
+        const CompileRun a = Compile({bad}, streamed);
+        const CompileRun b = Compile({bad}, phased);
+        EXPECT_FALSE(a.out.ok);
+        EXPECT_NE(Brief(a.diags).find("missing_red"), std::string::npos) << Brief(a.diags);
+        EXPECT_NE(Brief(a.diags).find("missing_big"), std::string::npos) << Brief(a.diags);
+        EXPECT_EQ(Brief(a.diags), Brief(b.diags)) << jobs;
+    }
+}
+
 }  // namespace
 }  // namespace kiln::test
