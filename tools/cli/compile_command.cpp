@@ -341,6 +341,7 @@ struct CompileArgs {
     std::string output;
     CompilerFlags flags;
     std::string opt = "1";
+    std::string perf_passes = "kiln";
     bool debug = false;
     std::string cache_dir;
     bool no_cache = false;
@@ -434,6 +435,10 @@ std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& globa
             },
             ""))
         ->group("");
+    cmd->add_option("--perf-passes", o->perf_passes,
+                    "The pass list of -O: kiln (default; SPIRV-Tools' list less what legalization "
+                    "did already) or spirv-tools (RegisterPerformancePasses)")
+        ->check(CLI::IsMember({"kiln", "spirv-tools"}));
     cmd->add_flag("-g", o->debug, "Keep debug information in the SPIR-V");
     cmd->add_option("--cache-dir", o->cache_dir, "Compile cache (default: the user cache folder)");
     cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the compile cache");
@@ -490,7 +495,9 @@ std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& globa
         }
         options.opt_level = o->opt == "0"   ? OptimizationLevel::kNone
                             : o->opt == "s" ? OptimizationLevel::kSize
-                                            : OptimizationLevel::kPerformance;
+                            : o->perf_passes == "spirv-tools"
+                                ? OptimizationLevel::kPerformanceSpirvTools
+                                : OptimizationLevel::kPerformance;
         options.debug_info = o->debug;
         options.keyword_aliases = !o->no_aliases;
         options.cache_dir =

@@ -30,7 +30,8 @@ struct MaterialRequest {
 
 using pack::Precision;  // --precision full|relaxed|half
 
-enum class OptimizationLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
+// -O0, -O (Kiln's pass list), -Os, -O with SPIRV-Tools' own list (--perf-passes spirv-tools).
+enum class OptimizationLevel { kNone, kPerformance, kSize, kPerformanceSpirvTools };
 
 // Where glslang and SPIRV-Tools run: in `kiln-worker` processes (the default: a crash, a hang or
 // an exhausted allocation in them becomes a diagnostic) or inside the calling process

@@ -99,6 +99,11 @@ hlsl::IncludePaths IncludePathsFor(const CompileOptions& o) {
             o.unity_version};
 }
 
+std::string OptimizationKey(const CompileOptions& o) {
+    const std::string level = "O" + std::to_string(int(o.opt_level));
+    return o.opt_level == OptimizationLevel::kPerformance ? level + "k1" : level;
+}
+
 worker::Request StageRequest(const CompileState& st,
                              const StageTask& task,
                              worker::RequestKind kind) {
@@ -123,6 +128,9 @@ worker::Request StageRequest(const CompileState& st,
             break;
         case OptimizationLevel::kSize:
             r.opt_level = 2;
+            break;
+        case OptimizationLevel::kPerformanceSpirvTools:
+            r.opt_level = 3;
             break;
     }
     return r;

@@ -20,6 +20,11 @@ std::unique_ptr<worker::Executor> MakeExecutor(CompileState& st);
 // -I directories and the templates folder the options name.
 hlsl::IncludePaths IncludePathsFor(const CompileOptions& o);
 
+// The optimizer settings as the cache's keys name them: "O0", "O1k1" (-O with Kiln's pass list,
+// version 1: a changed list gets a new version, so no entry of another list is taken), "O2" (-Os),
+// "O3" (-O with SPIRV-Tools' list).
+std::string OptimizationKey(const CompileOptions& o);
+
 // A request for a task's stage with the compile's include paths and options filled in.
 worker::Request StageRequest(const CompileState& st,
                              const StageTask& task,

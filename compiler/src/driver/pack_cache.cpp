@@ -14,6 +14,7 @@
 
 #include "driver/cache.h"
 #include "driver/compile_state.h"
+#include "driver/isolation.h"
 #include "kiln/base/bytes.h"
 #include "kiln/diagnostic.h"
 #include "kiln/pack/reader.h"
@@ -44,7 +45,7 @@ std::string OptionsText(const CompileOptions& o) {
         field("include", f);
     field("unity", std::to_string(o.unity_version));
     field("templates", o.templates_dir.empty() ? DefaultTemplatesDir() : o.templates_dir);
-    field("O", std::to_string(int(o.opt_level)));
+    field("O", OptimizationKey(o));
     field("g", o.debug_info ? "1" : "0");
     field("precision", std::to_string(int(o.precision)));
     field("aliases", o.keyword_aliases ? "1" : "0");

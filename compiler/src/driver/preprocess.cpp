@@ -60,7 +60,7 @@ void DropTexts(StageTask& t) {
 std::vector<std::string> KeyParts(const CompileState& st, const StageTask& t) {
     const CompileOptions& o = st.options;
     return {ProducerVersion(),
-            "O" + std::to_string(int(o.opt_level)) + (o.debug_info ? "g" : "") +
+            OptimizationKey(o) + (o.debug_info ? "g" : "") +
                 (o.precision == Precision::kRelaxed ? "r"
                  : o.precision == Precision::kHalf  ? "h"
                                                     : ""),

@@ -9,7 +9,9 @@
 
 namespace kiln::spirv {
 
-enum class OptLevel { kNone, kPerformance, kSize };  // -O0, -O, -Os
+// -O0, -O (Kiln's recipe), -Os, and -O with SPIRV-Tools' own performance list (--perf-passes
+// spirv-tools).
+enum class OptLevel { kNone, kPerformance, kSize, kPerformanceSpirvTools };
 
 // "v2023.1".
 std::string SpirvToolsVersion();

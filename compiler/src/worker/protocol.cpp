@@ -320,7 +320,7 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
             case kDebugInfo:
                 return ToBool(b, r.debug_info);
             case kOptLevel:
-                return ToU8(b, r.opt_level) && r.opt_level <= 2;
+                return ToU8(b, r.opt_level) && r.opt_level <= 3;
             case kOptimize:
                 return ToBool(b, r.optimize);
             case kHalfArithmetic:
