@@ -90,8 +90,6 @@ std::vector<frontend::GlslangMessage> OwnMessages(const std::string& reduced_log
     return own;
 }
 
-}  // namespace
-
 // One job through glslang and SPIRV-Tools in a worker; its diagnostics go to job.diags.
 void CompileJob(CompileState& st, Job& job) {
     const StageTask& task = st.tasks[job.first_task];
@@ -145,6 +143,20 @@ void CompileJob(CompileState& st, Job& job) {
     }
     job.words = std::move(o.response.words);
     job.ok = true;
+}
+
+}  // namespace
+
+bool CompileOrLoad(CompileState& st, const Cache& cache, Job& job) {
+    if (auto cached = LoadCached(st, cache, job.cache_key)) {
+        job.words = std::move(*cached);
+        job.ok = job.from_cache = true;
+        return false;
+    }
+    CompileJob(st, job);
+    if (job.ok)
+        cache.Store(job.cache_key, job.words);
+    return true;
 }
 
 // A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
@@ -226,16 +238,12 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
                 ++hits;  // taken from the cache with the direct mode's manifest
                 return;
             }
-            if (auto cached = LoadCached(st, cache, job.cache_key)) {
-                job.words = std::move(*cached);
-                job.ok = job.from_cache = true;
+            if (!CompileOrLoad(st, cache, job)) {
                 ++hits;
                 return;
             }
             ++compiles;
-            CompileJob(st, job);
             if (job.ok) {
-                cache.Store(job.cache_key, job.words);
                 // Its texts are needed no more (streaming memory).
                 StageTask& t = st.tasks[job.first_task];
                 std::string().swap(t.reduced);

@@ -183,8 +183,9 @@ void StoreCachedPack(const CompileState& st,
 
 // Phase 4, in compile_jobs.cpp: compile each job (or take it from the cache).
 void CompileJobs(CompileState& st, CompileStats& stats);
-// One job through glslang and SPIRV-Tools, from its first task's texts; diagnostics to job.diags.
-void CompileJob(CompileState& st, Job& job);
+// A job's SPIR-V from the cache (once validated), else compiled from its first task's texts by
+// glslang and SPIRV-Tools and stored (diagnostics to job.diags). True when it was compiled.
+bool CompileOrLoad(CompileState& st, const Cache& cache, Job& job);
 // A cache entry, once spirv-val accepts it (a damaged or forged entry is a miss).
 std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
                                                 const Cache& cache,

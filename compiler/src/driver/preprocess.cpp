@@ -8,7 +8,6 @@
 #include <atomic>
 #include <map>
 #include <mutex>
-#include <set>
 #include <unordered_map>
 
 #include "driver/cache.h"
@@ -36,11 +35,16 @@ struct State {
     std::mutex mu;  // guards the maps below and the texts of the keepers
     // Result key -> the task that keeps its texts (the smallest index).
     std::map<std::string, size_t> keeper;
-    // Result key -> its streamed compile; `clean`: those that gave no message, whose texts no
-    // task keeps.
+    // Result key -> its streamed compile.
     std::map<std::string, Early> early;
-    std::set<std::string> clean;
 };
+
+// True when a streamed compile of `key` ended without a message: no task keeps its texts.
+// Called with s.mu held.
+bool CompiledClean(const State& s, const std::string& key) {
+    const auto e = s.early.find(key);
+    return e != s.early.end() && e->second.done && e->second.job.diags.empty();
+}
 
 Job NewJob(const CompileState& st, const StageTask& t, size_t i) {
     Job job;
@@ -100,9 +104,8 @@ void KeepTextsOfFirst(State& s, size_t i) {
         }
         DropTexts(s.st.tasks[drop]);
     }
-    if (s.clean.count(t.result_key)) {
+    if (CompiledClean(s, t.result_key))
         DropTexts(s.st.tasks[it->second]);
-    }
 }
 
 // Streaming: compiles task i's program when no other task of its key has (or the direct mode's
@@ -121,31 +124,24 @@ void CompileEarly(State& s, size_t i) {
     }
     Job job = NewJob(st, t, i);
     job.cache_key = t.result_key;
-    if (auto cached = LoadCached(st, s.cache, job.cache_key)) {
-        job.words = std::move(*cached);
-        job.ok = job.from_cache = true;
-    } else {
-        CompileJob(st, job);
-        if (job.ok)
-            s.cache.Store(job.cache_key, job.words);
-    }
+    CompileOrLoad(st, s.cache, job);
     std::lock_guard<std::mutex> lock(s.mu);
     Early& e = s.early[t.result_key];
     e.done = true;
     e.task = i;
     e.job = std::move(job);
-    if (!e.job.diags.empty())
+    if (!CompiledClean(s, t.result_key))
         return;
-    s.clean.insert(t.result_key);
     if (const auto k = s.keeper.find(t.result_key); k != s.keeper.end()) {
         DropTexts(st.tasks[k->second]);  // another task of the key, registered meanwhile
     }
 }
 
 // Takes a preprocessed and reduced text as task i's: its result key, its manifest, its texts.
+// `source` is its assembled source when the caller has it (else assembled for the manifest).
 void Accept(State& s,
             size_t i,
-            const std::string& source,
+            const std::string* source,
             std::string reduced,
             std::string rewritten,
             std::vector<std::string> functions,
@@ -163,7 +159,8 @@ void Accept(State& s,
     t.result_key = HashKey(parts);
     // A preprocess with messages is done again each time, so that they are shown each time.
     if (st.direct && t.preprocess_log.empty())
-        st.direct->Record(st.direct_keys[i], ShaderOf(st, t), source, files_read, t.result_key);
+        st.direct->Record(st.direct_keys[i], ShaderOf(st, t), source ? *source : SourceOf(st, t),
+                          files_read, t.result_key);
     CompileEarly(s, i);
     KeepTextsOfFirst(s, i);
 }
@@ -198,10 +195,10 @@ bool Preprocess(State& s, size_t i, size_t partner = std::string::npos) {
     }
     const bool paired = partner != std::string::npos && r.second_ok;
     if (paired) {
-        Accept(s, partner, SourceOf(st, st.tasks[partner]), std::move(r.second_text), r.rewritten,
+        Accept(s, partner, nullptr, std::move(r.second_text), r.rewritten,
                std::move(r.second_functions), r.info_log, r.files_read);
     }
-    Accept(s, i, request.source, std::move(r.text), std::move(r.rewritten), std::move(r.functions),
+    Accept(s, i, &request.source, std::move(r.text), std::move(r.rewritten), std::move(r.functions),
            r.info_log, r.files_read);
     return paired;
 }
@@ -239,11 +236,11 @@ std::vector<size_t> Leaders(const CompileState& st) {
 
 // The streamed compile of key `key` as the job of its first task `first` (when there is one it
 // can be: compiled from that task, or with no message that a task's positions would change).
-bool TakeEarly(State& s, const std::string& key, size_t first, Job& job, CompileStats& stats) {
+void TakeEarly(State& s, const std::string& key, size_t first, Job& job, CompileStats& stats) {
     const auto e = s.early.find(key);
     if (e == s.early.end() || !e->second.done ||
         (e->second.task != first && !e->second.job.diags.empty()))
-        return false;
+        return;
     Job& early = e->second.job;
     job.words = std::move(early.words);
     job.ok = early.ok;
@@ -252,7 +249,14 @@ bool TakeEarly(State& s, const std::string& key, size_t first, Job& job, Compile
     for (Diagnostic& d : early.diags)
         job.diags.push_back(std::move(d));
     ++(early.from_cache ? stats.cache_hits : stats.glslang_compiles);
-    return true;
+}
+
+// A task's preprocessor and rewrite messages (X3206) into a job's diagnostics.
+void AppendPreprocessLog(CompileState& st, const StageTask& t, Job& job) {
+    if (t.preprocess_log.empty())
+        return;
+    const std::string source = SourceOf(st, t);  // its identifiers feed suggestions
+    AppendGlslangLog(st, t.preprocess_log, job.diags, &source);
 }
 
 // Tasks with the same result key share a job; a failing preprocess is a job of its own.
@@ -266,8 +270,8 @@ void Dedup(CompileState& st, State* s, CompileStats& stats) {
             Job job = NewJob(st, t, i);
             if (t.failure)
                 job.diags.push_back(*t.failure);
-            else if (const std::string source = SourceOf(st, t); !t.preprocess_log.empty())
-                AppendGlslangLog(st, t.preprocess_log, job.diags, &source);
+            else
+                AppendPreprocessLog(st, t, job);
             t.job = st.jobs.size();
             st.jobs.push_back(std::move(job));
             continue;
@@ -278,10 +282,7 @@ void Dedup(CompileState& st, State* s, CompileStats& stats) {
             job.cache_key = t.result_key;
             // The preprocessor's and the rewrite's warnings (X3206); tasks sharing the job have
             // the same text, so the same warnings.
-            if (!t.preprocess_log.empty()) {
-                const std::string source = SourceOf(st, t);
-                AppendGlslangLog(st, t.preprocess_log, job.diags, &source);
-            }
+            AppendPreprocessLog(st, t, job);
             if (s == nullptr) {
                 job.ok = job.from_cache = true;  // a pack from the cache: no words needed
             } else if (const auto f = s->found.find(t.result_key);
@@ -324,7 +325,7 @@ void DedupKnown(CompileState& st, CompileStats& stats) {
 }
 
 void PreprocessAndDedup(CompileState& st, CompileStats& stats, bool compile) {
-    State s{st, Cache(st.options.cache_dir), compile, {}, {}, {}, {}, {}};
+    State s{st, Cache(st.options.cache_dir), compile, {}, {}, {}, {}};
     if (st.direct)
         LoadFound(s);
     const size_t n = st.tasks.size();
