@@ -16,6 +16,20 @@
 namespace kiln::test {
 namespace {
 
+// An AddressSanitizer build (GCC defines __SANITIZE_ADDRESS__; clang 14 only answers
+// __has_feature).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kInstrumented = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kInstrumented = true;
+#else
+constexpr bool kInstrumented = false;
+#endif
+#else
+constexpr bool kInstrumented = false;
+#endif
+
 // The demo-like scene of the accuracy tests, heavier: a finer sphere and four lights.
 runtime::Scene TimedScene() {
     runtime::Scene scene = SphereOnFloor(RuntimeData("light_modes.material"));
@@ -56,6 +70,10 @@ tools::AccuracyOptions Options() {
 // of two identical configurations); lavapipe's jitter is not: on this two-core machine one
 // comparison of 31 interleaved frames each exceeded 10% about once in 60 (a busy neighbour).
 // So each order gets a second report when the first disagrees; a systematic effect fails both.
+// Under the sanitizers the neighbours are instrumented tests sharing the two cores (ctest -j 2),
+// and one fresh-clone CI run read 15% and then 48% apart: there the GPU medians must agree
+// within 2x over three reports, which still fails the 4-5x order effect, and Kiln's
+// instrumented CPU times are not compared.
 TEST_F(RuntimeTest, IdenticalConfigurationsTimeAlikeInEitherOrder) {
     const runtime::Scene scene = TimedScene();
     runtime::Renderer* drawing[] = {&renderer_};
@@ -67,8 +85,10 @@ TEST_F(RuntimeTest, IdenticalConfigurationsTimeAlikeInEitherOrder) {
         if (swapped) {
             std::swap(options.configs[0], options.configs[1]);
         }
+        const double tolerance = kInstrumented ? 2.0 : 1.10;
+        const int attempts = kInstrumented ? 3 : 2;
         bool agreed = false;
-        for (int attempt = 0; attempt < 2 && !agreed; ++attempt) {
+        for (int attempt = 0; attempt < attempts && !agreed; ++attempt) {
             Result<tools::AccuracyReport> r =
                 tools::RunAccuracyReport(renderer_, drawing, labels, scene, color_, options);
             ASSERT_TRUE(r) << r.error().message;
@@ -83,13 +103,14 @@ TEST_F(RuntimeTest, IdenticalConfigurationsTimeAlikeInEitherOrder) {
             std::cout << (swapped ? "b, a" : "a, b") << ": GPU " << x.gpu_ms.median << " and "
                       << y.gpu_ms.median << " ms (ratio " << gpu << "), CPU " << x.cpu_ms.median
                       << " and " << y.cpu_ms.median << " ms (ratio " << cpu << ")\n";
-            agreed = gpu <= 1.10;
-#if !defined(__SANITIZE_ADDRESS__)  // instrumented, Kiln's CPU times say little
-            // CPU times of a fraction of a millisecond: within 10%, or 0.05 ms.
-            agreed = agreed && (cpu <= 1.10 || std::abs(x.cpu_ms.median - y.cpu_ms.median) <= 0.05);
-#endif
+            agreed = gpu <= tolerance;
+            if (!kInstrumented) {
+                // CPU times of a fraction of a millisecond: within 10%, or 0.05 ms.
+                agreed =
+                    agreed && (cpu <= 1.10 || std::abs(x.cpu_ms.median - y.cpu_ms.median) <= 0.05);
+            }
         }
-        EXPECT_TRUE(agreed) << "identical configurations timed apart in both reports, "
+        EXPECT_TRUE(agreed) << "identical configurations timed apart in every report, "
                             << (swapped ? "b first" : "a first");
     }
 }
