@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Kiln's benchmark suite in one command (issue 19; docs/performance.md holds the results):
 #   1. bench/kiln_bench (Google Benchmark, a release build): ShaderLab parsing, the cost of worker
-#      isolation, the runtime's variant lookup, a frame's CPU cost per draw at 100 and 1,000
-#      objects (Vulkan: lavapipe without a GPU); checked by bench/check_targets.py;
+#      isolation, the runtime's variant lookup, pack open at 3 MB and 125 MB, a frame's CPU cost
+#      per draw at 100 and 1,000 objects (Vulkan: lavapipe without a GPU); checked by
+#      bench/check_targets.py;
 #   2. bench/compile_suite.py: `kiln compile` cold, warm, one include edited, one keyword added,
 #      -j 1 against every core, peak memory, the naive glslangValidator + spirv-opt + spirv-val
 #      process chain and the floor, on the shipped materials, a generated forward shader at 8, 64,

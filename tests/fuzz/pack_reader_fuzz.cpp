@@ -1,28 +1,37 @@
-// libFuzzer target: the pack reader on arbitrary bytes. The checksum is recomputed over the input
-// first (when it is long enough), so the fuzzer reaches the structural validation and the
-// accessors instead of stopping at the checksum; every accepted pack is then walked.
+// libFuzzer target: the pack reader on arbitrary bytes, opened with every check at open or with
+// the variant data checked on first use. Half the inputs are resealed first (kiln/pack/seal.h),
+// so the fuzzer reaches the structural validation and the accessors instead of stopping at a
+// checksum; every accepted pack is then walked.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include <xxhash.h>
-
 #include "kiln/pack/reader.h"
+#include "kiln/pack/seal.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace kiln::pack;
     std::vector<uint8_t> bytes(data, data + size);
-    if (bytes.size() >= kHeaderSize) {
-        for (uint32_t i = 0; i < 8; ++i)
-            bytes[kChecksumOffset + i] = 0;
-        const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
-        for (uint32_t i = 0; i < 8; ++i)
-            bytes[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
-    }
-    kiln::Result<Pack> opened = Pack::Open(bytes);
+    // Half the inputs resealed (the per-section sums and the whole-file checksum) and opened
+    // either way; the other half as they are, checked on first use.
+    const bool reseal = size % 2 == 0;
+    if (reseal)
+        Seal(bytes);
+    const OpenChecks checks = size % 4 < 2 ? OpenChecks::kAll : OpenChecks::kOnFirstUse;
+    kiln::Result<Pack> opened = Pack::Open(bytes, checks);
     if (!opened)
         return 0;
     const Pack pack = std::move(opened).value();
+    if (!pack.CheckVariantData().ok()) {
+        // Damaged variant data: none of it is returned, and lookups find nothing.
+        for (uint32_t p = 0; p < pack.Count(SectionTag::kPasses); ++p) {
+            if (pack.FindVariant(p, pack.KeyFor(p, {"SPOT", "POINT"})))
+                __builtin_trap();
+        }
+        if (pack.Count(SectionTag::kVariants) > 0 && pack.Variant(0).ok())
+            __builtin_trap();
+        return 0;
+    }
     for (uint32_t s = 0; s < pack.Count(SectionTag::kShaders); ++s) {
         const ShaderRec sr = pack.Shader(s).value();
         (void)pack.String(sr.name);

@@ -14,6 +14,7 @@
 #include <xxhash.h>
 
 #include "kiln/pack/format.h"
+#include "kiln/pack/seal.h"
 
 namespace kiln::test {
 
@@ -53,11 +54,7 @@ std::string DataPath(const std::string& relative) {
 }
 
 void ResealPack(std::span<uint8_t> bytes) {
-    for (uint32_t i = 0; i < 8; ++i)
-        bytes[pack::kChecksumOffset + i] = 0;
-    const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
-    for (uint32_t i = 0; i < 8; ++i)
-        bytes[pack::kChecksumOffset + i] = uint8_t(sum >> (8 * i));
+    pack::Seal(bytes);
 }
 
 RunResult RunKiln(const std::string& args) {

@@ -11,13 +11,22 @@ Result<runtime::Renderer> MakeRenderer(const runtime::RendererOptions& options,
     if (!made)
         return made;
     for (const std::string& p : packs) {
-        if (Status added = made.value().AddPack(p); !added.ok()) {
+        if (Status added = AddCheckedPack(made.value(), p); !added.ok()) {
             if (failed_pack != nullptr)
                 *failed_pack = p;
             return added.error();
         }
     }
     return made;
+}
+
+Status AddCheckedPack(runtime::Renderer& renderer, const std::string& path) {
+    if (Status added = renderer.AddPack(path); !added.ok())
+        return added;
+    const Status checked = renderer.pack(renderer.pack_count() - 1).CheckVariantData();
+    if (!checked.ok())
+        return Error{checked.error().code, path + ": " + checked.error().message};
+    return {};
 }
 
 }  // namespace kiln::cli

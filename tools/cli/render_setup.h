@@ -17,6 +17,11 @@ Result<runtime::Renderer> MakeRenderer(const runtime::RendererOptions& options,
                                        const std::vector<std::string>& packs,
                                        std::string* failed_pack = nullptr);
 
+// Renderer::AddPack, then the pack's variant data checked at once (the renderer checks it when
+// the first variant is chosen): the tools read every variant's records, and report a damaged
+// pack when they load it.
+Status AddCheckedPack(runtime::Renderer& renderer, const std::string& path);
+
 // The renderer options of the harness commands (kiln test, kiln stability): 32-bit float targets,
 // as their checks read linear values (fp16 would turn large finite values into Inf), the
 // validation layer as asked, the --device filter.

@@ -75,7 +75,7 @@ bool AddCompiledPack(const StabilityArgs& a,
                                  .string();
     Status added = base::WriteFileAtomically(path, out.pack, {.inputs = {}, .durable = false});
     if (added.ok()) {
-        added = renderer.AddPack(path);  // mapped: the name can go now
+        added = AddCheckedPack(renderer, path);  // mapped: the name can go now
     }
     std::error_code ignored;
     std::filesystem::remove(path, ignored);
@@ -299,7 +299,7 @@ std::function<int()> AddStabilityCommand(CLI::App* cmd, const GlobalOptions& glo
                     return int(kExitInputError);
             }
             for (const std::string& p : a->packs) {
-                if (Status added = renderer.AddPack(p); !added.ok())
+                if (Status added = AddCheckedPack(renderer, p); !added.ok())
                     return run.Fail(added.error(), p);
             }
             RunMaterials(renderer, color, *a, cause, totals, diags);

@@ -5,6 +5,7 @@
 #include <xxhash.h>
 
 #include "kiln/pack/records.h"
+#include "kiln/pack/seal.h"
 
 namespace kiln::pack_builder {
 
@@ -133,6 +134,15 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
     sections.push_back(Records(SectionTag::kResources, resources_));
     sections.push_back({SectionTag::kSpirv, 0, std::move(spirv_)});
     sections.push_back({SectionTag::kStrings, 0, {strings_.begin(), strings_.end()}});
+    // SUMS last: a record per section above but SPRV (each module has its hash in MODL), then
+    // the header's and table's (Seal fills them in).
+    std::vector<SectionSumRec> sums;
+    for (const SectionData& s : sections) {
+        if (s.tag != SectionTag::kSpirv)
+            sums.push_back({uint32_t(s.tag), 0, 0});
+    }
+    sums.push_back({kTableSumTag, 0, 0});
+    sections.push_back(Records(SectionTag::kSums, sums));
 
     const uint32_t count = static_cast<uint32_t>(sections.size());
     uint64_t offset = kHeaderSize + uint64_t{count} * kSectionEntrySize;
@@ -156,9 +166,7 @@ std::vector<uint8_t> PackBuilder::Finish(MetaRec meta) {
         w.PutBytes(s.bytes);
     }
     std::vector<uint8_t> out = std::move(w.bytes());
-    const uint64_t sum = XXH64(out.data(), out.size(), 0);  // checksum field is still zero
-    for (int i = 0; i < 8; ++i)
-        out[kChecksumOffset + i] = uint8_t(sum >> (8 * i));
+    Seal(out);  // the per-section sums, then the whole-file checksum
     return out;
 }
 

@@ -112,6 +112,10 @@ Result<VariantChoice> VariantSelector::Select(uint32_t pass,
                      "pass index " + std::to_string(pass) + " is out of range (the pack has " +
                          std::to_string(pack.Count(SectionTag::kPasses)) + " passes)"};
     }
+    // A pack whose variant data is checked on first use reports its damage here, before any
+    // variant or module of it is read (once; later calls find it checked).
+    if (Status checked = pack.CheckVariantData(); !checked.ok())
+        return checked.error();
     const VariantKey key = KeyFor(pass, keywords);
     Usage& usage = usage_[{pass, key.bits()}];
     ++usage.count;

@@ -424,7 +424,10 @@ Status Renderer::AddPack(const std::string& path) {
         return mapped.error();
     }
     loaded->file = std::move(mapped).value();
-    Result<pack::Pack> opened = pack::Pack::Open(loaded->file.bytes());
+    // The variant data (the bulk of a large pack) is checked when the first variant is chosen,
+    // a module's SPIR-V when its pipeline is built: loading time does not grow with the pack.
+    Result<pack::Pack> opened =
+        pack::Pack::Open(loaded->file.bytes(), pack::OpenChecks::kOnFirstUse);
     if (!opened) {
         return Error{opened.error().code, path + ": " + opened.error().message};
     }

@@ -239,6 +239,11 @@ Status CreatePipeline(const Context& c,
     std::vector<std::string> entry_points(modules.size());
     for (size_t i = 0; i < modules.size(); ++i) {
         const std::span<const uint8_t> spirv = pack.Spirv(modules[i]);
+        if (spirv.empty()) {  // its bytes do not match the module's hash (checked on first use)
+            return fail(Error{DiagCode::kPackChecksum,
+                              "a SPIR-V module of the variant does not match its checksum (pack "
+                              "corrupted)"});
+        }
         std::vector<uint32_t> words(spirv.size() / 4);
         std::memcpy(words.data(), spirv.data(), words.size() * 4);
         if (checker != nullptr) {

@@ -18,7 +18,7 @@ namespace kiln::pack {
 inline constexpr std::array<char, 4> kMagic = {'K', 'P', 'A', 'K'};
 inline constexpr uint16_t kFormatMajor = 1;  // readers reject another major
 inline constexpr uint16_t kFormatMinor =
-    3;  // additions readers may ignore (1: KALI, 2: VSTG, 3: GRAB)
+    4;  // additions readers may ignore (1: KALI, 2: VSTG, 3: GRAB, 4: SUMS)
 inline constexpr uint32_t kHeaderSize = 32;
 inline constexpr uint32_t kSectionEntrySize = 24;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -56,6 +56,21 @@ enum class SectionTag : uint32_t {
     // Optional (format 1.3): the texture of each GrabPass (a pass flagged kPassGrab), GrabRec
     // sorted by pass. A reader of format 1.2 sees a pass without variants, which it never draws.
     kGrabPasses = FourCC('G', 'R', 'A', 'B'),
+    // Optional (format 1.4): SectionSumRec, one per section but SPRV (each module's hash is in
+    // MODL) and SUMS, and one (tag TABL) for the header and the section table, so a reader can
+    // check each section when it first reads it instead of the whole file at open. A reader of
+    // format 1.3 skips it and checks the whole-file checksum, which still covers everything.
+    kSums = FourCC('S', 'U', 'M', 'S'),
+};
+
+// SectionSumRec::tag of the sum over the header (its checksum field read as zero) and the
+// section table.
+inline constexpr uint32_t kTableSumTag = FourCC('T', 'A', 'B', 'L');
+
+struct SectionSumRec {  // 16 bytes
+    uint32_t tag = 0;   // a section's tag, or kTableSumTag
+    uint32_t reserved = 0;
+    uint64_t sum = 0;  // XXH64 (seed 0) of the section's bytes
 };
 
 struct Header {  // 32 bytes

@@ -2,10 +2,17 @@
 // version, checksum, every section bound, every string reference and every cross-record index.
 // After a successful Open no accessor can read outside the bytes. The bytes are not copied: the
 // caller keeps them alive (a MappedFile, or a buffer).
+//
+// Opened with OpenChecks::kOnFirstUse (format 1.4 packs, which carry a sum per section), open time
+// does not grow with the variants: the sections that grow with them are checked, sums and
+// records, the first time one of them is read, and a module's SPIR-V against its hash whenever it
+// is read. Until then nothing of them is returned; a damaged one is an error from that first read
+// on (CheckVariantData), never a record.
 #ifndef KILN_PACK_READER_H_
 #define KILN_PACK_READER_H_
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,10 +49,28 @@ class MappedFile {
     size_t size_ = 0;
 };
 
+// What Pack::Open checks before it returns.
+enum class OpenChecks {
+    kAll,  // the whole-file checksum, then every section's records
+    // The header and section table against their sum, and the sections that grow with shaders
+    // and passes (strings, shaders, properties, passes, tags, state, keywords) against theirs and
+    // record by record; the variant data (VARI, VSTG, MODL, IOVR, BLCK, MEMB, RSRC) on first use,
+    // SPIR-V per module on every read. A pack without per-section sums (format 1.3 and older)
+    // gets kAll.
+    kOnFirstUse,
+};
+
 class Pack {
   public:
     // The pack views `bytes`, which must outlive it.
-    static Result<Pack> Open(std::span<const uint8_t> bytes);
+    static Result<Pack> Open(std::span<const uint8_t> bytes, OpenChecks checks = OpenChecks::kAll);
+
+    // The deferred checks of kOnFirstUse, run once (the first caller runs them, others wait):
+    // success at once for a pack opened with kAll. Every accessor of the variant data calls it;
+    // an engine that wants the damage reported at load calls it there.
+    Status CheckVariantData() const;
+    // Whether the variant data is checked at first use (format 1.4 opened with kOnFirstUse).
+    bool deferred() const { return deferred_ != nullptr; }
 
     uint16_t format_minor() const { return header_.format_minor; }
     MetaRec meta() const {
@@ -61,8 +86,14 @@ class Pack {
         if (index >= Count(tag)) {
             return OutOfRange(tag, index);
         }
+        if (deferred_ != nullptr && IsVariantData(tag)) {
+            if (Status checked = CheckVariantData(); !checked.ok())
+                return checked.error();
+        }
         return Record<Rec>(tag, index);
     }
+    // The sections kOnFirstUse checks on first use.
+    static bool IsVariantData(SectionTag tag);
     Result<ShaderRec> Shader(uint32_t i) const { return Get<ShaderRec>(SectionTag::kShaders, i); }
     Result<PassRec> Pass(uint32_t i) const { return Get<PassRec>(SectionTag::kPasses, i); }
     Result<ModuleRec> Module(uint32_t i) const { return Get<ModuleRec>(SectionTag::kModules, i); }
@@ -94,7 +125,8 @@ class Pack {
         return Get<KeywordSetRec>(SectionTag::kKeywordSets, i);
     }
     Result<std::string_view> Keyword(uint32_t i) const;
-    // A module's SPIR-V; empty for a record that is not this pack's.
+    // A module's SPIR-V; empty for a record that is not this pack's (and, for a pack whose
+    // variant data is checked on first use, for bytes that do not match the module's hash).
     std::span<const uint8_t> Spirv(const ModuleRec& module) const;
     // The same as 32-bit words (the bytes are little-endian and 4-aligned within the pack);
     // empty when the caller's buffer is not 4-aligned (a mapped file always is).
@@ -130,7 +162,9 @@ class Pack {
     }
 
   private:
-    static constexpr size_t kSectionSlots = 20;  // every SectionTag (reader.cpp checks)
+    struct Deferred;                             // reader_validate.cpp
+    struct SectionSums;                          // reader_validate.cpp
+    static constexpr size_t kSectionSlots = 21;  // every SectionTag (reader.cpp checks)
     template <class Rec>
     Rec Record(SectionTag tag, uint32_t index) const {  // index < Count(tag)
         const SectionEntry& s = sections_[Index(tag)];
@@ -143,11 +177,14 @@ class Pack {
     }
     Error OutOfRange(SectionTag tag, uint32_t index) const;
     static size_t Index(SectionTag tag);
-    Status Validate();
+    Status ValidateTable(SectionSums& sums);
+    Status ValidateShaders() const;
+    Status ValidateVariantData() const;
 
     std::span<const uint8_t> bytes_;
     Header header_;
     SectionEntry sections_[kSectionSlots]{};
+    std::shared_ptr<Deferred> deferred_;  // null: everything was checked at open
 };
 
 }  // namespace kiln::pack

@@ -191,6 +191,12 @@ constexpr void Visit(V& v, ResourceRec& r) {
     v(r.arrayed);
     v(r.array_size);
 }
+template <class V>
+constexpr void Visit(V& v, SectionSumRec& r) {
+    v(r.tag);
+    v(r.reserved);
+    v(r.sum);
+}
 
 // Counts encoded bytes.
 struct SizeVisitor {
@@ -222,6 +228,7 @@ static_assert(RecordSize<KeywordSetRec>() == 24);
 static_assert(RecordSize<KeywordAliasRec>() == 16);
 static_assert(RecordSize<VariantStagesRec>() == 16);
 static_assert(RecordSize<GrabRec>() == 16);
+static_assert(RecordSize<SectionSumRec>() == 16);
 static_assert(RecordSize<VariantRec>() == 24);
 static_assert(RecordSize<ModuleRec>() == 48);
 static_assert(RecordSize<InterfaceVarRec>() == 32);
