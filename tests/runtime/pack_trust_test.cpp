@@ -10,6 +10,8 @@
 
 #include "kiln/pack/format.h"
 #include "kiln/pack/reader.h"
+#include "kiln/pack/records.h"
+#include "kiln/pack/seal.h"
 #include "runtime/runtime_fixture.h"
 #include "vk/spirv_check.h"
 
@@ -28,12 +30,29 @@ uint32_t GetWord(const std::vector<uint8_t>& b, size_t at) {
     std::memcpy(&w, b.data() + at, 4);
     return w;
 }
+// Where the MODL section starts (the section table read by hand).
+size_t ModulesSection(const std::vector<uint8_t>& b) {
+    uint32_t sections = 0;
+    std::memcpy(&sections, b.data() + 12, 4);
+    for (uint32_t i = 0; i < sections; ++i) {
+        const uint8_t* e = b.data() + pack::kHeaderSize + i * pack::kSectionEntrySize;
+        if (std::memcmp(e, "MODL", 4) == 0) {
+            uint64_t offset = 0;
+            std::memcpy(&offset, e + 8, 8);
+            return size_t(offset);
+        }
+    }
+    ADD_FAILURE() << "no MODL section";
+    return 0;
+}
+
 void SetWord(std::vector<uint8_t>& b, size_t at, uint32_t w) {
     std::memcpy(b.data() + at, &w, 4);
 }
 
-// The shipped pack with `patch(bytes, module_offset, word_count)` applied to every module, its
-// checksum recomputed so that the reader accepts it.
+// The shipped pack with `patch(bytes, module_offset, word_count)` applied to every module, each
+// module's hash, the section sums and the checksum recomputed so that the reader accepts it: a
+// forged pack, which only the checks of the SPIR-V itself can refuse.
 std::string PatchedPack(const std::string& name,
                         const std::function<void(std::vector<uint8_t>&, size_t, size_t)>& patch) {
     std::vector<uint8_t> bytes = ReadBytes(KILN_MATERIALS_PACK);
@@ -47,10 +66,16 @@ std::string PatchedPack(const std::string& name,
         }
         for (const auto& [at, words] : modules)
             patch(bytes, at, words);
+        // ModuleRec::hash is the 8 bytes after the offset and size of module m's record.
+        const size_t records = ModulesSection(bytes);
+        for (size_t m = 0; m < modules.size(); ++m) {
+            const auto [at, words] = modules[m];
+            const uint64_t hash = XXH64(bytes.data() + at, words * 4, 0);
+            std::memcpy(bytes.data() + records + m * pack::RecordSize<pack::ModuleRec>() + 8, &hash,
+                        8);
+        }
     }
-    std::memset(bytes.data() + pack::kChecksumOffset, 0, 8);
-    const uint64_t sum = XXH64(bytes.data(), bytes.size(), 0);
-    std::memcpy(bytes.data() + pack::kChecksumOffset, &sum, 8);
+    pack::Seal(bytes);
     const std::string path = (fs::temp_directory_path() / name).string();
     std::ofstream(path, std::ios::binary)
         .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));

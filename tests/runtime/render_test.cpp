@@ -359,6 +359,10 @@ TEST_F(RuntimeTest, RenderingAStrippedVariantFailsWithTheVariantNamed) {
     EXPECT_TRUE(stripped.ValidationMessages().empty());
 }
 
+// Every damaged pack is refused by the time its damaged bytes would be used: AddPack refuses
+// what it checks at load (the header, the table, the shaders and passes); the variant data is
+// refused at its first use (CheckVariantData, which selecting a variant runs), a module's SPIR-V
+// when it is read (Spirv is empty, and building its pipeline fails).
 TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
     std::ifstream in(KILN_MATERIALS_PACK, std::ios::binary);
     const std::vector<char> good((std::istreambuf_iterator<char>(in)), {});
@@ -374,7 +378,16 @@ TEST_F(RuntimeTest, DamagedPacksAreRejectedWithoutACrash) {
             .write(bytes.data(), std::streamsize(bytes.size()));
         Status error = renderer_.AddPack(file);
         fs::remove(file);  // unlinking keeps any mapping valid
-        return error;
+        if (!error.ok())
+            return error;
+        const pack::Pack& added = renderer_.pack(renderer_.pack_count() - 1);
+        if (Status checked = added.CheckVariantData(); !checked.ok())
+            return checked;
+        for (uint32_t m = 0; m < added.Count(pack::SectionTag::kModules); ++m) {
+            if (added.Spirv(added.Module(m).value()).empty())
+                return Status(Error{DiagCode::kPackChecksum, "module " + std::to_string(m)});
+        }
+        return Status();
     };
     size_t rejected = 0, tried = 0;
     // About 250 truncations and 300 bit flips spread over the pack, whatever its size (each
