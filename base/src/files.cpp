@@ -178,6 +178,12 @@ void GuardInputFiles() {
     g.on = true;
 }
 
+void ForgetInputFiles() {
+    InputGuard& g = Guard();
+    std::lock_guard<std::mutex> lock(g.mu);
+    g.files.clear();
+}
+
 void NoteInputFile(const std::string& path) {
     struct stat st {};
     if (path != kStandardStream && stat(path.c_str(), &st) == 0)

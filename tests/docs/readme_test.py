@@ -42,6 +42,9 @@ def readme_commands(usage):
             continue
         if current is None:
             continue
+        if "[kiln compile's options]" in line:  # kiln watch: every option of kiln compile
+            commands[current] |= commands.get("compile", set())
+            line = line.replace("[kiln compile's options]", "")
         if re.match(r"\s*[a-z(]", line) and not m:
             continue  # a line of description only
         # The description column (after two or more spaces past the options) is prose.

@@ -7,6 +7,8 @@
 // clang-format off
 KILN_COMMAND("parse", kKiln, AddParseCommand, "Parse .shader files and print their AST")
 KILN_COMMAND("compile", kKiln, AddCompileCommand, "Compile .shader files into a variant pack")
+KILN_COMMAND("watch", kKiln, AddWatchCommand,
+             "Compile like kiln compile, then again whenever a file the build read changes")
 KILN_COMMAND("variants", kKiln, AddVariantsCommand,
              "List keyword sets and variant counts per pass, and unique stage programs")
 KILN_COMMAND("lint", kKiln, AddLintCommand,

@@ -205,6 +205,7 @@ void PrintExplain(const SceneStripFlags& flags,
 std::function<int()> AddParseCommand(CLI::App* cmd, const GlobalOptions& global);
 std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& global);
 std::function<int()> AddVariantsCommand(CLI::App* cmd, const GlobalOptions& global);
+std::function<int()> AddWatchCommand(CLI::App* cmd, const GlobalOptions& global);
 std::function<int()> AddLintCommand(CLI::App* cmd, const GlobalOptions& global);
 std::function<int()> AddDiffCommand(CLI::App* cmd, const GlobalOptions& global);
 std::function<int()> AddInfoCommand(CLI::App* cmd, const GlobalOptions& global);

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "compile_run.h"
 #include "kiln/base/files.h"
 #include "kiln/compile.h"
 #include "kiln/material/sidecar.h"
@@ -336,24 +337,6 @@ std::string CheckStripFlags(const SceneStripFlags& strip, const CompilerFlags& f
     return "";
 }
 
-struct CompileArgs {
-    std::vector<std::string> files;
-    std::string output;
-    CompilerFlags flags;
-    std::string opt = "1";
-    std::string perf_passes = "kiln";
-    bool debug = false;
-    std::string cache_dir;
-    bool no_cache = false;
-    bool md = false;
-    std::string mf;
-    std::string stats;  // "", "text" or "json"
-    bool no_aliases = false;
-    bool preprocess_only = false;  // -E
-    std::string emit_generated;    // --emit-generated DIR
-    SceneStripFlags strip;
-};
-
 // --emit-generated DIR: each surface shader's generated ShaderLab as DIR/<shader>.generated.shader
 // (.generated-2.shader for a file's second `#pragma surface`), also when the compile failed:
 // that is when it is read.
@@ -413,9 +396,7 @@ int PreprocessOnly(const CompileArgs& o, const GlobalOptions& global) {
 
 }  // namespace
 
-std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& global) {
-    using Options = CompileArgs;
-    auto o = std::make_shared<Options>();
+void AddCompileArgs(CLI::App* cmd, CompileArgs* o) {
     cmd->add_option("files", o->files, "ShaderLab files")->required();
     cmd->add_option("-o,--output", o->output,
                     "The pack to write (- writes it to standard output); with -E, where the "
@@ -462,136 +443,135 @@ std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& globa
         "                              -O2, -O3) or size\n"
         "  -MD                         Write a depfile of every file read\n"
         "  -MF FILE                    The depfile's path (default: OUTPUT.d)");
+}
 
-    return [o, &global]() {
-        DiagnosticList diags = global.NewDiagnostics();
-        if (o->preprocess_only)
-            return PreprocessOnly(*o, global);
-        const bool to_stdout = o->output == base::kStandardStream;
-        std::string bad_output;
-        if (o->output.empty())
-            bad_output = "kiln compile needs -o FILE (the pack to write; -o - for standard output)";
-        else if (to_stdout && (o->md || !o->mf.empty()))
-            bad_output = "-MD and -MF need a pack file to name in the depfile, not -o -";
-        else if (to_stdout && (o->strip.explain || o->strip.explain_json))
-            bad_output = "--explain prints on standard output, where -o - writes the pack";
-        if (!bad_output.empty()) {
-            ReportError(global, DiagCode::kBadCommandLine, "", bad_output);
-            return int(kExitUsageError);
-        }
-        if (std::string bad = CheckStripFlags(o->strip, o->flags); !bad.empty()) {
-            ReportError(global, DiagCode::kBadCommandLine, "", bad);
-            return int(kExitUsageError);
-        }
-        std::vector<std::unique_ptr<SourceFile>> material_files;
-        // With --scene, --materials are the scene's sidecars (the dry run reads them).
-        CompilerFlags flags = o->flags;
-        if (o->strip.active())
-            flags.materials.clear();
-        CompileOptions options = ToCompileOptions(flags, material_files, diags);
-        if (diags.has_errors()) {
-            PrintDiagnostics(diags, Views(CompileOutput{}, material_files), global);
-            return ExitCodeFor(diags);
-        }
-        options.opt_level = o->opt == "0"   ? OptimizationLevel::kNone
-                            : o->opt == "s" ? OptimizationLevel::kSize
-                            : o->perf_passes == "spirv-tools"
-                                ? OptimizationLevel::kPerformanceSpirvTools
-                                : OptimizationLevel::kPerformance;
-        options.debug_info = o->debug;
-        options.keyword_aliases = !o->no_aliases;
-        options.cache_dir =
-            o->no_cache ? "" : (o->cache_dir.empty() ? DefaultCacheDir() : o->cache_dir);
-        if (std::string why = CacheUnwritable(options.cache_dir); !why.empty()) {
-            // Never silence: the build works, only slower, and says so once.
-            diags.Warning(
-                DiagCode::kCannotWriteFile, options.cache_dir, kNoPosition,
-                "the compile cache cannot be written (" + why + "); compiling without it");
-            options.cache_dir.clear();
-        }
-        const bool tty = isatty(STDERR_FILENO) && global.diag_format == DiagFormat::kText;
-        if (tty) {
-            options.progress = [](const char* phase, size_t done, size_t total) {
-                std::fprintf(stderr, "\r\033[Kkiln: %s %zu/%zu", phase, done, total);
-                if (done == total)
-                    std::fputs("\r\033[K", stderr);
-            };
-        }
-        // gcc's rule: an output that is an input, a directory or a device is refused before any
-        // work (and again when written, against every file the compile read).
-        std::vector<std::string> inputs = o->flags.materials;
-        inputs.insert(inputs.end(), o->files.begin(), o->files.end());
-        for (const std::string& read : SceneStripInputs(o->strip, o->flags.materials)) {
-            base::NoteInputFile(read);  // refused when written, too
-            inputs.push_back(read);
-        }
-        const std::string dep_path = o->mf.empty() ? o->output + ".d" : o->mf;
-        std::vector<std::string> outputs = {o->output};
-        if (o->md || !o->mf.empty())
-            outputs.push_back(dep_path);
-        if (Status distinct =
-                base::CheckDistinctOutputs({{"-o", o->output}, {"-MF", outputs.back()}});
-            outputs.size() > 1 && !distinct.ok()) {
-            diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition,
-                        distinct.error().message);
+CompileRun RunCompile(const CompileArgs& o, const GlobalOptions& global) {
+    DiagnosticList diags = global.NewDiagnostics();
+    // Every file the compile reads: the command line's, then the scene's, then what it included.
+    std::vector<std::string> inputs = o.flags.materials;
+    inputs.insert(inputs.end(), o.files.begin(), o.files.end());
+    if (o.preprocess_only)
+        return {PreprocessOnly(o, global), inputs};
+    const bool to_stdout = o.output == base::kStandardStream;
+    std::string bad_output;
+    if (o.output.empty())
+        bad_output = "kiln compile needs -o FILE (the pack to write; -o - for standard output)";
+    else if (to_stdout && (o.md || !o.mf.empty()))
+        bad_output = "-MD and -MF need a pack file to name in the depfile, not -o -";
+    else if (to_stdout && (o.strip.explain || o.strip.explain_json))
+        bad_output = "--explain prints on standard output, where -o - writes the pack";
+    if (!bad_output.empty()) {
+        ReportError(global, DiagCode::kBadCommandLine, "", bad_output);
+        return {int(kExitUsageError), inputs};
+    }
+    if (std::string bad = CheckStripFlags(o.strip, o.flags); !bad.empty()) {
+        ReportError(global, DiagCode::kBadCommandLine, "", bad);
+        return {int(kExitUsageError), inputs};
+    }
+    std::vector<std::unique_ptr<SourceFile>> material_files;
+    // With --scene, --materials are the scene's sidecars (the dry run reads them).
+    CompilerFlags flags = o.flags;
+    if (o.strip.active())
+        flags.materials.clear();
+    CompileOptions options = ToCompileOptions(flags, material_files, diags);
+    if (diags.has_errors()) {
+        PrintDiagnostics(diags, Views(CompileOutput{}, material_files), global);
+        return {ExitCodeFor(diags), inputs};
+    }
+    options.opt_level = o.opt == "0"                     ? OptimizationLevel::kNone
+                        : o.opt == "s"                   ? OptimizationLevel::kSize
+                        : o.perf_passes == "spirv-tools" ? OptimizationLevel::kPerformanceSpirvTools
+                                                         : OptimizationLevel::kPerformance;
+    options.debug_info = o.debug;
+    options.keyword_aliases = !o.no_aliases;
+    options.cache_dir = o.no_cache ? "" : (o.cache_dir.empty() ? DefaultCacheDir() : o.cache_dir);
+    if (std::string why = CacheUnwritable(options.cache_dir); !why.empty()) {
+        // Never silence: the build works, only slower, and says so once.
+        diags.Warning(DiagCode::kCannotWriteFile, options.cache_dir, kNoPosition,
+                      "the compile cache cannot be written (" + why + "); compiling without it");
+        options.cache_dir.clear();
+    }
+    const bool tty = isatty(STDERR_FILENO) && global.diag_format == DiagFormat::kText;
+    if (tty) {
+        options.progress = [](const char* phase, size_t done, size_t total) {
+            std::fprintf(stderr, "\r\033[Kkiln: %s %zu/%zu", phase, done, total);
+            if (done == total)
+                std::fputs("\r\033[K", stderr);
+        };
+    }
+    // gcc's rule: an output that is an input, a directory or a device is refused before any
+    // work (and again when written, against every file the compile read).
+    for (const std::string& read : SceneStripInputs(o.strip, o.flags.materials)) {
+        base::NoteInputFile(read);  // refused when written, too
+        inputs.push_back(read);
+    }
+    const std::string dep_path = o.mf.empty() ? o.output + ".d" : o.mf;
+    std::vector<std::string> outputs = {o.output};
+    if (o.md || !o.mf.empty())
+        outputs.push_back(dep_path);
+    if (Status distinct = base::CheckDistinctOutputs({{"-o", o.output}, {"-MF", outputs.back()}});
+        outputs.size() > 1 && !distinct.ok()) {
+        diags.Error(DiagCode::kCannotWriteFile, o.output, kNoPosition, distinct.error().message);
+        PrintDiagnostics(diags, {}, global);
+        return {ExitCodeFor(diags), inputs};
+    }
+    for (const std::string& output : outputs) {
+        if (Result<std::string> ok = base::CheckOutputPath(output, inputs); !ok) {
+            diags.Error(DiagCode::kCannotWriteFile, output, kNoPosition, ok.error().message);
             PrintDiagnostics(diags, {}, global);
-            return ExitCodeFor(diags);
+            return {ExitCodeFor(diags), inputs};
         }
-        for (const std::string& output : outputs) {
-            if (Result<std::string> ok = base::CheckOutputPath(output, inputs); !ok) {
-                diags.Error(DiagCode::kCannotWriteFile, output, kNoPosition, ok.error().message);
-                PrintDiagnostics(diags, {}, global);
-                return ExitCodeFor(diags);
-            }
+    }
+    if (o.strip.active() && !PlanRequests(o.strip, o.files, o.flags.materials, options, diags)) {
+        PrintDiagnostics(diags, {}, global);
+        return {ExitCodeFor(diags), inputs};
+    }
+    const auto started = std::chrono::steady_clock::now();
+    CompileOutput out = CompileShaders(o.files, options, diags);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    for (const auto& f : out.files)
+        inputs.push_back(f->path());
+    if (!o.emit_generated.empty())
+        EmitGenerated(o.emit_generated, out, inputs, diags);
+    if (out.ok && o.strip.active() && !VerifyScenes(o.strip, out.pack, o.flags.materials, diags))
+        out.ok = false;  // no pack that misses what the scene needs
+    if (out.ok && (o.strip.explain || o.strip.explain_json)) {
+        DiagnosticList ignored;  // the compile read these shaders already
+        PrintExplain(o.strip, out, seconds,
+                     BuildSkeletonPack(o.files, options, ignored).pack.size());
+    }
+    bool pack_written = false;
+    if (out.ok) {
+        Status written = base::WriteFileAtomically(
+            o.output, std::span<const uint8_t>(out.pack.data(), out.pack.size()), {inputs});
+        if (!written.ok()) {
+            diags.Error(DiagCode::kCannotWriteFile, o.output, kNoPosition, written.error().message);
         }
-        if (o->strip.active() &&
-            !PlanRequests(o->strip, o->files, o->flags.materials, options, diags)) {
-            PrintDiagnostics(diags, {}, global);
-            return ExitCodeFor(diags);
-        }
-        const auto started = std::chrono::steady_clock::now();
-        CompileOutput out = CompileShaders(o->files, options, diags);
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        for (const auto& f : out.files)
-            inputs.push_back(f->path());
-        if (!o->emit_generated.empty())
-            EmitGenerated(o->emit_generated, out, inputs, diags);
-        if (out.ok && o->strip.active() &&
-            !VerifyScenes(o->strip, out.pack, o->flags.materials, diags))
-            out.ok = false;  // no pack that misses what the scene needs
-        if (out.ok && (o->strip.explain || o->strip.explain_json)) {
-            DiagnosticList ignored;  // the compile read these shaders already
-            PrintExplain(o->strip, out, seconds,
-                         BuildSkeletonPack(o->files, options, ignored).pack.size());
-        }
-        if (out.ok) {
-            Status written = base::WriteFileAtomically(
-                o->output, std::span<const uint8_t>(out.pack.data(), out.pack.size()), {inputs});
-            if (!written.ok()) {
-                diags.Error(DiagCode::kCannotWriteFile, o->output, kNoPosition,
-                            written.error().message);
-            }
-        }
-        if (out.ok && !diags.has_errors() && (o->md || !o->mf.empty())) {
-            std::string text = DepfileEscape(o->output) + ":";
-            for (const auto& f : out.files) {
-                text +=
-                    " \\\n  " +
+        pack_written = written.ok();
+    }
+    if (out.ok && !diags.has_errors() && (o.md || !o.mf.empty())) {
+        std::string text = DepfileEscape(o.output) + ":";
+        for (const auto& f : out.files) {
+            text += " \\\n  " +
                     DepfileEscape(std::filesystem::absolute(f->path()).lexically_normal().string());
-            }
-            text += "\n";
-            Status written = base::WriteFileAtomically(dep_path, text, {inputs});
-            if (!written.ok()) {
-                diags.Error(DiagCode::kCannotWriteFile, dep_path, kNoPosition,
-                            written.error().message);
-            }
         }
-        if (!o->stats.empty())
-            PrintStats(out.stats, o->stats == "json", to_stdout ? stderr : stdout);
-        PrintDiagnostics(diags, Views(out, material_files), global);
-        return ExitCodeFor(diags);
-    };
+        text += "\n";
+        Status written = base::WriteFileAtomically(dep_path, text, {inputs});
+        if (!written.ok()) {
+            diags.Error(DiagCode::kCannotWriteFile, dep_path, kNoPosition, written.error().message);
+        }
+    }
+    if (!o.stats.empty())
+        PrintStats(out.stats, o.stats == "json", to_stdout ? stderr : stdout);
+    PrintDiagnostics(diags, Views(out, material_files), global);
+    return {ExitCodeFor(diags), inputs, pack_written, out.stats.variants};
+}
+
+std::function<int()> AddCompileCommand(CLI::App* cmd, const GlobalOptions& global) {
+    auto o = std::make_shared<CompileArgs>();
+    AddCompileArgs(cmd, o.get());
+    return [o, &global]() { return RunCompile(*o, global).exit_code; };
 }
 
 }  // namespace kiln::cli

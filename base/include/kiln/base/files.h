@@ -51,6 +51,10 @@ void GuardInputFiles();
 // Remembers a file read outside ReadRegularFile (a mapped pack, a file a library reads itself)
 // for the guard; nothing when the guard is off or the file does not exist.
 void NoteInputFile(const std::string& path);
+// Forgets the files read so far; the guard stays on. For a process that runs its command again
+// (kiln watch): an input replaced since (an editor's save) frees its inode, which a new file,
+// such as the output itself, may then get.
+void ForgetInputFiles();
 
 // Writes `bytes` to `path` atomically. An output that is one of the inputs (the same file, by
 // device and inode) is refused. An output that is a symbolic link is written through: the file it

@@ -150,8 +150,26 @@ class Renderer {
 
     static Result<Renderer> Create(const RendererOptions& options);
 
-    // Maps and validates a pack; shaders are looked up in the order packs were added.
+    // Maps and validates a pack; shaders are looked up in the order packs were added. The pack's
+    // handle for ReplacePack and RemovePack is its index: pack_count() - 1 after the call.
     Status AddPack(const std::string& path);
+
+    // What ReplacePack did with the replaced pack's pipelines.
+    struct PackReload {
+        uint32_t pipelines_kept = 0;     // of variants whose code and interface did not change
+        uint32_t pipelines_dropped = 0;  // the others: rebuilt when next drawn
+    };
+    // Live edit: the pack at `index` is replaced by the one at `path` (mapped, and its variant
+    // data checked, before anything changes: on any error the old pack stays). Pipelines of
+    // variants whose SPIR-V and reflection are unchanged (by content, whatever their index) are
+    // kept; the others are destroyed and made again when drawn. The scene's uploaded resources
+    // and the frame resources are made again on the next frame, and the pack's usage record
+    // starts afresh. Call it between frames: frames wait for the device before they return, so
+    // no frame is in flight (the renderer is not thread-safe).
+    Result<PackReload> ReplacePack(size_t index, const std::string& path);
+    // The pack at `index` unloaded: its shaders are found in no pack any more (a material naming
+    // one is then a clear error), its pipelines destroyed. Other packs keep their index.
+    Status RemovePack(size_t index);
 
     // Renders one frame into a linear (scene-referred) image. Colour properties are decoded
     // from sRGB through `color`. With `capture` the frame is drawn one step at a time and every
@@ -169,7 +187,7 @@ class Renderer {
     std::vector<std::string> ValidationMessages() const;
     Status WriteUsage(const std::string& path) const;
 
-    size_t pack_count() const;
+    size_t pack_count() const;  // packs added, removed ones included (they hold nothing)
     const pack::Pack& pack(size_t index) const;
 
     struct State;  // opaque: defined inside the library
