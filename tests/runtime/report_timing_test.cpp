@@ -10,25 +10,14 @@
 #include <cmath>
 #include <iostream>
 
+#include "kiln/base/sanitizer.h"
 #include "kiln/tools/accuracy_report.h"
 #include "runtime/runtime_fixture.h"
 
 namespace kiln::test {
 namespace {
 
-// An AddressSanitizer build (GCC defines __SANITIZE_ADDRESS__; clang 14 only answers
-// __has_feature).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kInstrumented = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kInstrumented = true;
-#else
-constexpr bool kInstrumented = false;
-#endif
-#else
-constexpr bool kInstrumented = false;
-#endif
+constexpr bool kInstrumented = base::kAddressSanitizer;
 
 // The demo-like scene of the accuracy tests, heavier: a finer sphere and four lights.
 runtime::Scene TimedScene() {

@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "kiln/base/sanitizer.h"
 #include "kiln/compile.h"
 #include "worker/execute.h"
 #include "worker/file_exchange.h"
@@ -33,18 +34,6 @@ namespace kiln {
 namespace {
 
 using worker::Component;
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 
 struct Args {
     int fd = -1;
@@ -260,7 +249,7 @@ void LimitResources(const Args& a) {
     // The parent kills a worker whose resident memory passes the limit; the address-space limit
     // is the backstop for an allocation too fast to be seen (not under AddressSanitizer, whose
     // shadow memory is terabytes of address space).
-    if (!kAddressSanitizer && a.memory_limit > 0) {
+    if (!base::kAddressSanitizer && a.memory_limit > 0) {
         const uint64_t slack = uint64_t{1} << 30;
         const rlim_t as = static_cast<rlim_t>(a.memory_limit * 2 + a.stack + slack);
         const rlimit limit{as, as};
