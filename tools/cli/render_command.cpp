@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "kiln/runtime/scene.h"
 #include "kiln/tools/frame_debug.h"
 #include "render_setup.h"
+#include "render_watch.h"
 
 namespace kiln::cli {
 namespace {
@@ -117,7 +119,7 @@ struct RenderArgs {
     runtime::FrameSettings frame;
     runtime::ColorOptions color;
     bool validation = false, closest = false, no_default_light = false, trust = false;
-    bool dry_run = false, allow_missing = false;
+    bool dry_run = false, allow_missing = false, watch = false;
     std::string device, camera, ambient, frame_debug, sky;
     float sky_intensity = 1;
 };
@@ -300,6 +302,11 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
                     "and an image of every target it writes after each step, with an index.html "
                     "to step through in a browser, into this folder")
         ->option_text("DIR");
+    cmd->add_flag("--watch", a->watch,
+                  "Render again whenever a pack, the scene, its --materials sidecar, a material "
+                  "file or the --sky image changes: a pack is replaced in the running renderer "
+                  "(unchanged variants keep their pipelines), the images and the --frame-debug "
+                  "page are written again (the page reloads itself); until interrupted");
     cmd->add_option("--pipeline-cache", a->pipeline_cache, "Persist the VkPipelineCache here");
     cmd->add_option("--device", a->device, "Use a Vulkan device whose name contains this");
     cmd->add_flag("--trust-packs", a->trust,
@@ -342,6 +349,12 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
                                         "cannot be - (standard output)");
             return finish(int(kExitUsageError));
         }
+        if (a->watch && (to_stdout > 0 || a->dry_run)) {
+            diags.Error(DiagCode::kBadCommandLine, "", kNoPosition,
+                        "--watch writes its images again on every change: it takes no - "
+                        "(standard output) and no --dry-run");
+            return finish(int(kExitUsageError));
+        }
         FILE* const summary = to_stdout ? stderr : stdout;
         if (Status distinct = base::CheckDistinctOutputs({{"-o", a->output},
                                                           {"--exr", a->exr},
@@ -368,41 +381,50 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
             return finish(int(kExitInputError));
         if (!a->camera.empty())
             ParseCamera(a->camera, a->frame.camera);  // validated by the option's check
-        Result<runtime::Scene> loaded = runtime::LoadGltf(a->scene, diags);
-        if (!loaded) {
-            return fail(loaded.error());
-        }
-        runtime::Scene scene = std::move(loaded).value();
-        if (!a->materials.empty()) {
-            if (Status read = runtime::LoadMaterialSidecar(a->materials, scene); !read.ok()) {
-                return fail(read.error());
+        // The scene, its sidecar and sky: loaded again on a change with --watch. An error is
+        // the exit code of the command (printed); none when it loaded.
+        runtime::Scene scene;
+        bool default_sky = false;
+        auto load_scene = [&]() -> std::optional<int> {
+            Result<runtime::Scene> loaded = runtime::LoadGltf(a->scene, diags);
+            if (!loaded) {
+                return fail(loaded.error());
             }
-        }
-        if (IsSkyImage(a->ambient) && a->sky.empty()) {
-            a->sky = std::exchange(a->ambient, "");  // --ambient IMAGE.hdr is --sky IMAGE.hdr
-        }
-        if (!a->ambient.empty() && !a->sky.empty()) {
-            diags.Error(DiagCode::kBadScene, "", kNoPosition,
-                        "--ambient and --sky both set the ambient light; give one");
-            return finish(int(kExitInputError));
-        }
-        if (!a->ambient.empty()) {
-            ParseAmbient(a->ambient, &scene);  // validated by the option's check
-        }
-        // A scene that says nothing of its environment gets a new Unity scene's: the
-        // procedural sky as ambient and reflection source.
-        const bool default_sky = a->ambient.empty() && a->sky.empty() && !scene.ambient_given;
-        if (default_sky)
-            ParseAmbient("sky", &scene);
-        if (!a->sky.empty()) {
-            Result<std::shared_ptr<const runtime::Sky>> sky =
-                runtime::LoadSky(a->sky, a->sky_intensity);
-            if (!sky) {
-                return fail(sky.error(), a->sky);
+            scene = std::move(loaded).value();
+            if (!a->materials.empty()) {
+                if (Status read = runtime::LoadMaterialSidecar(a->materials, scene); !read.ok()) {
+                    return fail(read.error());
+                }
             }
-            scene.ambient_mode = runtime::AmbientMode::kSky;
-            scene.sky = std::move(sky).value();
-        }
+            if (IsSkyImage(a->ambient) && a->sky.empty()) {
+                a->sky = std::exchange(a->ambient, "");  // --ambient IMAGE.hdr is --sky IMAGE.hdr
+            }
+            if (!a->ambient.empty() && !a->sky.empty()) {
+                diags.Error(DiagCode::kBadScene, "", kNoPosition,
+                            "--ambient and --sky both set the ambient light; give one");
+                return finish(int(kExitInputError));
+            }
+            if (!a->ambient.empty()) {
+                ParseAmbient(a->ambient, &scene);  // validated by the option's check
+            }
+            // A scene that says nothing of its environment gets a new Unity scene's: the
+            // procedural sky as ambient and reflection source.
+            default_sky = a->ambient.empty() && a->sky.empty() && !scene.ambient_given;
+            if (default_sky)
+                ParseAmbient("sky", &scene);
+            if (!a->sky.empty()) {
+                Result<std::shared_ptr<const runtime::Sky>> sky =
+                    runtime::LoadSky(a->sky, a->sky_intensity);
+                if (!sky) {
+                    return fail(sky.error(), a->sky);
+                }
+                scene.ambient_mode = runtime::AmbientMode::kSky;
+                scene.sky = std::move(sky).value();
+            }
+            return std::nullopt;
+        };
+        if (const std::optional<int> failed = load_scene())
+            return *failed;
         Result<runtime::ColorPipeline> made_color = runtime::ColorPipeline::Create(a->color);
         if (!made_color) {
             return fail(made_color.error());
@@ -428,64 +450,101 @@ std::function<int()> AddRenderCommand(CLI::App* cmd, const GlobalOptions& global
             return fail(made.error());
         }
         runtime::Renderer renderer = std::move(made).value();
-        runtime::LinearImage image;
-        runtime::FrameStats stats;
-        runtime::FrameCapture capture;
-        const Status rendered = renderer.Render(scene, a->frame, color, image, stats,
-                                                a->frame_debug.empty() ? nullptr : &capture);
-        diags.Append(stats.warnings);
-        if (!a->usage.empty()) {
-            if (Status written = renderer.WriteUsage(a->usage); !written.ok()) {
-                return fail(written.error());
+        // One frame: rendered, its images (and pages) written, its summary printed; the exit
+        // code (diagnostics printed).
+        std::string live_stamp;  // --watch with --frame-debug: the page reloads on a new one
+        auto draw = [&]() -> int {
+            runtime::LinearImage image;
+            runtime::FrameStats stats;
+            runtime::FrameCapture capture;
+            const Status rendered = renderer.Render(scene, a->frame, color, image, stats,
+                                                    a->frame_debug.empty() ? nullptr : &capture);
+            diags.Append(stats.warnings);
+            if (!a->usage.empty()) {
+                if (Status written = renderer.WriteUsage(a->usage); !written.ok()) {
+                    return fail(written.error());
+                }
             }
-        }
-        if (!rendered.ok()) {
-            return fail(rendered.error());
-        }
-        const std::vector<std::string> messages = renderer.ValidationMessages();
-        for (const std::string& m : messages) {
-            diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);
-        }
-        if (!messages.empty())
-            return finish(int(kExitInputError));  // no image from a render the layer rejected
-        if (!a->exr.empty()) {
-            if (Status written = runtime::WriteExr(a->exr, image); !written.ok()) {
-                return fail(written.error(), a->exr);
+            if (!rendered.ok()) {
+                return fail(rendered.error());
             }
-        }
-        if (Status written = runtime::WriteDisplayPng(a->output, image, color); !written.ok()) {
-            return fail(written.error(), a->output);
-        }
-        if (!a->frame_debug.empty()) {
-            if (Status written = tools::WriteFrameDebug(a->frame_debug, capture); !written.ok()) {
-                return fail(written.error(), a->frame_debug);
+            const std::vector<std::string> messages = renderer.ValidationMessages();
+            for (const std::string& m : messages) {
+                diags.Error(DiagCode::kRenderFailed, "", kNoPosition, "validation: " + m);
             }
-            std::fprintf(summary, "%s/index.html: %zu steps\n", a->frame_debug.c_str(),
-                         capture.steps.size());
-        }
-        std::string deferred;
-        if (!stats.path_counts.empty()) {
-            deferred = stats.path_counts + ", ";
-        }
-        if (stats.shadow_draws > 0) {
-            deferred += std::to_string(stats.shadow_draws) + " shadow draws, ";
-        }
-        if (stats.grab_copies > 0) {
-            deferred += std::to_string(stats.grab_copies) + " GrabPass cop" +
-                        (stats.grab_copies == 1 ? "y, " : "ies, ");
-        }
-        std::fprintf(
-            summary,
-            "%s: %ux%u, camera '%s', %u objects, %s%u base + %u additive passes (%u with vertex "
-            "lights, %u with SH lights), %u pipelines, device '%s', %s%s%s\n",
-            a->output.c_str(), image.width, image.height, stats.camera.c_str(), stats.objects,
-            deferred.c_str(), stats.base_passes, stats.add_passes, stats.vertex_lit, stats.sh_lit,
-            stats.pipelines_created, renderer.DeviceName().c_str(), color.description().c_str(),
-            a->validation ? ", validation messages: 0" : "",
-            default_sky ? ", ambient: the default sky (the scene sets none; --ambient "
-                          "flat:R,G,B for one colour)"
-                        : "");
-        return finish(int(kExitOk));
+            if (!messages.empty())
+                return finish(int(kExitInputError));  // no image from a render the layer rejected
+            if (!a->exr.empty()) {
+                if (Status written = runtime::WriteExr(a->exr, image); !written.ok()) {
+                    return fail(written.error(), a->exr);
+                }
+            }
+            if (Status written = runtime::WriteDisplayPng(a->output, image, color); !written.ok()) {
+                return fail(written.error(), a->output);
+            }
+            if (!a->frame_debug.empty()) {
+                if (Status written = tools::WriteFrameDebug(a->frame_debug, capture, live_stamp);
+                    !written.ok()) {
+                    return fail(written.error(), a->frame_debug);
+                }
+                std::fprintf(summary, "%s/index.html: %zu steps\n", a->frame_debug.c_str(),
+                             capture.steps.size());
+            }
+            std::string deferred;
+            if (!stats.path_counts.empty()) {
+                deferred = stats.path_counts + ", ";
+            }
+            if (stats.shadow_draws > 0) {
+                deferred += std::to_string(stats.shadow_draws) + " shadow draws, ";
+            }
+            if (stats.grab_copies > 0) {
+                deferred += std::to_string(stats.grab_copies) + " GrabPass cop" +
+                            (stats.grab_copies == 1 ? "y, " : "ies, ");
+            }
+            std::fprintf(summary,
+                         "%s: %ux%u, camera '%s', %u objects, %s%u base + %u additive passes (%u "
+                         "with vertex "
+                         "lights, %u with SH lights), %u pipelines, device '%s', %s%s%s\n",
+                         a->output.c_str(), image.width, image.height, stats.camera.c_str(),
+                         stats.objects, deferred.c_str(), stats.base_passes, stats.add_passes,
+                         stats.vertex_lit, stats.sh_lit, stats.pipelines_created,
+                         renderer.DeviceName().c_str(), color.description().c_str(),
+                         a->validation ? ", validation messages: 0" : "",
+                         default_sky ? ", ambient: the default sky (the scene sets none; --ambient "
+                                       "flat:R,G,B for one colour)"
+                                     : "");
+            return finish(int(kExitOk));
+        };
+        if (a->watch && !a->frame_debug.empty())
+            live_stamp = "1";
+        const int first = draw();
+        if (!a->watch)
+            return first;
+        WatchedScene watched;
+        watched.packs = a->packs;
+        watched.files = [&] {
+            std::vector<std::string> files = {a->scene};
+            for (const std::string* f : {&a->materials, &a->sky}) {
+                if (!f->empty())
+                    files.push_back(*f);
+            }
+            for (const auto& [name, file] : scene.material_files)
+                files.push_back(file);
+            return files;
+        };
+        watched.load_scene = load_scene;
+        watched.draw = draw;
+        watched.next_frame = [&] {
+            diags = global.NewDiagnostics();  // each frame prints its own
+            if (!live_stamp.empty())
+                live_stamp = std::to_string(std::stoul(live_stamp) + 1);
+        };
+        watched.report = [&](const Error& e, const std::string& file) {
+            diags.Error(e.code, file, kNoPosition, e.message);
+            PrintDiagnostics(diags, {}, global);
+            diags = global.NewDiagnostics();
+        };
+        return WatchScene(renderer, watched, summary);
     };
 }
 

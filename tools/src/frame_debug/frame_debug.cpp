@@ -249,7 +249,17 @@ Promise.all(shown.map(i=>readout(i,+m[1],+m[2]).then(t=>{i.dataset.readout=t;}))
 .then(()=>{document.body.dataset.probed=shown.length;});});
 if(!fromHash())show(steps.length-1,true);)";
 
-std::string Page(const FrameCapture& capture) {
+// kiln render --watch: the page asks for live.js every second (a script element, which a page
+// opened from a file may load) and reloads itself when it names another frame than its own.
+std::string LiveScript(const std::string& stamp) {
+    return "(function(){const mine='" + stamp +
+           "';setInterval(function(){const s=document.createElement('script');"
+           "s.src='live.js?'+Date.now();s.onload=s.onerror=function(){s.remove();"
+           "if(window.kilnFrame&&window.kilnFrame!==mine)location.reload();};"
+           "document.head.appendChild(s);},1000);})();\n";
+}
+
+std::string Page(const FrameCapture& capture, const std::string& live_stamp) {
     size_t image_count = 0;  // the targets' images and the textures' thumbnails
     for (const DebugStep& s : capture.steps) {
         image_count += s.images.size();
@@ -355,7 +365,8 @@ std::string Page(const FrameCapture& capture) {
         h += "</div>\n</section>\n";
     }
     h += "</main>\n<script>\n" + std::string(kTexelReadoutScript) + "\n" + std::string(kScript) +
-         "\n</script>\n</body></html>\n";
+         "\n" + (live_stamp.empty() ? std::string() : LiveScript(live_stamp)) +
+         "</script>\n</body></html>\n";
     return h;
 }
 
@@ -379,7 +390,9 @@ Status MakeFolder(const std::string& dir, const char* name) {
 
 }  // namespace
 
-Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
+Status WriteFrameDebug(const std::string& dir,
+                       const FrameCapture& capture,
+                       const std::string& live_stamp) {
     for (const char* folder : {"steps", "textures"}) {
         if (Status e = MakeFolder(dir, folder); !e.ok()) {
             return e;
@@ -431,8 +444,13 @@ Status WriteFrameDebug(const std::string& dir, const FrameCapture& capture) {
         !e.ok()) {
         return e;
     }
-    return base::WriteFileAtomically((fs::path(dir) / "index.html").string(), Page(capture),
-                                     replace_links);
+    if (Status e = base::WriteFileAtomically((fs::path(dir) / "index.html").string(),
+                                             Page(capture, live_stamp), replace_links);
+        !e.ok() || live_stamp.empty()) {
+        return e;
+    }
+    return base::WriteFileAtomically((fs::path(dir) / "live.js").string(),
+                                     "window.kilnFrame='" + live_stamp + "';\n", replace_links);
 }
 
 }  // namespace kiln::tools
