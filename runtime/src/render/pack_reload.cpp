@@ -3,8 +3,10 @@
 // every stage and the reflection its layout and vertex input are made from.
 #include <xxhash.h>
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "kiln/runtime/renderer.h"
@@ -105,6 +107,31 @@ void ForgetFrames(Renderer::State& s) {
     s.frame_cache.reset();
 }
 
+// The pipelines of pack `index`: each kept, re-tagged to the variant `new_variant` gives for its
+// old one, or destroyed where it gives none. Other packs' pipelines are untouched.
+Renderer::PackReload KeepPipelines(
+    Renderer::State& s,
+    size_t index,
+    const std::function<std::optional<uint32_t>(uint32_t)>& new_variant) {
+    Renderer::PackReload out;
+    std::deque<PipelineEntry> kept;
+    for (PipelineEntry& p : s.pipelines) {
+        if (p.pack == index) {
+            const std::optional<uint32_t> v = new_variant(p.variant);
+            if (!v) {
+                vk::DestroyPipeline(s.context, p.pipeline);
+                ++out.pipelines_dropped;
+                continue;
+            }
+            p.variant = *v;
+            ++out.pipelines_kept;
+        }
+        kept.push_back(std::move(p));
+    }
+    s.pipelines = std::move(kept);
+    return out;
+}
+
 }  // namespace
 
 Result<Renderer::PackReload> Renderer::ReplacePack(size_t index, const std::string& path) {
@@ -133,23 +160,12 @@ Result<Renderer::PackReload> Renderer::ReplacePack(size_t index, const std::stri
         by_content.emplace(ContentKey(loaded->pack, v), v);
 
     ForgetFrames(s);
-    PackReload out;
     const pack::Pack& old = s.packs[index]->pack;
-    std::deque<PipelineEntry> kept;
-    for (PipelineEntry& p : s.pipelines) {
-        if (p.pack == index) {
-            const auto it = by_content.find(ContentKey(old, p.variant));
-            if (it == by_content.end()) {
-                vk::DestroyPipeline(s.context, p.pipeline);
-                ++out.pipelines_dropped;
-                continue;
-            }
-            p.variant = it->second;
-            ++out.pipelines_kept;
-        }
-        kept.push_back(std::move(p));
-    }
-    s.pipelines = std::move(kept);
+    const PackReload out =
+        KeepPipelines(s, index, [&](uint32_t variant) -> std::optional<uint32_t> {
+            const auto it = by_content.find(ContentKey(old, variant));
+            return it == by_content.end() ? std::nullopt : std::optional<uint32_t>(it->second);
+        });
     s.packs[index] = std::move(loaded);
     return out;
 }
@@ -159,15 +175,7 @@ Status Renderer::RemovePack(size_t index) {
     if (index >= s.packs.size())
         return BadIndex(index, s.packs.size());
     ForgetFrames(s);
-    std::deque<PipelineEntry> kept;
-    for (PipelineEntry& p : s.pipelines) {
-        if (p.pack == index) {
-            vk::DestroyPipeline(s.context, p.pipeline);
-        } else {
-            kept.push_back(std::move(p));
-        }
-    }
-    s.pipelines = std::move(kept);
+    (void)KeepPipelines(s, index, [](uint32_t) { return std::optional<uint32_t>(); });
     auto empty = std::make_unique<LoadedPack>();  // finds no shader; the index stays taken
     empty->selector =
         std::make_unique<pack::VariantSelector>(empty->pack, s.options.missing_variant);
