@@ -1,6 +1,15 @@
 #include "hlsl/file_cache.h"
 
+#include "hlsl/pp_skeleton.h"
+
 namespace kiln::hlsl {
+
+std::string_view ServedText(const SourceFile& file) {
+    std::string_view text = file.text();
+    if (text.substr(0, 3) == "\xEF\xBB\xBF")
+        text.remove_prefix(3);
+    return text;
+}
 
 std::shared_ptr<const SourceFile> FileCache::Get(const std::string& path) {
     {
@@ -33,6 +42,20 @@ std::vector<std::shared_ptr<const SourceFile>> FileCache::Files() const {
             out.push_back(file);
     }
     return out;
+}
+
+std::shared_ptr<const PpSkeleton> FileCache::Skeleton(
+    const std::shared_ptr<const SourceFile>& file) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto it = skeletons_.find(file->path());
+        if (it != skeletons_.end() && it->second.first == file)
+            return it->second.second;
+    }
+    auto skeleton = std::make_shared<const PpSkeleton>(ScanSkeleton(ServedText(*file)));
+    std::lock_guard<std::mutex> lock(mu_);
+    skeletons_[file->path()] = {file, skeleton};
+    return skeleton;
 }
 
 }  // namespace kiln::hlsl

@@ -9,11 +9,19 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "kiln/source.h"
 
 namespace kiln::hlsl {
+
+struct PpSkeleton;
+
+// A file's text as glslang's preprocessor is given it: glslang does not skip a UTF-8 byte-order
+// mark, so the text after it.
+std::string_view ServedText(const SourceFile& file);
 
 class FileCache {
   public:
@@ -30,11 +38,18 @@ class FileCache {
     void Put(std::shared_ptr<const SourceFile> file);
     // Every file successfully read, sorted by path.
     std::vector<std::shared_ptr<const SourceFile>> Files() const;
+    // The directive lines of `file`'s served text (hlsl/pp_skeleton.h), scanned once per file.
+    // Thread-safe.
+    std::shared_ptr<const PpSkeleton> Skeleton(const std::shared_ptr<const SourceFile>& file);
 
   private:
     Loader loader_;
     mutable std::mutex mu_;
     std::map<std::string, std::shared_ptr<const SourceFile>> files_;  // null: tried, absent
+    // Path -> the file scanned and its skeleton (scanned again when the path's file changes).
+    std::map<std::string,
+             std::pair<std::shared_ptr<const SourceFile>, std::shared_ptr<const PpSkeleton>>>
+        skeletons_;
 };
 
 }  // namespace kiln::hlsl

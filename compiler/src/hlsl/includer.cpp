@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "hlsl/inactive_text.h"
 #include "hlsl/unity_versions.h"
 
 namespace kiln::hlsl {
@@ -74,10 +75,15 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
     if (!file)
         return nullptr;
     held_.push_back(file);
-    // glslang's preprocessor does not skip a UTF-8 byte-order mark: serve the text after it.
-    std::string_view text = file->text();
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") {
-        text.remove_prefix(3);
+    std::string_view text = ServedText(*file);
+    if (plan_) {
+        if (requests_ < plan_->inclusions.size() && plan_->inclusions[requests_].path == path) {
+            text = plan_->inclusions[requests_].text;
+            ++from_plan_;
+            ++requests_;
+        } else {
+            plan_ = nullptr;  // glslang left the plan: as they are from here on
+        }
     }
     return new IncludeResult(path, text.data(), text.size(), nullptr);
 }
@@ -101,6 +107,12 @@ std::vector<std::string> Includer::Served() const {
             out.push_back(file->path());
     }
     return out;
+}
+
+void Includer::UsePlan(const InactiveTextPlan* plan) {
+    plan_ = plan;
+    requests_ = 0;
+    from_plan_ = 0;
 }
 
 void Includer::releaseInclude(IncludeResult* result) {

@@ -1,7 +1,8 @@
 // Resolves `#include` for glslang: relative to the including file, then each -I directory in
 // order, then the built-in templates/ directory (the files of the --unity-version release). Include
-// guards and `#pragma once` are handled by glslang's preprocessor; this class only finds and serves
-// files (read once via FileCache).
+// guards and `#pragma once` are handled by glslang's preprocessor; this class finds and serves
+// files (read once via FileCache), with the lines glslang would skip blanked when given a plan
+// (hlsl/inactive_text.h).
 #ifndef KILN_HLSL_INCLUDER_H_
 #define KILN_HLSL_INCLUDER_H_
 
@@ -14,6 +15,8 @@
 #include "hlsl/file_cache.h"
 
 namespace kiln::hlsl {
+
+struct InactiveTextPlan;
 
 struct IncludePaths {
     std::vector<std::string> dirs;  // -I, in order
@@ -28,6 +31,8 @@ class Includer : public glslang::TShader::Includer {
     static constexpr size_t kMaxDepth = 64;
 
     Includer(const IncludePaths& paths, FileCache& files) : paths_(paths), files_(files) {}
+    // A new Includer with the same paths and files, and nothing served yet.
+    Includer Fresh() const { return Includer(paths_, files_); }
 
     IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override;
     IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override;
@@ -35,6 +40,13 @@ class Includer : public glslang::TShader::Includer {
 
     // Resolution without glslang: the path `header` resolves to, or "" when not found.
     std::string Resolve(const std::string& header, const std::string& includer, bool local) const;
+
+    // Serves the plan's blanked texts (hlsl/inactive_text.h) while glslang asks for the files it
+    // planned, in its order; from the first other request on, files as they are. Null: none.
+    // The plan must outlive the preprocessing.
+    void UsePlan(const InactiveTextPlan* plan);
+    // Files served from the plan since UsePlan.
+    size_t served_from_plan() const { return from_plan_; }
 
     // The path of every file served so far, in the order first served (for depfiles and for the
     // diagnostics of a compile that ran in a worker process).
@@ -47,6 +59,9 @@ class Includer : public glslang::TShader::Includer {
     FileCache& files_;
     std::vector<std::shared_ptr<const SourceFile>> held_;
     std::string error_text_;
+    const InactiveTextPlan* plan_ = nullptr;
+    size_t requests_ = 0;   // files served since UsePlan
+    size_t from_plan_ = 0;  // of which from the plan
 };
 
 }  // namespace kiln::hlsl

@@ -1,8 +1,10 @@
 #include "worker/execute.h"
 
+#include <cstdlib>
 #include <string_view>
 
 #include "frontend/glslang_stage.h"
+#include "hlsl/inactive_text.h"
 #include "hlsl/includer.h"
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
@@ -32,9 +34,40 @@ bool StageFree(const Request& r, ExecuteContext& context, const hlsl::Includer& 
     return true;
 }
 
+// glslang's preprocessing of the program, with the text it would skip blanked first
+// (hlsl/inactive_text.h). With KILN_CHECK_INACTIVE_TEXT set, also without, and any difference in
+// text, messages or result is an internal error (the corpus tests run so).
+frontend::StageOutput PreprocessBlanked(const Request& r,
+                                        ExecuteContext& context,
+                                        hlsl::Includer& includer) {
+    const hlsl::InactiveTextPlan plan =
+        hlsl::PlanInactiveText(r.source, r.name, includer, context.files);
+    includer.UsePlan(&plan);
+    frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
+    includer.UsePlan(nullptr);
+    static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;
+    if (!check)
+        return out;
+    hlsl::Includer plain = includer.Fresh();
+    const frontend::StageOutput want = frontend::Preprocess(r.stage, r.source, r.name, plain);
+    if (want.ok != out.ok || want.text != out.text || want.info_log != out.info_log) {
+        size_t at = 0;
+        while (at < want.text.size() && at < out.text.size() && want.text[at] == out.text[at])
+            ++at;
+        out.ok = false;
+        out.info_log =
+            "ERROR: internal: blanking skipped text changed glslang's preprocessing "
+            "(result " +
+            std::to_string(want.ok) + " -> " + std::to_string(out.ok) +
+            ", first difference at byte " + std::to_string(at) + ": '" + want.text.substr(at, 80) +
+            "' -> '" + out.text.substr(at, 80) + "')\n" + want.info_log;
+    }
+    return out;
+}
+
 Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& includer) {
     Enter(context, Component::kGlslangPreprocessor);
-    frontend::StageOutput out = frontend::Preprocess(r.stage, r.source, r.name, includer);
+    frontend::StageOutput out = PreprocessBlanked(r, context, includer);
     Response resp;
     resp.ok = out.ok;
     resp.failed_in = out.ok ? Component::kNone : Component::kGlslangPreprocessor;

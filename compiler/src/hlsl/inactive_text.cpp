@@ -1,0 +1,201 @@
+#include "hlsl/inactive_text.h"
+
+#include <memory>
+#include <optional>
+#include <utility>
+
+#include "hlsl/pp_macros.h"
+#include "hlsl/pp_skeleton.h"
+
+namespace kiln::hlsl {
+namespace {
+
+enum class Region { kRead, kMaybe };  // read for certain, or perhaps
+
+// One file as the walk reads it.
+struct File {
+    const std::string& name;  // as glslang names it to the Includer
+    std::string_view text;
+    const PpSkeleton& skeleton;
+    std::vector<std::pair<uint32_t, uint32_t>> blank;  // line ranges, inclusive
+};
+
+struct State {
+    const Includer& includer;
+    FileCache& files;
+    InactiveTextPlan& plan;
+    PpMacros macros;
+    size_t depth = 0;  // files open, as glslang counts them for the Includer
+    bool stopped = false;
+};
+
+void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region);
+
+// The text with the given lines blanked: each keeps only its line break.
+std::string Blanked(const File& f, size_t& blanked_lines) {
+    if (f.blank.empty())
+        return std::string(f.text);
+    const std::vector<uint32_t>& starts = f.skeleton.line_starts;
+    std::string out;
+    out.reserve(f.text.size());
+    size_t copied = 0;
+    for (const auto& [first, last] : f.blank) {
+        out.append(f.text.substr(copied, starts[first] - copied));
+        const bool at_end = last + 1 >= starts.size();
+        out.append(last - first + (at_end ? 0 : 1), '\n');
+        blanked_lines += last - first + 1;
+        // The file's last character stays a line break or not, as glslang checks it.
+        if (at_end && !f.text.empty() && f.text.back() != '\n')
+            out += ' ';
+        copied = at_end ? f.text.size() : starts[last + 1];
+    }
+    out.append(f.text.substr(copied));
+    return out;
+}
+
+// The header an #include names, and whether it was "..." (local) rather than <...>.
+std::optional<std::pair<std::string, bool>> Header(std::string_view rest) {
+    const size_t open = rest.find_first_not_of(" \t\v\f");
+    if (open == std::string_view::npos || (rest[open] != '"' && rest[open] != '<'))
+        return std::nullopt;
+    const char close_char = rest[open] == '"' ? '"' : '>';
+    const size_t close = rest.find(close_char, open + 1);
+    if (close == std::string_view::npos ||
+        rest.find_first_not_of(" \t\v\f", close + 1) != std::string_view::npos)
+        return std::nullopt;
+    return std::make_pair(std::string(rest.substr(open + 1, close - open - 1)), close_char == '"');
+}
+
+void Include(State& s, const File& f, const PpDirective& d) {
+    const auto header = Header(d.rest);
+    if (!header || s.depth + 1 > Includer::kMaxDepth) {
+        s.stopped = true;
+        return;
+    }
+    std::string path = s.includer.Resolve(header->first, f.name, header->second);
+    if (path.empty() && header->second)
+        path = s.includer.Resolve(header->first, f.name, false);
+    const std::shared_ptr<const SourceFile> file = path.empty() ? nullptr : s.files.Get(path);
+    if (!file) {
+        s.stopped = true;
+        return;
+    }
+    const std::shared_ptr<const PpSkeleton> skeleton = s.files.Skeleton(file);
+    const size_t index = s.plan.inclusions.size();
+    s.plan.inclusions.push_back({path, {}});
+    File inner{path, ServedText(*file), *skeleton, {}};
+    if (!skeleton->safe || inner.text.empty()) {
+        s.stopped = !skeleton->safe;
+    } else {
+        ++s.depth;
+        WalkRange(s, inner, 0, static_cast<uint32_t>(skeleton->directives.size()), Region::kRead);
+        --s.depth;
+    }
+    s.plan.inclusions[index].text = Blanked(inner, s.plan.blanked_lines);
+}
+
+std::optional<bool> Condition(const State& s, const PpDirective& d) {
+    switch (d.kind) {
+        case PpKind::kIf:
+        case PpKind::kElif:
+            return s.macros.If(d.rest);
+        case PpKind::kIfdef:
+            return s.macros.Ifdef(d.rest);
+        case PpKind::kIfndef: {
+            const std::optional<bool> defined = s.macros.Ifdef(d.rest);
+            return defined ? std::optional<bool>(!*defined) : std::nullopt;
+        }
+        default:
+            return true;  // #else
+    }
+}
+
+// The conditional whose first directive is `first`; returns the index after its #endif.
+uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
+    const std::vector<PpDirective>& d = f.skeleton.directives;
+    bool taken = false;        // a branch before is read for certain
+    bool maybe_taken = false;  // a branch before may be read
+    uint32_t b = first;
+    for (; d[b].kind != PpKind::kEndif && !s.stopped; b = d[b].next) {
+        const uint32_t next = d[b].next;
+        std::optional<Region> branch = Region::kMaybe;
+        if (region == Region::kRead) {
+            const std::optional<bool> c = taken ? std::optional<bool>(false) : Condition(s, d[b]);
+            if (c && !*c) {
+                branch.reset();  // skipped
+            } else if (!c || maybe_taken) {
+                maybe_taken = true;
+            } else {
+                branch = Region::kRead;
+                taken = true;
+            }
+        }
+        if (!branch) {
+            if (d[b].last_line + 1 < d[next].first_line)
+                f.blank.emplace_back(d[b].last_line + 1, d[next].first_line - 1);
+        } else {
+            WalkRange(s, f, b + 1, next, *branch);
+        }
+    }
+    return b + 1;
+}
+
+void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region) {
+    const std::vector<PpDirective>& d = f.skeleton.directives;
+    for (uint32_t i = begin; i < end && !s.stopped;) {
+        const PpDirective& at = d[i];
+        switch (at.kind) {
+            case PpKind::kIf:
+            case PpKind::kIfdef:
+            case PpKind::kIfndef:
+                i = Conditional(s, f, i, region);
+                continue;
+            case PpKind::kDefine:
+            case PpKind::kUndef:
+                if (region == Region::kMaybe)
+                    s.macros.Forget(at.rest);
+                else if (!(at.kind == PpKind::kDefine ? s.macros.Define(at.rest)
+                                                      : s.macros.Undef(at.rest)))
+                    s.stopped = true;
+                break;
+            case PpKind::kInclude:
+                if (region == Region::kMaybe)
+                    s.stopped = true;  // glslang may or may not read it
+                else
+                    Include(s, f, at);
+                break;
+            case PpKind::kPragma:
+                // `#pragma once` changes what a later #include reads.
+                if (at.rest.find("once") != std::string::npos)
+                    s.stopped = true;
+                break;
+            case PpKind::kKnown:
+                break;
+            default:  // an unknown directive (glslang's error), or a branch out of place
+                if (region == Region::kRead)
+                    s.stopped = true;
+                break;
+        }
+        ++i;
+    }
+}
+
+}  // namespace
+
+InactiveTextPlan PlanInactiveText(std::string_view main,
+                                  const std::string& name,
+                                  const Includer& includer,
+                                  FileCache& files) {
+    InactiveTextPlan plan;
+    const PpSkeleton skeleton = ScanSkeleton(main);
+    File f{name, main, skeleton, {}};
+    if (skeleton.safe) {
+        State s{includer, files, plan, {}};
+        WalkRange(s, f, 0, static_cast<uint32_t>(skeleton.directives.size()), Region::kRead);
+        plan.complete = !s.stopped;
+    }
+    plan.main_text = Blanked(f, plan.blanked_lines);
+    return plan;
+}
+
+}  // namespace kiln::hlsl

@@ -1,0 +1,45 @@
+// The text glslang's preprocessor would skip, blanked before it reads it. Most of what a stage
+// program's preprocessing reads is skipped: Unity's includes hold blocks for other platforms and
+// features, and a file included again behind its guard is skipped whole (Unity's Standard reads
+// 760 KB per program, of which about 70 KB make tokens). glslang tokenizes skipped text as it
+// tokenizes the rest, so it spends most of its time there.
+//
+// The plan walks each file's directive lines (hlsl/pp_skeleton.h) in the order glslang reads
+// them, with a table of the macros defined so far (hlsl/pp_macros.h), and blanks the lines of
+// each conditional branch it knows to be skipped, keeping the directive lines themselves and
+// every line break: glslang's output, messages and line numbers are unchanged. Where it does not
+// know (a condition it cannot evaluate, a file it cannot model), it blanks nothing that depends on
+// it, and where it cannot follow glslang any further (an #include it may or may not read), it
+// stops: the files after that point are served as they are.
+#ifndef KILN_HLSL_INACTIVE_TEXT_H_
+#define KILN_HLSL_INACTIVE_TEXT_H_
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hlsl/includer.h"
+
+namespace kiln::hlsl {
+
+struct InactiveTextPlan {
+    struct Inclusion {
+        std::string path;  // as the Includer resolves it
+        std::string text;  // the served text with its skipped lines blanked
+    };
+    std::string main_text;  // the main source with its skipped lines blanked
+    // Every file glslang's preprocessor will ask for, in order, up to where the plan stopped.
+    std::vector<Inclusion> inclusions;
+    bool complete = false;  // the plan reached the end of the main source
+    size_t blanked_lines = 0;
+};
+
+// The plan for preprocessing `main` (named `name`, as glslang is told) with `includer`.
+InactiveTextPlan PlanInactiveText(std::string_view main,
+                                  const std::string& name,
+                                  const Includer& includer,
+                                  FileCache& files);
+
+}  // namespace kiln::hlsl
+
+#endif  // KILN_HLSL_INACTIVE_TEXT_H_

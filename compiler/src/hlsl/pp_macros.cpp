@@ -1,0 +1,398 @@
+#include "hlsl/pp_macros.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace kiln::hlsl {
+namespace {
+
+constexpr int kMaxExpansionDepth = 32;
+
+bool IsIdentStart(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+
+bool IsIdent(char c) {
+    return IsIdentStart(c) || (c >= '0' && c <= '9');
+}
+
+bool IsSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
+
+// Names glslang's preprocessor may define itself (its preamble: GL_* extensions, VULKAN,
+// GL_SPIRV; __LINE__ and the like), which Kiln does not track.
+bool GlslangOwns(std::string_view name) {
+    return name.rfind("GL_", 0) == 0 || name.rfind("__", 0) == 0 || name == "VULKAN";
+}
+
+enum class Tok { kIdent, kInt, kOp, kBad };
+
+struct Token {
+    Tok kind;
+    std::string_view text;
+    int64_t value = 0;
+};
+
+// A plain decimal, octal or hex int glslang reads as an int; anything else is kBad.
+Token Number(std::string_view s) {
+    Token t{Tok::kBad, s};
+    int base = 10;
+    size_t i = 0;
+    if (s.size() > 1 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+        base = 16;
+        i = 2;
+        if (s.size() == 2)
+            return t;
+    } else if (s.size() > 1 && s[0] == '0') {
+        base = 8;
+        i = 1;
+    }
+    int64_t v = 0;
+    for (; i < s.size(); ++i) {
+        const char c = s[i];
+        int d = -1;
+        if (c >= '0' && c <= '9')
+            d = c - '0';
+        else if (c >= 'a' && c <= 'f')
+            d = c - 'a' + 10;
+        else if (c >= 'A' && c <= 'F')
+            d = c - 'A' + 10;
+        if (d < 0 || d >= base)
+            return t;
+        v = v * base + d;
+        if (v > INT32_MAX)
+            return t;
+    }
+    t.kind = Tok::kInt;
+    t.value = v;
+    return t;
+}
+
+// Splits `s` into tokens; false when it holds a literal or character the evaluation does not take.
+bool Tokenize(std::string_view s, std::vector<Token>& out) {
+    static constexpr std::string_view kTwo[] = {
+        "||", "&&", "==", "!=", ">=", "<=", "<<", ">>", "##"};
+    size_t i = 0;
+    while (i < s.size()) {
+        const char c = s[i];
+        if (IsSpace(c)) {
+            ++i;
+        } else if (IsIdentStart(c)) {
+            size_t j = i;
+            while (j < s.size() && IsIdent(s[j]))
+                ++j;
+            out.push_back({Tok::kIdent, s.substr(i, j - i)});
+            i = j;
+        } else if (c >= '0' && c <= '9') {
+            size_t j = i;
+            while (j < s.size() && (IsIdent(s[j]) || s[j] == '.'))
+                ++j;
+            out.push_back(Number(s.substr(i, j - i)));
+            i = j;
+        } else {
+            size_t n = 1;
+            for (std::string_view two : kTwo) {
+                if (s.substr(i, 2) == two)
+                    n = 2;
+            }
+            out.push_back({Tok::kOp, s.substr(i, n)});
+            i += n;
+        }
+    }
+    for (const Token& t : out) {
+        if (t.kind == Tok::kBad)
+            return false;
+    }
+    return true;
+}
+
+// Reads the identifier at the start of `rest` (after blanks) into `name`; returns what follows.
+std::optional<std::string_view> Name(std::string_view rest, std::string_view& name) {
+    size_t i = 0;
+    while (i < rest.size() && IsSpace(rest[i]))
+        ++i;
+    if (i == rest.size() || !IsIdentStart(rest[i]))
+        return std::nullopt;
+    size_t j = i;
+    while (j < rest.size() && IsIdent(rest[j]))
+        ++j;
+    name = rest.substr(i, j - i);
+    return rest.substr(j);
+}
+
+bool Blank(std::string_view s) {
+    for (char c : s) {
+        if (!IsSpace(c))
+            return false;
+    }
+    return true;
+}
+
+// Recursive descent over expanded tokens, with glslang's operators and precedence.
+struct Parser {
+    const std::vector<Token>& t;
+    size_t i = 0;
+    bool ok = true;
+
+    bool Is(std::string_view op) const {
+        return i < t.size() && t[i].kind == Tok::kOp && t[i].text == op;
+    }
+    static bool Fits(int64_t v) { return v >= INT32_MIN && v <= INT32_MAX; }
+
+    int64_t Unary() {
+        if (i >= t.size()) {
+            ok = false;
+            return 0;
+        }
+        if (t[i].kind == Tok::kInt)
+            return t[i++].value;
+        for (std::string_view op : {"+", "-", "~", "!"}) {
+            if (Is(op)) {
+                ++i;
+                const int64_t v = Unary();
+                if (op == "-")
+                    return -v;
+                if (op == "~")
+                    return ~v;
+                if (op == "!")
+                    return v == 0;
+                return v;
+            }
+        }
+        if (Is("(")) {
+            ++i;
+            const int64_t v = Binary(1);
+            if (!Is(")"))
+                ok = false;
+            ++i;
+            return v;
+        }
+        ok = false;
+        return 0;
+    }
+
+    static int Precedence(std::string_view op) {
+        if (op == "||")
+            return 1;
+        if (op == "&&")
+            return 2;
+        if (op == "|")
+            return 3;
+        if (op == "^")
+            return 4;
+        if (op == "&")
+            return 5;
+        if (op == "==" || op == "!=")
+            return 6;
+        if (op == "<" || op == ">" || op == "<=" || op == ">=")
+            return 7;
+        if (op == "<<" || op == ">>")
+            return 8;
+        if (op == "+" || op == "-")
+            return 9;
+        if (op == "*" || op == "/" || op == "%")
+            return 10;
+        return 0;
+    }
+
+    int64_t Apply(std::string_view op, int64_t a, int64_t b) {
+        if ((op == "/" || op == "%") && b == 0) {
+            ok = false;  // glslang reports a division by zero
+            return 0;
+        }
+        if ((op == "<<" || op == ">>") && (b < 0 || b > 31 || a < 0)) {
+            ok = false;
+            return 0;
+        }
+        int64_t r = 0;
+        if (op == "||")
+            r = (a != 0) || (b != 0);
+        else if (op == "&&")
+            r = (a != 0) && (b != 0);
+        else if (op == "|")
+            r = a | b;
+        else if (op == "^")
+            r = a ^ b;
+        else if (op == "&")
+            r = a & b;
+        else if (op == "==")
+            r = a == b;
+        else if (op == "!=")
+            r = a != b;
+        else if (op == "<")
+            r = a < b;
+        else if (op == ">")
+            r = a > b;
+        else if (op == "<=")
+            r = a <= b;
+        else if (op == ">=")
+            r = a >= b;
+        else if (op == "<<")
+            r = a << b;
+        else if (op == ">>")
+            r = a >> b;
+        else if (op == "+")
+            r = a + b;
+        else if (op == "-")
+            r = a - b;
+        else if (op == "*")
+            r = a * b;
+        else if (op == "/")
+            r = a / b;
+        else if (op == "%")
+            r = a % b;
+        if (!Fits(r))
+            ok = false;  // glslang wraps 32-bit ints: not modelled
+        return r;
+    }
+
+    int64_t Binary(int min_precedence) {
+        int64_t left = Unary();
+        while (ok && i < t.size() && t[i].kind == Tok::kOp) {
+            const int p = Precedence(t[i].text);
+            if (p == 0 || p < min_precedence)
+                break;
+            const std::string_view op = t[i++].text;
+            const int64_t right = Binary(p + 1);
+            left = Apply(op, left, right);
+        }
+        if (!Fits(left))
+            ok = false;
+        return left;
+    }
+};
+
+}  // namespace
+
+bool PpMacros::Define(std::string_view rest) {
+    std::string_view name;
+    const std::optional<std::string_view> after = Name(rest, name);
+    if (!after || name == "defined" || name.rfind("GL_", 0) == 0)
+        return false;
+    Macro m;
+    std::string_view body = *after;
+    if (!body.empty() && body[0] == '(') {
+        m.function_like = true;
+        const size_t close = body.find(')');
+        if (close == std::string_view::npos)
+            return false;
+        body.remove_prefix(close + 1);
+    }
+    while (!body.empty() && IsSpace(body.front()))
+        body.remove_prefix(1);
+    while (!body.empty() && IsSpace(body.back()))
+        body.remove_suffix(1);
+    m.body = std::string(body);
+    unknown_.erase(std::string(name));
+    defined_[std::string(name)] = std::move(m);
+    return true;
+}
+
+bool PpMacros::Undef(std::string_view rest) {
+    std::string_view name;
+    const std::optional<std::string_view> after = Name(rest, name);
+    if (!after || !Blank(*after) || name == "defined" || name.rfind("GL_", 0) == 0)
+        return false;
+    unknown_.erase(std::string(name));
+    defined_.erase(std::string(name));
+    return true;
+}
+
+void PpMacros::Forget(std::string_view rest) {
+    std::string_view name;
+    if (Name(rest, name)) {
+        defined_.erase(std::string(name));
+        unknown_.insert(std::string(name));
+    }
+}
+
+MacroState PpMacros::Lookup(std::string_view name) const {
+    if (GlslangOwns(name))
+        return MacroState::kUnknown;
+    const std::string key(name);
+    if (unknown_.count(key))
+        return MacroState::kUnknown;
+    return defined_.count(key) ? MacroState::kDefined : MacroState::kUndefined;
+}
+
+std::optional<bool> PpMacros::Ifdef(std::string_view rest) const {
+    std::string_view name;
+    const std::optional<std::string_view> after = Name(rest, name);
+    if (!after || !Blank(*after))
+        return std::nullopt;
+    const MacroState s = Lookup(name);
+    if (s == MacroState::kUnknown)
+        return std::nullopt;
+    return s == MacroState::kDefined;
+}
+
+std::optional<bool> PpMacros::If(std::string_view expression) const {
+    std::vector<Token> in;
+    if (!Tokenize(expression, in))
+        return std::nullopt;
+    // Expands `defined` and object-like macros into ints and operators.
+    std::vector<Token> out;
+    bool ok = true;
+    auto expand = [&](auto& self, const std::vector<Token>& tokens, int depth, bool top) -> void {
+        for (size_t i = 0; ok && i < tokens.size(); ++i) {
+            const Token& t = tokens[i];
+            if (t.kind != Tok::kIdent) {
+                out.push_back(t);
+                continue;
+            }
+            if (t.text == "defined") {
+                if (!top) {
+                    ok = false;  // `defined` made by a macro: not modelled
+                    return;
+                }
+                const bool paren = i + 1 < tokens.size() && tokens[i + 1].text == "(";
+                const size_t n = i + (paren ? 2 : 1);
+                if (n >= tokens.size() || tokens[n].kind != Tok::kIdent ||
+                    (paren && (n + 1 >= tokens.size() || tokens[n + 1].text != ")"))) {
+                    ok = false;
+                    return;
+                }
+                const MacroState s = Lookup(tokens[n].text);
+                if (s == MacroState::kUnknown) {
+                    ok = false;
+                    return;
+                }
+                out.push_back({Tok::kInt, "", s == MacroState::kDefined ? 1 : 0});
+                i = n + (paren ? 1 : 0);
+                continue;
+            }
+            const MacroState s = Lookup(t.text);
+            if (s == MacroState::kUnknown) {
+                ok = false;
+                return;
+            }
+            if (s == MacroState::kUndefined) {
+                out.push_back({Tok::kInt, "", 0});
+                continue;
+            }
+            const Macro& m = defined_.at(std::string(t.text));
+            std::vector<Token> body;
+            if (m.function_like || depth >= kMaxExpansionDepth || !Tokenize(m.body, body) ||
+                body.empty()) {
+                ok = false;
+                return;
+            }
+            self(self, body, depth + 1, false);
+        }
+    };
+    expand(expand, in, 0, true);
+    if (!ok)
+        return std::nullopt;
+    for (const Token& t : out) {
+        if (t.kind == Tok::kIdent || t.text == "#" || t.text == "##")
+            return std::nullopt;
+    }
+    Parser p{out};
+    const int64_t v = p.Binary(1);
+    if (!p.ok || p.i != out.size())
+        return std::nullopt;
+    return v != 0;
+}
+
+}  // namespace kiln::hlsl

@@ -1,0 +1,235 @@
+#include "hlsl/pp_skeleton.h"
+
+#include <array>
+#include <utility>
+
+namespace kiln::hlsl {
+namespace {
+
+constexpr std::array<std::pair<std::string_view, PpKind>, 16> kNames = {{
+    {"if", PpKind::kIf},
+    {"ifdef", PpKind::kIfdef},
+    {"ifndef", PpKind::kIfndef},
+    {"elif", PpKind::kElif},
+    {"else", PpKind::kElse},
+    {"endif", PpKind::kEndif},
+    {"define", PpKind::kDefine},
+    {"undef", PpKind::kUndef},
+    {"include", PpKind::kInclude},
+    {"pragma", PpKind::kPragma},
+    {"line", PpKind::kKnown},
+    {"error", PpKind::kKnown},
+    {"extension", PpKind::kKnown},
+    {"version", PpKind::kKnown},
+    {"warning", PpKind::kKnown},
+    {"", PpKind::kUnknown},
+}};
+
+bool IsSpace(int c) {
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
+
+bool IsIdent(int c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// Reads characters as glslang's tStringInput::getch does: backslash-newline pairs vanish.
+struct Cursor {
+    std::string_view t;
+    size_t i = 0;
+    uint32_t line = 0;
+
+    void Splice() {
+        while (i + 1 < t.size() && t[i] == '\\' && (t[i + 1] == '\n' || t[i + 1] == '\r')) {
+            i += (t[i + 1] == '\r' && i + 2 < t.size() && t[i + 2] == '\n') ? 3 : 2;
+            ++line;
+        }
+    }
+    int Peek() {
+        Splice();
+        return i < t.size() ? static_cast<unsigned char>(t[i]) : -1;
+    }
+    // The character after the next one (no splice between them is looked through).
+    int PeekSecond() const { return i + 1 < t.size() ? static_cast<unsigned char>(t[i + 1]) : -1; }
+    int Get() {
+        const int c = Peek();
+        if (c < 0)
+            return c;
+        ++i;
+        if (c == '\r' && i < t.size() && t[i] == '\n')
+            ++i;
+        if (c == '\r' || c == '\n') {
+            ++line;
+            return '\n';
+        }
+        return c;
+    }
+};
+
+struct State {
+    Cursor c;
+    PpSkeleton& out;
+    std::vector<uint32_t> open;  // the last branch directive of each open conditional
+};
+
+// Consumes a block comment whose "/*" is next. Returns false at the end of the file.
+bool BlockComment(Cursor& c) {
+    c.Get();
+    c.Get();
+    int prev = 0;
+    for (int ch = c.Get(); ch >= 0; ch = c.Get()) {
+        if (prev == '*' && ch == '/')
+            return true;
+        prev = ch;
+    }
+    return false;
+}
+
+// Consumes a line comment whose "//" is next, up to (not including) the newline.
+void LineComment(Cursor& c) {
+    while (c.Peek() >= 0 && c.Peek() != '\r' && c.Peek() != '\n')
+        c.Get();
+}
+
+// Consumes a "..." or '...' literal whose quote is next, appending it to `text` (when given).
+// A literal with a backslash or without its closing quote on the line is not modelled.
+bool Literal(Cursor& c, std::string* text) {
+    const int quote = c.Get();
+    if (text)
+        *text += static_cast<char>(quote);
+    for (int ch = c.Peek(); ch >= 0 && ch != '\n' && ch != '\r'; ch = c.Peek()) {
+        c.Get();
+        if (text)
+            *text += static_cast<char>(ch);
+        if (ch == '\\')
+            return false;
+        if (ch == quote)
+            return true;
+    }
+    return false;
+}
+
+// The rest of a non-directive line, up to and including its newline.
+void CodeLine(State& s) {
+    Cursor& c = s.c;
+    for (int ch = c.Peek(); ch >= 0; ch = c.Peek()) {
+        if (ch == '\n' || ch == '\r') {
+            c.Get();
+            return;
+        }
+        if (ch == '/' && c.PeekSecond() == '/') {
+            LineComment(c);
+        } else if (ch == '/' && c.PeekSecond() == '*') {
+            if (!BlockComment(c))
+                s.out.safe = false;
+        } else if (ch == '"' || ch == '\'') {
+            if (!Literal(c, nullptr))
+                s.out.safe = false;
+        } else {
+            c.Get();
+        }
+    }
+}
+
+// Links a conditional's branch directives; false when they do not nest.
+bool Link(State& s, PpKind kind, uint32_t index) {
+    std::vector<PpDirective>& d = s.out.directives;
+    if (kind == PpKind::kIf || kind == PpKind::kIfdef || kind == PpKind::kIfndef) {
+        s.open.push_back(index);
+        return true;
+    }
+    if (kind != PpKind::kElif && kind != PpKind::kElse && kind != PpKind::kEndif)
+        return true;
+    if (s.open.empty() || (d[s.open.back()].kind == PpKind::kElse && kind != PpKind::kEndif))
+        return false;
+    d[s.open.back()].next = index;
+    if (kind == PpKind::kEndif)
+        s.open.pop_back();
+    else
+        s.open.back() = index;
+    return true;
+}
+
+// A directive line whose '#' is next.
+void Directive(State& s) {
+    Cursor& c = s.c;
+    PpDirective d;
+    d.first_line = c.line;
+    c.Get();
+    while (IsSpace(c.Peek()))
+        c.Get();
+    std::string name;
+    while (IsIdent(c.Peek()))
+        name += static_cast<char>(c.Get());
+    for (const auto& [n, kind] : kNames) {
+        if (n == name || n.empty()) {
+            d.kind = kind;
+            break;
+        }
+    }
+    for (int ch = c.Peek(); ch >= 0; ch = c.Peek()) {
+        if (ch == '\n' || ch == '\r')
+            break;
+        if (ch == '/' && c.PeekSecond() == '/') {
+            LineComment(c);
+        } else if (ch == '/' && c.PeekSecond() == '*') {
+            const uint32_t line = c.line;
+            if (!BlockComment(c) || c.line != line)
+                s.out.safe = false;  // a comment that joins lines of a directive: not modelled
+            d.rest += ' ';
+        } else if (ch == '"' || ch == '\'') {
+            if (!Literal(c, &d.rest))
+                s.out.safe = false;
+        } else {
+            d.rest += static_cast<char>(c.Get());
+        }
+    }
+    d.last_line = c.line;
+    c.Get();
+    const uint32_t index = static_cast<uint32_t>(s.out.directives.size());
+    const PpKind kind = d.kind;
+    s.out.directives.push_back(std::move(d));
+    if (!Link(s, kind, index))
+        s.out.safe = false;
+}
+
+}  // namespace
+
+PpSkeleton ScanSkeleton(std::string_view text) {
+    PpSkeleton out;
+    out.line_starts.push_back(0);
+    for (size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\n')
+            out.line_starts.push_back(static_cast<uint32_t>(i + 1));
+        else if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))
+            out.safe = false;  // a lone CR ends a line for glslang but not its line count
+    }
+    out.line_count = static_cast<uint32_t>(out.line_starts.size());
+    if (!out.safe)
+        return out;
+    State s{Cursor{text}, out, {}};
+    while (s.c.Peek() >= 0) {
+        while (IsSpace(s.c.Peek()))
+            s.c.Get();
+        bool comment_first = false;
+        while (s.c.Peek() == '/' && s.c.PeekSecond() == '*') {
+            if (!BlockComment(s.c))
+                out.safe = false;
+            comment_first = true;
+            while (IsSpace(s.c.Peek()))
+                s.c.Get();
+        }
+        if (s.c.Peek() == '#') {
+            if (comment_first)
+                out.safe = false;  // whether glslang takes this as a directive is not modelled
+            Directive(s);
+        } else {
+            CodeLine(s);
+        }
+    }
+    if (!s.open.empty())
+        out.safe = false;
+    return out;
+}
+
+}  // namespace kiln::hlsl

@@ -1,0 +1,264 @@
+#include "hlsl/inactive_text.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "frontend/glslang_stage.h"
+#include "hlsl/pp_macros.h"
+#include "hlsl/pp_skeleton.h"
+#include "support/compile_support.h"
+
+namespace kiln::hlsl {
+namespace {
+
+using test::ScratchDir;
+
+// glslang's preprocessing of `main` as it is, and with the plan's blanked texts: they must be
+// the same, text and messages. Returns the plan.
+InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir, const std::string& main) {
+    FileCache files;
+    const IncludePaths paths{{dir.path()}, "", 0};
+    const std::string name = dir.path() + "/main.hlsl";
+    Includer plain(paths, files);
+    const frontend::StageOutput want =
+        frontend::Preprocess(pack::Stage::kFragment, main, name, plain);
+    Includer planned(paths, files);
+    InactiveTextPlan plan = PlanInactiveText(main, name, planned, files);
+    planned.UsePlan(&plan);
+    const frontend::StageOutput got =
+        frontend::Preprocess(pack::Stage::kFragment, plan.main_text, name, planned);
+    if (want.ok) {  // glslang stops at its first error, and asks for no more files
+        EXPECT_EQ(planned.served_from_plan(), plan.inclusions.size());
+    }
+    EXPECT_EQ(want.ok, got.ok);
+    EXPECT_EQ(want.text, got.text) << main;
+    EXPECT_EQ(want.info_log, got.info_log);
+    return plan;
+}
+
+TEST(PpSkeleton, FindsDirectivesAsGlslangSplitsLines) {
+    const PpSkeleton s = ScanSkeleton(
+        "#if A\n"
+        "x /* #endif\n"
+        "#else */ y\n"
+        "  #  define B \\\n"
+        "    1 // two lines\n"
+        "z \"/*\" w\n"
+        "#elif defined(C) /* c */\n"
+        "#endif");
+    ASSERT_TRUE(s.safe);
+    ASSERT_EQ(s.directives.size(), 4u);
+    EXPECT_EQ(s.directives[0].kind, PpKind::kIf);
+    EXPECT_EQ(s.directives[0].next, 2u);
+    EXPECT_EQ(s.directives[1].kind, PpKind::kDefine);
+    EXPECT_EQ(s.directives[1].first_line, 3u);
+    EXPECT_EQ(s.directives[1].last_line, 4u);
+    EXPECT_EQ(s.directives[1].rest, " B     1 ");
+    EXPECT_EQ(s.directives[2].kind, PpKind::kElif);
+    EXPECT_EQ(s.directives[2].rest, " defined(C)  ");
+    EXPECT_EQ(s.directives[2].next, 3u);
+    EXPECT_EQ(s.directives[3].kind, PpKind::kEndif);
+    EXPECT_EQ(s.line_count, 8u);
+}
+
+TEST(PpSkeleton, WhatItCannotModelIsNotSafe) {
+    EXPECT_FALSE(ScanSkeleton("#if A\n").safe);   // no #endif
+    EXPECT_FALSE(ScanSkeleton("#endif\n").safe);  // no #if
+    EXPECT_FALSE(ScanSkeleton("#if A\n#else\n#else\n#endif\n").safe);
+    EXPECT_FALSE(ScanSkeleton("x /* never closed\n").safe);
+    EXPECT_FALSE(ScanSkeleton("a\rb\n").safe);  // a lone CR
+    EXPECT_FALSE(ScanSkeleton("/* c */ #define A\n").safe);
+    EXPECT_FALSE(ScanSkeleton("#define A /* two\n lines */ 1\n").safe);
+    EXPECT_FALSE(ScanSkeleton("x = \"a\\\"b\";\n").safe);  // an escape in a string
+    EXPECT_TRUE(ScanSkeleton("#if A\r\nx\r\n#endif\r\n").safe);
+}
+
+TEST(PpMacros, EvaluatesAsGlslangOrSaysItDoesNotKnow) {
+    PpMacros m;
+    ASSERT_TRUE(m.Define(" A 1"));
+    ASSERT_TRUE(m.Define(" B A + 2"));
+    ASSERT_TRUE(m.Define(" E"));
+    ASSERT_TRUE(m.Define(" F(x) x"));
+    EXPECT_EQ(m.If(" defined(A) && B == 3"), true);
+    EXPECT_EQ(m.If(" defined A && !defined(Z)"), true);
+    EXPECT_EQ(m.If(" Z"), false);  // an undefined name is 0
+    EXPECT_EQ(m.If(" 1 + 2 * 3 == 7 && (1 << 4) == 0x10 && 010 == 8"), true);
+    EXPECT_EQ(m.If(" -1 < 0 && ~0 == -1 && 7 % 4 == 3 && 7 / 2 == 3"), true);
+    EXPECT_EQ(m.If(" 1 || 0 && 0"), true);
+    EXPECT_EQ(m.Ifdef(" E"), true);
+    EXPECT_EQ(m.Ifdef(" Z"), false);
+    // Not known: function-like macros, an empty expansion, other literals, division by zero,
+    // ternaries, names glslang defines itself, trailing tokens.
+    for (const char* e :
+         {" F(1)", " E", " 1.0", " 1u", " 1 / 0", " 1 ? 2 : 3", " GL_ES", " defined(__LINE__)",
+          " VULKAN", " 1 2", " (1", " \"s\"", " 2147483647 + 1"}) {
+        EXPECT_EQ(m.If(e), std::nullopt) << e;
+    }
+    EXPECT_EQ(m.Ifdef(" A B"), std::nullopt);
+    m.Forget(" A");
+    EXPECT_EQ(m.Lookup("A"), MacroState::kUnknown);
+    EXPECT_EQ(m.If(" B"), std::nullopt);
+    ASSERT_TRUE(m.Undef(" A"));
+    EXPECT_EQ(m.Lookup("A"), MacroState::kUndefined);
+    EXPECT_FALSE(m.Define(" GL_FOO 1"));
+    EXPECT_FALSE(m.Define(" 1A"));
+}
+
+TEST(InactiveText, BlanksSkippedBranchesAndGuardedFilesWithoutChangingGlslangsOutput) {
+    ScratchDir dir;
+    dir.Write("guard.h",
+              "#ifndef GUARD_H\n#define GUARD_H\n"
+              "#if defined(FAST) || QUALITY > 2\nfloat fast_or_good;\n#elif QUALITY == 2\n"
+              "float medium;\n#else\n#define LOW 1\nfloat low; /* a comment\n#endif\n*/\n#endif\n"
+              "#endif\n");
+    dir.Write("other.h", "#include \"guard.h\"\n#ifdef LOW\nfloat was_low;\n#endif\nint tail");
+    const InactiveTextPlan plan = ExpectSamePreprocessing(
+        dir,
+        "#define QUALITY 2\n#include \"guard.h\"\n#include \"other.h\"\n#include \"guard.h\"\n"
+        "#if QUALITY == 2\nfloat main_medium;\n#else\nfloat main_other;\n#endif\n");
+    EXPECT_TRUE(plan.complete);
+    ASSERT_EQ(plan.inclusions.size(), 4u);
+    // The second and third inclusions of guard.h are blank but for their directive lines.
+    EXPECT_EQ(plan.inclusions[2].text, "#ifndef GUARD_H\n" + std::string(11, '\n') + "#endif\n");
+    EXPECT_EQ(plan.inclusions[3].text, plan.inclusions[2].text);
+    EXPECT_EQ(plan.inclusions[0].text.find("fast_or_good"), std::string::npos);
+    EXPECT_NE(plan.inclusions[0].text.find("medium"), std::string::npos);
+    EXPECT_EQ(plan.main_text.find("main_other"), std::string::npos);
+}
+
+TEST(InactiveText, WhatItCannotEvaluateStaysAndAnIncludeItMayNotReadStopsIt) {
+    ScratchDir dir;
+    dir.Write("a.h", "float a;\n");
+    dir.Write("b.h", "#if 0\nfloat b_never;\n#endif\nfloat b;\n");
+    const InactiveTextPlan plan =
+        ExpectSamePreprocessing(dir,
+                                "#define F(x) x\n"
+                                "#if F(1)\n#define MAYBE 1\nfloat f;\n#else\nfloat not_f;\n#endif\n"
+                                "#if MAYBE\nfloat maybe;\n#endif\n"
+                                "#if 0\nfloat never;\n#endif\n"
+                                "#include \"a.h\"\n"
+                                "#if F(0)\n#include \"b.h\"\n#endif\n"
+                                "#if 0\nfloat never_after_stop;\n#endif\n");
+    EXPECT_FALSE(plan.complete);
+    EXPECT_EQ(plan.inclusions.size(), 1u);
+    EXPECT_NE(plan.main_text.find("not_f"), std::string::npos);
+    EXPECT_NE(plan.main_text.find("float maybe"), std::string::npos);
+    EXPECT_EQ(plan.main_text.find("float never;"), std::string::npos);
+    EXPECT_NE(plan.main_text.find("never_after_stop"), std::string::npos);
+}
+
+TEST(InactiveText, KeepsLineBreaksOfContinuedAndCrLfLinesAndTheLastCharacter) {
+    ScratchDir dir;
+    dir.Write("crlf.h", "#if 0\r\nfloat x; \\\r\nfloat y;\r\n#endif\r\nfloat z;\r\n");
+    dir.Write("bom.h", "\xEF\xBB\xBF#if 0\nfloat b;\n#endif\nfloat c;\n");
+    dir.Write("last.h", "#ifdef NOPE\nfloat n;\n#else\nfloat e;\n#endif");
+    ExpectSamePreprocessing(dir,
+                            "#include \"crlf.h\"\n#include \"last.h\"\n#include \"bom.h\"\n"
+                            "#if 1\n#else\nfloat q = \\\n  1;\n#endif\nfloat w = __LINE__;\n");
+}
+
+// Random programs over a few macros: conditionals nested and chained, defines and undefines in
+// branches, includes with and without guards, expressions the plan evaluates and ones it does
+// not. glslang must preprocess each alike with and without the blanking.
+class RandomProgram {
+  public:
+    explicit RandomProgram(uint32_t seed) : rng_(seed) {}
+
+    std::string File(int depth, int files) {
+        std::string s;
+        const int lines = Pick(2, 5);
+        for (int i = 0; i < lines; ++i)
+            s += Line(depth, files);
+        return s;
+    }
+
+  private:
+    int Pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+    std::string Name() { return std::string(1, static_cast<char>('A' + Pick(0, 4))); }
+
+    std::string Expression(int depth) {
+        switch (Pick(0, depth > 1 ? 4 : 12)) {
+            case 0:
+                return "defined(" + Name() + ")";
+            case 1:
+                return Name();
+            case 2:
+                return Name() + " == " + std::to_string(Pick(0, 2));
+            case 3:
+                return "!defined " + Name();
+            case 4:
+                return std::to_string(Pick(0, 1));
+            case 5:
+                return "(" + Expression(depth + 1) + " && " + Expression(depth + 1) + ")";
+            case 6:
+                return Expression(depth + 1) + " || " + Expression(depth + 1);
+            case 7:
+                return "FN(" + Name() + ")";  // not evaluated by the plan
+            default:
+                return Name() + " + 1 > " + std::to_string(Pick(0, 3));
+        }
+    }
+
+    std::string Line(int depth, int files) {
+        const int kind = Pick(0, depth > 2 ? 3 : 7);
+        switch (kind) {
+            case 0:
+                return "float v" + std::to_string(counter_++) + " = " + Name() + ";\n";
+            case 1: {
+                // Undefined first: a redefinition with another value is glslang's error.
+                const std::string n = Name();
+                return "#undef " + n + "\n#define " + n + " " + std::to_string(Pick(0, 2)) + "\n";
+            }
+            case 2:
+                return "#undef " + Name() + "\n";
+            case 3:
+                return files > 0 ? "#include \"f" + std::to_string(Pick(0, files - 1)) + ".h\"\n"
+                                 : "// nothing\n";
+            default: {
+                std::string s =
+                    Pick(0, 1) ? "#if " + Expression(0) + "\n" : "#ifdef " + Name() + "\n";
+                s += File(depth + 1, files);
+                for (int e = Pick(0, 2); e > 0; --e)
+                    s += "#elif " + Expression(0) + "\n" + File(depth + 1, files);
+                if (Pick(0, 1))
+                    s += "#else /* else */\n" + File(depth + 1, files);
+                return s + "#endif\n";
+            }
+        }
+    }
+
+    std::mt19937 rng_;
+    int counter_ = 0;
+};
+
+TEST(InactiveText, RandomProgramsPreprocessAlike) {
+    size_t blanked = 0, complete = 0;
+    for (uint32_t seed = 1; seed <= 300; ++seed) {
+        ScratchDir dir;
+        RandomProgram g(seed);
+        // f0.h includes nothing; each later file may include the ones before it, some guarded.
+        for (int f = 0; f < 4; ++f) {
+            std::string text = g.File(1, f);
+            if (f % 2 == 1)
+                text = "#ifndef F" + std::to_string(f) + "_H\n#define F" + std::to_string(f) +
+                       "_H\n" + text + "#endif\n";
+            dir.Write("f" + std::to_string(f) + ".h", text);
+        }
+        const InactiveTextPlan plan =
+            ExpectSamePreprocessing(dir, "#define FN(x) x\n" + g.File(0, 4));
+        blanked += plan.blanked_lines;
+        complete += plan.complete;
+        if (::testing::Test::HasFailure()) {
+            ADD_FAILURE() << "seed " << seed;
+            break;
+        }
+    }
+    // The generator gives the plan work to do: it blanks lines in most programs, and reaches the
+    // end of many.
+    EXPECT_GT(complete, 60u) << blanked;
+    EXPECT_GT(blanked, 100000u) << complete;
+}
+
+}  // namespace
+}  // namespace kiln::hlsl
