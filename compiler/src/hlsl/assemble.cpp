@@ -7,9 +7,7 @@
 #include "kiln/pack/engine_names.h"
 
 namespace kiln::hlsl {
-namespace {
 
-// Unity's SHADER_STAGE_* macro of the stage being compiled.
 const char* StageMacro(pack::Stage stage) {
     switch (stage) {
         case pack::Stage::kVertex:
@@ -25,6 +23,8 @@ const char* StageMacro(pack::Stage stage) {
     }
     return "SHADER_STAGE_VERTEX";
 }
+
+namespace {
 
 using Macros = std::vector<std::pair<std::string, std::string>>;
 

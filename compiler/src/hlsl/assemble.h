@@ -22,6 +22,9 @@ inline constexpr const char* kPreludeName = "<kiln prelude>";
 inline constexpr const char* kImplicitIncludes[] = {
     "HLSLSupport.cginc", "UnityShaderVariables.cginc", "UnityShaderUtilities.cginc"};
 
+// Unity's SHADER_STAGE_* macro of a stage, which the prelude defines to 1.
+const char* StageMacro(pack::Stage stage);
+
 struct AssembleInput {
     std::string file_name;                               // as given in #line (see LineName)
     std::vector<const shaderlab::ProgramBlock*> blocks;  // include blocks, then the program

@@ -58,4 +58,17 @@ std::shared_ptr<const PpSkeleton> FileCache::Skeleton(
     return skeleton;
 }
 
+std::optional<std::string> FileCache::Resolved(const std::string& key) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto it = resolved_.find(key);
+    if (it == resolved_.end())
+        return std::nullopt;
+    return it->second;
+}
+
+void FileCache::RememberResolved(const std::string& key, const std::string& path) {
+    std::lock_guard<std::mutex> lock(mu_);
+    resolved_.emplace(key, path);
+}
+
 }  // namespace kiln::hlsl

@@ -41,6 +41,10 @@ class FileCache {
     // The directive lines of `file`'s served text (hlsl/pp_skeleton.h), scanned once per file.
     // Thread-safe.
     std::shared_ptr<const PpSkeleton> Skeleton(const std::shared_ptr<const SourceFile>& file);
+    // Include resolutions remembered (Includer::Resolve, whose answers depend only on the files
+    // here and its key): the path, "" when not found, nullopt when not asked yet. Thread-safe.
+    std::optional<std::string> Resolved(const std::string& key) const;
+    void RememberResolved(const std::string& key, const std::string& path);
 
   private:
     Loader loader_;
@@ -50,6 +54,7 @@ class FileCache {
     std::map<std::string,
              std::pair<std::shared_ptr<const SourceFile>, std::shared_ptr<const PpSkeleton>>>
         skeletons_;
+    std::map<std::string, std::string> resolved_;
 };
 
 }  // namespace kiln::hlsl

@@ -1,5 +1,6 @@
 #include "hlsl/inactive_text.h"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -12,6 +13,13 @@ namespace {
 
 enum class Region { kRead, kMaybe };  // read for certain, or perhaps
 
+bool IsIdentChar(std::string_view s, size_t i) {
+    if (i >= s.size())
+        return false;
+    const char c = s[i];
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
 // One file as the walk reads it.
 struct File {
     const std::string& name;  // as glslang names it to the Includer
@@ -23,6 +31,7 @@ struct File {
 struct State {
     const Includer& includer;
     FileCache& files;
+    const PlanOptions& options;
     InactiveTextPlan& plan;
     PpMacros macros;
     size_t depth = 0;  // files open, as glslang counts them for the Includer
@@ -51,6 +60,46 @@ std::string Blanked(const File& f, size_t& blanked_lines) {
     }
     out.append(f.text.substr(copied));
     return out;
+}
+
+// The index of the directive on physical line `line`, or npos.
+size_t DirectiveAt(const PpSkeleton& skeleton, uint32_t line) {
+    const auto& d = skeleton.directives;
+    auto it = std::upper_bound(d.begin(), d.end(), line,
+                               [](uint32_t l, const PpDirective& x) { return l < x.first_line; });
+    if (it == d.begin() || (it - 1)->last_line < line)
+        return std::string::npos;
+    return static_cast<size_t>(it - 1 - d.begin());
+}
+
+// Whether `f`'s lines that glslang reads name PlanOptions::unknown only in conditions, or in
+// their own #define and #undef.
+bool MentionsOnlyInConditions(const State& s, const File& f) {
+    const std::vector<uint32_t>& starts = f.skeleton.line_starts;
+    for (const std::string& name : s.options.unknown) {
+        for (size_t at = f.text.find(name); at != std::string_view::npos;
+             at = f.text.find(name, at + 1)) {
+            const auto line = static_cast<uint32_t>(
+                std::upper_bound(starts.begin(), starts.end(), static_cast<uint32_t>(at)) -
+                starts.begin() - 1);
+            const auto blank =
+                std::upper_bound(f.blank.begin(), f.blank.end(), std::make_pair(line, UINT32_MAX));
+            if (blank != f.blank.begin() && (blank - 1)->second >= line)
+                continue;  // blanked
+            const size_t i = DirectiveAt(f.skeleton, line);
+            if (i == std::string::npos)
+                return false;
+            const PpDirective& d = f.skeleton.directives[i];
+            const bool condition = d.kind == PpKind::kIf || d.kind == PpKind::kIfdef ||
+                                   d.kind == PpKind::kIfndef || d.kind == PpKind::kElif;
+            const bool own = (d.kind == PpKind::kDefine || d.kind == PpKind::kUndef) &&
+                             d.rest.find_first_not_of(" \t") == d.rest.find(name) &&
+                             !IsIdentChar(d.rest, d.rest.find(name) + name.size());
+            if (!condition && !own)
+                return false;
+        }
+    }
+    return true;
 }
 
 // The header an #include names, and whether it was "..." (local) rather than <...>.
@@ -91,6 +140,8 @@ void Include(State& s, const File& f, const PpDirective& d) {
         WalkRange(s, inner, 0, static_cast<uint32_t>(skeleton->directives.size()), Region::kRead);
         --s.depth;
     }
+    if (!s.options.unknown.empty() && !MentionsOnlyInConditions(s, inner))
+        s.plan.unknown_only_in_conditions = false;
     s.plan.inclusions[index].text = Blanked(inner, s.plan.blanked_lines);
 }
 
@@ -125,6 +176,7 @@ uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
                 branch.reset();  // skipped
             } else if (!c || maybe_taken) {
                 maybe_taken = true;
+                ++s.plan.maybe_branches;
             } else {
                 branch = Region::kRead;
                 taken = true;
@@ -185,14 +237,19 @@ void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region) {
 InactiveTextPlan PlanInactiveText(std::string_view main,
                                   const std::string& name,
                                   const Includer& includer,
-                                  FileCache& files) {
+                                  FileCache& files,
+                                  const PlanOptions& options) {
     InactiveTextPlan plan;
     const PpSkeleton skeleton = ScanSkeleton(main);
     File f{name, main, skeleton, {}};
     if (skeleton.safe) {
-        State s{includer, files, plan, {}};
+        State s{includer, files, options, plan, {}};
+        for (const std::string& unknown : options.unknown)
+            s.macros.Pin(unknown);
         WalkRange(s, f, 0, static_cast<uint32_t>(skeleton.directives.size()), Region::kRead);
         plan.complete = !s.stopped;
+        if (!options.unknown.empty() && !MentionsOnlyInConditions(s, f))
+            plan.unknown_only_in_conditions = false;
     }
     plan.main_text = Blanked(f, plan.blanked_lines);
     return plan;

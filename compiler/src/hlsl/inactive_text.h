@@ -32,13 +32,32 @@ struct InactiveTextPlan {
     std::vector<Inclusion> inclusions;
     bool complete = false;  // the plan reached the end of the main source
     size_t blanked_lines = 0;
+    // Branches glslang may or may not read, for what the plan did not know.
+    size_t maybe_branches = 0;
+    // Every line glslang reads that names one of PlanOptions::unknown is a condition, or that
+    // macro's own #define or #undef.
+    bool unknown_only_in_conditions = true;
+
+    // True when glslang's output is the same whatever PlanOptions::unknown are defined to (for
+    // sources that differ only in their #define lines): the plan reached the end, and decided
+    // every branch without them, and no line glslang reads expands them.
+    bool OutputIgnoresUnknown() const {
+        return complete && maybe_branches == 0 && unknown_only_in_conditions;
+    }
+};
+
+struct PlanOptions {
+    // Macros taken as not known whatever the text defines: every branch the plan blanks is then
+    // skipped whatever they are.
+    std::vector<std::string> unknown;
 };
 
 // The plan for preprocessing `main` (named `name`, as glslang is told) with `includer`.
 InactiveTextPlan PlanInactiveText(std::string_view main,
                                   const std::string& name,
                                   const Includer& includer,
-                                  FileCache& files);
+                                  FileCache& files,
+                                  const PlanOptions& options = {});
 
 }  // namespace kiln::hlsl
 

@@ -38,6 +38,25 @@ std::string Includer::Resolve(const std::string& header,
                               bool local) const {
     if (header.empty())
         return "";
+    // Everything the answer depends on: the header, the including file's folder (local and
+    // project includes start there), the search paths.
+    std::string key = header;
+    key += '\n';
+    key += includer.substr(0, includer.find_last_of('/') + 1);
+    key += local ? "\nL\n" : "\nS\n";
+    for (const std::string& dir : paths_.dirs)
+        key += dir + '\n';
+    key += paths_.templates_dir + '\n' + std::to_string(paths_.unity_version);
+    if (std::optional<std::string> known = files_.Resolved(key))
+        return *known;
+    std::string path = Search(header, includer, local);
+    files_.RememberResolved(key, path);
+    return path;
+}
+
+std::string Includer::Search(const std::string& header,
+                             const std::string& includer,
+                             bool local) const {
     std::vector<std::string> candidates;
     if (fs::path(header).is_absolute()) {
         candidates.push_back(fs::path(header).lexically_normal().string());

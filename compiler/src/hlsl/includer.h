@@ -54,6 +54,8 @@ class Includer : public glslang::TShader::Includer {
 
   private:
     IncludeResult* Serve(const std::string& path, size_t depth);
+    // Resolve's search, without the FileCache's memory of earlier answers.
+    std::string Search(const std::string& header, const std::string& includer, bool local) const;
 
     const IncludePaths& paths_;
     FileCache& files_;

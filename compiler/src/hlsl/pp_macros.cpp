@@ -26,7 +26,8 @@ bool GlslangOwns(std::string_view name) {
     return name.rfind("GL_", 0) == 0 || name.rfind("__", 0) == 0 || name == "VULKAN";
 }
 
-enum class Tok { kIdent, kInt, kOp, kBad };
+// kUnknown: a value the plan does not know (a macro whose definition it does not know).
+enum class Tok { kIdent, kInt, kUnknown, kOp, kBad };
 
 struct Token {
     Tok kind;
@@ -129,7 +130,14 @@ bool Blank(std::string_view s) {
     return true;
 }
 
-// Recursive descent over expanded tokens, with glslang's operators and precedence.
+// A value, or not known.
+struct Val {
+    int64_t v = 0;
+    bool known = true;
+};
+
+// Recursive descent over expanded tokens, with glslang's operators and precedence. A value not
+// known makes the result not known, but where && and || decide without it.
 struct Parser {
     const std::vector<Token>& t;
     size_t i = 0;
@@ -140,63 +148,55 @@ struct Parser {
     }
     static bool Fits(int64_t v) { return v >= INT32_MIN && v <= INT32_MAX; }
 
-    int64_t Unary() {
+    Val Unary() {
         if (i >= t.size()) {
             ok = false;
-            return 0;
+            return {};
         }
         if (t[i].kind == Tok::kInt)
-            return t[i++].value;
+            return {t[i++].value, true};
+        if (t[i].kind == Tok::kUnknown) {
+            ++i;
+            return {0, false};
+        }
         for (std::string_view op : {"+", "-", "~", "!"}) {
             if (Is(op)) {
                 ++i;
-                const int64_t v = Unary();
+                Val v = Unary();
                 if (op == "-")
-                    return -v;
-                if (op == "~")
-                    return ~v;
-                if (op == "!")
-                    return v == 0;
+                    v.v = -v.v;
+                else if (op == "~")
+                    v.v = ~v.v;
+                else if (op == "!")
+                    v.v = v.v == 0;
                 return v;
             }
         }
         if (Is("(")) {
             ++i;
-            const int64_t v = Binary(1);
+            const Val v = Binary(1);
             if (!Is(")"))
                 ok = false;
             ++i;
             return v;
         }
         ok = false;
-        return 0;
+        return {};
     }
 
     static int Precedence(std::string_view op) {
-        if (op == "||")
-            return 1;
-        if (op == "&&")
-            return 2;
-        if (op == "|")
-            return 3;
-        if (op == "^")
-            return 4;
-        if (op == "&")
-            return 5;
-        if (op == "==" || op == "!=")
-            return 6;
-        if (op == "<" || op == ">" || op == "<=" || op == ">=")
-            return 7;
-        if (op == "<<" || op == ">>")
-            return 8;
-        if (op == "+" || op == "-")
-            return 9;
-        if (op == "*" || op == "/" || op == "%")
-            return 10;
+        static constexpr std::pair<std::string_view, int> kTable[] = {
+            {"||", 1}, {"&&", 2}, {"|", 3}, {"^", 4},  {"&", 5},  {"==", 6},
+            {"!=", 6}, {"<", 7},  {">", 7}, {"<=", 7}, {">=", 7}, {"<<", 8},
+            {">>", 8}, {"+", 9},  {"-", 9}, {"*", 10}, {"/", 10}, {"%", 10}};
+        for (const auto& [name, p] : kTable) {
+            if (name == op)
+                return p;
+        }
         return 0;
     }
 
-    int64_t Apply(std::string_view op, int64_t a, int64_t b) {
+    int64_t Known(std::string_view op, int64_t a, int64_t b) {
         if ((op == "/" || op == "%") && b == 0) {
             ok = false;  // glslang reports a division by zero
             return 0;
@@ -247,17 +247,29 @@ struct Parser {
         return r;
     }
 
-    int64_t Binary(int min_precedence) {
-        int64_t left = Unary();
+    Val Apply(std::string_view op, Val a, Val b) {
+        if (a.known && b.known)
+            return {Known(op, a.v, b.v), true};
+        if (op == "&&" && ((a.known && a.v == 0) || (b.known && b.v == 0)))
+            return {0, true};
+        if (op == "||" && ((a.known && a.v != 0) || (b.known && b.v != 0)))
+            return {1, true};
+        if (b.known && (op == "/" || op == "%") && b.v == 0)
+            ok = false;
+        return {0, false};
+    }
+
+    Val Binary(int min_precedence) {
+        Val left = Unary();
         while (ok && i < t.size() && t[i].kind == Tok::kOp) {
             const int p = Precedence(t[i].text);
             if (p == 0 || p < min_precedence)
                 break;
             const std::string_view op = t[i++].text;
-            const int64_t right = Binary(p + 1);
+            const Val right = Binary(p + 1);
             left = Apply(op, left, right);
         }
-        if (!Fits(left))
+        if (left.known && !Fits(left.v))
             ok = false;
         return left;
     }
@@ -311,7 +323,7 @@ MacroState PpMacros::Lookup(std::string_view name) const {
     if (GlslangOwns(name))
         return MacroState::kUnknown;
     const std::string key(name);
-    if (unknown_.count(key))
+    if (unknown_.count(key) || pinned_.count(key))
         return MacroState::kUnknown;
     return defined_.count(key) ? MacroState::kDefined : MacroState::kUndefined;
 }
@@ -334,18 +346,16 @@ std::optional<bool> PpMacros::If(std::string_view expression) const {
     // Expands `defined` and object-like macros into ints and operators.
     std::vector<Token> out;
     bool ok = true;
-    auto expand = [&](auto& self, const std::vector<Token>& tokens, int depth, bool top) -> void {
+    auto expand = [&](auto& self, const std::vector<Token>& tokens, int depth) -> void {
         for (size_t i = 0; ok && i < tokens.size(); ++i) {
             const Token& t = tokens[i];
             if (t.kind != Tok::kIdent) {
                 out.push_back(t);
                 continue;
             }
+            // glslang reads `defined` and its operand from a macro's body as from the line
+            // (Unity's UNITY_SHOULD_SAMPLE_SH); an operand outside the body is not modelled.
             if (t.text == "defined") {
-                if (!top) {
-                    ok = false;  // `defined` made by a macro: not modelled
-                    return;
-                }
                 const bool paren = i + 1 < tokens.size() && tokens[i + 1].text == "(";
                 const size_t n = i + (paren ? 2 : 1);
                 if (n >= tokens.size() || tokens[n].kind != Tok::kIdent ||
@@ -354,18 +364,17 @@ std::optional<bool> PpMacros::If(std::string_view expression) const {
                     return;
                 }
                 const MacroState s = Lookup(tokens[n].text);
-                if (s == MacroState::kUnknown) {
-                    ok = false;
-                    return;
-                }
-                out.push_back({Tok::kInt, "", s == MacroState::kDefined ? 1 : 0});
+                if (s == MacroState::kUnknown)
+                    out.push_back({Tok::kUnknown, ""});
+                else
+                    out.push_back({Tok::kInt, "", s == MacroState::kDefined ? 1 : 0});
                 i = n + (paren ? 1 : 0);
                 continue;
             }
             const MacroState s = Lookup(t.text);
             if (s == MacroState::kUnknown) {
-                ok = false;
-                return;
+                out.push_back({Tok::kUnknown, ""});
+                continue;
             }
             if (s == MacroState::kUndefined) {
                 out.push_back({Tok::kInt, "", 0});
@@ -378,10 +387,10 @@ std::optional<bool> PpMacros::If(std::string_view expression) const {
                 ok = false;
                 return;
             }
-            self(self, body, depth + 1, false);
+            self(self, body, depth + 1);
         }
     };
-    expand(expand, in, 0, true);
+    expand(expand, in, 0);
     if (!ok)
         return std::nullopt;
     for (const Token& t : out) {
@@ -389,10 +398,10 @@ std::optional<bool> PpMacros::If(std::string_view expression) const {
             return std::nullopt;
     }
     Parser p{out};
-    const int64_t v = p.Binary(1);
-    if (!p.ok || p.i != out.size())
+    const Val v = p.Binary(1);
+    if (!p.ok || p.i != out.size() || !v.known)
         return std::nullopt;
-    return v != 0;
+    return v.v != 0;
 }
 
 }  // namespace kiln::hlsl

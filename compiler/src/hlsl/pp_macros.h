@@ -26,6 +26,9 @@ class PpMacros {
     // A #define or #undef on a line that may or may not be read: its macro becomes unknown.
     void Forget(std::string_view rest);
 
+    // Takes `name` as unknown from now on, whatever the text defines.
+    void Pin(const std::string& name) { pinned_.insert(name); }
+
     MacroState Lookup(std::string_view name) const;
 
     // #if / #elif's expression; #ifdef's operand (#ifndef is its negation).
@@ -39,6 +42,7 @@ class PpMacros {
     };
     std::unordered_map<std::string, Macro> defined_;
     std::unordered_set<std::string> unknown_;
+    std::unordered_set<std::string> pinned_;
 };
 
 }  // namespace kiln::hlsl

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "frontend/glslang_stage.h"
+#include "hlsl/assemble.h"
 #include "hlsl/inactive_text.h"
 #include "hlsl/includer.h"
 #include "hlsl/reduce.h"
@@ -34,40 +35,79 @@ bool StageFree(const Request& r, ExecuteContext& context, const hlsl::Includer& 
     return true;
 }
 
-// glslang's preprocessing of the program, with the text it would skip blanked first
-// (hlsl/inactive_text.h). With KILN_CHECK_INACTIVE_TEXT set, also without, and any difference in
-// text, messages or result is an internal error (the corpus tests run so).
+// The check KILN_CHECK_INACTIVE_TEXT asks for: `source` preprocessed as it is must give `got`;
+// with `text_only`, only the same text (the partner stage's source, whose messages name another
+// stage). A difference becomes an internal error in `got`.
+void CheckAgainstPlain(const Request& r,
+                       pack::Stage stage,
+                       const std::string& source,
+                       const hlsl::Includer& includer,
+                       bool text_only,
+                       frontend::StageOutput& got) {
+    hlsl::Includer plain = includer.Fresh();
+    const frontend::StageOutput want = frontend::Preprocess(stage, source, r.name, plain);
+    if (want.ok == got.ok && want.text == got.text && (text_only || want.info_log == got.info_log))
+        return;
+    size_t at = 0;
+    while (at < want.text.size() && at < got.text.size() && want.text[at] == got.text[at])
+        ++at;
+    got.info_log = "ERROR: internal: blanking skipped text changed glslang's preprocessing" +
+                   std::string(text_only ? " of the other stage" : "") + " (result " +
+                   std::to_string(want.ok) + " -> " + std::to_string(got.ok) +
+                   ", first difference at byte " + std::to_string(at) + ": '" +
+                   want.text.substr(at, 80) + "' -> '" + got.text.substr(at, 80) + "')\n" +
+                   want.info_log;
+    got.ok = false;
+}
+
+// glslang's preprocessing of the program with the text it would skip blanked first
+// (hlsl/inactive_text.h). With a partner entry, the plan first takes the two stages' macros as
+// unknown: `for_both` says whether the output holds for both stages' sources then (they differ
+// only in that #define; the driver checks). With KILN_CHECK_INACTIVE_TEXT set, the program is also
+// preprocessed without blanking (and for both stages, when shared), and any difference is an
+// internal error (the corpus tests run so).
 frontend::StageOutput PreprocessBlanked(const Request& r,
                                         ExecuteContext& context,
-                                        hlsl::Includer& includer) {
-    const hlsl::InactiveTextPlan plan =
-        hlsl::PlanInactiveText(r.source, r.name, includer, context.files);
+                                        hlsl::Includer& includer,
+                                        bool& for_both) {
+    hlsl::InactiveTextPlan plan;
+    for_both = false;
+    if (!r.second_entry.empty()) {
+        hlsl::PlanOptions both;
+        both.unknown = {hlsl::StageMacro(pack::Stage::kVertex),
+                        hlsl::StageMacro(pack::Stage::kFragment)};
+        plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, both);
+        for_both = plan.OutputIgnoresUnknown();
+    }
+    if (!for_both)
+        plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files);
     includer.UsePlan(&plan);
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
     static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;
     if (!check)
         return out;
-    hlsl::Includer plain = includer.Fresh();
-    const frontend::StageOutput want = frontend::Preprocess(r.stage, r.source, r.name, plain);
-    if (want.ok != out.ok || want.text != out.text || want.info_log != out.info_log) {
-        size_t at = 0;
-        while (at < want.text.size() && at < out.text.size() && want.text[at] == out.text[at])
-            ++at;
-        out.ok = false;
-        out.info_log =
-            "ERROR: internal: blanking skipped text changed glslang's preprocessing "
-            "(result " +
-            std::to_string(want.ok) + " -> " + std::to_string(out.ok) +
-            ", first difference at byte " + std::to_string(at) + ": '" + want.text.substr(at, 80) +
-            "' -> '" + out.text.substr(at, 80) + "')\n" + want.info_log;
+    CheckAgainstPlain(r, r.stage, r.source, includer, false, out);
+    if (for_both) {
+        const std::string vertex = "#define " + std::string(hlsl::StageMacro(pack::Stage::kVertex));
+        const std::string fragment =
+            "#define " + std::string(hlsl::StageMacro(pack::Stage::kFragment));
+        const bool is_vertex = r.source.find(vertex) != std::string::npos;
+        std::string other = r.source;
+        const size_t at = other.find(is_vertex ? vertex : fragment);
+        if (at != std::string::npos)
+            other.replace(at, (is_vertex ? vertex : fragment).size(),
+                          is_vertex ? fragment : vertex);
+        CheckAgainstPlain(r, is_vertex ? pack::Stage::kFragment : pack::Stage::kVertex, other,
+                          includer, true, out);
     }
     return out;
 }
 
 Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& includer) {
     Enter(context, Component::kGlslangPreprocessor);
-    frontend::StageOutput out = PreprocessBlanked(r, context, includer);
+    bool for_both = false;
+    frontend::StageOutput out = PreprocessBlanked(r, context, includer, for_both);
     Response resp;
     resp.ok = out.ok;
     resp.failed_in = out.ok ? Component::kNone : Component::kGlslangPreprocessor;
@@ -84,7 +124,7 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
                          "' : " + w.message + "\n";
     }
     std::vector<std::string> entries = {r.entry};
-    if (!r.second_entry.empty() && StageFree(r, context, includer))
+    if (!r.second_entry.empty() && (for_both || StageFree(r, context, includer)))
         entries.push_back(r.second_entry);
     std::vector<hlsl::Reduced> reduced =
         hlsl::ReduceToEntryPoints(rewritten.text, rewritten.tokens, entries);

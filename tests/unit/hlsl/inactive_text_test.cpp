@@ -16,7 +16,9 @@ using test::ScratchDir;
 
 // glslang's preprocessing of `main` as it is, and with the plan's blanked texts: they must be
 // the same, text and messages. Returns the plan.
-InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir, const std::string& main) {
+InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir,
+                                         const std::string& main,
+                                         const PlanOptions& options = {}) {
     FileCache files;
     const IncludePaths paths{{dir.path()}, "", 0};
     const std::string name = dir.path() + "/main.hlsl";
@@ -24,7 +26,7 @@ InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir, const std::strin
     const frontend::StageOutput want =
         frontend::Preprocess(pack::Stage::kFragment, main, name, plain);
     Includer planned(paths, files);
-    InactiveTextPlan plan = PlanInactiveText(main, name, planned, files);
+    InactiveTextPlan plan = PlanInactiveText(main, name, planned, files, options);
     planned.UsePlan(&plan);
     const frontend::StageOutput got =
         frontend::Preprocess(pack::Stage::kFragment, plan.main_text, name, planned);
@@ -105,6 +107,27 @@ TEST(PpMacros, EvaluatesAsGlslangOrSaysItDoesNotKnow) {
     EXPECT_FALSE(m.Define(" 1A"));
 }
 
+TEST(PpMacros, DecidesWithoutWhatItDoesNotKnowWhereAndAndOrDo) {
+    PpMacros m;
+    m.Pin("STAGE");
+    ASSERT_TRUE(m.Define(" STAGE 1"));  // pinned: still not known
+    ASSERT_TRUE(m.Define(" SAMPLE_SH (defined(SH) && !defined(ADD))"));
+    EXPECT_EQ(m.Lookup("STAGE"), MacroState::kUnknown);
+    EXPECT_EQ(m.If(" defined(MULTIVIEW) && defined(STAGE)"), false);
+    EXPECT_EQ(m.If(" defined(STAGE) && 0"), false);
+    EXPECT_EQ(m.If(" 1 || STAGE"), true);
+    EXPECT_EQ(m.If(" defined(STAGE) || 0"), std::nullopt);
+    EXPECT_EQ(m.If(" STAGE == 1"), std::nullopt);
+    EXPECT_EQ(m.If(" !defined(STAGE)"), std::nullopt);
+    EXPECT_EQ(m.If(" 0 && STAGE(1)"), std::nullopt);  // not an expression glslang takes
+    // `defined` in a macro's body reads its operand from the body, as glslang does.
+    EXPECT_EQ(m.If(" SAMPLE_SH"), false);
+    ASSERT_TRUE(m.Define(" SH 1"));
+    EXPECT_EQ(m.If(" SAMPLE_SH"), true);
+    ASSERT_TRUE(m.Define(" D defined"));
+    EXPECT_EQ(m.If(" D(SH)"), std::nullopt);
+}
+
 TEST(InactiveText, BlanksSkippedBranchesAndGuardedFilesWithoutChangingGlslangsOutput) {
     ScratchDir dir;
     dir.Write("guard.h",
@@ -156,6 +179,48 @@ TEST(InactiveText, KeepsLineBreaksOfContinuedAndCrLfLinesAndTheLastCharacter) {
     ExpectSamePreprocessing(dir,
                             "#include \"crlf.h\"\n#include \"last.h\"\n#include \"bom.h\"\n"
                             "#if 1\n#else\nfloat q = \\\n  1;\n#endif\nfloat w = __LINE__;\n");
+}
+
+// Whether glslang's output is the same for both stages' sources, as the plan with the stage
+// macros unknown says it is.
+bool StagesAlike(const ScratchDir& dir, const std::string& body, bool& plan_says) {
+    PlanOptions both;
+    both.unknown = {"SHADER_STAGE_VERTEX", "SHADER_STAGE_FRAGMENT"};
+    const std::string vertex = "#define SHADER_STAGE_VERTEX 1\n" + body;
+    plan_says = ExpectSamePreprocessing(dir, vertex, both).OutputIgnoresUnknown();
+    FileCache files;
+    const IncludePaths paths{{dir.path()}, "", 0};
+    Includer a(paths, files), b(paths, files);
+    const std::string name = dir.path() + "/main.hlsl";
+    return frontend::Preprocess(pack::Stage::kVertex, vertex, name, a).text ==
+           frontend::Preprocess(pack::Stage::kFragment, "#define SHADER_STAGE_FRAGMENT 1\n" + body,
+                                name, b)
+               .text;
+}
+
+TEST(InactiveText, KnowsWhenTheOutputIsTheSameForBothStages) {
+    ScratchDir dir;
+    dir.Write("support.h",
+              "#if defined(MULTIVIEW) && defined(SHADER_STAGE_VERTEX)\nfloat multiview;\n#endif\n"
+              "#ifdef INSTANCING\n#ifdef SHADER_STAGE_VERTEX\nfloat v;\n#else\nfloat f;\n#endif\n"
+              "#endif\nfloat common;\n");
+    bool plan_says = false;
+    EXPECT_TRUE(StagesAlike(dir, "#include \"support.h\"\n", plan_says));
+    EXPECT_TRUE(plan_says);
+    // A condition that reads the stage.
+    EXPECT_FALSE(StagesAlike(dir, "#define INSTANCING 1\n#include \"support.h\"\n", plan_says));
+    EXPECT_FALSE(plan_says);
+    // Code that names it (expanded to 1 in one stage only).
+    EXPECT_FALSE(
+        StagesAlike(dir, "#include \"support.h\"\nint s = SHADER_STAGE_VERTEX;\n", plan_says));
+    EXPECT_FALSE(plan_says);
+    // A macro whose body names it.
+    StagesAlike(dir, "#define IS_VERTEX SHADER_STAGE_VERTEX\n", plan_says);
+    EXPECT_FALSE(plan_says);
+    // In a skipped branch and in a comment of a skipped branch: no matter.
+    EXPECT_TRUE(StagesAlike(
+        dir, "#if 0\nint s = SHADER_STAGE_VERTEX; // SHADER_STAGE_FRAGMENT\n#endif\n", plan_says));
+    EXPECT_TRUE(plan_says);
 }
 
 // Random programs over a few macros: conditionals nested and chained, defines and undefines in
@@ -233,7 +298,7 @@ class RandomProgram {
 };
 
 TEST(InactiveText, RandomProgramsPreprocessAlike) {
-    size_t blanked = 0, complete = 0;
+    size_t blanked = 0, complete = 0, ignores = 0;
     for (uint32_t seed = 1; seed <= 300; ++seed) {
         ScratchDir dir;
         RandomProgram g(seed);
@@ -245,8 +310,28 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
                        "_H\n" + text + "#endif\n";
             dir.Write("f" + std::to_string(f) + ".h", text);
         }
-        const InactiveTextPlan plan =
-            ExpectSamePreprocessing(dir, "#define FN(x) x\n" + g.File(0, 4));
+        const std::string body = g.File(0, 4);
+        const InactiveTextPlan plan = ExpectSamePreprocessing(dir, "#define FN(x) x\n" + body);
+        // With E taken as unknown: where the plan says the output does not depend on E, glslang
+        // gives the same text for sources that differ only in a first line defining E to 0, to
+        // 1, or not at all.
+        PlanOptions e;
+        e.unknown = {"E"};
+        const std::string rest = "#define FN(x) x\n" + body;
+        if (ExpectSamePreprocessing(dir, "#define E 1\n" + rest, e).OutputIgnoresUnknown()) {
+            ++ignores;
+            FileCache files;
+            const IncludePaths paths{{dir.path()}, "", 0};
+            std::vector<std::string> texts;
+            for (const char* first : {"#define E 1\n", "#define E 0\n", "#define NOT_E 1\n"}) {
+                Includer includer(paths, files);
+                texts.push_back(frontend::Preprocess(pack::Stage::kFragment, first + rest,
+                                                     dir.path() + "/main.hlsl", includer)
+                                    .text);
+            }
+            EXPECT_EQ(texts[0], texts[1]);
+            EXPECT_EQ(texts[0], texts[2]);
+        }
         blanked += plan.blanked_lines;
         complete += plan.complete;
         if (::testing::Test::HasFailure()) {
@@ -257,6 +342,7 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
     // The generator gives the plan work to do: it blanks lines in most programs, and reaches the
     // end of many.
     EXPECT_GT(complete, 60u) << blanked;
+    EXPECT_GT(ignores, 10u);
     EXPECT_GT(blanked, 100000u) << complete;
 }
 

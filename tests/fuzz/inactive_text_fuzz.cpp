@@ -1,0 +1,69 @@
+// libFuzzer target: the inactive-text plan against glslang itself. The bytes are a program's main
+// text (its #includes resolve in Kiln's templates/); glslang must preprocess it alike as it is and
+// with the plan's blanked texts, text and messages, and with the first byte's low bit set the plan
+// also takes one macro as unknown and, where it says the output does not depend on it, glslang
+// must give the same text for it defined to 0 and to 1. Any difference aborts. The skeleton and
+// #if evaluation run on every directive line too. The corpus (corpus/preprocess, templates/) is
+// replayed by ctest in every build through fuzz_replay_main.cpp.
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "frontend/glslang_stage.h"
+#include "hlsl/inactive_text.h"
+#include "hlsl/pp_macros.h"
+#include "hlsl/pp_skeleton.h"
+
+namespace {
+
+using namespace kiln;
+
+void Check(bool ok, const char* what) {
+    if (!ok) {
+        std::fprintf(stderr, "inactive_text_fuzz: %s\n", what);
+        std::abort();
+    }
+}
+
+std::string Preprocess(const std::string& text, hlsl::Includer& includer) {
+    return frontend::Preprocess(pack::Stage::kFragment, text, "main.hlsl", includer).text;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    const hlsl::PpSkeleton skeleton = hlsl::ScanSkeleton(text);
+    hlsl::PpMacros macros;
+    for (const hlsl::PpDirective& d : skeleton.directives) {
+        (void)macros.If(d.rest);
+        (void)macros.Ifdef(d.rest);
+        if (d.kind == hlsl::PpKind::kDefine)
+            (void)macros.Define(d.rest);
+    }
+    hlsl::FileCache files;
+    const hlsl::IncludePaths paths{{}, KILN_TEMPLATES_DIR, 0};
+    hlsl::Includer plain(paths, files);
+    const frontend::StageOutput want =
+        frontend::Preprocess(pack::Stage::kFragment, text, "main.hlsl", plain);
+    hlsl::Includer planned(paths, files);
+    const hlsl::InactiveTextPlan plan = hlsl::PlanInactiveText(text, "main.hlsl", planned, files);
+    planned.UsePlan(&plan);
+    const frontend::StageOutput got =
+        frontend::Preprocess(pack::Stage::kFragment, plan.main_text, "main.hlsl", planned);
+    Check(want.ok == got.ok && want.text == got.text && want.info_log == got.info_log,
+          "blanking changed glslang's preprocessing");
+    if (size > 0 && (data[0] & 1)) {
+        hlsl::PlanOptions options;
+        options.unknown = {"KILN_FUZZ_UNKNOWN"};
+        const std::string one = "#define KILN_FUZZ_UNKNOWN 1\n" + text;
+        hlsl::Includer a(paths, files);
+        if (hlsl::PlanInactiveText(one, "main.hlsl", a, files, options).OutputIgnoresUnknown()) {
+            hlsl::Includer b(paths, files);
+            const std::string zero = "#define KILN_FUZZ_UNKNOWN 0\n" + text;
+            Check(Preprocess(one, a) == Preprocess(zero, b),
+                  "the output depends on a macro the plan says it does not");
+        }
+    }
+    return 0;
+}
