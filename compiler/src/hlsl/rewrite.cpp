@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <map>
 #include <regex>
-#include <set>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 #include "hlsl/identifier.h"
@@ -15,7 +14,7 @@ namespace kiln::hlsl {
 namespace {
 
 bool IsOneVectorType(std::string_view t) {
-    static const std::set<std::string_view> kTypes = {
+    static const std::unordered_set<std::string_view> kTypes = {
         "float1",  "half1",       "fixed1",      "int1",      "uint1",     "bool1",
         "double1", "min16float1", "min10float1", "min16int1", "min12int1", "min16uint1"};
     return kTypes.count(t) > 0;
@@ -27,8 +26,8 @@ bool EndsDeclarator(std::string_view t) {
 }
 
 // Names declared only with a 1-vector type (the `.x` after them is the identity).
-std::set<std::string_view> OneVectorNames(const std::vector<Token>& tok) {
-    std::set<std::string_view> one, other;
+std::unordered_set<std::string_view> OneVectorNames(const std::vector<Token>& tok) {
+    std::unordered_set<std::string_view> one, other;
     int decl = 0;  // inside a declaration list: 1 one-vector type, -1 another type, 0 none
     for (size_t i = 0; i + 2 < tok.size(); ++i) {
         const Token& a = tok[i];
@@ -45,7 +44,7 @@ std::set<std::string_view> OneVectorNames(const std::vector<Token>& tok) {
             (decl == 1 ? one : other).insert(b.text);
         }
     }
-    std::set<std::string_view> out;
+    std::unordered_set<std::string_view> out;
     for (std::string_view n : one) {
         if (!other.count(n))
             out.insert(n);
@@ -54,7 +53,7 @@ std::set<std::string_view> OneVectorNames(const std::vector<Token>& tok) {
 }
 
 void OneVectorSwizzles(const std::vector<Token>& tok, std::vector<Edit>& edits, size_t& count) {
-    const std::set<std::string_view> names = OneVectorNames(tok);
+    const std::unordered_set<std::string_view> names = OneVectorNames(tok);
     if (names.empty())
         return;
     for (size_t i = 0; i + 2 < tok.size(); ++i) {

@@ -8,11 +8,11 @@
 // shapes keep glslang's error, whose note says how to pass the component.
 #include <algorithm>
 #include <cctype>
-#include <map>
 #include <optional>
 #include <regex>
-#include <set>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "hlsl/rewrite_steps.h"
 
@@ -42,7 +42,7 @@ int VectorSize(std::string_view t) {
 }
 
 bool IsQualifier(std::string_view t) {
-    static const std::set<std::string_view> kWords = {
+    static const std::unordered_set<std::string_view> kWords = {
         "in",      "out",       "inout",       "uniform",         "const",
         "precise", "linear",    "centroid",    "nointerpolation", "noperspective",
         "sample",  "row_major", "column_major"};
@@ -97,9 +97,10 @@ Candidate ParseCandidate(const std::string& text,
 }
 
 // Functions declared or defined at the top level, by name.
-std::map<std::string_view, std::vector<Candidate>> Functions(const std::string& text,
-                                                             const std::vector<Token>& tok) {
-    std::map<std::string_view, std::vector<Candidate>> out;
+std::unordered_map<std::string_view, std::vector<Candidate>> Functions(
+    const std::string& text,
+    const std::vector<Token>& tok) {
+    std::unordered_map<std::string_view, std::vector<Candidate>> out;
     int depth = 0;
     for (size_t k = 1; k + 1 < tok.size(); ++k) {
         const std::string_view t = tok[k].text;
@@ -128,7 +129,8 @@ std::map<std::string_view, std::vector<Candidate>> Functions(const std::string& 
 // Every declaration `Type name` followed by ; , = : ) or [ (a local, parameter, global or member),
 // by name, in text order: the nearest one before a use is its type, found by binary search so
 // the rewrite stays n log n on any input.
-using Declarations = std::map<std::string_view, std::vector<std::pair<size_t, std::string_view>>>;
+using Declarations =
+    std::unordered_map<std::string_view, std::vector<std::pair<size_t, std::string_view>>>;
 
 Declarations AllDeclarations(const std::vector<Token>& tok) {
     Declarations out;

@@ -12,6 +12,7 @@
 #include <set>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "hlsl/rewrite_steps.h"
 
@@ -34,7 +35,7 @@ struct State {
     std::unordered_map<std::string_view, Global> globals;
     std::vector<std::pair<size_t, size_t>> declarations_only;  // token ranges not renamed
     std::map<std::string_view, std::set<size_t>> out_params;   // function -> out/inout indices
-    std::set<size_t> declaration_tokens;
+    std::unordered_set<size_t> declaration_tokens;
 };
 
 // Index of the statement end (`;` or `{` at depth 0) from `k`, or tok.size().

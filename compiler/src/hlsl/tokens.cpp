@@ -2,7 +2,7 @@
 
 #include <cctype>
 #include <cstdlib>
-#include <set>
+#include <unordered_set>
 
 #include "hlsl/identifier.h"
 
@@ -95,7 +95,7 @@ std::vector<Token> Tokenize(const std::string& s) {
 }
 
 bool IsAssignment(std::string_view op) {
-    static const std::set<std::string_view> kOps = {
+    static const std::unordered_set<std::string_view> kOps = {
         "=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="};
     return kOps.count(op) > 0;
 }
@@ -122,7 +122,7 @@ int NumericShape(std::string_view t) {
 }
 
 bool IsStatementWord(std::string_view t) {
-    static const std::set<std::string_view> kWords = {
+    static const std::unordered_set<std::string_view> kWords = {
         "return", "else",   "case",    "goto",    "typedef",  "struct", "cbuffer", "tbuffer",
         "in",     "out",    "inout",   "uniform", "static",   "const",  "extern",  "volatile",
         "inline", "sizeof", "discard", "break",   "continue", "do"};
