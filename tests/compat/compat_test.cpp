@@ -31,6 +31,10 @@
 namespace kiln::test {
 namespace {
 
+// Every program is also preprocessed without the blanking of skipped text, and any difference
+// fails its compile (hlsl/inactive_text.h). Set here, so that running this binary checks too.
+[[maybe_unused]] const bool kCheckInactiveText = setenv("KILN_CHECK_INACTIVE_TEXT", "1", 1) == 0;
+
 namespace fs = std::filesystem;
 
 const fs::path kShared = fs::path(KILN_SHARED_DIR);

@@ -33,6 +33,108 @@ bool IsIdent(int c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
 
+bool IsDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
+// A number glslang's scanner reads without a message: an int that fits 32 bits (decimal, octal
+// or hex, `u` allowed) or a plain float (`f` or HLSL's `h` allowed). Anything else (a bad digit, an
+// exponent without digits, another suffix, a too long literal) is not modelled.
+bool SafeNumber(std::string_view n) {
+    if (!n.empty() && (n.back() == 'u' || n.back() == 'U')) {
+        n.remove_suffix(1);
+        if (n.find_first_of(".eE") != std::string_view::npos &&
+            !(n.size() > 1 && (n[1] == 'x' || n[1] == 'X')))
+            return false;
+    }
+    if (n.size() > 2 && n[0] == '0' && (n[1] == 'x' || n[1] == 'X')) {
+        if (n.size() > 10)
+            return false;
+        for (size_t i = 2; i < n.size(); ++i) {
+            const char c = n[i];
+            if (!IsDigit(c) && !(c >= 'a' && c <= 'f') && !(c >= 'A' && c <= 'F'))
+                return false;
+        }
+        return true;
+    }
+    if (n.find_first_of(".eE") == std::string_view::npos) {  // an int
+        if (n.empty() || n.size() > 11)
+            return false;
+        uint64_t v = 0;
+        for (char c : n) {
+            if (!IsDigit(c) || (n[0] == '0' && c > '7'))
+                return false;
+            v = v * (n[0] == '0' ? 8 : 10) + static_cast<uint64_t>(c - '0');
+        }
+        return v <= 0xFFFFFFFFu;
+    }
+    if (!n.empty() && (n.back() == 'f' || n.back() == 'F' || n.back() == 'h' || n.back() == 'H'))
+        n.remove_suffix(1);
+    size_t i = 0, digits = 0;
+    while (i < n.size() && IsDigit(n[i]))
+        ++i, ++digits;
+    if (i < n.size() && n[i] == '.') {
+        ++i;
+        while (i < n.size() && IsDigit(n[i]))
+            ++i, ++digits;
+    }
+    if (digits == 0 || digits > 40)
+        return false;
+    if (i < n.size() && (n[i] == 'e' || n[i] == 'E')) {
+        ++i;
+        if (i < n.size() && (n[i] == '+' || n[i] == '-'))
+            ++i;
+        const size_t exponent = i;
+        while (i < n.size() && IsDigit(n[i]))
+            ++i;
+        if (i == exponent || i - exponent > 3)
+            return false;
+    }
+    return i == n.size();
+}
+
+// Whether glslang's scanner reads `code` (comments removed) without a message. It reports a
+// malformed character literal or number even in text it skips, so such a file is not blanked.
+bool LexicallySafe(std::string_view code) {
+    size_t i = 0;
+    while (i < code.size()) {
+        const char c = code[i];
+        if (c == '"') {
+            const size_t close = code.find('"', i + 1);
+            i = close == std::string_view::npos ? code.size() : close + 1;
+        } else if (c == '\'') {
+            // 'c' or '\c', as glslang's characterLiteral takes them silently.
+            if (i + 2 < code.size() && code[i + 1] != '\'' && code[i + 1] != '\\' &&
+                code[i + 2] == '\'') {
+                i += 3;
+            } else if (i + 3 < code.size() && code[i + 1] == '\\' && code[i + 2] != 'x' &&
+                       code[i + 3] == '\'') {
+                i += 4;
+            } else {
+                return false;
+            }
+        } else if (IsIdent(c) && !IsDigit(c)) {
+            const size_t start = i;
+            while (i < code.size() && IsIdent(code[i]))
+                ++i;
+            if (i - start > 1000)
+                return false;
+        } else if (IsDigit(c) || (c == '.' && i + 1 < code.size() && IsDigit(code[i + 1]))) {
+            const size_t start = i;
+            const bool hex = c == '0' && i + 1 < code.size() && (code[i + 1] | 0x20) == 'x';
+            while (i < code.size() && (IsIdent(code[i]) || code[i] == '.' ||
+                                       (!hex && (code[i] == '+' || code[i] == '-') &&
+                                        (code[i - 1] == 'e' || code[i - 1] == 'E'))))
+                ++i;
+            if (!SafeNumber(code.substr(start, i - start)))
+                return false;
+        } else {
+            ++i;
+        }
+    }
+    return true;
+}
+
 // Reads characters as glslang's tStringInput::getch does: backslash-newline pairs vanish.
 struct Cursor {
     std::string_view t;
@@ -112,23 +214,27 @@ bool Literal(Cursor& c, std::string* text) {
 // The rest of a non-directive line, up to and including its newline.
 void CodeLine(State& s) {
     Cursor& c = s.c;
+    std::string code;
     for (int ch = c.Peek(); ch >= 0; ch = c.Peek()) {
         if (ch == '\n' || ch == '\r') {
             c.Get();
-            return;
+            break;
         }
         if (ch == '/' && c.PeekSecond() == '/') {
             LineComment(c);
         } else if (ch == '/' && c.PeekSecond() == '*') {
             if (!BlockComment(c))
                 s.out.safe = false;
+            code += ' ';
         } else if (ch == '"' || ch == '\'') {
-            if (!Literal(c, nullptr))
+            if (!Literal(c, &code))
                 s.out.safe = false;
         } else {
-            c.Get();
+            code += static_cast<char>(c.Get());
         }
     }
+    if (!LexicallySafe(code))
+        s.out.safe = false;
 }
 
 // Links a conditional's branch directives; false when they do not nest.
@@ -186,6 +292,12 @@ void Directive(State& s) {
     }
     d.last_line = c.line;
     c.Get();
+    // glslang reads `# #if` in skipped text as an #if (the token after the first '#' is not a
+    // name, so it looks again from the second): not modelled.
+    if (name.empty() && d.rest.find('#') != std::string::npos)
+        s.out.safe = false;
+    if (!LexicallySafe(d.rest))
+        s.out.safe = false;
     const uint32_t index = static_cast<uint32_t>(s.out.directives.size());
     const PpKind kind = d.kind;
     s.out.directives.push_back(std::move(d));

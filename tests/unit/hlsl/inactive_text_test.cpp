@@ -73,6 +73,7 @@ TEST(PpSkeleton, WhatItCannotModelIsNotSafe) {
     EXPECT_FALSE(ScanSkeleton("/* c */ #define A\n").safe);
     EXPECT_FALSE(ScanSkeleton("#define A /* two\n lines */ 1\n").safe);
     EXPECT_FALSE(ScanSkeleton("x = \"a\\\"b\";\n").safe);  // an escape in a string
+    EXPECT_FALSE(ScanSkeleton("#if A\n##if\n#endif\n").safe);  // glslang's `# #if` (fuzz)
     EXPECT_TRUE(ScanSkeleton("#if A\r\nx\r\n#endif\r\n").safe);
 }
 
