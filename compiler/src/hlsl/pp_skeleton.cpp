@@ -135,6 +135,26 @@ bool LexicallySafe(std::string_view code) {
     return true;
 }
 
+bool Blank(std::string_view s) {
+    for (char c : s) {
+        if (!IsSpace(c))
+            return false;
+    }
+    return true;
+}
+
+// `s` is one name between blanks.
+bool OneName(std::string_view s) {
+    size_t i = 0;
+    while (i < s.size() && IsSpace(s[i]))
+        ++i;
+    if (i == s.size() || IsDigit(s[i]) || !IsIdent(s[i]))
+        return false;
+    while (i < s.size() && IsIdent(s[i]))
+        ++i;
+    return Blank(s.substr(i));
+}
+
 // Reads characters as glslang's tStringInput::getch does: backslash-newline pairs vanish.
 struct Cursor {
     std::string_view t;
@@ -297,6 +317,12 @@ void Directive(State& s) {
     if (name.empty() && d.rest.find('#') != std::string::npos)
         s.out.safe = false;
     if (!LexicallySafe(d.rest))
+        s.out.safe = false;
+    // glslang checks these even in skipped text: tokens after #else or #endif, and an #ifdef or
+    // #ifndef without exactly one name (found by the fuzz target: `#endif#` in skipped text).
+    if ((d.kind == PpKind::kElse || d.kind == PpKind::kEndif) && !Blank(d.rest))
+        s.out.safe = false;
+    if ((d.kind == PpKind::kIfdef || d.kind == PpKind::kIfndef) && !OneName(d.rest))
         s.out.safe = false;
     const uint32_t index = static_cast<uint32_t>(s.out.directives.size());
     const PpKind kind = d.kind;

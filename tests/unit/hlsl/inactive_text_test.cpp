@@ -72,8 +72,12 @@ TEST(PpSkeleton, WhatItCannotModelIsNotSafe) {
     EXPECT_FALSE(ScanSkeleton("a\rb\n").safe);  // a lone CR
     EXPECT_FALSE(ScanSkeleton("/* c */ #define A\n").safe);
     EXPECT_FALSE(ScanSkeleton("#define A /* two\n lines */ 1\n").safe);
-    EXPECT_FALSE(ScanSkeleton("x = \"a\\\"b\";\n").safe);  // an escape in a string
-    EXPECT_FALSE(ScanSkeleton("#if A\n##if\n#endif\n").safe);  // glslang's `# #if` (fuzz)
+    EXPECT_FALSE(ScanSkeleton("x = \"a\\\"b\";\n").safe);              // an escape in a string
+    EXPECT_FALSE(ScanSkeleton("#if A\n##if\n#endif\n").safe);          // glslang's `# #if` (fuzz)
+    EXPECT_FALSE(ScanSkeleton("#if A\n#if\n#endif#\n#endif\n").safe);  // glslang checks (fuzz)
+    EXPECT_FALSE(ScanSkeleton("#if A\n#else B\n#endif\n").safe);
+    EXPECT_FALSE(ScanSkeleton("#ifdef A B\n#endif\n").safe);
+    EXPECT_TRUE(ScanSkeleton("#ifdef A // a\n#else /* b */\n#endif  // A\n").safe);
     EXPECT_TRUE(ScanSkeleton("#if A\r\nx\r\n#endif\r\n").safe);
 }
 
