@@ -1,5 +1,5 @@
 // Identifier characters of HLSL source text, for the passes that scan preprocessed text
-// (reduce.cpp, rewrite.cpp).
+// (reduce.cpp, rewrite.cpp) and for the inactive-text plan (pp_skeleton.cpp, pp_macros.cpp).
 #ifndef KILN_HLSL_IDENTIFIER_H_
 #define KILN_HLSL_IDENTIFIER_H_
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <utility>
 
+#include "hlsl/identifier.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
 
@@ -16,8 +17,7 @@ enum class Region { kRead, kMaybe };  // read for certain, or perhaps
 bool IsIdentChar(std::string_view s, size_t i) {
     if (i >= s.size())
         return false;
-    const char c = s[i];
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    return IdentChar(s[i]);
 }
 
 // One file as the walk reads it.

@@ -3,18 +3,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "hlsl/identifier.h"
+
 namespace kiln::hlsl {
 namespace {
 
 constexpr int kMaxExpansionDepth = 32;
-
-bool IsIdentStart(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-}
-
-bool IsIdent(char c) {
-    return IsIdentStart(c) || (c >= '0' && c <= '9');
-}
 
 bool IsSpace(char c) {
     return c == ' ' || c == '\t' || c == '\v' || c == '\f';
@@ -79,15 +73,15 @@ bool Tokenize(std::string_view s, std::vector<Token>& out) {
         const char c = s[i];
         if (IsSpace(c)) {
             ++i;
-        } else if (IsIdentStart(c)) {
+        } else if (IdentStart(c)) {
             size_t j = i;
-            while (j < s.size() && IsIdent(s[j]))
+            while (j < s.size() && IdentChar(s[j]))
                 ++j;
             out.push_back({Tok::kIdent, s.substr(i, j - i)});
             i = j;
         } else if (c >= '0' && c <= '9') {
             size_t j = i;
-            while (j < s.size() && (IsIdent(s[j]) || s[j] == '.'))
+            while (j < s.size() && (IdentChar(s[j]) || s[j] == '.'))
                 ++j;
             out.push_back(Number(s.substr(i, j - i)));
             i = j;
@@ -113,10 +107,10 @@ std::optional<std::string_view> Name(std::string_view rest, std::string_view& na
     size_t i = 0;
     while (i < rest.size() && IsSpace(rest[i]))
         ++i;
-    if (i == rest.size() || !IsIdentStart(rest[i]))
+    if (i == rest.size() || !IdentStart(rest[i]))
         return std::nullopt;
     size_t j = i;
-    while (j < rest.size() && IsIdent(rest[j]))
+    while (j < rest.size() && IdentChar(rest[j]))
         ++j;
     name = rest.substr(i, j - i);
     return rest.substr(j);

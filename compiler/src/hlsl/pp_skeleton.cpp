@@ -3,6 +3,8 @@
 #include <array>
 #include <utility>
 
+#include "hlsl/identifier.h"
+
 namespace kiln::hlsl {
 namespace {
 
@@ -30,7 +32,7 @@ bool IsSpace(int c) {
 }
 
 bool IsIdent(int c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    return c >= 0 && IdentChar(static_cast<char>(c));
 }
 
 bool IsDigit(char c) {
