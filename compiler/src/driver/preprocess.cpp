@@ -165,6 +165,21 @@ void Accept(State& s,
     KeepTextsOfFirst(s, i);
 }
 
+// The keywords a pass's variants may define, for the worker to share the include prefix none of
+// them changes (hlsl/preamble.h); none for a pass of one variant, which has nothing to share.
+std::vector<std::string> PassKeywords(const PassUnit& pu) {
+    std::vector<std::string> out;
+    if (pu.expansion.keys.size() < 2)
+        return out;
+    for (const variants::KeywordSet& set : pu.pragmas.sets) {
+        for (const std::string& k : set.keywords) {
+            if (!k.empty() && std::find(out.begin(), out.end(), k) == out.end())
+                out.push_back(k);
+        }
+    }
+    return out;
+}
+
 // Preprocesses task i; `partner` (when not npos) is its variant's fragment task, whose text
 // differs only in the stage's #define: the worker reduces the one preprocessed text to both entry
 // points when nothing read tests the stage. Returns true when the partner was filled.
@@ -180,6 +195,7 @@ bool Preprocess(State& s, size_t i, size_t partner = std::string::npos) {
     }
     worker::Request request = StageRequest(st, t, worker::RequestKind::kPreprocess);
     request.source = SourceOf(st, t);
+    request.pinned = PassKeywords(st.passes[t.pass]);
     if (partner != std::string::npos)
         request.second_entry = EntryOf(st, st.tasks[partner]);
     worker::Outcome o = st.exec->Run(request);

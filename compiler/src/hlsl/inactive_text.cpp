@@ -40,26 +40,8 @@ struct State {
 
 void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region);
 
-// The text with the given lines blanked: each keeps only its line break.
 std::string Blanked(const File& f, size_t& blanked_lines) {
-    if (f.blank.empty())
-        return std::string(f.text);
-    const std::vector<uint32_t>& starts = f.skeleton.line_starts;
-    std::string out;
-    out.reserve(f.text.size());
-    size_t copied = 0;
-    for (const auto& [first, last] : f.blank) {
-        out.append(f.text.substr(copied, starts[first] - copied));
-        const bool at_end = last + 1 >= starts.size();
-        out.append(last - first + (at_end ? 0 : 1), '\n');
-        blanked_lines += last - first + 1;
-        // The file's last character stays a line break or not, as glslang checks it.
-        if (at_end && !f.text.empty() && f.text.back() != '\n')
-            out += ' ';
-        copied = at_end ? f.text.size() : starts[last + 1];
-    }
-    out.append(f.text.substr(copied));
-    return out;
+    return BlankLines(f.text, f.skeleton.line_starts, f.blank, blanked_lines);
 }
 
 // The index of the directive on physical line `line`, or npos.
@@ -72,13 +54,15 @@ size_t DirectiveAt(const PpSkeleton& skeleton, uint32_t line) {
     return static_cast<size_t>(it - 1 - d.begin());
 }
 
-// Whether `f`'s lines that glslang reads name PlanOptions::unknown only in conditions, or in
-// their own #define and #undef.
+// Whether `f`'s lines that glslang reads name PlanOptions::unknown only in conditions, in their
+// own #define and #undef, or in a #pragma.
 bool MentionsOnlyInConditions(const State& s, const File& f) {
     const std::vector<uint32_t>& starts = f.skeleton.line_starts;
     for (const std::string& name : s.options.unknown) {
         for (size_t at = f.text.find(name); at != std::string_view::npos;
              at = f.text.find(name, at + 1)) {
+            if ((at > 0 && IsIdentChar(f.text, at - 1)) || IsIdentChar(f.text, at + name.size()))
+                continue;  // part of a longer name
             const auto line = static_cast<uint32_t>(
                 std::upper_bound(starts.begin(), starts.end(), static_cast<uint32_t>(at)) -
                 starts.begin() - 1);
@@ -95,7 +79,8 @@ bool MentionsOnlyInConditions(const State& s, const File& f) {
             const bool own = (d.kind == PpKind::kDefine || d.kind == PpKind::kUndef) &&
                              d.rest.find_first_not_of(" \t") == d.rest.find(name) &&
                              !IsIdentChar(d.rest, d.rest.find(name) + name.size());
-            if (!condition && !own)
+            // glslang prints a #pragma's tokens without expanding them.
+            if (!condition && !own && d.kind != PpKind::kPragma)
                 return false;
         }
     }
@@ -233,6 +218,29 @@ void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region) {
 }
 
 }  // namespace
+
+std::string BlankLines(std::string_view text,
+                       const std::vector<uint32_t>& line_starts,
+                       const std::vector<std::pair<uint32_t, uint32_t>>& ranges,
+                       size_t& blanked_lines) {
+    if (ranges.empty())
+        return std::string(text);
+    std::string out;
+    out.reserve(text.size());
+    size_t copied = 0;
+    for (const auto& [first, last] : ranges) {
+        out.append(text.substr(copied, line_starts[first] - copied));
+        const bool at_end = last + 1 >= line_starts.size();
+        out.append(last - first + (at_end ? 0 : 1), '\n');
+        blanked_lines += last - first + 1;
+        // The file's last character stays a line break or not, as glslang checks it.
+        if (at_end && !text.empty() && text.back() != '\n')
+            out += ' ';
+        copied = at_end ? text.size() : line_starts[last + 1];
+    }
+    out.append(text.substr(copied));
+    return out;
+}
 
 InactiveTextPlan PlanInactiveText(std::string_view main,
                                   const std::string& name,

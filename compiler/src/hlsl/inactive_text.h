@@ -14,8 +14,10 @@
 #ifndef KILN_HLSL_INACTIVE_TEXT_H_
 #define KILN_HLSL_INACTIVE_TEXT_H_
 
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "hlsl/includer.h"
@@ -34,8 +36,8 @@ struct InactiveTextPlan {
     size_t blanked_lines = 0;
     // Branches glslang may or may not read, for what the plan did not know.
     size_t maybe_branches = 0;
-    // Every line glslang reads that names one of PlanOptions::unknown is a condition, or that
-    // macro's own #define or #undef.
+    // Every line glslang reads that names one of PlanOptions::unknown is a condition, that
+    // macro's own #define or #undef, or a #pragma (whose tokens glslang prints unexpanded).
     bool unknown_only_in_conditions = true;
 
     // True when glslang's output is the same whatever PlanOptions::unknown are defined to (for
@@ -58,6 +60,14 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
                                   const Includer& includer,
                                   FileCache& files,
                                   const PlanOptions& options = {});
+
+// `text` with the physical lines of each of `ranges` (inclusive, ascending, from a PpSkeleton's
+// `line_starts`) blanked: each keeps only its line break, and a last line without one stays
+// without one. Adds the lines blanked to `blanked_lines`.
+std::string BlankLines(std::string_view text,
+                       const std::vector<uint32_t>& line_starts,
+                       const std::vector<std::pair<uint32_t, uint32_t>>& ranges,
+                       size_t& blanked_lines);
 
 }  // namespace kiln::hlsl
 

@@ -1,6 +1,7 @@
 #include "worker/execute.h"
 
 #include <cstdlib>
+#include <optional>
 #include <string_view>
 
 #include "frontend/glslang_stage.h"
@@ -10,6 +11,7 @@
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
 #include "spirv/optimize.h"
+#include "worker/preamble.h"
 
 namespace kiln::worker {
 namespace {
@@ -63,10 +65,8 @@ void CheckAgainstPlain(const Request& r,
 // glslang's preprocessing of the program with the text it would skip blanked first
 // (hlsl/inactive_text.h). With a partner entry, the plan first takes the two stages' macros as
 // unknown: `for_both` says whether the output holds for both stages' sources then (they differ
-// only in that #define; the driver checks). With KILN_CHECK_INACTIVE_TEXT set, the program is also
-// preprocessed without blanking (and for both stages, when shared), and any difference is an
-// internal error (the corpus tests run so).
-frontend::StageOutput PreprocessBlanked(const Request& r,
+// only in that #define; the driver checks).
+frontend::StageOutput PreprocessPlanned(const Request& r,
                                         ExecuteContext& context,
                                         hlsl::Includer& includer,
                                         bool& for_both) {
@@ -84,6 +84,21 @@ frontend::StageOutput PreprocessBlanked(const Request& r,
     includer.UsePlan(&plan);
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
+    return out;
+}
+
+// glslang's preprocessing of the program: with its pass's include prefix shared
+// (worker/preamble.h) where it can be, else planned as above. With KILN_CHECK_INACTIVE_TEXT set,
+// the program is also preprocessed whole without blanking (and for both stages, when shared),
+// and any difference is an internal error (the corpus tests run so).
+frontend::StageOutput PreprocessBlanked(const Request& r,
+                                        ExecuteContext& context,
+                                        hlsl::Includer& includer,
+                                        bool& for_both) {
+    std::optional<frontend::StageOutput> shared =
+        PreprocessWithPreamble(r, context, includer, for_both);
+    frontend::StageOutput out =
+        shared ? std::move(*shared) : PreprocessPlanned(r, context, includer, for_both);
     static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;
     if (!check)
         return out;

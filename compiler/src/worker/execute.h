@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "hlsl/file_cache.h"
+#include "hlsl/preamble.h"
 #include "worker/protocol.h"
 
 namespace kiln::worker {
@@ -16,6 +17,9 @@ struct ExecuteContext {
     hlsl::FileCache& files;  // includes are read through it (once per process)
     // Told each third-party component as the request enters it (may be empty).
     std::function<void(Component)> phase;
+    // Include prefixes shared by a pass's programs (hlsl/preamble.h), kept as long as `files`;
+    // null: none are shared.
+    hlsl::PreambleCache* preambles = nullptr;
 };
 
 Response Execute(const Request& request, ExecuteContext& context);

@@ -57,7 +57,7 @@ class InProcessExecutor : public Executor {
             o.detail = "a request that does not survive its encoding";
             return o;
         }
-        ExecuteContext context{worker_files_, {}};
+        ExecuteContext context{worker_files_, {}, &preambles_};
         const std::optional<Response> answer =
             Decode<Response>(EncodeResponse(Execute(*sent, context)));
         if (const std::string broken = remote_.error(); !broken.empty() || !answer) {
@@ -85,6 +85,7 @@ class InProcessExecutor : public Executor {
     FileServer server_;
     RemoteFiles remote_;
     hlsl::FileCache worker_files_;
+    hlsl::PreambleCache preambles_;
 };
 
 // Resident memory of a process, in bytes (0 when it cannot be read).

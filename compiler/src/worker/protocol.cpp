@@ -52,6 +52,7 @@ enum Tag : uint8_t {
     kHash = 33,
     kContent = 34,
     kComponent = 35,
+    kPinned = 36,
 };
 
 // Builds a whole frame: the length is patched in when it is taken.
@@ -180,6 +181,8 @@ std::string EncodeRequest(const Request& r) {
     w.Bytes(kSource, r.source);
     w.Bytes(kEntry, r.entry);
     w.Bytes(kSecondEntry, r.second_entry);
+    for (const std::string& name : r.pinned)
+        w.Bytes(kPinned, name);
     for (const std::string& d : r.include_dirs)
         w.Bytes(kIncludeDir, d);
     w.Bytes(kTemplatesDir, r.templates_dir);
@@ -308,6 +311,9 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
                 return true;
             case kIncludeDir:
                 r.include_dirs.emplace_back(b);
+                return true;
+            case kPinned:
+                r.pinned.emplace_back(b);
                 return true;
             case kTemplatesDir:
                 r.templates_dir = b;

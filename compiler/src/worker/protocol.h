@@ -65,6 +65,9 @@ struct Request {
     // kPreprocess: also reduce to this entry point of the other stage, when the preprocessed text
     // cannot depend on the stage (driver/preprocess.cpp pairs a variant's two stages).
     std::string second_entry;
+    // kPreprocess: the pass's keywords (every name its variants may define), whose include
+    // prefix is then shared (hlsl/preamble.h) when no keyword can change its output.
+    std::vector<std::string> pinned;
     std::vector<std::string> include_dirs;  // -I, in order
     std::string templates_dir;              // the built-in include library
     int unity_version = 0;    // --unity-version: the layer serves that release's files (0: any)

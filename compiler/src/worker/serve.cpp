@@ -193,6 +193,7 @@ int Serve(int fd) {
         return worker::DecodeFile(frame->payload);
     });
     hlsl::FileCache files(remote.AsLoader());
+    hlsl::PreambleCache preambles;
     for (;;) {
         const std::optional<std::string> payload = Receive(fd, reader);
         if (!payload)
@@ -209,10 +210,12 @@ int Serve(int fd) {
             SelfTest(request->source);
         Component now = worker::FirstComponent(request->kind);
         SetComponent(now);
-        worker::ExecuteContext context{files, [&now](Component c) {
+        worker::ExecuteContext context{files,
+                                       [&now](Component c) {
                                            SetComponent(c);
                                            now = c;
-                                       }};
+                                       },
+                                       &preambles};
         try {
             const worker::Response response = worker::Execute(*request, context);
             if (const std::string broken = remote.error(); !broken.empty()) {

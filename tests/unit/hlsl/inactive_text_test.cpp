@@ -8,6 +8,7 @@
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
 #include "support/compile_support.h"
+#include "unit/hlsl/random_program.h"
 
 namespace kiln::hlsl {
 namespace {
@@ -228,85 +229,11 @@ TEST(InactiveText, KnowsWhenTheOutputIsTheSameForBothStages) {
     EXPECT_TRUE(plan_says);
 }
 
-// Random programs over a few macros: conditionals nested and chained, defines and undefines in
-// branches, includes with and without guards, expressions the plan evaluates and ones it does
-// not. glslang must preprocess each alike with and without the blanking.
-class RandomProgram {
-  public:
-    explicit RandomProgram(uint32_t seed) : rng_(seed) {}
-
-    std::string File(int depth, int files) {
-        std::string s;
-        const int lines = Pick(2, 5);
-        for (int i = 0; i < lines; ++i)
-            s += Line(depth, files);
-        return s;
-    }
-
-  private:
-    int Pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
-    std::string Name() { return std::string(1, static_cast<char>('A' + Pick(0, 4))); }
-
-    std::string Expression(int depth) {
-        switch (Pick(0, depth > 1 ? 4 : 12)) {
-            case 0:
-                return "defined(" + Name() + ")";
-            case 1:
-                return Name();
-            case 2:
-                return Name() + " == " + std::to_string(Pick(0, 2));
-            case 3:
-                return "!defined " + Name();
-            case 4:
-                return std::to_string(Pick(0, 1));
-            case 5:
-                return "(" + Expression(depth + 1) + " && " + Expression(depth + 1) + ")";
-            case 6:
-                return Expression(depth + 1) + " || " + Expression(depth + 1);
-            case 7:
-                return "FN(" + Name() + ")";  // not evaluated by the plan
-            default:
-                return Name() + " + 1 > " + std::to_string(Pick(0, 3));
-        }
-    }
-
-    std::string Line(int depth, int files) {
-        const int kind = Pick(0, depth > 2 ? 3 : 7);
-        switch (kind) {
-            case 0:
-                return "float v" + std::to_string(counter_++) + " = " + Name() + ";\n";
-            case 1: {
-                // Undefined first: a redefinition with another value is glslang's error.
-                const std::string n = Name();
-                return "#undef " + n + "\n#define " + n + " " + std::to_string(Pick(0, 2)) + "\n";
-            }
-            case 2:
-                return "#undef " + Name() + "\n";
-            case 3:
-                return files > 0 ? "#include \"f" + std::to_string(Pick(0, files - 1)) + ".h\"\n"
-                                 : "// nothing\n";
-            default: {
-                std::string s =
-                    Pick(0, 1) ? "#if " + Expression(0) + "\n" : "#ifdef " + Name() + "\n";
-                s += File(depth + 1, files);
-                for (int e = Pick(0, 2); e > 0; --e)
-                    s += "#elif " + Expression(0) + "\n" + File(depth + 1, files);
-                if (Pick(0, 1))
-                    s += "#else /* else */\n" + File(depth + 1, files);
-                return s + "#endif\n";
-            }
-        }
-    }
-
-    std::mt19937 rng_;
-    int counter_ = 0;
-};
-
 TEST(InactiveText, RandomProgramsPreprocessAlike) {
     size_t blanked = 0, complete = 0, ignores = 0;
     for (uint32_t seed = 1; seed <= 300; ++seed) {
         ScratchDir dir;
-        RandomProgram g(seed);
+        test::RandomProgram g(seed);
         // f0.h includes nothing; each later file may include the ones before it, some guarded.
         for (int f = 0; f < 4; ++f) {
             std::string text = g.File(1, f);
