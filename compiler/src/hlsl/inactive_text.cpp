@@ -1,6 +1,7 @@
 #include "hlsl/inactive_text.h"
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -36,6 +37,11 @@ struct State {
     PpMacros macros;
     size_t depth = 0;  // files open, as glslang counts them for the Includer
     bool stopped = false;
+    // PlanOptions::record_macros: the table as #define texts, and whether it is glslang's.
+    const File* main = nullptr;
+    size_t conditionals = 0;  // conditionals open around the directive walked
+    std::map<std::string, std::string> table;
+    bool exact = true;
 };
 
 void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region);
@@ -85,6 +91,24 @@ bool MentionsOnlyInConditions(const State& s, const File& f) {
         }
     }
     return true;
+}
+
+// Keeps the macro table as #define texts for PlanOptions::record_macros (InactiveTextPlan::macros).
+void Record(State& s, const File& f, const PpDirective& d) {
+    const std::string_view name = DirectiveMacroName(d.rest);
+    const std::vector<std::string>& unknown = s.options.unknown;
+    if (std::find(unknown.begin(), unknown.end(), name) != unknown.end()) {
+        if (d.kind == PpKind::kDefine && &f == s.main && s.conditionals == 0)
+            s.plan.unknown_define_lines.push_back(d.first_line);
+        else
+            s.exact = false;
+    } else if (name.empty() || GlslangMayDefine(name)) {
+        s.exact = false;
+    } else if (d.kind == PpKind::kDefine) {
+        s.table[std::string(name)] = d.rest;
+    } else {
+        s.table.erase(std::string(name));
+    }
 }
 
 // The header an #include names, and whether it was "..." (local) rather than <...>.
@@ -171,7 +195,9 @@ uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
             if (d[b].last_line + 1 < d[next].first_line)
                 f.blank.emplace_back(d[b].last_line + 1, d[next].first_line - 1);
         } else {
+            ++s.conditionals;
             WalkRange(s, f, b + 1, next, *branch);
+            --s.conditionals;
         }
     }
     return b + 1;
@@ -194,6 +220,8 @@ void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region) {
                 else if (!(at.kind == PpKind::kDefine ? s.macros.Define(at.rest)
                                                       : s.macros.Undef(at.rest)))
                     s.stopped = true;
+                else if (s.options.record_macros)
+                    Record(s, f, at);
                 break;
             case PpKind::kInclude:
                 if (region == Region::kMaybe)
@@ -251,11 +279,15 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
     const PpSkeleton skeleton = ScanSkeleton(main);
     File f{name, main, skeleton, {}};
     if (skeleton.safe) {
-        State s{includer, files, options, plan, {}};
+        State s{includer, files, options, plan, {}, 0, false, &f, 0, {}, true};
         for (const std::string& unknown : options.unknown)
             s.macros.Pin(unknown);
         WalkRange(s, f, 0, static_cast<uint32_t>(skeleton.directives.size()), Region::kRead);
         plan.complete = !s.stopped;
+        if (options.record_macros) {
+            plan.macros.assign(s.table.begin(), s.table.end());
+            plan.macros_exact = s.exact && plan.complete && plan.maybe_branches == 0;
+        }
         if (!options.unknown.empty() && !MentionsOnlyInConditions(s, f))
             plan.unknown_only_in_conditions = false;
     }

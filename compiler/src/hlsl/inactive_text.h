@@ -40,6 +40,15 @@ struct InactiveTextPlan {
     // macro's own #define or #undef, or a #pragma (whose tokens glslang prints unexpanded).
     bool unknown_only_in_conditions = true;
 
+    // With PlanOptions::record_macros, where the plan reached the end: each macro defined there
+    // (not those of PlanOptions::unknown), by name, as its #define's text after "define".
+    // `macros_exact` says the table is glslang's: every branch was decided, no name glslang may
+    // define itself was defined or undefined, and each #define or #undef of an unknown macro is
+    // a #define in the main source outside conditionals, on the lines `unknown_define_lines`.
+    std::vector<std::pair<std::string, std::string>> macros;
+    bool macros_exact = false;
+    std::vector<uint32_t> unknown_define_lines;  // 0-based physical lines
+
     // True when glslang's output is the same whatever PlanOptions::unknown are defined to (for
     // sources that differ only in their #define lines): the plan reached the end, and decided
     // every branch without them, and no line glslang reads expands them.
@@ -52,6 +61,8 @@ struct PlanOptions {
     // Macros taken as not known whatever the text defines: every branch the plan blanks is then
     // skipped whatever they are.
     std::vector<std::string> unknown;
+    // Records the macro table where the plan ends (InactiveTextPlan::macros).
+    bool record_macros = false;
 };
 
 // The plan for preprocessing `main` (named `name`, as glslang is told) with `includer`.

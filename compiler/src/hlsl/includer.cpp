@@ -128,6 +128,10 @@ std::vector<std::string> Includer::Served() const {
     return out;
 }
 
+void Includer::Hold(const std::vector<std::shared_ptr<const SourceFile>>& files) {
+    held_.insert(held_.end(), files.begin(), files.end());
+}
+
 void Includer::UsePlan(const InactiveTextPlan* plan) {
     plan_ = plan;
     requests_ = 0;

@@ -45,6 +45,9 @@ class Includer : public glslang::TShader::Includer {
     // planned, in its order; from the first other request on, files as they are. Null: none.
     // The plan must outlive the preprocessing.
     void UsePlan(const InactiveTextPlan* plan);
+    // Counts `files` as served, in order, without glslang asking for them (a shared preamble's
+    // files, hlsl/preamble.h, when the program is preprocessed from its macro table).
+    void Hold(const std::vector<std::shared_ptr<const SourceFile>>& files);
     // Files served from the plan since UsePlan.
     size_t served_from_plan() const { return from_plan_; }
 

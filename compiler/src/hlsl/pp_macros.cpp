@@ -271,6 +271,15 @@ struct Parser {
 
 }  // namespace
 
+bool GlslangMayDefine(std::string_view name) {
+    return GlslangOwns(name);
+}
+
+std::string_view DirectiveMacroName(std::string_view rest) {
+    std::string_view name;
+    return Name(rest, name) ? name : std::string_view();
+}
+
 bool PpMacros::Define(std::string_view rest) {
     std::string_view name;
     const std::optional<std::string_view> after = Name(rest, name);

@@ -15,6 +15,11 @@
 
 namespace kiln::hlsl {
 
+// Whether glslang's preprocessor may define `name` itself (GL_*, __*, VULKAN).
+bool GlslangMayDefine(std::string_view name);
+// The macro a #define's or #undef's text (after the directive name) names; empty when none.
+std::string_view DirectiveMacroName(std::string_view rest);
+
 enum class MacroState { kUndefined, kDefined, kUnknown };
 
 class PpMacros {

@@ -4,6 +4,7 @@
 #include <unordered_set>
 #include <utility>
 
+#include "hlsl/identifier.h"
 #include "hlsl/pp_skeleton.h"
 
 namespace kiln::hlsl {
@@ -11,6 +12,23 @@ namespace {
 
 bool StartsWith(std::string_view s, std::string_view prefix) {
     return s.substr(0, prefix.size()) == prefix;
+}
+
+// Calls `f` with each identifier-like word of `text` (some are parts of numbers, comments or
+// strings: more than the names, never fewer).
+template <typename F>
+void ForEachWord(std::string_view text, F f) {
+    for (size_t i = 0; i < text.size();) {
+        if (!IdentChar(text[i])) {
+            ++i;
+            continue;
+        }
+        const size_t start = i;
+        while (i < text.size() && IdentChar(text[i]))
+            ++i;
+        if (IdentStart(text[start]))  // not a number
+            f(text.substr(start, i - start));
+    }
 }
 
 }  // namespace
@@ -53,10 +71,30 @@ std::string DirectivesOnly(std::string_view text, const PpSkeleton& skeleton, ui
     return BlankLines(text, skeleton.line_starts, ranges, blanked);
 }
 
+std::vector<std::pair<uint32_t, std::string_view>> PinnedDefines(
+    std::string_view prefix,
+    const std::vector<std::string>& pinned) {
+    const std::unordered_set<std::string_view> names(pinned.begin(), pinned.end());
+    std::vector<std::pair<uint32_t, std::string_view>> out;
+    constexpr std::string_view kDefine = "#define ";
+    uint32_t number = 0;
+    for (size_t at = 0; at < prefix.size(); ++number) {
+        const size_t eol = prefix.find('\n', at);
+        const size_t end = eol == std::string_view::npos ? prefix.size() : eol + 1;
+        const std::string_view line = prefix.substr(at, end - at);
+        at = end;
+        if (!StartsWith(line, kDefine))
+            continue;
+        const std::string_view rest = line.substr(kDefine.size());
+        if (names.count(rest.substr(0, rest.find_first_of(" \t\r\n"))))
+            out.emplace_back(number, line);
+    }
+    return out;
+}
+
 std::string PreambleKey(std::string_view prefix,
                         const std::vector<std::string>& pinned,
                         std::string_view context) {
-    const std::unordered_set<std::string_view> names(pinned.begin(), pinned.end());
     std::string key(context);
     key += '\0';
     for (const std::string& name : pinned) {
@@ -65,24 +103,16 @@ std::string PreambleKey(std::string_view prefix,
     }
     key += '\0';
     key.reserve(key.size() + prefix.size());
-    constexpr std::string_view kDefine = "#define ";
-    for (size_t at = 0; at < prefix.size();) {
-        const size_t eol = prefix.find('\n', at);
-        const size_t end = eol == std::string_view::npos ? prefix.size() : eol + 1;
-        const std::string_view line = prefix.substr(at, end - at);
-        at = end;
-        if (StartsWith(line, kDefine)) {
-            const std::string_view rest = line.substr(kDefine.size());
-            const std::string_view name = rest.substr(0, rest.find_first_of(" \t\r\n"));
-            if (names.count(name)) {
-                key += kDefine;
-                key += '\1';
-                key += rest.substr(name.size());
-                continue;
-            }
-        }
-        key += line;
+    // The prefix with each pinned #define's name taken out.
+    size_t copied = 0;
+    for (const auto& [number, line] : PinnedDefines(prefix, pinned)) {
+        const size_t begin = static_cast<size_t>(line.data() - prefix.data());
+        const size_t name_end = line.find_first_of(" \t\r\n", 8);
+        key.append(prefix.substr(copied, begin - copied));
+        key += "#define \1";
+        copied = begin + (name_end == std::string_view::npos ? line.size() : name_end);
     }
+    key.append(prefix.substr(copied));
     return key;
 }
 
@@ -130,6 +160,148 @@ std::optional<std::string> JoinPreamble(const Preamble& preamble, std::string_vi
     out.reserve(preamble.output.size() + rest.size());
     out += preamble.output;
     out += rest;
+    return out;
+}
+
+std::optional<std::string> JoinReplayedPreamble(const Preamble& preamble,
+                                                std::string_view replayed) {
+    // Nothing but line breaks before the prefix's last #line, which the program repeats.
+    const size_t at = replayed.find_first_not_of('\n');
+    const std::string& mark = preamble.marks.back();
+    if (at == std::string_view::npos || replayed.substr(at, mark.size()) != mark)
+        return std::nullopt;
+    const std::string_view rest = replayed.substr(at + mark.size());
+    if (rest.size() < 2 || rest[0] != '\n' || rest[1] != '\n')
+        return std::nullopt;
+    std::string out;
+    out.reserve(preamble.output.size() + rest.size());
+    out += preamble.output;
+    out += rest.substr(1);
+    return out;
+}
+
+namespace {
+
+// The identifier that ends just before `at` (blanks skipped), or empty.
+std::string_view WordBefore(std::string_view s, size_t at) {
+    while (at > 0 && (s[at - 1] == ' ' || s[at - 1] == '\t'))
+        --at;
+    size_t begin = at;
+    while (begin > 0 && IdentChar(s[begin - 1]))
+        --begin;
+    return begin < at && IdentStart(s[begin]) ? s.substr(begin, at - begin) : std::string_view();
+}
+
+// The identifier that starts at `at` (blanks skipped), or empty.
+std::string_view WordAfter(std::string_view s, size_t at) {
+    while (at < s.size() && (s[at] == ' ' || s[at] == '\t'))
+        ++at;
+    size_t end = at;
+    while (end < s.size() && IdentChar(s[end]))
+        ++end;
+    return end > at && IdentStart(s[at]) ? s.substr(at, end - at) : std::string_view();
+}
+
+// Adds to `m` the macros a paste (##) in its body `rest` may make a name of; false when a paste
+// could make any name (two parameters pasted, or an operand that is not a name).
+bool PastedNames(const std::vector<std::pair<std::string, std::string>>& macros,
+                 std::string_view rest,
+                 std::vector<uint32_t>& names) {
+    std::vector<std::string_view> params;
+    const std::string_view name = WordAfter(rest, 0);
+    const size_t after_name = rest.find(name) + name.size();
+    if (after_name < rest.size() && rest[after_name] == '(') {
+        const size_t close = rest.find(')', after_name);
+        if (close == std::string_view::npos)
+            return false;
+        for (size_t i = after_name + 1; i < close;) {
+            const std::string_view p = WordAfter(rest, i);
+            if (p.empty()) {
+                ++i;
+                continue;
+            }
+            params.push_back(p);
+            i = static_cast<size_t>(p.data() + p.size() - rest.data());
+        }
+    }
+    auto is_param = [&](std::string_view w) {
+        return std::find(params.begin(), params.end(), w) != params.end();
+    };
+    for (size_t at = rest.find("##"); at != std::string_view::npos; at = rest.find("##", at + 2)) {
+        const std::string_view left = WordBefore(rest, at), right = WordAfter(rest, at + 2);
+        if (left.empty() || right.empty() || (is_param(left) && is_param(right)))
+            return false;
+        for (size_t m = 0; m < macros.size(); ++m) {
+            const std::string& n = macros[m].first;
+            const bool match =
+                is_param(left) ? n.size() > right.size() &&
+                                     n.compare(n.size() - right.size(), right.size(), right) == 0
+                : is_param(right) ? n.size() > left.size() && n.compare(0, left.size(), left) == 0
+                                  : n.size() == left.size() + right.size() && StartsWith(n, left) &&
+                                        n.compare(left.size(), right.size(), right) == 0;
+            if (match)
+                names.push_back(static_cast<uint32_t>(m));
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+void SetMacros(Preamble& preamble, const std::vector<std::pair<std::string, std::string>>& macros) {
+    preamble.macros.clear();
+    preamble.macro_index.clear();
+    for (const auto& [name, rest] : macros) {
+        preamble.macro_index.emplace(name, static_cast<uint32_t>(preamble.macros.size()));
+        preamble.macros.push_back({"#define" + rest + "\n", {}, false});
+    }
+    for (size_t m = 0; m < macros.size(); ++m) {
+        Preamble::Macro& macro = preamble.macros[m];
+        ForEachWord(macros[m].second, [&](std::string_view word) {
+            const auto it = preamble.macro_index.find(std::string(word));
+            if (it != preamble.macro_index.end() && it->second != m)
+                macro.names.push_back(it->second);
+        });
+        if (macros[m].second.find("##") != std::string::npos &&
+            !PastedNames(macros, macros[m].second, macro.names))
+            macro.pastes_any = true;
+    }
+}
+
+std::string MacrosFor(const Preamble& preamble, std::string_view rest) {
+    const size_t n = preamble.macros.size();
+    // The rest's own pastes may make any name.
+    const bool all = rest.find("##") != std::string_view::npos;
+    std::vector<bool> reach(n, all);
+    std::vector<uint32_t> work;
+    if (!all) {
+        ForEachWord(rest, [&](std::string_view word) {
+            const auto it = preamble.macro_index.find(std::string(word));
+            if (it != preamble.macro_index.end() && !reach[it->second]) {
+                reach[it->second] = true;
+                work.push_back(it->second);
+            }
+        });
+    }
+    while (!work.empty()) {
+        const uint32_t m = work.back();
+        work.pop_back();
+        if (preamble.macros[m].pastes_any) {
+            reach.assign(n, true);
+            break;
+        }
+        for (uint32_t used : preamble.macros[m].names) {
+            if (!reach[used]) {
+                reach[used] = true;
+                work.push_back(used);
+            }
+        }
+    }
+    std::string out;
+    for (size_t m = 0; m < n; ++m) {
+        if (reach[m])
+            out += preamble.macros[m].line;
+    }
     return out;
 }
 

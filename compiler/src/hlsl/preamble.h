@@ -40,6 +40,12 @@ std::optional<PrefixCut> FindPrefixCut(std::string_view main, const PpSkeleton& 
 // `text` with every physical line before `end_line` that is not part of a directive blanked.
 std::string DirectivesOnly(std::string_view text, const PpSkeleton& skeleton, uint32_t end_line);
 
+// The lines of `prefix` that #define one of `pinned` as the key below finds them (a line that
+// starts "#define NAME"), with their 0-based physical line numbers.
+std::vector<std::pair<uint32_t, std::string_view>> PinnedDefines(
+    std::string_view prefix,
+    const std::vector<std::string>& pinned);
+
 // The key under which variants share a prefix: `prefix` with the name of each `#define` of a
 // `pinned` macro at a line's start replaced (so variants that differ only in which keywords they
 // define share it), the pinned names and `context` (stage, include paths).
@@ -52,6 +58,19 @@ struct Preamble {
     std::string output;   // glslang's output for the prefix, through the last line it printed
     std::vector<std::string> marks;  // the lines of `output` that directives printed, in order
     InactiveTextPlan served;         // the files the prefix includes, their directives only
+    // The macro table where the prefix ends as #define lines, when the plan knows it exactly
+    // (InactiveTextPlan::macros_exact): a program is then preprocessed from it, its own pinned
+    // #define lines, the prefix's last #line and the rest, without reading the files.
+    bool replayable = false;
+    struct Macro {
+        std::string line;  // "#define NAME ...\n"
+        // The macros its body names, and those its pastes (##) may make: a pasted parameter
+        // makes a name that starts or ends with the name pasted to it.
+        std::vector<uint32_t> names;
+        bool pastes_any = false;  // a paste that may make any name (two parameters pasted)
+    };
+    std::vector<Macro> macros;  // by name
+    std::unordered_map<std::string, uint32_t> macro_index;
     std::vector<std::shared_ptr<const SourceFile>> files;  // what it was made from
 };
 
@@ -64,6 +83,18 @@ bool CutPrefixOutput(const std::string& prefix_output, Preamble& preamble);
 // the program with the prefix's code blanked; nullopt when `blanked` is not shaped as expected or
 // its first line after the prefix could depend on the prefix's last token.
 std::optional<std::string> JoinPreamble(const Preamble& preamble, std::string_view blanked);
+// The same for glslang's output `replayed` for the program made from the preamble's macros
+// (MacrosFor), the program's pinned #define lines, the preamble's last #line and the rest.
+std::optional<std::string> JoinReplayedPreamble(const Preamble& preamble,
+                                                std::string_view replayed);
+
+// Sets `preamble`'s macro table from the plan's (InactiveTextPlan::macros).
+void SetMacros(Preamble& preamble, const std::vector<std::pair<std::string, std::string>>& macros);
+
+// The #define lines of the macros `rest` can expand: those it names, and those their bodies name
+// or paste, transitively (every one when `rest` pastes, or a paste may make any name). The others
+// cannot change its output.
+std::string MacrosFor(const Preamble& preamble, std::string_view rest);
 
 // Preambles by key, shared by a process's compile threads.
 class PreambleCache {

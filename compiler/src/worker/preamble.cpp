@@ -39,6 +39,7 @@ std::shared_ptr<const hlsl::Preamble> Make(const Request& r,
     auto p = std::make_shared<hlsl::Preamble>();
     hlsl::PlanOptions options;
     options.unknown = pinned;
+    options.record_macros = true;
     const hlsl::InactiveTextPlan plan =
         hlsl::PlanInactiveText(prefix, r.name, includer, context.files, options);
     for (const hlsl::InactiveTextPlan::Inclusion& inc : plan.inclusions) {
@@ -62,6 +63,13 @@ std::shared_ptr<const hlsl::Preamble> Make(const Request& r,
     }
     p->served.complete = true;
     p->usable = true;
+    std::vector<uint32_t> lines;
+    for (const auto& [number, line] : hlsl::PinnedDefines(prefix, pinned))
+        lines.push_back(number);
+    if (plan.macros_exact && plan.unknown_define_lines == lines) {
+        hlsl::SetMacros(*p, plan.macros);
+        p->replayable = true;
+    }
     return p;
 }
 
@@ -69,8 +77,9 @@ std::shared_ptr<const hlsl::Preamble> Find(const Request& r,
                                            std::string_view prefix,
                                            bool both,
                                            ExecuteContext& context,
-                                           const hlsl::Includer& includer) {
-    std::vector<std::string> pinned = r.pinned;
+                                           const hlsl::Includer& includer,
+                                           std::vector<std::string>& pinned) {
+    pinned = r.pinned;
     if (both) {
         pinned.emplace_back(hlsl::StageMacro(pack::Stage::kVertex));
         pinned.emplace_back(hlsl::StageMacro(pack::Stage::kFragment));
@@ -82,6 +91,53 @@ std::shared_ptr<const hlsl::Preamble> Find(const Request& r,
         context.preambles->Remember(key, p);
     }
     return p->usable ? p : nullptr;
+}
+
+// The program preprocessed from the preamble's macro table: glslang reads no file.
+std::optional<frontend::StageOutput> FromMacros(const Request& r,
+                                                const hlsl::Preamble& p,
+                                                std::string_view prefix,
+                                                std::string_view rest,
+                                                const std::vector<std::string>& pinned,
+                                                hlsl::Includer& includer) {
+    std::string main = hlsl::MacrosFor(p, rest);
+    for (const auto& [number, line] : hlsl::PinnedDefines(prefix, pinned)) {
+        main += line;
+        if (main.back() != '\n')
+            main += '\n';
+    }
+    main += p.marks.back();
+    main += '\n';
+    main += rest;
+    includer.Hold(p.files);  // read for the program all the same (depfiles, direct mode)
+    frontend::StageOutput out = frontend::Preprocess(r.stage, main, r.name, includer);
+    std::optional<std::string> joined;
+    if (out.ok && out.info_log.empty())
+        joined = hlsl::JoinReplayedPreamble(p, out.text);
+    if (!joined)
+        return std::nullopt;
+    out.text = std::move(*joined);
+    return out;
+}
+
+// The program preprocessed with the prefix's code blanked: glslang reads its directives.
+std::optional<frontend::StageOutput> FromDirectives(const Request& r,
+                                                    const hlsl::Preamble& p,
+                                                    const hlsl::PpSkeleton& skeleton,
+                                                    uint32_t cut_lines,
+                                                    hlsl::Includer& includer) {
+    const std::string main = hlsl::DirectivesOnly(r.source, skeleton, cut_lines);
+    includer.UsePlan(&p.served);
+    frontend::StageOutput out = frontend::Preprocess(r.stage, main, r.name, includer);
+    const size_t served = includer.served_from_plan();
+    includer.UsePlan(nullptr);
+    std::optional<std::string> joined;
+    if (out.ok && out.info_log.empty() && served == p.served.inclusions.size())
+        joined = hlsl::JoinPreamble(p, out.text);
+    if (!joined)
+        return std::nullopt;
+    out.text = std::move(*joined);
+    return out;
 }
 
 }  // namespace
@@ -105,26 +161,21 @@ std::optional<frontend::StageOutput> PreprocessWithPreamble(const Request& r,
                       std::string_view(r.source).substr(cut->bytes).find("SHADER_STAGE_") ==
                           std::string_view::npos;
     bool shared_both = both;
+    std::vector<std::string> pinned;
     std::shared_ptr<const hlsl::Preamble> p =
-        both ? Find(r, prefix, true, context, includer) : nullptr;
+        both ? Find(r, prefix, true, context, includer, pinned) : nullptr;
     if (!p) {
         shared_both = false;
-        p = Find(r, prefix, false, context, includer);
+        p = Find(r, prefix, false, context, includer, pinned);
     }
     if (!p)
         return std::nullopt;
-    const std::string main = hlsl::DirectivesOnly(r.source, skeleton, cut->lines);
-    includer.UsePlan(&p->served);
-    frontend::StageOutput out = frontend::Preprocess(r.stage, main, r.name, includer);
-    const size_t served = includer.served_from_plan();
-    includer.UsePlan(nullptr);
-    if (!out.ok || !out.info_log.empty() || served != p->served.inclusions.size())
-        return std::nullopt;
-    std::optional<std::string> joined = hlsl::JoinPreamble(*p, out.text);
-    if (!joined)
-        return std::nullopt;
-    out.text = std::move(*joined);
-    for_both = shared_both;
+    const std::string_view rest = std::string_view(r.source).substr(cut->bytes);
+    std::optional<frontend::StageOutput> out =
+        p->replayable ? FromMacros(r, *p, prefix, rest, pinned, includer)
+                      : FromDirectives(r, *p, skeleton, cut->lines, includer);
+    if (out)
+        for_both = shared_both;
     return out;
 }
 

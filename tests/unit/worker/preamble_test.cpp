@@ -1,5 +1,7 @@
 #include "worker/preamble.h"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "hlsl/preamble.h"
@@ -41,6 +43,7 @@ Both PreprocessBothWays(const ScratchDir& dir,
     hlsl::Includer plain(paths, files);
     b.plain = frontend::Preprocess(r.stage, source, r.name, plain);
     if (b.shared) {
+        EXPECT_EQ(includer.Served(), plain.Served());  // for depfiles and the direct mode
         EXPECT_EQ(b.shared->ok, b.plain.ok);
         EXPECT_EQ(b.shared->text, b.plain.text) << source;
         EXPECT_EQ(b.shared->info_log, b.plain.info_log);
@@ -123,6 +126,29 @@ TEST(Preamble, AFileChangedSinceIsReadAgain) {
     const Both b = PreprocessBothWays(dir, fresh, cache, Variant("K1", body), {"K1"});
     ASSERT_TRUE(b.shared);
     EXPECT_NE(b.shared->text.find("2.0"), std::string::npos);
+}
+
+TEST(Preamble, ReplaysOnlyTheMacrosTheRestCanExpand) {
+    hlsl::Preamble p;
+    hlsl::SetMacros(p, {{"A", " A B + 1"},
+                        {"B", " B 2"},
+                        {"C", " C 3"},
+                        {"SAMPLE", " SAMPLE(t) sampler##t"},
+                        {"samplerX", " samplerX 4"},
+                        {"ST", " ST(n) n##_ST"},
+                        {"Y_ST", " Y_ST 5"},
+                        {"CAT", " CAT(a, b) a##b"}});
+    EXPECT_EQ(hlsl::MacrosFor(p, "float f = A;"), "#define A B + 1\n#define B 2\n");
+    EXPECT_EQ(hlsl::MacrosFor(p, "float x;"), "");
+    // A pasted parameter makes a name that starts (or ends) with the name pasted to it.
+    EXPECT_EQ(hlsl::MacrosFor(p, "SAMPLE(X)"),
+              "#define SAMPLE(t) sampler##t\n#define samplerX 4\n");
+    EXPECT_EQ(hlsl::MacrosFor(p, "ST(Y)"), "#define ST(n) n##_ST\n#define Y_ST 5\n");
+    // Two parameters pasted, or a paste of the rest's own, may make any name: all of them.
+    for (const char* rest : {"CAT(x, y)", "#define D(a) a##1\n"}) {
+        const std::string all = hlsl::MacrosFor(p, rest);
+        EXPECT_EQ(std::count(all.begin(), all.end(), '\n'), 8) << rest;
+    }
 }
 
 // Random include trees (tests/unit/hlsl/random_program.h) with a shared tail that tests the
