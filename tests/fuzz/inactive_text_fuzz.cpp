@@ -2,7 +2,10 @@
 // text (its #includes resolve in Kiln's templates/); glslang must preprocess it alike as it is and
 // with the plan's blanked texts, text and messages, and with the first byte's low bit set the plan
 // also takes one macro as unknown and, where it says the output does not depend on it, glslang
-// must give the same text for it defined to 0 and to 1. Any difference aborts. The skeleton and
+// must give the same text for it defined to 0 and to 1. With its second bit set, two variants of
+// the program (one keyword each) are preprocessed with the shared include prefix
+// (worker/preamble.h) too, and wherever it is used the output must be glslang's for the whole
+// program. Any difference aborts. The skeleton and
 // #if evaluation run on every directive line too. The corpus (corpus/preprocess, templates/) is
 // replayed by ctest in every build through fuzz_replay_main.cpp.
 #include <cstdint>
@@ -13,6 +16,8 @@
 #include "hlsl/inactive_text.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
+#include "hlsl/preamble.h"
+#include "worker/preamble.h"
 
 namespace {
 
@@ -63,6 +68,30 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             const std::string zero = "#define KILN_FUZZ_UNKNOWN 0\n" + text;
             Check(Preprocess(one, a) == Preprocess(zero, b),
                   "the output depends on a macro the plan says it does not");
+        }
+    }
+    if (size > 0 && (data[0] & 2)) {
+        hlsl::PreambleCache cache;
+        for (const char* keyword : {"KILN_FUZZ_K1", "KILN_FUZZ_K2"}) {
+            worker::Request r;
+            r.kind = worker::RequestKind::kPreprocess;
+            r.stage = pack::Stage::kFragment;
+            r.name = "main.hlsl";
+            r.source = "#define " + std::string(keyword) + " 1\n" + text;
+            r.templates_dir = KILN_TEMPLATES_DIR;
+            r.pinned = {"KILN_FUZZ_K1", "KILN_FUZZ_K2"};
+            worker::ExecuteContext context{files, {}, &cache};
+            hlsl::Includer includer(paths, files);
+            bool for_both = false;
+            const auto shared = worker::PreprocessWithPreamble(r, context, includer, for_both);
+            if (!shared)
+                continue;
+            hlsl::Includer whole(paths, files);
+            const frontend::StageOutput want_whole =
+                frontend::Preprocess(r.stage, r.source, r.name, whole);
+            Check(shared->ok == want_whole.ok && shared->text == want_whole.text &&
+                      shared->info_log == want_whole.info_log,
+                  "the shared preamble changed glslang's preprocessing");
         }
     }
     return 0;
