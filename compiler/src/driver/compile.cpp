@@ -359,17 +359,21 @@ std::string DefaultTemplatesDir() {
     if (const char* env = std::getenv("KILN_TEMPLATES_DIR"); env && *env)
         return env;
     // <prefix>/bin/<program> -> <prefix>/share/kiln/templates: an installed Kiln, and the build
-    // tree, where CMake links build/share/kiln/templates to the source tree's templates/.
-    std::error_code ec;
-    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (ec)
-        return "";
-    const std::filesystem::path dir = exe.parent_path().parent_path() / "share/kiln/templates";
-    if (!std::filesystem::is_directory(dir, ec))
-        return "";
-    // The real folder (the build tree's is a link): what depfiles and messages name.
-    const std::filesystem::path real = std::filesystem::canonical(dir, ec);
-    return ec ? dir.string() : real.string();
+    // tree, where CMake links build/share/kiln/templates to the source tree's templates/. Found
+    // once per process (each stage program's request names it).
+    static const std::string beside_program = [] {
+        std::error_code ec;
+        const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+        if (ec)
+            return std::string();
+        const std::filesystem::path dir = exe.parent_path().parent_path() / "share/kiln/templates";
+        if (!std::filesystem::is_directory(dir, ec))
+            return std::string();
+        // The real folder (the build tree's is a link): what depfiles and messages name.
+        const std::filesystem::path real = std::filesystem::canonical(dir, ec);
+        return ec ? dir.string() : real.string();
+    }();
+    return beside_program;
 }
 
 std::string DefaultCacheDir() {
