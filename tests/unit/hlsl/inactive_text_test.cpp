@@ -234,14 +234,7 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
     for (uint32_t seed = 1; seed <= 300; ++seed) {
         ScratchDir dir;
         test::RandomProgram g(seed);
-        // f0.h includes nothing; each later file may include the ones before it, some guarded.
-        for (int f = 0; f < 4; ++f) {
-            std::string text = g.File(1, f);
-            if (f % 2 == 1)
-                text = "#ifndef F" + std::to_string(f) + "_H\n#define F" + std::to_string(f) +
-                       "_H\n" + text + "#endif\n";
-            dir.Write("f" + std::to_string(f) + ".h", text);
-        }
+        g.WriteIncludes(dir);
         const std::string body = g.File(0, 4);
         const InactiveTextPlan plan = ExpectSamePreprocessing(dir, "#define FN(x) x\n" + body);
         // With E taken as unknown: where the plan says the output does not depend on E, glslang

@@ -7,6 +7,8 @@
 #include <random>
 #include <string>
 
+#include "support/compile_support.h"
+
 namespace kiln::test {
 
 // Random programs over a few macros: conditionals nested and chained, defines and undefines in
@@ -15,6 +17,18 @@ namespace kiln::test {
 class RandomProgram {
   public:
     explicit RandomProgram(uint32_t seed) : rng_(seed) {}
+
+    // f0.h to f3.h in `dir`: f0.h includes nothing, each later file may include the ones before
+    // it, and f1.h and f3.h are guarded.
+    void WriteIncludes(const ScratchDir& dir) {
+        for (int f = 0; f < 4; ++f) {
+            std::string text = File(1, f);
+            if (f % 2 == 1)
+                text = "#ifndef F" + std::to_string(f) + "_H\n#define F" + std::to_string(f) +
+                       "_H\n" + text + "#endif\n";
+            dir.Write("f" + std::to_string(f) + ".h", text);
+        }
+    }
 
     std::string File(int depth, int files) {
         std::string s;

@@ -175,7 +175,6 @@ TEST(PackDeferred, APackWithoutSumsIsCheckedWholeAtOpen) {
             b[kHeaderSize + i * kSectionEntrySize] = 'X';
     }
     test::ResealPack(b);
-    Pack p;
     ASSERT_TRUE(Pack::Open(b, OpenChecks::kOnFirstUse));
     EXPECT_FALSE(Pack::Open(b, OpenChecks::kOnFirstUse).value().deferred());
     b[Section(b, SectionTag::kVariants).offset + 1] ^= 1;  // now caught at open

@@ -158,13 +158,7 @@ TEST(Preamble, RandomProgramsJoinAlike) {
     for (uint32_t seed = 1; seed <= 200; ++seed) {
         ScratchDir dir;
         test::RandomProgram g(seed);
-        for (int f = 0; f < 4; ++f) {
-            std::string text = g.File(1, f);
-            if (f % 2 == 1)
-                text = "#ifndef F" + std::to_string(f) + "_H\n#define F" + std::to_string(f) +
-                       "_H\n" + text + "#endif\n";
-            dir.Write("f" + std::to_string(f) + ".h", text);
-        }
+        g.WriteIncludes(dir);
         const std::string body = "#define FN(x) x\n" + g.File(0, 4) + "#include \"f3.h\"\n\n" +
                                  "float tail = B + FN(C);\n#if K1\nfloat k = D;\n#endif\n";
         hlsl::FileCache files;
