@@ -245,6 +245,34 @@ void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region) {
     }
 }
 
+// Whether a paste (##) in the files read may make one of PlanOptions::unknown. The first piece
+// of a pasted name is a word of some text read (a macro body's, or an argument's), so a name none
+// of whose proper prefixes is such a word cannot be made by pasting.
+bool PasteMayMakeUnknown(const State& s, const PpSkeleton& main) {
+    std::vector<std::shared_ptr<const PpSkeleton>> read;
+    bool pastes = main.pastes;
+    for (const InactiveTextPlan::Inclusion& inc : s.plan.inclusions) {
+        if (const std::shared_ptr<const SourceFile> file = s.files.Get(inc.path)) {
+            read.push_back(s.files.Skeleton(file));
+            pastes = pastes || read.back()->pastes;
+        }
+    }
+    if (!pastes)
+        return false;
+    for (const std::string& name : s.options.unknown) {
+        for (size_t k = 1; k < name.size(); ++k) {
+            const std::string prefix = name.substr(0, k);
+            if (main.words.count(prefix))
+                return true;
+            for (const auto& skeleton : read) {
+                if (skeleton->words.count(prefix))
+                    return true;
+            }
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 std::string BlankLines(std::string_view text,
@@ -288,7 +316,8 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
             plan.macros.assign(s.table.begin(), s.table.end());
             plan.macros_exact = s.exact && plan.complete && plan.maybe_branches == 0;
         }
-        if (!options.unknown.empty() && !MentionsOnlyInConditions(s, f))
+        if (!options.unknown.empty() &&
+            (!MentionsOnlyInConditions(s, f) || PasteMayMakeUnknown(s, skeleton)))
             plan.unknown_only_in_conditions = false;
     }
     plan.main_text = Blanked(f, plan.blanked_lines);

@@ -37,7 +37,8 @@ struct InactiveTextPlan {
     // Branches glslang may or may not read, for what the plan did not know.
     size_t maybe_branches = 0;
     // Every line glslang reads that names one of PlanOptions::unknown is a condition, that
-    // macro's own #define or #undef, or a #pragma (whose tokens glslang prints unexpanded).
+    // macro's own #define or #undef, or a #pragma (whose tokens glslang prints unexpanded), and
+    // no paste (##) can make one (no proper prefix of one is a word of the files read).
     bool unknown_only_in_conditions = true;
 
     // With PlanOptions::record_macros, where the plan reached the end: each macro defined there

@@ -157,6 +157,21 @@ bool OneName(std::string_view s) {
     return Blank(s.substr(i));
 }
 
+// Adds the identifiers of `code` (comments already removed) to `words`.
+void AddWords(std::string_view code, std::unordered_set<std::string>& words) {
+    for (size_t i = 0; i < code.size();) {
+        if (!IsIdent(code[i])) {
+            ++i;
+            continue;
+        }
+        const size_t start = i;
+        while (i < code.size() && IsIdent(code[i]))
+            ++i;
+        if (!IsDigit(code[start]))
+            words.emplace(code.substr(start, i - start));
+    }
+}
+
 // Reads characters as glslang's tStringInput::getch does: backslash-newline pairs vanish.
 struct Cursor {
     std::string_view t;
@@ -257,6 +272,7 @@ void CodeLine(State& s) {
     }
     if (!LexicallySafe(code))
         s.out.safe = false;
+    AddWords(code, s.out.words);
 }
 
 // Links a conditional's branch directives; false when they do not nest.
@@ -320,6 +336,9 @@ void Directive(State& s) {
         s.out.safe = false;
     if (!LexicallySafe(d.rest))
         s.out.safe = false;
+    AddWords(d.rest, s.out.words);
+    if (d.kind == PpKind::kDefine && d.rest.find("##") != std::string::npos)
+        s.out.pastes = true;
     // glslang checks these even in skipped text: tokens after #else or #endif, and an #ifdef or
     // #ifndef without exactly one name (found by the fuzz target: `#endif#` in skipped text).
     if ((d.kind == PpKind::kElse || d.kind == PpKind::kEndif) && !Blank(d.rest))

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 namespace kiln::hlsl {
@@ -41,6 +42,11 @@ struct PpDirective {
 
 struct PpSkeleton {
     bool safe = true;
+    // The names of the text's code and directives (comments left out; words in string literals
+    // counted), and whether a #define's body pastes tokens (##): a paste may make a name the text
+    // never spells, whose first piece is one of these words.
+    std::unordered_set<std::string> words;
+    bool pastes = false;
     uint32_t line_count = 0;            // physical lines ('\n'-separated; the last may be empty)
     std::vector<uint32_t> line_starts;  // byte offset of each physical line
     std::vector<PpDirective> directives;

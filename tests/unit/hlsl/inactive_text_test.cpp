@@ -223,6 +223,13 @@ TEST(InactiveText, KnowsWhenTheOutputIsTheSameForBothStages) {
     // A macro whose body names it.
     StagesAlike(dir, "#define IS_VERTEX SHADER_STAGE_VERTEX\n", plan_says);
     EXPECT_FALSE(plan_says);
+    // A name pasted together from pieces (the first piece is a word of the text), and a paste
+    // whose pieces cannot make it.
+    EXPECT_FALSE(StagesAlike(dir, "#define CAT(a, b) a##b\nint s = CAT(SHADER_STAGE_, VERTEX);\n",
+                             plan_says));
+    EXPECT_FALSE(plan_says);
+    EXPECT_TRUE(StagesAlike(dir, "#define SAMPLER(t) sampler##t\nint SAMPLER(A);\n", plan_says));
+    EXPECT_TRUE(plan_says);
     // In a skipped branch and in a comment of a skipped branch: no matter.
     EXPECT_TRUE(StagesAlike(
         dir, "#if 0\nint s = SHADER_STAGE_VERTEX; // SHADER_STAGE_FRAGMENT\n#endif\n", plan_says));
