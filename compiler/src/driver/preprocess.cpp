@@ -8,7 +8,9 @@
 #include <atomic>
 #include <map>
 #include <mutex>
+#include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "driver/cache.h"
 #include "driver/compile_state.h"
@@ -166,15 +168,22 @@ void Accept(State& s,
 }
 
 // The keywords a pass's variants may define, for the worker to share the include prefix none of
-// them changes (hlsl/preamble.h); none for a pass of one variant, which has nothing to share.
+// them changes (hlsl/preamble.h); none for a pass of one variant, which has nothing to share, or
+// of more keywords than kMaxSharedKeywords (every request carries them, and the plan's proof
+// looks for each in the files read).
+constexpr size_t kMaxSharedKeywords = 256;
+
 std::vector<std::string> PassKeywords(const PassUnit& pu) {
     std::vector<std::string> out;
     if (pu.expansion.keys.size() < 2)
         return out;
+    std::unordered_set<std::string_view> seen;
     for (const variants::KeywordSet& set : pu.pragmas.sets) {
         for (const std::string& k : set.keywords) {
-            if (!k.empty() && std::find(out.begin(), out.end(), k) == out.end())
+            if (!k.empty() && seen.insert(k).second)
                 out.push_back(k);
+            if (out.size() > kMaxSharedKeywords)
+                return {};
         }
     }
     return out;
