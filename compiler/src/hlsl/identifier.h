@@ -4,6 +4,7 @@
 #define KILN_HLSL_IDENTIFIER_H_
 
 #include <cctype>
+#include <string_view>
 
 namespace kiln::hlsl {
 
@@ -13,6 +14,23 @@ inline bool IdentStart(char c) {
 
 inline bool IdentChar(char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// Calls `f` with each identifier of `text`: each run of identifier characters that does not
+// start with a digit (text in comments or strings, when left in, counts too).
+template <typename F>
+void ForEachWord(std::string_view text, F f) {
+    for (size_t i = 0; i < text.size();) {
+        if (!IdentChar(text[i])) {
+            ++i;
+            continue;
+        }
+        const size_t start = i;
+        while (i < text.size() && IdentChar(text[i]))
+            ++i;
+        if (IdentStart(text[start]))  // not a number
+            f(text.substr(start, i - start));
+    }
 }
 
 }  // namespace kiln::hlsl

@@ -159,17 +159,7 @@ bool OneName(std::string_view s) {
 
 // Adds the identifiers of `code` (comments already removed) to `words`.
 void AddWords(std::string_view code, std::unordered_set<std::string>& words) {
-    for (size_t i = 0; i < code.size();) {
-        if (!IsIdent(code[i])) {
-            ++i;
-            continue;
-        }
-        const size_t start = i;
-        while (i < code.size() && IsIdent(code[i]))
-            ++i;
-        if (!IsDigit(code[start]))
-            words.emplace(code.substr(start, i - start));
-    }
+    ForEachWord(code, [&](std::string_view word) { words.emplace(word); });
 }
 
 // Reads characters as glslang's tStringInput::getch does: backslash-newline pairs vanish.

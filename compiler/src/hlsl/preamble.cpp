@@ -14,23 +14,6 @@ bool StartsWith(std::string_view s, std::string_view prefix) {
     return s.substr(0, prefix.size()) == prefix;
 }
 
-// Calls `f` with each identifier-like word of `text` (some are parts of numbers, comments or
-// strings: more than the names, never fewer).
-template <typename F>
-void ForEachWord(std::string_view text, F f) {
-    for (size_t i = 0; i < text.size();) {
-        if (!IdentChar(text[i])) {
-            ++i;
-            continue;
-        }
-        const size_t start = i;
-        while (i < text.size() && IdentChar(text[i]))
-            ++i;
-        if (IdentStart(text[start]))  // not a number
-            f(text.substr(start, i - start));
-    }
-}
-
 }  // namespace
 
 std::optional<PrefixCut> FindPrefixCut(std::string_view main, const PpSkeleton& skeleton) {
