@@ -1,6 +1,9 @@
 #include "driver/direct_cache.h"
 
+#include <algorithm>
 #include <filesystem>
+
+#include "kiln/compile.h"
 
 namespace kiln::driver {
 namespace fs = std::filesystem;
@@ -8,7 +11,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kManifestExt = "man";
-constexpr const char* kManifestHeader = "kiln-direct 1";
+// The fewest entries a manifest keeps (of this compile and earlier ones) before it drops old ones.
+constexpr size_t kMinBundleEntries = 4096;
 
 std::vector<std::string> Split(const std::string& s, char sep) {
     std::vector<std::string> out;
@@ -17,10 +21,6 @@ std::vector<std::string> Split(const std::string& s, char sep) {
         out.push_back(s.substr(at, next - at));
     out.push_back(s.substr(at));
     return out;
-}
-
-bool Storable(const std::string& field) {
-    return field.find_first_of("\t\n") == std::string::npos;
 }
 
 // `path` relative to `root` when it lies under it.
@@ -132,17 +132,19 @@ std::string DirectCache::Untag(const std::string& tag, const std::string& shader
     return untagged_.emplace(std::move(memo), std::move(path)).first->second;
 }
 
-std::optional<std::string> DirectCache::ContentHash(const std::string& path) {
+std::optional<std::string> DirectCache::ContentHash(const std::string& path, bool quiet) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         if (auto it = hashes_.find(path); it != hashes_.end())
             return it->second;
+        if (auto it = quiet_hashes_.find(path); quiet && it != quiet_hashes_.end())
+            return it->second;
     }
     std::optional<std::string> hash;
-    if (auto file = files_.Get(path))
+    if (auto file = (quiet ? probes_ : files_).Get(path))
         hash = HashKey({std::string(file->text())});
     std::lock_guard<std::mutex> lock(mu_);
-    return hashes_.emplace(path, hash).first->second;
+    return (quiet ? quiet_hashes_ : hashes_).emplace(path, hash).first->second;
 }
 
 std::string DirectCache::ResolvedTag(const IncludeDirective& d,
@@ -161,33 +163,164 @@ std::string DirectCache::ResolvedTag(const IncludeDirective& d,
     return resolved_.emplace(std::move(memo), std::move(tag)).first->second;
 }
 
-// Manifest: a header line, "result\t<key>", then "file\t<hash>\t<tag>" per file read (in the
-// order read) and "include\t<1 local|0>\t<includer tag>\t<header>\t<resolved tag>" per #include.
-std::optional<std::string> DirectCache::Lookup(const std::string& key, const std::string& shader) {
-    const std::optional<std::string> manifest = cache_.LoadBytes(key, kManifestExt);
-    if (!manifest)
-        return std::nullopt;
-    const std::vector<std::string> lines = Split(*manifest, '\n');
-    if (lines.size() < 2 || lines[0] != kManifestHeader)
-        return std::nullopt;
-    std::optional<std::string> result;
-    for (size_t i = 1; i < lines.size(); ++i) {
-        const std::vector<std::string> f = Split(lines[i], '\t');
-        if (f[0] == "result" && f.size() == 2 && f[1].size() == 32 && !result) {
-            result = f[1];
-        } else if (f[0] == "file" && f.size() == 3) {
-            const std::string path = Untag(f[2], shader);
-            if (path.empty() || ContentHash(path) != f[1])
-                return std::nullopt;
-        } else if (f[0] == "include" && f.size() == 5 && (f[1] == "0" || f[1] == "1")) {
-            const std::string includer = Untag(f[2], shader);
-            if (includer.empty() || ResolvedTag({f[3], f[1] == "1"}, includer, shader) != f[4])
-                return std::nullopt;
-        } else if (!(lines[i].empty() && i + 1 == lines.size())) {
-            return std::nullopt;  // damaged
-        }
+std::string DirectCache::BundleKey(const std::string& shader) const {
+    return HashKey({"kiln-direct-bundle", ProducerVersion(), fs::path(shader).filename().string(),
+                    std::to_string(paths_.dirs.size())});
+}
+
+DirectCache::Bundle& DirectCache::BundleOf(const std::string& shader) {
+    auto [it, fresh] = bundles_.try_emplace(BundleKey(shader));
+    Bundle& b = it->second;
+    if (!fresh)
+        return b;
+    b.shader = shader;
+    const std::optional<std::string> text = cache_.LoadBytes(it->first, kManifestExt);
+    std::optional<DirectBundle> read = text ? ParseDirectBundle(*text) : std::nullopt;
+    if (!read)
+        return b;  // none yet, or damaged: rewritten by the next Flush with records
+    std::vector<uint32_t> files, includes, sets;
+    for (const std::string& line : read->files)
+        files.push_back(InternFile(line));
+    for (const std::string& line : read->includes)
+        includes.push_back(InternInclude(line));
+    for (const DirectBundle::Set& set : read->sets) {
+        DirectBundle::Set ours;
+        for (uint32_t f : set.files)
+            ours.files.push_back(files[f]);
+        for (uint32_t i : set.includes)
+            ours.includes.push_back(includes[i]);
+        sets.push_back(InternSet(std::move(ours)));
     }
-    return result;
+    for (DirectBundle::Entry& e : read->entries) {
+        if (b.old_by_key.emplace(e.direct, b.old.size()).second)
+            b.old.push_back({std::move(e.direct), std::move(e.result), sets[e.set]});
+    }
+    return b;
+}
+
+uint32_t DirectCache::InternFile(const std::string& line) {
+    auto [it, fresh] = file_ids_.emplace(line, file_lines_.size());
+    if (fresh)
+        file_lines_.push_back(line);
+    return it->second;
+}
+
+uint32_t DirectCache::InternInclude(const std::string& line) {
+    auto [it, fresh] = include_ids_.emplace(line, include_lines_.size());
+    if (fresh)
+        include_lines_.push_back(line);
+    return it->second;
+}
+
+uint32_t DirectCache::InternSet(DirectBundle::Set set) {
+    auto [it, fresh] = set_ids_.emplace(set, sets_.size());
+    if (fresh)
+        sets_.push_back(std::move(set));
+    return it->second;
+}
+
+bool DirectCache::LineHolds(bool file,
+                            const std::string& line,
+                            const std::string& shader,
+                            bool quiet) {
+    const std::vector<std::string> f = Split(line, '\t');
+    if (file) {
+        const std::string path = f.size() == 2 ? Untag(f[1], shader) : "";
+        return !path.empty() && ContentHash(path, quiet) == f[0];
+    }
+    if (f.size() != 4)
+        return false;
+    const std::string includer = Untag(f[1], shader);
+    return !includer.empty() && ResolvedTag({f[2], f[0] == "1"}, includer, shader) == f[3];
+}
+
+bool DirectCache::SetHolds(uint32_t set, const std::string& shader, bool quiet) {
+    DirectBundle::Set lines;
+    std::vector<std::string> files, includes;
+    {
+        std::lock_guard<std::mutex> lock(bundles_mu_);
+        std::vector<int8_t>& memo = set_holds_[shader];
+        memo.resize(sets_.size());
+        if (memo[set] != 0)
+            return memo[set] == 1;
+        for (uint32_t f : sets_[set].files)
+            files.push_back(file_lines_[f]);
+        for (uint32_t i : sets_[set].includes)
+            includes.push_back(include_lines_[i]);
+    }
+    bool holds = true;
+    for (size_t k = 0; holds && k < files.size(); ++k)
+        holds = LineHolds(true, files[k], shader, quiet);
+    for (size_t k = 0; holds && k < includes.size(); ++k)
+        holds = LineHolds(false, includes[k], shader, quiet);
+    std::lock_guard<std::mutex> lock(bundles_mu_);
+    std::vector<int8_t>& memo = set_holds_[shader];
+    memo.resize(sets_.size());
+    memo[set] = holds ? 1 : 2;
+    return holds;
+}
+
+std::optional<std::string> DirectCache::Lookup(const std::string& key, const std::string& shader) {
+    Stored found;
+    {
+        std::lock_guard<std::mutex> lock(bundles_mu_);
+        Bundle& b = BundleOf(shader);
+        const auto it = b.old_by_key.find(key);
+        if (it == b.old_by_key.end())
+            return std::nullopt;
+        found = b.old[it->second];
+    }
+    if (!SetHolds(found.set, shader))
+        return std::nullopt;
+    std::lock_guard<std::mutex> lock(bundles_mu_);
+    Bundle& b = BundleOf(shader);
+    if (b.fresh_keys.insert(key).second)
+        b.fresh.push_back(found);
+    return found.result;
+}
+
+std::optional<std::vector<std::string>> DirectCache::IncludeLines(const std::string& text,
+                                                                  const std::string& includer,
+                                                                  const std::string& shader) {
+    const auto directives = IncludeDirectives(text);
+    const std::string includer_tag = Tag(includer, shader);
+    if (!directives || !DirectStorable(includer_tag))
+        return std::nullopt;
+    std::vector<std::string> out;
+    for (const IncludeDirective& d : *directives) {
+        const std::string resolved = ResolvedTag(d, includer, shader);
+        if (!DirectStorable(d.header) || d.header.empty() || !DirectStorable(resolved))
+            return std::nullopt;
+        out.push_back(std::string(d.local ? "1" : "0") + "\t" + includer_tag + "\t" + d.header +
+                      "\t" + resolved);
+    }
+    return out;
+}
+
+std::optional<DirectCache::FileDeps> DirectCache::DepsOf(const std::string& path,
+                                                         const std::string& shader) {
+    std::string memo = shader;
+    memo.append(1, '\0').append(path);
+    {
+        std::lock_guard<std::mutex> lock(bundles_mu_);
+        if (auto it = deps_.find(memo); it != deps_.end())
+            return it->second;
+    }
+    const auto file = files_.Get(path);
+    const std::optional<std::string> hash = ContentHash(path);
+    const std::string tag = Tag(path, shader);
+    std::optional<std::vector<std::string>> includes;
+    if (file && hash && DirectStorable(tag))
+        includes = IncludeLines(std::string(file->text()), path, shader);
+    std::lock_guard<std::mutex> lock(bundles_mu_);
+    std::optional<FileDeps> deps;
+    if (includes) {
+        deps.emplace();
+        deps->file = InternFile(*hash + "\t" + tag);
+        for (const std::string& line : *includes)
+            deps->includes.push_back(InternInclude(line));
+    }
+    return deps_.emplace(std::move(memo), std::move(deps)).first->second;
 }
 
 void DirectCache::Record(const std::string& key,
@@ -195,33 +328,81 @@ void DirectCache::Record(const std::string& key,
                          const std::string& source,
                          const std::vector<std::string>& files_read,
                          const std::string& result_key) {
-    std::string manifest = std::string(kManifestHeader) + "\nresult\t" + result_key + "\n";
-    std::string includes;
-    auto add_includes = [&](const std::string& text, const std::string& includer) {
-        const auto directives = IncludeDirectives(text);
-        const std::string includer_tag = Tag(includer, shader);
-        if (!directives || !Storable(includer_tag))
-            return false;
-        for (const IncludeDirective& d : *directives) {
-            const std::string resolved = ResolvedTag(d, includer, shader);
-            if (!Storable(d.header) || !Storable(resolved))
-                return false;
-            includes += "include\t" + std::string(d.local ? "1" : "0") + "\t" + includer_tag +
-                        "\t" + d.header + "\t" + resolved + "\n";
-        }
-        return true;
-    };
-    if (!add_includes(source, shader))
+    const std::optional<std::vector<std::string>> own = IncludeLines(source, shader, shader);
+    if (!own)
         return;
+    std::vector<FileDeps> deps;
     for (const std::string& path : files_read) {
-        const auto file = files_.Get(path);
-        const std::optional<std::string> hash = ContentHash(path);
-        const std::string tag = Tag(path, shader);
-        if (!file || !hash || !Storable(tag) || !add_includes(std::string(file->text()), path))
+        std::optional<FileDeps> d = DepsOf(path, shader);
+        if (!d)
             return;
-        manifest += "file\t" + *hash + "\t" + tag + "\n";
+        deps.push_back(std::move(*d));
     }
-    cache_.StoreBytes(key, kManifestExt, manifest + includes);
+    std::lock_guard<std::mutex> lock(bundles_mu_);
+    DirectBundle::Set set;
+    for (const std::string& line : *own)
+        set.includes.push_back(InternInclude(line));
+    for (const FileDeps& d : deps) {
+        set.files.push_back(d.file);
+        set.includes.insert(set.includes.end(), d.includes.begin(), d.includes.end());
+    }
+    Bundle& b = BundleOf(shader);
+    b.dirty = true;
+    if (b.fresh_keys.insert(key).second)
+        b.fresh.push_back({key, result_key, InternSet(std::move(set))});
+}
+
+void DirectCache::Flush() {
+    std::map<std::string, Bundle> bundles;
+    {
+        std::lock_guard<std::mutex> lock(bundles_mu_);
+        bundles.swap(bundles_);
+    }
+    for (auto& [key, b] : bundles) {
+        if (!b.dirty)
+            continue;
+        std::vector<Stored> entries = std::move(b.fresh);
+        std::sort(entries.begin(), entries.end(),
+                  [](const Stored& x, const Stored& y) { return x.direct < y.direct; });
+        // Earlier compiles' entries that still hold follow (another keyword subset, other
+        // options), up to twice this compile's: entries of edited sources fall off the end.
+        const size_t bound = std::max<size_t>(2 * entries.size(), kMinBundleEntries);
+        for (Stored& e : b.old) {
+            if (entries.size() >= bound)
+                break;
+            if (!b.fresh_keys.count(e.direct) && SetHolds(e.set, b.shader, true))
+                entries.push_back(std::move(e));
+        }
+        cache_.StoreBytes(key, kManifestExt, Serialize(entries));
+    }
+}
+
+std::string DirectCache::Serialize(const std::vector<Stored>& entries) {
+    std::lock_guard<std::mutex> lock(bundles_mu_);
+    DirectBundle out;
+    std::unordered_map<uint32_t, uint32_t> files, includes, sets;  // ours -> the manifest's
+    auto number = [](std::unordered_map<uint32_t, uint32_t>& map, uint32_t id, size_t next) {
+        return map.emplace(id, static_cast<uint32_t>(next)).first->second;
+    };
+    for (const Stored& e : entries) {
+        auto [s, fresh] = sets.emplace(e.set, static_cast<uint32_t>(out.sets.size()));
+        if (fresh) {
+            DirectBundle::Set set;
+            for (uint32_t f : sets_[e.set].files) {
+                set.files.push_back(number(files, f, out.files.size()));
+                if (set.files.back() == out.files.size())
+                    out.files.push_back(file_lines_[f]);
+            }
+            for (uint32_t i : sets_[e.set].includes) {
+                set.includes.push_back(number(includes, i, out.includes.size()));
+                if (set.includes.back() == out.includes.size())
+                    out.includes.push_back(include_lines_[i]);
+            }
+            out.sets.push_back(std::move(set));
+        }
+        out.entries.push_back({e.direct, e.result, s->second});
+    }
+    return SerializeDirectBundle(out);
 }
 
 }  // namespace kiln::driver

@@ -408,6 +408,8 @@ void PreprocessAndDedup(CompileState& st, CompileStats& stats, bool compile) {
         ++shared;
     }
     ParallelFor(again.size(), st.options.jobs, [&](size_t k) { Preprocess(s, again[k]); });
+    if (st.direct)
+        st.direct->Flush();  // one manifest per shader file name
     stats.shared_preprocesses = shared;
     Dedup(st, &s, stats);
 }

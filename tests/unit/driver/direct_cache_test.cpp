@@ -7,6 +7,7 @@
 // any other kept with the whole pack and reported again).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "support/compile_support.h"
@@ -102,6 +103,60 @@ TEST(DirectCache, ANoChangeRebuildPreprocessesAndCompilesNothing) {
     EXPECT_EQ(modules.out.stats.direct_hits, 4u);
     EXPECT_EQ(modules.out.stats.glslang_compiles, 0u);
     EXPECT_GT(modules.out.stats.ms.finish, 0.0);
+}
+
+// A cold compile writes one manifest for the shader file, not one per stage program, and a
+// compile with other options adds its programs to it without dropping the first compile's.
+TEST(DirectCache, OneManifestPerShaderKeepsEveryCompilesPrograms) {
+    Project p;
+    auto manifests = [&] {
+        size_t n = 0;
+        for (const auto& e : fs::recursive_directory_iterator(p.options.cache_dir))
+            n += e.path().extension() == ".man";
+        return n;
+    };
+    ASSERT_TRUE(p.Build().out.ok);
+    EXPECT_EQ(manifests(), 1u);
+
+    CompileOptions none = p.options;
+    none.opt_level = OptimizationLevel::kNone;
+    const CompileRun other = Compile({p.shader}, none);
+    ASSERT_TRUE(other.out.ok) << Brief(other.diags);
+    EXPECT_EQ(other.out.stats.direct_hits, 0u);
+    EXPECT_EQ(manifests(), 1u);
+
+    p.RemoveEntries(".kpack");  // so that every program is looked up
+    const CompileRun again = p.Build();
+    ASSERT_TRUE(again.out.ok) << Brief(again.diags);
+    EXPECT_EQ(again.out.stats.direct_hits, 4u);
+    EXPECT_EQ(again.out.stats.glslang_compiles, 0u);
+    const CompileRun other_again = Compile({p.shader}, none);
+    EXPECT_EQ(other_again.out.stats.direct_hits, 4u);
+    EXPECT_EQ(other_again.out.pack, other.out.pack);
+}
+
+// A shader of the same file name in another folder shares the manifest; the earlier entries a
+// compile checks only to keep them (here one that includes inc.cginc) stay out of its depfile.
+TEST(DirectCache, EntriesKeptForOtherCompilesStayOutOfTheDepfile) {
+    Project p;
+    ASSERT_TRUE(p.Build().out.ok);
+    p.dir.Write("other/inc.cginc", kInclude);  // as the first folder's, not included here
+    p.dir.Write("other/own.cginc", kInclude);
+    const std::string other =
+        p.dir.Write("other/direct.shader", Replace(Shader(), "inc.cginc", "own.cginc"));
+    const CompileRun run = Compile({other}, p.options);
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    EXPECT_EQ(run.out.stats.direct_hits, 0u);
+    std::vector<std::string> names;
+    for (const auto& f : run.out.files)
+        names.push_back(fs::path(f->path()).filename().string());
+    EXPECT_EQ(std::count(names.begin(), names.end(), "own.cginc"), 1);
+    EXPECT_EQ(std::count(names.begin(), names.end(), "inc.cginc"), 0);
+
+    // Both folders' programs are in the one manifest.
+    p.RemoveEntries(".kpack");
+    EXPECT_EQ(p.Build().out.stats.direct_hits, 4u);
+    EXPECT_EQ(Compile({other}, p.options).out.stats.direct_hits, 4u);
 }
 
 TEST(DirectCache, LinesMovedInAnIncludeCompileNothing) {
