@@ -1,6 +1,7 @@
 #include "driver/direct_bundle.h"
 
 #include <charconv>
+#include <iterator>
 
 namespace kiln::driver {
 namespace {
@@ -23,8 +24,9 @@ bool IsKey(std::string_view s) {
 std::optional<uint32_t> Number(std::string_view s, size_t below) {
     uint32_t n = 0;
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
-    if (s.empty() || ec != std::errc() || end != s.data() + s.size() || n >= below)
-        return std::nullopt;
+    if (s.empty() || ec != std::errc() || end != s.data() + s.size() || n >= below ||
+        (s.size() > 1 && s[0] == '0'))
+        return std::nullopt;  // not a number below `below`, or not written as one (leading 0)
     return n;
 }
 
@@ -86,9 +88,13 @@ std::optional<DirectBundle> ParseDirectBundle(std::string_view text) {
     const std::vector<std::string_view> lines = Split(text, '\n');
     if (lines.size() < 2 || lines[0] != kHeader || !lines.back().empty())
         return std::nullopt;  // no header, or cut short
+    static constexpr std::string_view kKinds[] = {"file", "include", "set", "entry"};
+    size_t kind = 0;  // lines come in the order of kKinds
     for (size_t i = 1; i + 1 < lines.size(); ++i) {
         const std::vector<std::string_view> f = Split(lines[i], '\t');
-        if (!ParseLine(b, f[0], f))
+        while (kind < std::size(kKinds) && f[0] != kKinds[kind])
+            ++kind;
+        if (kind == std::size(kKinds) || !ParseLine(b, f[0], f))
             return std::nullopt;
     }
     return b;

@@ -9,8 +9,9 @@
 //   entry\t<direct key>\t<result key>\t<set number>
 //
 // A set is what one stage program depends on: every file its preprocessing read and every
-// `#include` of its source and of those files, with what each resolved to. Every number must name
-// an earlier line of its kind; anything else makes the whole manifest unreadable (a miss).
+// `#include` of its source and of those files, with what each resolved to. Lines come in the order
+// above, and every number must name an earlier line of its kind, written without leading zeros:
+// each manifest has one text. Anything else makes the whole manifest unreadable (a miss).
 #ifndef KILN_DRIVER_DIRECT_BUNDLE_H_
 #define KILN_DRIVER_DIRECT_BUNDLE_H_
 

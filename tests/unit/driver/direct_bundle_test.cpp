@@ -67,10 +67,12 @@ TEST(DirectBundle, BadLinesAreRefused) {
     EXPECT_FALSE(with("entry\t" + std::string(32, 'G') + "\t" + kKeyB + "\t0"));
     EXPECT_FALSE(with("set\t0,2\t"));  // no file 2
     EXPECT_FALSE(with("set\t0,,1\t0"));
-    EXPECT_FALSE(with("set\t\t5"));                 // no include 5
-    EXPECT_FALSE(with("file\t" + kKeyA));           // no tag
-    EXPECT_FALSE(with("include\t2\tS:a\tb\tS:b"));  // neither 0 nor 1
-    EXPECT_FALSE(with("include\t1\tS:a\t\tS:b"));   // no header
+    EXPECT_FALSE(with("set\t01\t"));                    // a leading zero
+    EXPECT_FALSE(with("file\t" + kKeyA + "\tS:late"));  // a file after the entries
+    EXPECT_FALSE(with("set\t\t5"));                     // no include 5
+    EXPECT_FALSE(with("file\t" + kKeyA));               // no tag
+    EXPECT_FALSE(with("include\t2\tS:a\tb\tS:b"));      // neither 0 nor 1
+    EXPECT_FALSE(with("include\t1\tS:a\t\tS:b"));       // no header
     EXPECT_FALSE(with("unknown\tline"));
     EXPECT_FALSE(with(""));                              // an empty line
     EXPECT_FALSE(ParseDirectBundle("kiln-direct 1\n"));  // the old format
