@@ -53,12 +53,14 @@ std::string Trim(std::string s) {
 uint32_t FindToken(std::string_view line, const std::string& token) {
     if (token.empty())
         return 0;
-    const bool word = IsIdentifier(token);
+    // A token that starts (ends) with a word character starts (ends) a word: `_Tint.rg` is not
+    // the start of `_Tint.rgb`.
+    const bool word_start = IsIdentChar(token.front()), word_end = IsIdentChar(token.back());
     for (size_t at = line.find(token); at != std::string_view::npos;
          at = line.find(token, at + 1)) {
-        const bool left_ok = !word || at == 0 || !IsIdentChar(line[at - 1]);
+        const bool left_ok = !word_start || at == 0 || !IsIdentChar(line[at - 1]);
         const size_t end = at + token.size();
-        const bool right_ok = !word || end >= line.size() || !IsIdentChar(line[end]);
+        const bool right_ok = !word_end || end >= line.size() || !IsIdentChar(line[end]);
         if (left_ok && right_ok)
             return static_cast<uint32_t>(at + 1);
     }

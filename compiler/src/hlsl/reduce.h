@@ -5,8 +5,8 @@
 // is kept, so uniform block layouts match between the stages of a variant. `#pragma` lines are
 // blanked (they were read from the .shader already) and `#line` directives kept.
 //
-// It reads the tokens the rewrite (rewrite.h) made of the same text, so the text is walked once
-// for both; a variant's two entry points are reduced from one split of the text into items.
+// It runs before the rewrite (rewrite.h), which then reads only what an entry point reaches; a
+// variant's two entry points are reduced from one split of the text into items.
 #ifndef KILN_HLSL_REDUCE_H_
 #define KILN_HLSL_REDUCE_H_
 

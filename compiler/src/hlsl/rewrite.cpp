@@ -187,6 +187,12 @@ void SwitchSelectors(const std::vector<Token>& tok, std::vector<Edit>& edits, si
     }
 }
 
+// A warning names what the user wrote: a global's private copy by the global's name.
+void UserNames(std::string& s) {
+    for (size_t at; (at = s.find(kPrivateCopyPrefix)) != std::string::npos;)
+        s.erase(at, kPrivateCopyPrefix.size());
+}
+
 }  // namespace
 
 std::string ApplyEdits(const std::string& text, std::vector<Edit> edits) {
@@ -241,10 +247,11 @@ RewriteResult RewriteForGlslang(const std::string& preprocessed) {
         if (stale)
             text = ApplyEdits(text, std::move(more));
     }
-    if (stale)
-        tok = Tokenize(text);
+    for (RewriteWarning& w : r.warnings) {
+        UserNames(w.token);
+        UserNames(w.message);
+    }
     r.text = std::move(text);
-    r.tokens = std::move(tok);
     return r;
 }
 

@@ -1,8 +1,9 @@
 // Source rewrites for constructs Unity's HLSL compiler accepts and glslang's HLSL front end does
-// not, applied to the preprocessed text of a stage (macros expanded, includes inlined), so the
-// rewrite sees what glslang will compile. Each rewrite keeps every line where it was, so #line
-// positions stay right, and is applied only where it cannot change the program's meaning
-// (docs/unity-compat.md, "Differences from Unity's compiler"):
+// not, applied to the preprocessed text of a stage (macros expanded, includes inlined) reduced to
+// what its entry point reaches (reduce.h), so the rewrite sees what glslang will compile. Each
+// rewrite keeps every line where it was, so #line positions stay right, and is applied only where
+// it cannot change the program's meaning (docs/unity-compat.md, "Differences from Unity's
+// compiler"):
 //
 // - Component writes through a 1-vector: `o.fogCoord.x = z` where fogCoord is a float1 (Unity's
 //   UNITY_TRANSFER_FOG). glslang treats float1 as a scalar whose swizzle is not an l-value. The
@@ -47,9 +48,6 @@ struct RewriteResult {
     size_t private_globals = 0;         // globals given a private copy because the text writes them
     size_t truncated_arguments = 0;     // vector arguments to scalar parameters
     std::vector<RewriteWarning> warnings;  // Unity's warnings for what was rewritten (X3206)
-    // Tokenize(text), for the reduction (reduce.h), which then needs no walk of its own. Read
-    // their byte ranges only: a move of `text` may move the bytes their views point to.
-    std::vector<Token> tokens;
     bool changed() const {
         return one_vector_swizzles + matrix_swizzles + infinity_literals + min_precision_matrices +
                    vpos_semantics + switch_selectors + private_globals + truncated_arguments >

@@ -241,12 +241,13 @@ size_t PrivateGlobals(const std::string& text,
     for (std::string_view name : written) {
         const Global& g = s.globals.at(name);
         edits.push_back({g.insert_at, g.insert_at,
-                         " static " + g.type + " kiln_private_" + std::string(name) + g.array +
-                             " = " + std::string(name) + ";"});
+                         " static " + g.type + " " + std::string(kPrivateCopyPrefix) +
+                             std::string(name) + g.array + " = " + std::string(name) + ";"});
     }
     for (size_t k = 1; k < tok.size(); ++k) {
         if (use[k] && written.count(tok[k].text))
-            edits.push_back({tok[k].begin, tok[k].end, "kiln_private_" + std::string(tok[k].text)});
+            edits.push_back({tok[k].begin, tok[k].end,
+                             std::string(kPrivateCopyPrefix) + std::string(tok[k].text)});
     }
     return written.size();
 }

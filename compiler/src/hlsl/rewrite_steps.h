@@ -5,11 +5,15 @@
 #define KILN_HLSL_REWRITE_STEPS_H_
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hlsl/tokens.h"
 
 namespace kiln::hlsl {
+
+// The name of a global's private copy is this prefix and the global's name.
+inline constexpr std::string_view kPrivateCopyPrefix = "kiln_private_";
 
 // rewrite_globals.cpp: globals the text writes get a private static copy. Returns how many.
 size_t PrivateGlobals(const std::string& text,

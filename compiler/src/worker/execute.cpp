@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <optional>
 #include <string_view>
+#include <unordered_set>
 
 #include "frontend/glslang_stage.h"
 #include "hlsl/assemble.h"
@@ -130,19 +131,32 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     if (!out.ok)
         return resp;
     // Kiln's own steps run here too: the worker then answers with the (smaller) reduced text.
+    // Reduced first, then rewritten: the rewrite reads only what the entry point reaches (about
+    // a fifth of the text), and what it cannot reach is neither compiled nor warned about, as
+    // fxc compiles only what an entry point calls.
     Enter(context, Component::kKilnReduction);
-    hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(out.text);
-    // Unity's warnings for what the rewrite changed, in glslang's form: the one place that maps
-    // messages to .shader positions (frontend/glslang_messages.h) places them.
-    for (const hlsl::RewriteWarning& w : rewritten.warnings) {
-        resp.info_log += "WARNING: " + w.file + ":" + std::to_string(w.line) + ": '" + w.token +
-                         "' : " + w.message + "\n";
-    }
     std::vector<std::string> entries = {r.entry};
     if (!r.second_entry.empty() && (for_both || StageFree(r, context, includer)))
         entries.push_back(r.second_entry);
     std::vector<hlsl::Reduced> reduced =
-        hlsl::ReduceToEntryPoints(rewritten.text, rewritten.tokens, entries);
+        hlsl::ReduceToEntryPoints(out.text, hlsl::Tokenize(out.text), entries);
+    bool changed = false;
+    std::unordered_set<std::string> warned;  // a warning of code both entry points reach, once
+    for (hlsl::Reduced& one : reduced) {
+        hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(one.text);
+        // Unity's warnings for what the rewrite changed, in glslang's form: the one place that
+        // maps messages to .shader positions (frontend/glslang_messages.h) places them.
+        for (const hlsl::RewriteWarning& w : rewritten.warnings) {
+            std::string line = "WARNING: " + w.file + ":" + std::to_string(w.line) + ": '" +
+                               w.token + "' : " + w.message + "\n";
+            if (warned.insert(line).second)
+                resp.info_log += line;
+        }
+        if (rewritten.changed()) {
+            one.text = std::move(rewritten.text);
+            changed = true;
+        }
+    }
     if (reduced.size() == 2) {
         resp.second_ok = true;
         resp.second_text = std::move(reduced[1].text);
@@ -150,8 +164,11 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     }
     resp.text = std::move(reduced[0].text);
     resp.functions = std::move(reduced[0].functions_if_entry_missing);
-    if (rewritten.changed())
-        resp.rewritten = std::move(rewritten.text);
+    // The whole text rewritten, for the driver's exact messages should the program not compile
+    // (compile_jobs.cpp); only where the program needed a rewrite, as glslang would trip on the
+    // assembled source where the reduced program did not.
+    if (changed)
+        resp.rewritten = hlsl::RewriteForGlslang(out.text).text;
     return resp;
 }
 

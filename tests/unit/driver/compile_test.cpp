@@ -254,6 +254,41 @@ TEST(Compile, WriteToAGlobalIsPrivateToTheInvocationAsInUnity) {
     EXPECT_EQ(pack.find("kiln_private__Tint"), std::string::npos) << "the copy is not a uniform";
 }
 
+// The rewrite reads what an entry point reaches, as fxc compiles only that: a function nothing
+// calls neither gives a global a private copy nor warns (X3206); one the entry point calls does
+// both, in the stage that calls it only.
+TEST(Compile, WhatNoEntryPointReachesIsNeitherRewrittenNorWarnedAbout) {
+    ScratchDir dir;
+    const std::string unused =
+        "            float Square(float x) { return x * x; }\n"
+        "            void Brighten() { _Tint.rgb *= Square(_Tint.rg); }\n";
+    const std::string path = dir.Write("unused.shader", PassShader("", unused));
+    CompileOptions options;
+    options.keep_programs = true;
+    CompileRun run = Compile({path}, options);
+    ASSERT_TRUE(run.out.ok) << Brief(run.diags);
+    EXPECT_EQ(Brief(run.diags), "");
+    ASSERT_EQ(run.out.programs.size(), 2u);
+    for (const ProgramText& p : run.out.programs)
+        EXPECT_EQ(p.text.find("kiln_private__Tint"), std::string::npos) << p.text;
+
+    const std::string used =
+        dir.Write("used.shader", Replace(PassShader("", unused), "SV_Target { return _Tint; }",
+                                         "SV_Target { Brighten(); return _Tint; }"));
+    CompileRun called = Compile({used}, options);
+    ASSERT_TRUE(called.out.ok) << Brief(called.diags);
+    EXPECT_EQ(Brief(called.diags),
+              "used.shader:14:51 K5002 implicit truncation of vector type: '_Tint.rg' is a "
+              "'float2' passed to scalar parameter 'x' of 'Square', so its first component is "
+              "used, as Unity's compiler does (X3206)\n");
+    ASSERT_EQ(called.out.programs.size(), 2u);
+    for (const ProgramText& p : called.out.programs) {
+        EXPECT_EQ(p.text.find("kiln_private__Tint") != std::string::npos,
+                  p.stage == pack::Stage::kFragment)
+            << p.text;
+    }
+}
+
 // A call of a function the program does not have is an unknown function: the suggestion is the
 // closest function, not a variable (it was "did you mean 's'?" for a local), and there is no note
 // about vector truncation (glslang reports both as "no matching overloaded function").
