@@ -41,13 +41,10 @@ size_t OperatorLength(const std::string& s, size_t i) {
     }
 }
 
-}  // namespace
-
-std::vector<Token> Tokenize(const std::string& s) {
-    std::vector<Token> out;
-    out.reserve(s.size() / 4);
+// Tokens of s from byte `from`, where a line starts, appended to `out`.
+void TokenizeFrom(const std::string& s, size_t from, std::vector<Token>& out) {
     bool line_start = true;
-    for (size_t i = 0; i < s.size();) {
+    for (size_t i = from; i < s.size();) {
         const char c = s[i];
         if (c == '\n') {
             line_start = true;
@@ -91,6 +88,30 @@ std::vector<Token> Tokenize(const std::string& s) {
         t.text = std::string_view(s).substr(t.begin, t.end - t.begin);
         out.push_back(t);
     }
+}
+
+}  // namespace
+
+std::vector<Token> Tokenize(const std::string& s) {
+    std::vector<Token> out;
+    out.reserve(s.size() / 4);
+    TokenizeFrom(s, 0, out);
+    return out;
+}
+
+std::vector<Token> TokenizeAfter(const std::string& s,
+                                 size_t head_bytes,
+                                 const std::vector<Token>& head) {
+    if (head_bytes >= s.size() || s[head_bytes] != '\n')
+        return Tokenize(s);  // the rest does not start a line: no token boundary is known there
+    std::vector<Token> out;
+    out.reserve(head.size() + (s.size() - head_bytes) / 4);
+    const std::string_view view(s);
+    for (Token t : head) {
+        t.text = view.substr(t.begin, t.end - t.begin);
+        out.push_back(t);
+    }
+    TokenizeFrom(s, head_bytes, out);
     return out;
 }
 

@@ -20,6 +20,13 @@ struct Token {
 
 std::vector<Token> Tokenize(const std::string& s);
 
+// Tokenize(s) where s starts with the text `head` was made from, of `head_bytes` bytes, and a line
+// break follows it: `head`'s tokens, moved onto s, and the rest's. The caller checks that s starts
+// with that text.
+std::vector<Token> TokenizeAfter(const std::string& s,
+                                 size_t head_bytes,
+                                 const std::vector<Token>& head);
+
 // A replacement of bytes [begin, end) of the text.
 struct Edit {
     size_t begin, end;

@@ -95,9 +95,10 @@ frontend::StageOutput PreprocessPlanned(const Request& r,
 frontend::StageOutput PreprocessBlanked(const Request& r,
                                         ExecuteContext& context,
                                         hlsl::Includer& includer,
-                                        bool& for_both) {
+                                        bool& for_both,
+                                        std::shared_ptr<const hlsl::Preamble>& preamble) {
     std::optional<frontend::StageOutput> shared =
-        PreprocessWithPreamble(r, context, includer, for_both);
+        PreprocessWithPreamble(r, context, includer, for_both, &preamble);
     frontend::StageOutput out =
         shared ? std::move(*shared) : PreprocessPlanned(r, context, includer, for_both);
     static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;
@@ -123,7 +124,8 @@ frontend::StageOutput PreprocessBlanked(const Request& r,
 Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& includer) {
     Enter(context, Component::kGlslangPreprocessor);
     bool for_both = false;
-    frontend::StageOutput out = PreprocessBlanked(r, context, includer, for_both);
+    std::shared_ptr<const hlsl::Preamble> preamble;  // the shared prefix the output starts with
+    frontend::StageOutput out = PreprocessBlanked(r, context, includer, for_both, preamble);
     Response resp;
     resp.ok = out.ok;
     resp.failed_in = out.ok ? Component::kNone : Component::kGlslangPreprocessor;
@@ -138,8 +140,14 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     std::vector<std::string> entries = {r.entry};
     if (!r.second_entry.empty() && (for_both || StageFree(r, context, includer)))
         entries.push_back(r.second_entry);
-    std::vector<hlsl::Reduced> reduced =
-        hlsl::ReduceToEntryPoints(out.text, hlsl::Tokenize(out.text), entries);
+    // The shared prefix's tokens are made once, with the preamble.
+    const bool after =
+        preamble && out.text.compare(0, preamble->output.size(), preamble->output) == 0;
+    std::vector<hlsl::Reduced> reduced = hlsl::ReduceToEntryPoints(
+        out.text,
+        after ? hlsl::TokenizeAfter(out.text, preamble->output.size(), preamble->tokens)
+              : hlsl::Tokenize(out.text),
+        entries);
     bool changed = false;
     std::unordered_set<std::string> warned;  // a warning of code both entry points reach, once
     for (hlsl::Reduced& one : reduced) {

@@ -63,6 +63,7 @@ std::shared_ptr<const hlsl::Preamble> Make(const Request& r,
     }
     p->served.complete = true;
     p->usable = true;
+    p->tokens = hlsl::Tokenize(p->output);
     std::vector<uint32_t> lines;
     for (const auto& [number, line] : hlsl::PinnedDefines(prefix, pinned))
         lines.push_back(number);
@@ -142,10 +143,12 @@ std::optional<frontend::StageOutput> FromDirectives(const Request& r,
 
 }  // namespace
 
-std::optional<frontend::StageOutput> PreprocessWithPreamble(const Request& r,
-                                                            ExecuteContext& context,
-                                                            hlsl::Includer& includer,
-                                                            bool& for_both) {
+std::optional<frontend::StageOutput> PreprocessWithPreamble(
+    const Request& r,
+    ExecuteContext& context,
+    hlsl::Includer& includer,
+    bool& for_both,
+    std::shared_ptr<const hlsl::Preamble>* used) {
     for_both = false;
     if (r.pinned.empty() || !context.preambles)
         return std::nullopt;
@@ -174,8 +177,11 @@ std::optional<frontend::StageOutput> PreprocessWithPreamble(const Request& r,
     std::optional<frontend::StageOutput> out =
         p->replayable ? FromMacros(r, *p, prefix, rest, pinned, includer)
                       : FromDirectives(r, *p, skeleton, cut->lines, includer);
-    if (out)
+    if (out) {
         for_both = shared_both;
+        if (used)
+            *used = std::move(p);
+    }
     return out;
 }
 

@@ -4,10 +4,12 @@
 #ifndef KILN_WORKER_PREAMBLE_H_
 #define KILN_WORKER_PREAMBLE_H_
 
+#include <memory>
 #include <optional>
 
 #include "frontend/glslang_stage.h"
 #include "hlsl/includer.h"
+#include "hlsl/preamble.h"
 #include "worker/execute.h"
 
 namespace kiln::worker {
@@ -16,11 +18,14 @@ namespace kiln::worker {
 // shared prefix's output and the program's own; nullopt when the prefix cannot be shared or the
 // program gave any message (the caller then preprocesses it whole). `for_both` says whether the
 // output holds for the partner stage's source too (its prefix and the rest do not read the
-// stage).
-std::optional<frontend::StageOutput> PreprocessWithPreamble(const Request& r,
-                                                            ExecuteContext& context,
-                                                            hlsl::Includer& includer,
-                                                            bool& for_both);
+// stage). `used`, when given, receives the preamble the output starts with (its `output`, then a
+// line break).
+std::optional<frontend::StageOutput> PreprocessWithPreamble(
+    const Request& r,
+    ExecuteContext& context,
+    hlsl::Includer& includer,
+    bool& for_both,
+    std::shared_ptr<const hlsl::Preamble>* used = nullptr);
 
 }  // namespace kiln::worker
 

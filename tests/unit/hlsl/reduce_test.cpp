@@ -95,3 +95,33 @@ TEST(Reduce, BothEntryPointsFromOneSplitMatchEachAlone) {
 
 }  // namespace
 }  // namespace kiln::hlsl
+
+namespace kiln::hlsl {
+namespace {
+
+// The tokens of a text's head, made once, and the rest's are the whole text's where the rest
+// starts a line; elsewhere (a token could span the seam) the text is tokenized whole.
+TEST(Tokens, AHeadsTokensJoinTheRestsWhereALineStarts) {
+    const std::string head = "float4 a = 1.5e+3;\n#line 3 \"x.h\"\nfloat b = a.x";
+    const std::string text = head + "\n#pragma once\nfloat c = b >>= 2; \"s\" c.y\n";
+    auto same = [](const std::vector<Token>& x, const std::vector<Token>& y) {
+        if (x.size() != y.size())
+            return false;
+        for (size_t i = 0; i < x.size(); ++i) {
+            if (x[i].begin != y[i].begin || x[i].end != y[i].end || x[i].ident != y[i].ident ||
+                x[i].text != y[i].text)
+                return false;
+        }
+        return true;
+    };
+    const std::vector<Token> whole = Tokenize(text);
+    EXPECT_TRUE(same(TokenizeAfter(text, head.size(), Tokenize(head)), whole));
+    // Cut inside a line: the head's tokens are not used (`a.x` and the rest would not split).
+    const std::string cut = "float4 a = 1";
+    const std::vector<Token> wrong = {{0, 2, true, "fl"}};
+    EXPECT_TRUE(same(TokenizeAfter(text, cut.size() - 4, wrong), whole));
+    EXPECT_TRUE(same(TokenizeAfter(text, text.size(), wrong), whole));
+}
+
+}  // namespace
+}  // namespace kiln::hlsl

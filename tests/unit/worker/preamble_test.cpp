@@ -39,7 +39,8 @@ Both PreprocessBothWays(const ScratchDir& dir,
     ExecuteContext context{files, {}, &cache};
     hlsl::Includer includer(paths, files);
     Both b;
-    b.shared = PreprocessWithPreamble(r, context, includer, b.for_both);
+    std::shared_ptr<const hlsl::Preamble> used;
+    b.shared = PreprocessWithPreamble(r, context, includer, b.for_both, &used);
     hlsl::Includer plain(paths, files);
     b.plain = frontend::Preprocess(r.stage, source, r.name, plain);
     if (b.shared) {
@@ -47,6 +48,20 @@ Both PreprocessBothWays(const ScratchDir& dir,
         EXPECT_EQ(b.shared->ok, b.plain.ok);
         EXPECT_EQ(b.shared->text, b.plain.text) << source;
         EXPECT_EQ(b.shared->info_log, b.plain.info_log);
+        // The prefix's tokens, made once, with the rest's are the whole text's.
+        EXPECT_TRUE(used);
+        if (!used)
+            return b;
+        EXPECT_EQ(b.shared->text.compare(0, used->output.size(), used->output), 0);
+        const std::vector<hlsl::Token> joined =
+            hlsl::TokenizeAfter(b.shared->text, used->output.size(), used->tokens);
+        const std::vector<hlsl::Token> whole = hlsl::Tokenize(b.plain.text);
+        EXPECT_EQ(joined.size(), whole.size());
+        for (size_t i = 0; i < std::min(joined.size(), whole.size()); ++i) {
+            EXPECT_TRUE(joined[i].begin == whole[i].begin && joined[i].end == whole[i].end &&
+                        joined[i].ident == whole[i].ident && joined[i].text == whole[i].text)
+                << i;
+        }
     }
     return b;
 }
