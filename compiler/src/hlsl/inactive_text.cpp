@@ -149,8 +149,10 @@ void Include(State& s, const File& f, const PpDirective& d) {
         WalkRange(s, inner, 0, static_cast<uint32_t>(skeleton->directives.size()), Region::kRead);
         --s.depth;
     }
-    if (!s.options.unknown.empty() && !MentionsOnlyInConditions(s, inner))
+    if (!s.options.unknown.empty() && !MentionsOnlyInConditions(s, inner)) {
         s.plan.unknown_only_in_conditions = false;
+        s.stopped = s.stopped || s.options.stop_when_unknown_matters;
+    }
     s.plan.inclusions[index].text = Blanked(inner, s.plan.blanked_lines);
 }
 
@@ -186,6 +188,7 @@ uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
             } else if (!c || maybe_taken) {
                 maybe_taken = true;
                 ++s.plan.maybe_branches;
+                s.stopped = s.stopped || s.options.stop_when_unknown_matters;
             } else {
                 branch = Region::kRead;
                 taken = true;

@@ -64,6 +64,10 @@ struct PlanOptions {
     std::vector<std::string> unknown;
     // Records the macro table where the plan ends (InactiveTextPlan::macros).
     bool record_macros = false;
+    // Stops at the first branch the unknown macros may decide, or the first file that names one
+    // elsewhere: the plan is then incomplete, so OutputIgnoresUnknown() is false at once (for a
+    // caller that wants only a plan that holds whatever they are).
+    bool stop_when_unknown_matters = false;
 };
 
 // The plan for preprocessing `main` (named `name`, as glslang is told) with `includer`.

@@ -77,6 +77,7 @@ frontend::StageOutput PreprocessPlanned(const Request& r,
         hlsl::PlanOptions both;
         both.unknown = {hlsl::StageMacro(pack::Stage::kVertex),
                         hlsl::StageMacro(pack::Stage::kFragment)};
+        both.stop_when_unknown_matters = true;  // a plan that names the stage is made again
         plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, both);
         for_both = plan.OutputIgnoresUnknown();
     }

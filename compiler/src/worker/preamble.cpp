@@ -40,6 +40,7 @@ std::shared_ptr<const hlsl::Preamble> Make(const Request& r,
     hlsl::PlanOptions options;
     options.unknown = pinned;
     options.record_macros = true;
+    options.stop_when_unknown_matters = true;  // refused at once where a keyword is read
     const hlsl::InactiveTextPlan plan =
         hlsl::PlanInactiveText(prefix, r.name, includer, context.files, options);
     for (const hlsl::InactiveTextPlan::Inclusion& inc : plan.inclusions) {

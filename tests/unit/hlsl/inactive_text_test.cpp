@@ -237,7 +237,7 @@ TEST(InactiveText, KnowsWhenTheOutputIsTheSameForBothStages) {
 }
 
 TEST(InactiveText, RandomProgramsPreprocessAlike) {
-    size_t blanked = 0, complete = 0, ignores = 0;
+    size_t blanked = 0, complete = 0, ignores = 0, stops = 0;
     for (uint32_t seed = 1; seed <= 300; ++seed) {
         ScratchDir dir;
         test::RandomProgram g(seed);
@@ -250,7 +250,21 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
         PlanOptions e;
         e.unknown = {"E"};
         const std::string rest = "#define FN(x) x\n" + body;
-        if (ExpectSamePreprocessing(dir, "#define E 1\n" + rest, e).OutputIgnoresUnknown()) {
+        const bool ignores_e =
+            ExpectSamePreprocessing(dir, "#define E 1\n" + rest, e).OutputIgnoresUnknown();
+        {
+            // Stopping where E first matters gives the same answer.
+            PlanOptions stop = e;
+            stop.stop_when_unknown_matters = true;
+            FileCache files;
+            const IncludePaths paths{{dir.path()}, "", 0};
+            Includer includer(paths, files);
+            const InactiveTextPlan stopped = PlanInactiveText(
+                "#define E 1\n" + rest, dir.path() + "/main.hlsl", includer, files, stop);
+            EXPECT_EQ(stopped.OutputIgnoresUnknown(), ignores_e);
+            stops += !stopped.complete;
+        }
+        if (ignores_e) {
             ++ignores;
             FileCache files;
             const IncludePaths paths{{dir.path()}, "", 0};
@@ -275,6 +289,7 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
     // end of many.
     EXPECT_GT(complete, 60u) << blanked;
     EXPECT_GT(ignores, 10u);
+    EXPECT_GT(stops, 10u) << ignores;  // and stops early in some
     EXPECT_GT(blanked, 100000u) << complete;
 }
 
