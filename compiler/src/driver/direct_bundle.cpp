@@ -79,6 +79,10 @@ bool ParseLine(DirectBundle& b, std::string_view kind, const std::vector<std::st
 
 }  // namespace
 
+std::vector<std::string_view> SplitDirectFields(std::string_view line) {
+    return Split(line, '\t');
+}
+
 bool DirectStorable(std::string_view field) {
     return field.find_first_of("\t\n\r") == std::string_view::npos;
 }
@@ -91,7 +95,7 @@ std::optional<DirectBundle> ParseDirectBundle(std::string_view text) {
     static constexpr std::string_view kKinds[] = {"file", "include", "set", "entry"};
     size_t kind = 0;  // lines come in the order of kKinds
     for (size_t i = 1; i + 1 < lines.size(); ++i) {
-        const std::vector<std::string_view> f = Split(lines[i], '\t');
+        const std::vector<std::string_view> f = SplitDirectFields(lines[i]);
         while (kind < std::size(kKinds) && f[0] != kKinds[kind])
             ++kind;
         if (kind == std::size(kKinds) || !ParseLine(b, f[0], f))

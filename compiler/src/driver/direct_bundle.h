@@ -42,6 +42,9 @@ struct DirectBundle {
 std::optional<DirectBundle> ParseDirectBundle(std::string_view text);
 std::string SerializeDirectBundle(const DirectBundle& bundle);
 
+// A manifest line's fields (split at tabs).
+std::vector<std::string_view> SplitDirectFields(std::string_view line);
+
 // True when `field` can be stored in a manifest line (no tab, no line break).
 bool DirectStorable(std::string_view field);
 

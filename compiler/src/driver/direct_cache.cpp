@@ -14,15 +14,6 @@ constexpr const char* kManifestExt = "man";
 // The fewest entries a manifest keeps (of this compile and earlier ones) before it drops old ones.
 constexpr size_t kMinBundleEntries = 4096;
 
-std::vector<std::string> Split(const std::string& s, char sep) {
-    std::vector<std::string> out;
-    size_t at = 0;
-    for (size_t next; (next = s.find(sep, at)) != std::string::npos; at = next + 1)
-        out.push_back(s.substr(at, next - at));
-    out.push_back(s.substr(at));
-    return out;
-}
-
 // `path` relative to `root` when it lies under it.
 std::optional<std::string> Under(const std::string& path, const std::string& root) {
     if (root.empty())
@@ -223,19 +214,19 @@ bool DirectCache::LineHolds(bool file,
                             const std::string& line,
                             const std::string& shader,
                             bool quiet) {
-    const std::vector<std::string> f = Split(line, '\t');
+    const std::vector<std::string_view> f = SplitDirectFields(line);
     if (file) {
-        const std::string path = f.size() == 2 ? Untag(f[1], shader) : "";
+        const std::string path = f.size() == 2 ? Untag(std::string(f[1]), shader) : "";
         return !path.empty() && ContentHash(path, quiet) == f[0];
     }
     if (f.size() != 4)
         return false;
-    const std::string includer = Untag(f[1], shader);
-    return !includer.empty() && ResolvedTag({f[2], f[0] == "1"}, includer, shader) == f[3];
+    const std::string includer = Untag(std::string(f[1]), shader);
+    return !includer.empty() &&
+           ResolvedTag({std::string(f[2]), f[0] == "1"}, includer, shader) == f[3];
 }
 
 bool DirectCache::SetHolds(uint32_t set, const std::string& shader, bool quiet) {
-    DirectBundle::Set lines;
     std::vector<std::string> files, includes;
     {
         std::lock_guard<std::mutex> lock(bundles_mu_);
