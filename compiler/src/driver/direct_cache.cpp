@@ -372,23 +372,22 @@ std::string DirectCache::Serialize(const std::vector<Stored>& entries) {
     std::lock_guard<std::mutex> lock(bundles_mu_);
     DirectBundle out;
     std::unordered_map<uint32_t, uint32_t> files, includes, sets;  // ours -> the manifest's
-    auto number = [](std::unordered_map<uint32_t, uint32_t>& map, uint32_t id, size_t next) {
-        return map.emplace(id, static_cast<uint32_t>(next)).first->second;
+    // The manifest's number of our line `id`, listing the line on its first use.
+    auto number = [](std::unordered_map<uint32_t, uint32_t>& numbers, uint32_t id,
+                     const std::vector<std::string>& ours, std::vector<std::string>& listed) {
+        const auto [it, fresh] = numbers.emplace(id, static_cast<uint32_t>(listed.size()));
+        if (fresh)
+            listed.push_back(ours[id]);
+        return it->second;
     };
     for (const Stored& e : entries) {
         auto [s, fresh] = sets.emplace(e.set, static_cast<uint32_t>(out.sets.size()));
         if (fresh) {
             DirectBundle::Set set;
-            for (uint32_t f : sets_[e.set].files) {
-                set.files.push_back(number(files, f, out.files.size()));
-                if (set.files.back() == out.files.size())
-                    out.files.push_back(file_lines_[f]);
-            }
-            for (uint32_t i : sets_[e.set].includes) {
-                set.includes.push_back(number(includes, i, out.includes.size()));
-                if (set.includes.back() == out.includes.size())
-                    out.includes.push_back(include_lines_[i]);
-            }
+            for (uint32_t f : sets_[e.set].files)
+                set.files.push_back(number(files, f, file_lines_, out.files));
+            for (uint32_t i : sets_[e.set].includes)
+                set.includes.push_back(number(includes, i, include_lines_, out.includes));
             out.sets.push_back(std::move(set));
         }
         out.entries.push_back({e.direct, e.result, s->second});
