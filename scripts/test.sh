@@ -63,6 +63,7 @@ fuzz pack 65536 10 "$seconds" tests/fuzz/corpus/pack
 fuzz material 16384 10 "$seconds" tests/fuzz/corpus/material materials
 fuzz usage 65536 10 "$((seconds / 2))" tests/fuzz/corpus/usage
 fuzz direct_bundle 65536 10 "$((seconds / 2))" tests/fuzz/corpus/direct_bundle
+fuzz module_bundle 65536 10 "$((seconds / 2))" tests/fuzz/corpus/module_bundle
 fuzz gltf 65536 10 "$seconds" tests/fuzz/corpus/gltf
 fuzz image 65536 10 "$seconds" tests/fuzz/corpus/image
 # glslang's preprocessor in-process, as it is and with skipped text blanked: must agree.

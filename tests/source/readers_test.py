@@ -31,6 +31,10 @@ ALLOWED = {
     ("runtime/src/pack/reader.cpp", "open"):
         "MappedFile::Map: O_NONBLOCK, fstat S_ISREG before mmap, noted for the input guard",
     ("runtime/src/pack/reader.cpp", "mmap"): "MappedFile::Map, of the checked descriptor",
+    ("compiler/src/driver/module_store.cpp", "open"):
+        "a shader's modules file: lstat and fstat S_ISREG, O_NOFOLLOW | O_NONBLOCK, size bounded "
+        "by Cache::kMaxPackEntryBytes, every read inside the size (module_bundle.h); and the "
+        "temporary file its new modules are written to",
     ("compiler/src/worker/pool.cpp", "fopen"): "/proc/PID/statm of a worker, for its memory",
     ("runtime/src/image/stb_decoder.cpp", "stb_image any"):
         "the image reader: bytes from ReadRegularFile through bounded callbacks (image.cpp)",

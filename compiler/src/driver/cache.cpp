@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <string_view>
 
 #include <xxhash.h>
 
@@ -29,6 +30,13 @@ constexpr uint32_t kEntryVersion = 5;
 constexpr uint32_t kSpirvMagic = 0x07230203;
 constexpr int64_t kStaleTemporarySeconds = 24 * 60 * 60;
 
+std::string HexOf(const XXH128_hash_t& h) {
+    char buf[33];
+    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
+                  static_cast<unsigned long long>(h.low64));
+    return buf;
+}
+
 }  // namespace
 
 std::string HashKey(const std::vector<std::string>& parts) {
@@ -41,17 +49,16 @@ std::string HashKey(const std::vector<std::string>& parts) {
     }
     const XXH128_hash_t h = XXH3_128bits_digest(st);
     XXH3_freeState(st);
-    char buf[33];
-    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
-                  static_cast<unsigned long long>(h.low64));
-    return buf;
+    return HexOf(h);
 }
 
-std::string CodeOf(const std::string& reduced, bool debug_info) {
-    if (debug_info)
-        return reduced;
-    std::string out;
-    out.reserve(reduced.size());
+namespace {
+
+// Calls `piece` with each piece of CodeOf(reduced, false), in order: each line that is neither
+// blank nor a #line line, without its indentation (which glslang's output varies with the lines
+// around) and trailing spaces, then its line break.
+template <class Piece>
+void ForEachCodePiece(const std::string& reduced, Piece piece) {
     for (size_t at = 0; at < reduced.size();) {
         size_t end = reduced.find('\n', at);
         if (end == std::string::npos)
@@ -59,17 +66,52 @@ std::string CodeOf(const std::string& reduced, bool debug_info) {
         const size_t first = reduced.find_first_not_of(" \t\r", at);
         const bool blank = first == std::string::npos || first >= end;
         if (!blank && reduced.compare(first, 5, "#line") != 0) {
-            // Without the indentation, which glslang's output varies with the lines around.
             size_t last = end;
             while (last > first && (reduced[last - 1] == ' ' || reduced[last - 1] == '\t' ||
                                     reduced[last - 1] == '\r'))
                 --last;
-            out.append(reduced, first, last - first);
-            out += '\n';
+            piece(std::string_view(reduced).substr(first, last - first));
+            piece(std::string_view("\n"));
         }
         at = end + 1;
     }
+}
+
+}  // namespace
+
+std::string CodeOf(const std::string& reduced, bool debug_info) {
+    if (debug_info)
+        return reduced;
+    std::string out;
+    out.reserve(reduced.size());
+    ForEachCodePiece(reduced, [&out](std::string_view p) { out += p; });
     return out;
+}
+
+// HashKey's stream with CodeOf's pieces fed as they are found: the code is never copied.
+std::string HashKeyOfCode(const std::vector<std::string>& parts,
+                          const std::string& reduced,
+                          bool debug_info) {
+    if (debug_info) {
+        std::vector<std::string> all = parts;
+        all.push_back(reduced);
+        return HashKey(all);
+    }
+    uint64_t n = 0;
+    ForEachCodePiece(reduced, [&n](std::string_view p) { n += p.size(); });
+    XXH3_state_t* st = XXH3_createState();
+    XXH3_128bits_reset(st);
+    for (const std::string& p : parts) {
+        const uint64_t size = p.size();
+        XXH3_128bits_update(st, &size, sizeof size);
+        XXH3_128bits_update(st, p.data(), p.size());
+    }
+    XXH3_128bits_update(st, &n, sizeof n);
+    ForEachCodePiece(reduced,
+                     [st](std::string_view p) { XXH3_128bits_update(st, p.data(), p.size()); });
+    const XXH128_hash_t h = XXH3_128bits_digest(st);
+    XXH3_freeState(st);
+    return HexOf(h);
 }
 
 std::string Cache::PathFor(const std::string& key, const std::string& ext) const {

@@ -1,15 +1,17 @@
-// The content-addressed compile cache: optimized (pre-binding) SPIR-V per unique stage program,
-// keyed by a hash of the reduced text's code (without #line lines, blank lines and indentation
-// unless -g, so that neither the folder nor a line shift elsewhere changes it), stage, entry
-// point, options and the versions of Kiln, glslang and SPIRV-Tools; and the direct mode's manifests
-// (driver/direct_cache.h) under their own keys. Entries are written to a unique temporary file
-// and renamed, so concurrent kiln processes never see a partial entry.
+// The content-addressed compile cache's entries of their own: the direct mode's manifests
+// (driver/direct_cache.h), whole packs (pack_cache.cpp), and modules as older Kilns stored them
+// and as a compile stores one past its shader's file of modules (driver/module_store.h, where
+// modules live now). A module's key is a hash of the reduced text's code (without #line lines,
+// blank lines and indentation unless -g, so that neither the folder nor a line shift elsewhere
+// changes it), stage, entry point, options and the versions of Kiln, glslang and SPIRV-Tools.
+// Entries are written to a unique temporary file and renamed, so concurrent kiln processes never
+// see a partial entry.
 //
 // The cache is never trusted: an entry carries its own key and a hash of key and payload, must be
-// a regular file (not a link, FIFO or directory) of bounded size, and must hold a SPIR-V header;
-// anything else is a miss, and the compile that follows replaces the entry. (The driver also runs
-// spirv-val over every entry it takes.) Temporary files left by killed compiles are removed once
-// a day old.
+// a regular file (not a link, FIFO or directory) of bounded size, and a module must hold a SPIR-V
+// header; anything else is a miss, and the compile that follows replaces the entry. (The driver
+// also runs spirv-val over every module it takes.) Temporary files left by killed compiles are
+// removed once a day old.
 #ifndef KILN_DRIVER_CACHE_H_
 #define KILN_DRIVER_CACHE_H_
 
@@ -55,6 +57,11 @@ std::string HashKey(const std::vector<std::string>& parts);
 // lines (removed functions leave blank lines) and indentation, or all of it with debug info,
 // whose SPIR-V holds the file names and lines.
 std::string CodeOf(const std::string& reduced, bool debug_info);
+
+// HashKey of `parts` and CodeOf(reduced, debug_info), without making CodeOf's copy.
+std::string HashKeyOfCode(const std::vector<std::string>& parts,
+                          const std::string& reduced,
+                          bool debug_info);
 
 }  // namespace kiln::driver
 

@@ -14,6 +14,7 @@
 #include "driver/cache.h"
 #include "driver/compile_state.h"
 #include "driver/isolation.h"
+#include "driver/module_store.h"
 #include "driver/parallel.h"
 #include "driver/use_pass.h"
 #include "frontend/glslang_stage.h"
@@ -208,7 +209,7 @@ CompileOutput Run(const std::vector<std::string>& paths,
                   DiagnosticList& diags,
                   Mode mode) {
     frontend::InitializeGlslang();  // before any thread starts
-    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    CompileState st{options, diags, nullptr, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     CompileOutput out;
     PhaseClock clock, whole;
     CompileStats::Phases& ms = out.stats.ms;
@@ -241,6 +242,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
     if (!diags.has_errors()) {
         exec = driver::MakeExecutor(st);
         st.exec = exec.get();
+        if (!options.cache_dir.empty())
+            st.modules = std::make_shared<driver::ModuleStore>(driver::Cache(options.cache_dir));
     }
     if (!diags.has_errors()) {
         if (options.requests) {
@@ -282,6 +285,8 @@ CompileOutput Run(const std::vector<std::string>& paths,
             driver::ReportJobDiagnostics(st);
     } else if (!diags.has_errors()) {
         driver::CompileJobs(st, out.stats);
+        if (st.modules)
+            st.modules->Flush();  // one file of modules per shader file name
         driver::ReportJobDiagnostics(st);
         clock.Into(ms.compile);
         if (!diags.has_errors())

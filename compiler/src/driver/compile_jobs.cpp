@@ -8,6 +8,7 @@
 #include "driver/cache.h"
 #include "driver/compile_state.h"
 #include "driver/isolation.h"
+#include "driver/module_store.h"
 #include "driver/parallel.h"
 #include "frontend/glslang_messages.h"
 #include "hlsl/identifier.h"
@@ -147,24 +148,27 @@ void CompileJob(CompileState& st, Job& job) {
 
 }  // namespace
 
-bool CompileOrLoad(CompileState& st, const Cache& cache, Job& job) {
-    if (auto cached = LoadCached(st, cache, job.cache_key)) {
+bool CompileOrLoad(CompileState& st, Job& job) {
+    const std::string& shader = ShaderOf(st, st.tasks[job.first_task]);
+    if (auto cached = LoadCached(st, job.cache_key, shader)) {
         job.words = std::move(*cached);
         job.ok = job.from_cache = true;
         return false;
     }
     CompileJob(st, job);
-    if (job.ok)
-        cache.Store(job.cache_key, job.words);
+    if (job.ok && st.modules)
+        st.modules->Store(job.cache_key, job.words, shader);
     return true;
 }
 
 // A cache entry is used only once spirv-val accepts it: a damaged or forged entry is a miss, and
 // the compile that follows replaces it.
 std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
-                                                const Cache& cache,
-                                                const std::string& key) {
-    std::optional<std::vector<uint32_t>> cached = cache.Load(key);
+                                                const std::string& key,
+                                                const std::string& shader) {
+    if (!st.modules)
+        return std::nullopt;
+    std::optional<std::vector<uint32_t>> cached = st.modules->Load(key, shader);
     if (!cached)
         return std::nullopt;
     worker::Request check;
@@ -178,6 +182,10 @@ std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
 
 const std::string& EntryOf(const CompileState& st, const StageTask& t) {
     return st.passes[t.pass].pragmas.Entry(t.stage)->name;
+}
+
+const std::string& ShaderOf(const CompileState& st, const StageTask& t) {
+    return st.shaders[st.passes[t.pass].shader].file->path();
 }
 
 void AppendGlslangLog(CompileState& st,
@@ -226,7 +234,6 @@ void AppendMessages(CompileState& st,
 }
 
 void CompileJobs(CompileState& st, CompileStats& stats) {
-    const Cache cache(st.options.cache_dir);
     std::atomic<size_t> compiles{0}, hits{0};
     ParallelFor(
         st.jobs.size(), st.options.jobs,
@@ -238,7 +245,7 @@ void CompileJobs(CompileState& st, CompileStats& stats) {
                 ++hits;  // taken from the cache with the direct mode's manifest
                 return;
             }
-            if (!CompileOrLoad(st, cache, job)) {
+            if (!CompileOrLoad(st, job)) {
                 ++hits;
                 return;
             }

@@ -28,6 +28,7 @@ namespace kiln::driver {
 
 class Cache;
 class DirectCache;
+class ModuleStore;
 
 struct ShaderUnit {
     std::shared_ptr<const SourceFile> file;
@@ -116,12 +117,16 @@ struct CompileState {
     // The cache's direct mode (null without a cache) and each task's direct key.
     std::shared_ptr<DirectCache> direct;
     std::vector<std::string> direct_keys;
+    // The cache's modules (null without a cache), written by one Flush after the compile phase.
+    std::shared_ptr<ModuleStore> modules;
     // Nanoseconds inside worker requests, by worker::RequestKind (CompileStats::work_ms).
     std::array<std::atomic<uint64_t>, 8> work_ns{};
 };
 
 // The entry point of a task's stage.
 const std::string& EntryOf(const CompileState& st, const StageTask& t);
+// The path of a task's shader.
+const std::string& ShaderOf(const CompileState& st, const StageTask& t);
 // glslang's info log as Kiln diagnostics (positions resolved against the files read). `program`,
 // when given, is the text compiled (its identifiers feed suggestions).
 void AppendGlslangLog(CompileState& st,
@@ -185,11 +190,13 @@ void StoreCachedPack(const CompileState& st,
 void CompileJobs(CompileState& st, CompileStats& stats);
 // A job's SPIR-V from the cache (once validated), else compiled from its first task's texts by
 // glslang and SPIRV-Tools and stored (diagnostics to job.diags). True when it was compiled.
-bool CompileOrLoad(CompileState& st, const Cache& cache, Job& job);
-// A cache entry, once spirv-val accepts it (a damaged or forged entry is a miss).
+// The module is stored under the file name of its first task's shader (driver/module_store.h).
+bool CompileOrLoad(CompileState& st, Job& job);
+// A module of the cache, once spirv-val accepts it (a damaged or forged entry is a miss); looked
+// for first among the modules of `shader`'s file name.
 std::optional<std::vector<uint32_t>> LoadCached(CompileState& st,
-                                                const Cache& cache,
-                                                const std::string& key);
+                                                const std::string& key,
+                                                const std::string& shader);
 
 // Phases implemented in pack_emit.cpp.
 void FinishModules(CompileState& st);  // bindings, reflection, strip, validate

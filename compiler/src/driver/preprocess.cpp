@@ -30,7 +30,6 @@ struct Early {
 
 struct State {
     CompileState& st;
-    const Cache cache;
     const bool stream;  // compile each new program as soon as it is preprocessed
     // Result key -> the SPIR-V the cache holds for a direct hit (nullopt: not usable).
     std::map<std::string, std::optional<std::vector<uint32_t>>> found;
@@ -73,21 +72,20 @@ std::vector<std::string> KeyParts(const CompileState& st, const StageTask& t) {
             pack::StageName(t.stage), EntryOf(st, t)};
 }
 
-const std::string& ShaderOf(const CompileState& st, const StageTask& t) {
-    return st.shaders[st.passes[t.pass].shader].file->path();
-}
-
 // The entries the direct hits name, each loaded and validated once.
 void LoadFound(State& s) {
     CompileState& st = s.st;
     std::vector<std::string> keys;
+    std::vector<const std::string*> shaders;
     for (const StageTask& t : st.tasks) {
-        if (!t.result_key.empty() && s.found.emplace(t.result_key, std::nullopt).second)
+        if (!t.result_key.empty() && s.found.emplace(t.result_key, std::nullopt).second) {
             keys.push_back(t.result_key);
+            shaders.push_back(&ShaderOf(st, t));
+        }
     }
     std::vector<std::optional<std::vector<uint32_t>>> words(keys.size());
     ParallelFor(keys.size(), st.options.jobs,
-                [&](size_t k) { words[k] = LoadCached(st, s.cache, keys[k]); });
+                [&](size_t k) { words[k] = LoadCached(st, keys[k], *shaders[k]); });
     for (size_t k = 0; k < keys.size(); ++k)
         s.found[keys[k]] = std::move(words[k]);
 }
@@ -126,7 +124,7 @@ void CompileEarly(State& s, size_t i) {
     }
     Job job = NewJob(st, t, i);
     job.cache_key = t.result_key;
-    CompileOrLoad(st, s.cache, job);
+    CompileOrLoad(st, job);
     std::lock_guard<std::mutex> lock(s.mu);
     Early& e = s.early[t.result_key];
     e.done = true;
@@ -156,9 +154,7 @@ void Accept(State& s,
     t.reduced = std::move(reduced);
     t.rewritten = std::move(rewritten);
     t.functions_if_entry_missing = std::move(functions);
-    std::vector<std::string> parts = KeyParts(st, t);
-    parts.push_back(CodeOf(t.reduced, st.options.debug_info));
-    t.result_key = HashKey(parts);
+    t.result_key = HashKeyOfCode(KeyParts(st, t), t.reduced, st.options.debug_info);
     // A preprocess with messages is done again each time, so that they are shown each time.
     if (st.direct && t.preprocess_log.empty())
         st.direct->Record(st.direct_keys[i], ShaderOf(st, t), source ? *source : SourceOf(st, t),
@@ -350,7 +346,7 @@ void DedupKnown(CompileState& st, CompileStats& stats) {
 }
 
 void PreprocessAndDedup(CompileState& st, CompileStats& stats, bool compile) {
-    State s{st, Cache(st.options.cache_dir), compile, {}, {}, {}, {}};
+    State s{st, compile, {}, {}, {}, {}};
     if (st.direct)
         LoadFound(s);
     const size_t n = st.tasks.size();

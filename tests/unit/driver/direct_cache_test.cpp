@@ -229,7 +229,7 @@ TEST(DirectCache, DamagedManifestsAndMissingModulesAreMisses) {
     EXPECT_EQ(damaged.out.pack, reference);
 
     // Manifests intact (rewritten above), but the modules and packs they lead to are gone.
-    p.RemoveEntries(".spv");
+    p.RemoveEntries(".kmod");
     p.RemoveEntries(".kpack");
     const CompileRun gone = p.Build();
     ASSERT_TRUE(gone.out.ok) << Brief(gone.diags);
