@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <string_view>
@@ -59,18 +60,24 @@ namespace {
 // around) and trailing spaces, then its line break.
 template <class Piece>
 void ForEachCodePiece(const std::string& reduced, Piece piece) {
-    for (size_t at = 0; at < reduced.size();) {
-        size_t end = reduced.find('\n', at);
-        if (end == std::string::npos)
-            end = reduced.size();
-        const size_t first = reduced.find_first_not_of(" \t\r", at);
-        const bool blank = first == std::string::npos || first >= end;
-        if (!blank && reduced.compare(first, 5, "#line") != 0) {
+    const char* s = reduced.data();
+    const size_t n = reduced.size();
+    size_t at = 0;
+    while (at < n) {
+        // Blank lines and indentation: one tight loop over them (most of a reduced text's lines
+        // are the blank lines removed functions leave).
+        const char c = s[at];
+        if (c == '\n' || c == ' ' || c == '\t' || c == '\r') {
+            ++at;
+            continue;
+        }
+        const void* nl = std::memchr(s + at, '\n', n - at);
+        const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - s) : n;
+        if (reduced.compare(at, 5, "#line") != 0) {
             size_t last = end;
-            while (last > first && (reduced[last - 1] == ' ' || reduced[last - 1] == '\t' ||
-                                    reduced[last - 1] == '\r'))
+            while (last > at && (s[last - 1] == ' ' || s[last - 1] == '\t' || s[last - 1] == '\r'))
                 --last;
-            piece(std::string_view(reduced).substr(first, last - first));
+            piece(std::string_view(s + at, last - at));
             piece(std::string_view("\n"));
         }
         at = end + 1;
@@ -88,29 +95,31 @@ std::string CodeOf(const std::string& reduced, bool debug_info) {
     return out;
 }
 
-// HashKey's stream with CodeOf's pieces fed as they are found: the code is never copied.
+// HashKey of the parts and CodeOf, with the code made in a buffer each thread keeps (one XXH3
+// update over it, no allocation once the buffer has grown).
 std::string HashKeyOfCode(const std::vector<std::string>& parts,
                           const std::string& reduced,
                           bool debug_info) {
-    if (debug_info) {
-        std::vector<std::string> all = parts;
-        all.push_back(reduced);
-        return HashKey(all);
-    }
-    uint64_t n = 0;
-    ForEachCodePiece(reduced, [&n](std::string_view p) { n += p.size(); });
+    thread_local std::string code;
+    code.clear();
+    if (debug_info)
+        code = reduced;
+    else
+        ForEachCodePiece(reduced, [](std::string_view p) { code += p; });
     XXH3_state_t* st = XXH3_createState();
     XXH3_128bits_reset(st);
-    for (const std::string& p : parts) {
+    auto add = [st](std::string_view p) {
         const uint64_t size = p.size();
         XXH3_128bits_update(st, &size, sizeof size);
         XXH3_128bits_update(st, p.data(), p.size());
-    }
-    XXH3_128bits_update(st, &n, sizeof n);
-    ForEachCodePiece(reduced,
-                     [st](std::string_view p) { XXH3_128bits_update(st, p.data(), p.size()); });
+    };
+    for (const std::string& p : parts)
+        add(p);
+    add(code);
     const XXH128_hash_t h = XXH3_128bits_digest(st);
     XXH3_freeState(st);
+    if (code.capacity() > (size_t{16} << 20))
+        std::string().swap(code);  // a rare huge program does not stay in memory
     return HexOf(h);
 }
 

@@ -224,34 +224,36 @@ bool Preprocess(State& s, size_t i, size_t partner = std::string::npos) {
     return paired;
 }
 
-// True when `fragment` is `vertex` with the vertex stage's #define swapped for the fragment's.
-bool SameButStage(const std::string& vertex, const std::string& fragment) {
+// A task's source hashed twice from one assembly: whole (with the shader, stage and entry point:
+// tasks of equal keys preprocess the same), and without its stage's #define, so that a vertex
+// and a fragment task whose texts differ only there have equal `unstaged` keys.
+struct SourceKeys {
+    std::string whole, unstaged;
+};
+
+SourceKeys KeysOfSource(const CompileState& st, const StageTask& t) {
     static const std::string kVertex = "#define SHADER_STAGE_VERTEX 1\n";
     static const std::string kFragment = "#define SHADER_STAGE_FRAGMENT 1\n";
-    const size_t at = vertex.find(kVertex);
-    if (at == std::string::npos ||
-        fragment.size() != vertex.size() - kVertex.size() + kFragment.size())
-        return false;
-    const size_t tail = at + kVertex.size();
-    return fragment.compare(0, at, vertex, 0, at) == 0 &&
-           fragment.compare(at, kFragment.size(), kFragment) == 0 &&
-           fragment.compare(at + kFragment.size(), std::string::npos, vertex, tail) == 0;
+    const std::string source = SourceOf(st, t);
+    SourceKeys out;
+    out.whole = HashKey({ShaderOf(st, t), pack::StageName(t.stage), EntryOf(st, t), source});
+    const std::string* define = t.stage == pack::Stage::kVertex     ? &kVertex
+                                : t.stage == pack::Stage::kFragment ? &kFragment
+                                                                    : nullptr;
+    const size_t at = define ? source.find(*define) : std::string::npos;
+    if (at != std::string::npos)
+        out.unstaged = HashKey({source.substr(0, at), source.substr(at + define->size())});
+    return out;
 }
 
 // For each task, the first task whose preprocess gives the same result: the same shader file,
 // stage, entry point and assembled text (a keyword of a fragment-only set leaves the vertex
 // stage's text unchanged, so its variants share one preprocess).
-std::vector<size_t> Leaders(const CompileState& st) {
-    std::vector<std::string> keys(st.tasks.size());
-    ParallelFor(st.tasks.size(), st.options.jobs, [&](size_t i) {
-        const StageTask& t = st.tasks[i];
-        keys[i] =
-            HashKey({ShaderOf(st, t), pack::StageName(t.stage), EntryOf(st, t), SourceOf(st, t)});
-    });
-    std::vector<size_t> leader(st.tasks.size());
+std::vector<size_t> Leaders(const std::vector<SourceKeys>& keys) {
+    std::vector<size_t> leader(keys.size());
     std::unordered_map<std::string, size_t> first;
-    for (size_t i = 0; i < st.tasks.size(); ++i)
-        leader[i] = first.emplace(keys[i], i).first->second;
+    for (size_t i = 0; i < keys.size(); ++i)
+        leader[i] = first.emplace(keys[i].whole, i).first->second;
     return leader;
 }
 
@@ -350,7 +352,9 @@ void PreprocessAndDedup(CompileState& st, CompileStats& stats, bool compile) {
     if (st.direct)
         LoadFound(s);
     const size_t n = st.tasks.size();
-    const std::vector<size_t> leader = Leaders(st);
+    std::vector<SourceKeys> keys(n);
+    ParallelFor(n, st.options.jobs, [&](size_t i) { keys[i] = KeysOfSource(st, st.tasks[i]); });
+    const std::vector<size_t> leader = Leaders(keys);
     // A variant's vertex task (a leader) carries its fragment task (a leader too) when the two
     // texts differ only in the stage's #define (CreateTasks puts them side by side).
     std::vector<size_t> partner(n, std::string::npos);
@@ -360,7 +364,7 @@ void PreprocessAndDedup(CompileState& st, CompileStats& stats, bool compile) {
         const StageTask& f = st.tasks[i + 1];
         if (leader[i] == i && leader[i + 1] == i + 1 && v.stage == pack::Stage::kVertex &&
             f.stage == pack::Stage::kFragment && v.pass == f.pass && v.key == f.key &&
-            SameButStage(SourceOf(st, v), SourceOf(st, f))) {
+            !keys[i].unstaged.empty() && keys[i].unstaged == keys[i + 1].unstaged) {
             partner[i] = i + 1;
             carried[i + 1] = 1;
         }
