@@ -14,6 +14,8 @@ PACKAGES=(
     libopencolorio-dev libglm-dev libtinygltf-dev libstb-dev libjpeg-dev
     # utilities
     nlohmann-json3-dev libcli11-dev libxxhash-dev
+    # kiln and kiln-worker's allocator (tools/CMakeLists.txt)
+    libjemalloc-dev
     # the accuracy report's figure (PNG and SVG from one drawing, with real fonts)
     libcairo2-dev fonts-dejavu-core zlib1g-dev
     # tests and benchmarks
