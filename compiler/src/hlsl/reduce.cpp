@@ -1,6 +1,7 @@
 #include "hlsl/reduce.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string_view>
 #include <unordered_map>
 #include <utility>
@@ -156,48 +157,93 @@ std::vector<char> Reachable(Split& split, const std::string& entry_point) {
 }
 
 // A line whose first character after spaces and tabs is '#'.
-bool IsDirectiveLine(std::string_view line) {
-    const size_t j = line.find_first_not_of(" \t");
-    return j != std::string_view::npos && line[j] == '#';
-}
+// A line whose first character other than a space or tab is `#`: [begin, end), without its line
+// break; `pragma` when `pragma` follows the `#` at once.
+struct DirectiveLine {
+    size_t begin = 0, end = 0;
+    bool pragma = false;
+};
 
-// The text without the items not kept (their newlines stay) and with `#pragma` lines blanked;
-// every other directive line is kept, inside a dropped function too.
-std::string Assemble(const std::string& text, const Split& split, const std::vector<char>& keep) {
-    std::vector<std::pair<size_t, size_t>> dropped;
-    for (size_t i = 0; i < split.items.size(); ++i) {
-        if (!keep[i])
-            dropped.emplace_back(split.items[i].begin, split.items[i].end);
-    }
-    std::string out;
-    out.reserve(text.size());
-    size_t r = 0;  // the first dropped range that may reach past the line's start
-    for (size_t i = 0; i < text.size();) {
-        size_t eol = text.find('\n', i);
-        if (eol == std::string::npos)
-            eol = text.size();
-        const std::string_view line(text.data() + i, eol - i);
-        if (IsDirectiveLine(line)) {
-            if (line.substr(line.find('#') + 1).find("pragma") != 0)
-                out.append(line);
-        } else {
-            for (size_t p = i; p < eol;) {
-                while (r < dropped.size() && dropped[r].second <= p)
-                    ++r;
-                if (r < dropped.size() && dropped[r].first < eol) {
-                    const size_t b = std::max(dropped[r].first, p);
-                    out.append(text, p, b - p);
-                    p = std::min(dropped[r].second, eol);
-                } else {
-                    out.append(text, p, eol - p);
-                    p = eol;
-                }
-            }
-        }
-        if (eol < text.size())
-            out += '\n';
+// The directive lines of a text, in order: found once for every entry point's assembly.
+std::vector<DirectiveLine> DirectiveLines(const std::string& text) {
+    std::vector<DirectiveLine> out;
+    const char* s = text.data();
+    const size_t n = text.size();
+    for (size_t i = 0; i < n;) {
+        size_t j = i;
+        while (j < n && (s[j] == ' ' || s[j] == '\t'))
+            ++j;
+        const void* nl = std::memchr(s + j, '\n', n - j);
+        const size_t eol = nl ? static_cast<size_t>(static_cast<const char*>(nl) - s) : n;
+        if (j < eol && s[j] == '#')
+            out.push_back({i, eol, text.compare(j + 1, 6, "pragma") == 0});
         i = eol + 1;
     }
+    return out;
+}
+
+// The text without the items not kept (their line breaks stay) and with `#pragma` lines blanked;
+// every other directive line is kept, inside a dropped function too. Kept spans are copied whole;
+// only the directive lines and line breaks of dropped ones are looked at.
+std::string Assemble(const std::string& text,
+                     const Split& split,
+                     const std::vector<char>& keep,
+                     const std::vector<DirectiveLine>& directives) {
+    std::string out;
+    out.reserve(text.size());
+    size_t d = 0;  // the first directive line that may end after the position reached
+    // [from, to) of a kept span: all of it but the parts of #pragma lines.
+    auto kept = [&](size_t from, size_t to) {
+        while (d < directives.size() && directives[d].end <= from)
+            ++d;
+        for (size_t k = d; k < directives.size() && directives[k].begin < to; ++k) {
+            if (!directives[k].pragma)
+                continue;
+            const size_t b = std::max(directives[k].begin, from);
+            out.append(text, from, b - from);
+            from = std::min(directives[k].end, to);
+        }
+        if (to > from)
+            out.append(text, from, to - from);
+    };
+    // [from, to) of a dropped item: its line breaks, and the parts of directive lines but
+    // #pragma lines.
+    auto dropped = [&](size_t from, size_t to) {
+        while (d < directives.size() && directives[d].end <= from)
+            ++d;
+        size_t k = d;
+        for (size_t p = from; p < to;) {
+            while (k < directives.size() && directives[k].end <= p)
+                ++k;
+            const size_t next_directive =
+                k < directives.size() ? std::max(directives[k].begin, p) : to;
+            if (next_directive <= p && k < directives.size()) {  // inside directive line k
+                const size_t e = std::min(directives[k].end, to);
+                if (!directives[k].pragma)
+                    out.append(text, p, e - p);
+                p = e;
+                continue;
+            }
+            const size_t stop = std::min(next_directive, to);
+            for (const char* c = text.data() + p;;) {
+                const void* nl = std::memchr(c, '\n', text.data() + stop - c);
+                if (!nl)
+                    break;
+                out += '\n';
+                c = static_cast<const char*>(nl) + 1;
+            }
+            p = stop;
+        }
+    };
+    size_t at = 0;
+    for (size_t i = 0; i < split.items.size(); ++i) {
+        if (keep[i])
+            continue;
+        kept(at, split.items[i].begin);
+        dropped(split.items[i].begin, split.items[i].end);
+        at = split.items[i].end;
+    }
+    kept(at, text.size());
     return out;
 }
 
@@ -207,6 +253,7 @@ std::vector<Reduced> ReduceToEntryPoints(const std::string& text,
                                          const std::vector<Token>& tokens,
                                          const std::vector<std::string>& entry_points) {
     Split split = SplitItems(text, tokens);
+    const std::vector<DirectiveLine> directives = DirectiveLines(text);
     std::vector<Reduced> out(entry_points.size());
     for (size_t e = 0; e < entry_points.size(); ++e) {
         if (!split.functions.count(entry_points[e])) {
@@ -215,7 +262,7 @@ std::vector<Reduced> ReduceToEntryPoints(const std::string& text,
                     out[e].functions_if_entry_missing.emplace_back(it.name);
             }
         }
-        out[e].text = Assemble(text, split, Reachable(split, entry_points[e]));
+        out[e].text = Assemble(text, split, Reachable(split, entry_points[e]), directives);
     }
     return out;
 }
