@@ -56,19 +56,6 @@ class Fd {
     int fd_;
 };
 
-bool WriteAll(int fd, const uint8_t* data, size_t size) {
-    while (size > 0) {
-        const ssize_t n = write(fd, data, size);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return false;
-        data += n;
-        size -= static_cast<size_t>(n);
-    }
-    return true;
-}
-
 // The file an output path names: a symbolic link's target (followed to the end), else the path.
 Result<std::string> OutputTarget(const std::string& path) {
     std::string target = path;
@@ -318,11 +305,24 @@ Status CheckDistinctOutputs(const std::vector<std::pair<std::string, std::string
     return {};
 }
 
+bool WriteAll(int fd, std::string_view bytes) {
+    while (!bytes.empty()) {
+        const ssize_t n = write(fd, bytes.data(), bytes.size());
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        bytes.remove_prefix(static_cast<size_t>(n));
+    }
+    return true;
+}
+
 Status WriteFileAtomically(const std::string& path,
                            std::span<const uint8_t> bytes,
                            const WriteOptions& options) {
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (path == kStandardStream) {
-        if (!WriteAll(STDOUT_FILENO, bytes.data(), bytes.size()))
+        if (!WriteAll(STDOUT_FILENO, text))
             return Error{DiagCode::kCannotWriteFile, Errno("cannot write standard output")};
         return {};
     }
@@ -350,8 +350,7 @@ Status WriteFileAtomically(const std::string& path,
     Fd fd(raw);
     if (exists)
         fchmod(fd.get(), existing.st_mode & 07777);
-    if (!WriteAll(fd.get(), bytes.data(), bytes.size()) ||
-        (options.durable && fsync(fd.get()) != 0)) {
+    if (!WriteAll(fd.get(), text) || (options.durable && fsync(fd.get()) != 0)) {
         const std::string why = Errno("cannot write '" + path + "'");
         unlink(temp.c_str());
         return Error{DiagCode::kCannotWriteFile, why};

@@ -40,6 +40,16 @@ std::string HexOf(const XXH128_hash_t& h) {
 
 }  // namespace
 
+uint64_t EntryHash(std::string_view key, std::string_view payload) {
+    XXH64_state_t* h = XXH64_createState();
+    XXH64_reset(h, 0);
+    XXH64_update(h, key.data(), key.size());
+    XXH64_update(h, payload.data(), payload.size());
+    const uint64_t out = XXH64_digest(h);
+    XXH64_freeState(h);
+    return out;
+}
+
 std::string HashKey(const std::vector<std::string>& parts) {
     XXH3_state_t* st = XXH3_createState();
     XXH3_128bits_reset(st);
@@ -160,13 +170,7 @@ std::optional<std::string> Cache::LoadBytes(const std::string& key, const std::s
         return std::nullopt;
     const uint64_t hash =
         uint64_t{base::LoadLe32(data, at + 4)} | uint64_t{base::LoadLe32(data, at + 8)} << 32;
-    XXH64_state_t* h = XXH64_createState();
-    XXH64_reset(h, 0);
-    XXH64_update(h, key.data(), key.size());
-    XXH64_update(h, data.data() + payload, data.size() - payload);
-    const uint64_t actual = XXH64_digest(h);
-    XXH64_freeState(h);
-    if (actual != hash)
+    if (EntryHash(key, std::string_view(data).substr(payload)) != hash)
         return std::nullopt;
     return data.substr(payload);
 }
@@ -197,12 +201,7 @@ bool Cache::StoreBytes(const std::string& key,
         return false;
     static std::once_flag cleaned;
     std::call_once(cleaned, [this] { RemoveStaleTemporaries(kStaleTemporarySeconds); });
-    XXH64_state_t* h = XXH64_createState();
-    XXH64_reset(h, 0);
-    XXH64_update(h, key.data(), key.size());
-    XXH64_update(h, payload.data(), payload.size());
-    const uint64_t hash = XXH64_digest(h);
-    XXH64_freeState(h);
+    const uint64_t hash = EntryHash(key, payload);
     std::string data;
     base::AppendLe32(data, kEntryMagic);
     base::AppendLe32(data, kEntryVersion);

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace kiln::driver {
@@ -49,6 +50,10 @@ class Cache {
   private:
     std::string dir_;
 };
+
+// The hash an entry carries: XXH64 of its key, then its payload (a file of modules keeps one per
+// module, driver/module_bundle.h).
+uint64_t EntryHash(std::string_view key, std::string_view payload);
 
 // 32 hex digits (XXH3 128-bit) of the parts, each length-prefixed.
 std::string HashKey(const std::vector<std::string>& parts);

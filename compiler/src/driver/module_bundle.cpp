@@ -4,6 +4,7 @@
 
 #include <xxhash.h>
 
+#include "driver/cache.h"
 #include "kiln/base/bytes.h"
 
 namespace kiln::driver {
@@ -30,16 +31,6 @@ std::string ModuleBundleHeader() {
     std::string out;
     base::AppendLe32(out, kMagic);
     base::AppendLe32(out, kVersion);
-    return out;
-}
-
-uint64_t ModuleEntryHash(std::string_view key, std::string_view payload) {
-    XXH64_state_t* h = XXH64_createState();
-    XXH64_reset(h, 0);
-    XXH64_update(h, key.data(), key.size());
-    XXH64_update(h, payload.data(), payload.size());
-    const uint64_t out = XXH64_digest(h);
-    XXH64_freeState(h);
     return out;
 }
 
@@ -106,8 +97,8 @@ std::string BuildModuleBundle(const std::vector<std::pair<std::string, std::stri
     std::string out = ModuleBundleHeader();
     std::vector<ModuleEntry> entries;
     for (const auto& [key, payload] : modules) {
-        entries.push_back({key, out.size(), static_cast<uint32_t>(payload.size()),
-                           ModuleEntryHash(key, payload)});
+        entries.push_back(
+            {key, out.size(), static_cast<uint32_t>(payload.size()), EntryHash(key, payload)});
         out += payload;
     }
     out += ModuleBundleTail(entries, out.size());
@@ -131,7 +122,7 @@ std::optional<std::vector<std::pair<std::string, std::string>>> ReadModuleBundle
     std::vector<std::pair<std::string, std::string>> out;
     for (const ModuleEntry& e : *entries) {
         const std::string_view payload = bytes.substr(e.offset, e.size);
-        if (ModuleEntryHash(e.key, payload) == e.hash)
+        if (EntryHash(e.key, payload) == e.hash)
             out.emplace_back(e.key, std::string(payload));
     }
     return out;

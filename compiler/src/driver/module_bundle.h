@@ -4,7 +4,7 @@
 //   "KMOD" u32, version u32                        (8 bytes)
 //   payloads, back to back
 //   index: per entry, key (32 ASCII hex digits), offset u64, size u32,
-//          hash u64 (XXH64 of key then payload)    (52 bytes each)
+//          hash u64 (EntryHash: XXH64 of key then payload)    (52 bytes each)
 //   footer: count u32, index offset u64, XXH64 of the index u64, "DOMK" u32   (24 bytes)
 //
 // Little-endian. The footer is read first, then the index; a payload only when its key is asked
@@ -41,7 +41,6 @@ struct ModuleFooter {
 };
 
 std::string ModuleBundleHeader();
-uint64_t ModuleEntryHash(std::string_view key, std::string_view payload);
 // The index and footer of `entries`, whose payloads end at `index_at`.
 std::string ModuleBundleTail(const std::vector<ModuleEntry>& entries, uint64_t index_at);
 

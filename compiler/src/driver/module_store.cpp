@@ -11,6 +11,7 @@
 #include <random>
 
 #include "kiln/base/bytes.h"
+#include "kiln/base/files.h"
 #include "kiln/compile.h"
 
 namespace kiln::driver {
@@ -34,18 +35,6 @@ bool ReadAt(int fd, char* out, size_t n, uint64_t at) {
         out += got;
         n -= static_cast<size_t>(got);
         at += static_cast<uint64_t>(got);
-    }
-    return true;
-}
-
-bool WriteAll(int fd, std::string_view bytes) {
-    while (!bytes.empty()) {
-        const ssize_t put = write(fd, bytes.data(), bytes.size());
-        if (put < 0 && errno == EINTR)
-            continue;
-        if (put <= 0)
-            return false;
-        bytes.remove_prefix(static_cast<size_t>(put));
     }
     return true;
 }
@@ -139,7 +128,7 @@ ModuleStore::Bundle& ModuleStore::BundleOf(const std::string& shader) {
 std::optional<std::string> ModuleStore::ReadOld(const Bundle& b, size_t i) {
     const ModuleEntry& e = b.old[i];
     std::optional<std::string> payload = ReadBytes(b.old_fd, e.size, e.offset);
-    if (!payload || ModuleEntryHash(e.key, *payload) != e.hash)
+    if (!payload || EntryHash(e.key, *payload) != e.hash)
         return std::nullopt;
     return payload;
 }
@@ -184,19 +173,19 @@ bool ModuleStore::Append(Bundle& b, const std::string& key, std::string_view pay
                 break;
         }
         const std::string header = ModuleBundleHeader();
-        if (b.new_fd < 0 || !WriteAll(b.new_fd, header)) {
+        if (b.new_fd < 0 || !base::WriteAll(b.new_fd, header)) {
             b.failed = true;
             return false;
         }
         b.size = header.size();
     }
-    if (!WriteAll(b.new_fd, payload)) {
+    if (!base::WriteAll(b.new_fd, payload)) {
         b.failed = true;
         return false;
     }
     b.fresh_keys.insert(key);
     b.fresh.push_back(
-        {key, b.size, static_cast<uint32_t>(payload.size()), ModuleEntryHash(key, payload)});
+        {key, b.size, static_cast<uint32_t>(payload.size()), EntryHash(key, payload)});
     b.size += payload.size();
     return true;
 }
@@ -232,7 +221,7 @@ void ModuleStore::Write(Bundle& b) {
         }
     }
     const std::string tail = ModuleBundleTail(b.fresh, b.size);
-    const bool written = !b.failed && WriteAll(b.new_fd, tail);
+    const bool written = !b.failed && base::WriteAll(b.new_fd, tail);
     close(b.new_fd);
     b.new_fd = -1;
     // A damaged entry that is not a regular file (a directory, a FIFO, a link) goes first.

@@ -107,7 +107,7 @@ TEST(CompileCache, AValidModuleUnderAnotherKeyIsAMiss) {
     for (size_t i = 0; i < c.modules.size(); ++i) {
         const auto& [key, payload] = c.modules[i == 0 ? 1 : i];
         entries.push_back({c.modules[i].first, file.size(), static_cast<uint32_t>(payload.size()),
-                           driver::ModuleEntryHash(key, payload)});
+                           driver::EntryHash(key, payload)});
         file += payload;
     }
     file += driver::ModuleBundleTail(entries, file.size());

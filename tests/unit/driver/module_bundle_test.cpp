@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "driver/cache.h"
+
 namespace kiln::driver {
 namespace {
 
@@ -65,11 +67,11 @@ TEST(ModuleBundle, APayloadOutsideThePayloadAreaIsRefused) {
     // An index that names bytes of the index itself.
     std::string file = ModuleBundleHeader() + "abcd";
     const uint64_t index_at = file.size();
-    file += ModuleBundleTail({{kKeyA, index_at, 4, ModuleEntryHash(kKeyA, "abcd")}}, index_at);
+    file += ModuleBundleTail({{kKeyA, index_at, 4, EntryHash(kKeyA, "abcd")}}, index_at);
     EXPECT_FALSE(ReadModuleBundle(file));
     std::string inside = ModuleBundleHeader() + "abcd";
-    inside += ModuleBundleTail({{kKeyA, kModuleHeaderBytes, 4, ModuleEntryHash(kKeyA, "abcd")}},
-                               inside.size());
+    inside +=
+        ModuleBundleTail({{kKeyA, kModuleHeaderBytes, 4, EntryHash(kKeyA, "abcd")}}, inside.size());
     EXPECT_EQ(ReadModuleBundle(inside), (Modules{{kKeyA, "abcd"}}));
 }
 

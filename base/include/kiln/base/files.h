@@ -56,6 +56,9 @@ void NoteInputFile(const std::string& path);
 // such as the output itself, may then get.
 void ForgetInputFiles();
 
+// Writes all of `bytes` to the descriptor, again after an interrupted write; false on an error.
+bool WriteAll(int fd, std::string_view bytes);
+
 // Writes `bytes` to `path` atomically. An output that is one of the inputs (the same file, by
 // device and inode) is refused. An output that is a symbolic link is written through: the file it
 // points to is replaced and the link is kept. The path "-" is standard output: the bytes are
