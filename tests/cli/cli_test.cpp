@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <future>
 
 #include <nlohmann/json.hpp>
 
@@ -359,6 +360,41 @@ TEST(Cli, StatsAsJsonTimeEveryPhaseAndCountTheCache) {
     EXPECT_EQ(w["glslang_compiles"], 0);
     EXPECT_EQ(w["cache_hits"], 3);
     EXPECT_EQ(RunKiln(cmd + " --stats=xml").exit_code, 2);
+    std::filesystem::remove_all(dir);
+}
+
+// Several kiln processes may share a cache: two cold compiles of one shader at once each write
+// their own file of modules and the last rename wins, so both packs are right and a third compile
+// takes every module from the cache.
+TEST(Cli, TwoCompilesAtOnceShareACache) {
+    const std::string dir = testing::TempDir() + "/kiln_cli_shared_cache";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string shader = DataPath("data/compile/multi_light.shader");
+    const RunResult clean = RunKiln("compile " + shader + " -o " + dir + "/clean.kpack --no-cache");
+    ASSERT_EQ(clean.exit_code, 0) << clean.err;
+    auto compile = [&](const std::string& out) {
+        return RunKiln("compile " + shader + " -o " + dir + "/" + out + " --cache-dir " + dir +
+                       "/cache --stats=json");
+    };
+    auto a = std::async(std::launch::async, compile, "a.kpack");
+    auto b = std::async(std::launch::async, compile, "b.kpack");
+    const RunResult ra = a.get(), rb = b.get();
+    ASSERT_EQ(ra.exit_code, 0) << ra.err;
+    ASSERT_EQ(rb.exit_code, 0) << rb.err;
+    EXPECT_EQ(ReadFile(dir + "/a.kpack"), ReadFile(dir + "/clean.kpack"));
+    EXPECT_EQ(ReadFile(dir + "/b.kpack"), ReadFile(dir + "/clean.kpack"));
+    size_t temporaries = 0;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir + "/cache")) {
+        temporaries += e.path().string().find(".tmp.") != std::string::npos;
+        if (e.path().extension() == ".kpack")
+            std::filesystem::remove(e.path());  // so that the modules are read
+    }
+    EXPECT_EQ(temporaries, 0u);
+    const RunResult c = compile("c.kpack");
+    ASSERT_EQ(c.exit_code, 0) << c.err;
+    EXPECT_EQ(nlohmann::json::parse(c.out)["glslang_compiles"], 0);
+    EXPECT_EQ(ReadFile(dir + "/c.kpack"), ReadFile(dir + "/clean.kpack"));
     std::filesystem::remove_all(dir);
 }
 
