@@ -75,13 +75,6 @@ Result<std::string> OutputTarget(const std::string& path) {
     return Error{DiagCode::kCannotWriteFile, "'" + path + "' is a loop of symbolic links"};
 }
 
-std::string TempName(const std::string& target) {
-    static std::atomic<uint64_t> counter{0};
-    static const uint64_t seed = std::random_device{}();
-    return target + ".tmp." + std::to_string(getpid()) + "." +
-           std::to_string(seed ^ (counter++ * 0x9e3779b97f4a7c15ull));
-}
-
 // Standard input, read to its end (or past `max_bytes`) the first time it is asked for.
 Result<std::string> ReadStandardInput(uint64_t max_bytes) {
     static std::mutex mu;
@@ -303,6 +296,13 @@ Status CheckDistinctOutputs(const std::vector<std::pair<std::string, std::string
         }
     }
     return {};
+}
+
+std::string TempName(const std::string& target) {
+    static std::atomic<uint64_t> counter{0};
+    static const uint64_t seed = std::random_device{}();
+    return target + ".tmp." + std::to_string(getpid()) + "." +
+           std::to_string(seed ^ (counter++ * 0x9e3779b97f4a7c15ull));
 }
 
 bool WriteAll(int fd, std::string_view bytes) {

@@ -175,23 +175,30 @@ std::optional<std::string> Cache::LoadBytes(const std::string& key, const std::s
     return data.substr(payload);
 }
 
-std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
-    std::optional<std::string> bytes = LoadBytes(key, "spv");
-    if (!bytes || bytes->size() % 4 != 0 || bytes->size() < 20 ||
-        base::LoadLe32(*bytes, 0) != kSpirvMagic)
+std::optional<std::vector<uint32_t>> SpirvOfPayload(const std::string& bytes) {
+    if (bytes.size() % 4 != 0 || bytes.size() < 20 || base::LoadLe32(bytes, 0) != kSpirvMagic)
         return std::nullopt;
-    std::vector<uint32_t> out(bytes->size() / 4);
+    std::vector<uint32_t> out(bytes.size() / 4);
     for (size_t i = 0; i < out.size(); ++i)
-        out[i] = base::LoadLe32(*bytes, i * 4);
+        out[i] = base::LoadLe32(bytes, i * 4);
     return out;
 }
 
-bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) const {
+std::string PayloadOfSpirv(const std::vector<uint32_t>& words) {
     std::string payload;
     payload.reserve(words.size() * 4);
     for (uint32_t w : words)
         base::AppendLe32(payload, w);
-    return StoreBytes(key, "spv", payload);
+    return payload;
+}
+
+std::optional<std::vector<uint32_t>> Cache::Load(const std::string& key) const {
+    const std::optional<std::string> bytes = LoadBytes(key, "spv");
+    return bytes ? SpirvOfPayload(*bytes) : std::nullopt;
+}
+
+bool Cache::Store(const std::string& key, const std::vector<uint32_t>& words) const {
+    return StoreBytes(key, "spv", PayloadOfSpirv(words));
 }
 
 bool Cache::StoreBytes(const std::string& key,

@@ -51,6 +51,10 @@ class Cache {
     std::string dir_;
 };
 
+// A module's payload: its words little-endian; back to words only when it holds a SPIR-V header.
+std::string PayloadOfSpirv(const std::vector<uint32_t>& words);
+std::optional<std::vector<uint32_t>> SpirvOfPayload(const std::string& bytes);
+
 // The hash an entry carries: XXH64 of its key, then its payload (a file of modules keeps one per
 // module, driver/module_bundle.h).
 uint64_t EntryHash(std::string_view key, std::string_view payload);

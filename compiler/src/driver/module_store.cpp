@@ -5,12 +5,9 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <filesystem>
-#include <random>
 
-#include "kiln/base/bytes.h"
 #include "kiln/base/files.h"
 #include "kiln/compile.h"
 
@@ -19,7 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr uint32_t kSpirvMagic = 0x07230203;
 // Earlier compiles' modules kept beside this compile's: up to twice as many, at least this many
 // (the direct mode's manifest keeps as many entries), and never past kMaxBundleBytes in all.
 constexpr size_t kMinKeptModules = 4096;
@@ -46,13 +42,6 @@ std::optional<std::string> ReadBytes(int fd, size_t n, uint64_t at) {
     return out;
 }
 
-std::string TempNameFor(const std::string& path) {
-    static std::atomic<uint64_t> counter{0};
-    static const uint64_t seed = std::random_device{}();
-    return path + ".tmp." + std::to_string(getpid()) + "." +
-           std::to_string(seed ^ (counter++ * 0x9e3779b97f4a7c15ull));
-}
-
 // The old file's entries; b.old stays empty when there is none or it is damaged.
 void ReadIndex(int fd, uint64_t size, std::vector<ModuleEntry>& out) {
     const std::optional<std::string> header = ReadBytes(fd, kModuleHeaderBytes, 0);
@@ -70,15 +59,6 @@ void ReadIndex(int fd, uint64_t size, std::vector<ModuleEntry>& out) {
         return;
     if (std::optional<std::vector<ModuleEntry>> entries = ParseModuleIndex(*index, *f))
         out = std::move(*entries);
-}
-
-std::optional<std::vector<uint32_t>> AsSpirv(const std::string& bytes) {
-    if (bytes.size() % 4 != 0 || bytes.size() < 20 || base::LoadLe32(bytes, 0) != kSpirvMagic)
-        return std::nullopt;
-    std::vector<uint32_t> out(bytes.size() / 4);
-    for (size_t i = 0; i < out.size(); ++i)
-        out[i] = base::LoadLe32(bytes, i * 4);
-    return out;
 }
 
 }  // namespace
@@ -143,7 +123,7 @@ std::optional<std::vector<uint32_t>> ModuleStore::Load(const std::string& key,
         if (const auto it = own.old_by_key.find(key); it != own.old_by_key.end()) {
             if (std::optional<std::string> payload = ReadOld(own, it->second)) {
                 own.used_old[it->second] = 1;
-                return AsSpirv(*payload);
+                return SpirvOfPayload(*payload);
             }
         }
         for (const auto& [name, b] : bundles_) {
@@ -151,7 +131,7 @@ std::optional<std::vector<uint32_t>> ModuleStore::Load(const std::string& key,
                 continue;
             if (const auto it = b.old_by_key.find(key); it != b.old_by_key.end()) {
                 if (std::optional<std::string> payload = ReadOld(b, it->second))
-                    return AsSpirv(*payload);
+                    return SpirvOfPayload(*payload);
             }
         }
     }
@@ -167,7 +147,7 @@ bool ModuleStore::Append(Bundle& b, const std::string& key, std::string_view pay
         std::error_code ec;
         fs::create_directories(fs::path(b.path).parent_path(), ec);
         for (int attempt = 0; attempt < 100 && b.new_fd < 0; ++attempt) {
-            b.temp = TempNameFor(b.path);
+            b.temp = base::TempName(b.path);
             b.new_fd = open(b.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
             if (b.new_fd < 0 && errno != EEXIST)
                 break;
@@ -195,10 +175,7 @@ void ModuleStore::Store(const std::string& key,
                         const std::string& shader) {
     if (!cache_.enabled())
         return;
-    std::string payload;
-    payload.reserve(words.size() * 4);
-    for (uint32_t w : words)
-        base::AppendLe32(payload, w);
+    const std::string payload = PayloadOfSpirv(words);
     {
         std::lock_guard<std::mutex> lock(mu_);
         if (Append(BundleOf(shader), key, payload))

@@ -56,6 +56,10 @@ void NoteInputFile(const std::string& path);
 // such as the output itself, may then get.
 void ForgetInputFiles();
 
+// A temporary file name beside `target`: "<target>.tmp.<pid>.<n>", unique within the process
+// (callers create it with O_EXCL and try another on EEXIST).
+std::string TempName(const std::string& target);
+
 // Writes all of `bytes` to the descriptor, again after an interrupted write; false on an error.
 bool WriteAll(int fd, std::string_view bytes);
 
