@@ -83,7 +83,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             worker::ExecuteContext context{files, {}, &cache};
             hlsl::Includer includer(paths, files);
             bool for_both = false;
-            const auto shared = worker::PreprocessWithPreamble(r, context, includer, for_both);
+            const auto shared = worker::PreprocessWithPreamble(
+                r, context, includer, hlsl::ScanSkeleton(r.source), for_both);
             if (!shared)
                 continue;
             hlsl::Includer whole(paths, files);

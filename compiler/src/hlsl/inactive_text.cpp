@@ -307,7 +307,8 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
                                   FileCache& files,
                                   const PlanOptions& options) {
     InactiveTextPlan plan;
-    const PpSkeleton skeleton = ScanSkeleton(main);
+    const PpSkeleton own = options.main_skeleton ? PpSkeleton() : ScanSkeleton(main);
+    const PpSkeleton& skeleton = options.main_skeleton ? *options.main_skeleton : own;
     File f{name, main, skeleton, {}};
     if (skeleton.safe) {
         State s{includer, files, options, plan, {}, 0, false, &f, 0, {}, true};

@@ -24,6 +24,8 @@
 
 namespace kiln::hlsl {
 
+struct PpSkeleton;
+
 struct InactiveTextPlan {
     struct Inclusion {
         std::string path;  // as the Includer resolves it
@@ -68,6 +70,8 @@ struct PlanOptions {
     // elsewhere: the plan is then incomplete, so OutputIgnoresUnknown() is false at once (for a
     // caller that wants only a plan that holds whatever they are).
     bool stop_when_unknown_matters = false;
+    // ScanSkeleton(main), when the caller has made it already.
+    const PpSkeleton* main_skeleton = nullptr;
 };
 
 // The plan for preprocessing `main` (named `name`, as glslang is told) with `includer`.

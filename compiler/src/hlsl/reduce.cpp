@@ -1,6 +1,7 @@
 #include "hlsl/reduce.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <string_view>
 #include <unordered_map>
@@ -14,7 +15,8 @@ namespace {
 // A top-level declaration or function definition: its byte range and the words it uses.
 struct Item {
     size_t begin = 0, end = 0;
-    size_t first_word = 0, end_word = 0;  // its words: Split::words[first_word, end_word)
+    size_t first_word = 0, end_word = 0;    // its words: Split::words[first_word, end_word)
+    size_t first_token = 0, end_token = 0;  // its tokens: [first_token, end_token)
     bool is_function = false;
     std::string_view name;  // a function's name
 };
@@ -60,12 +62,14 @@ Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
     bool saw_brace = false;
     bool type_decl = false;  // struct/cbuffer/...: not a function
     std::string_view last_ident, first_word;
-    for (const Token& t : tok) {
+    for (size_t k = 0; k < tok.size(); ++k) {
+        const Token& t = tok[k];
         const std::string_view word = s.substr(t.begin, t.end - t.begin);
         if (!open) {
             cur = Item{};
             cur.begin = t.begin;
             cur.first_word = out.words.size();
+            cur.first_token = k;
             open = true;
             saw_paren = saw_brace = type_decl = false;
             last_ident = first_word = {};
@@ -105,6 +109,7 @@ Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
         if ((c == ';' && depth == 0) || is_function_end || cbuffer_end) {
             cur.end = t.end;
             cur.end_word = out.words.size();
+            cur.end_token = k + 1;
             cur.is_function = is_function_end;
             out.items.push_back(cur);
             open = false;
@@ -113,6 +118,7 @@ Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
     if (open) {
         cur.end = text.size();
         cur.end_word = out.words.size();
+        cur.end_token = tok.size();
         out.items.push_back(cur);
     }
     for (size_t i = 0; i < out.items.size(); ++i) {
@@ -182,16 +188,28 @@ std::vector<DirectiveLine> DirectiveLines(const std::string& text) {
     return out;
 }
 
+// A kept span of the text [from, to), copied to the reduced text at `at`.
+struct Copied {
+    size_t from, to, at;
+};
+
 // The text without the items not kept (their line breaks stay) and with `#pragma` lines blanked;
-// every other directive line is kept, inside a dropped function too. Kept spans are copied whole;
-// only the directive lines and line breaks of dropped ones are looked at.
+// every other directive line is kept, inside a dropped function too. Kept spans are copied whole
+// (and listed in `copied`); only the directive lines and line breaks of dropped ones are looked at.
 std::string Assemble(const std::string& text,
                      const Split& split,
                      const std::vector<char>& keep,
-                     const std::vector<DirectiveLine>& directives) {
+                     const std::vector<DirectiveLine>& directives,
+                     std::vector<Copied>& copied) {
     std::string out;
     out.reserve(text.size());
     size_t d = 0;  // the first directive line that may end after the position reached
+    auto copy = [&](size_t from, size_t to) {
+        if (to > from) {
+            copied.push_back({from, to, out.size()});
+            out.append(text, from, to - from);
+        }
+    };
     // [from, to) of a kept span: all of it but the parts of #pragma lines.
     auto kept = [&](size_t from, size_t to) {
         while (d < directives.size() && directives[d].end <= from)
@@ -200,11 +218,10 @@ std::string Assemble(const std::string& text,
             if (!directives[k].pragma)
                 continue;
             const size_t b = std::max(directives[k].begin, from);
-            out.append(text, from, b - from);
+            copy(from, b);
             from = std::min(directives[k].end, to);
         }
-        if (to > from)
-            out.append(text, from, to - from);
+        copy(from, to);
     };
     // [from, to) of a dropped item: its line breaks, and the parts of directive lines but
     // #pragma lines.
@@ -247,6 +264,44 @@ std::string Assemble(const std::string& text,
     return out;
 }
 
+// Tokenize(out) from the whole text's tokens: those of the kept items, moved by where their span
+// was copied to. False where that may not be so: a token outside every copied span, or one that
+// begins with '#' and now starts its line (the tokenizer would skip that line as a directive).
+bool ReducedTokens(const std::string& out,
+                   const std::vector<Token>& tok,
+                   const Split& split,
+                   const std::vector<char>& keep,
+                   const std::vector<Copied>& copied,
+                   std::vector<Token>& reduced) {
+    reduced.clear();
+    size_t c = 0;
+    for (size_t i = 0; i < split.items.size(); ++i) {
+        if (!keep[i])
+            continue;
+        for (size_t k = split.items[i].first_token; k < split.items[i].end_token; ++k) {
+            Token t = tok[k];
+            while (c < copied.size() && copied[c].to <= t.begin)
+                ++c;
+            if (c == copied.size() || t.begin < copied[c].from || t.end > copied[c].to)
+                return false;
+            const size_t shift = copied[c].at - copied[c].from;
+            t.begin += shift;
+            t.end += shift;
+            if (out[t.begin] == '#') {
+                size_t b = t.begin;
+                while (b > 0 && out[b - 1] != '\n' &&
+                       std::isspace(static_cast<unsigned char>(out[b - 1])))
+                    --b;
+                if (b == 0 || out[b - 1] == '\n')
+                    return false;
+            }
+            t.text = std::string_view(out).substr(t.begin, t.end - t.begin);
+            reduced.push_back(t);
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 std::vector<Reduced> ReduceToEntryPoints(const std::string& text,
@@ -262,7 +317,11 @@ std::vector<Reduced> ReduceToEntryPoints(const std::string& text,
                     out[e].functions_if_entry_missing.emplace_back(it.name);
             }
         }
-        out[e].text = Assemble(text, split, Reachable(split, entry_points[e]), directives);
+        const std::vector<char> keep = Reachable(split, entry_points[e]);
+        std::vector<Copied> copied;
+        out[e].text = Assemble(text, split, keep, directives, copied);
+        if (!ReducedTokens(out[e].text, tokens, split, keep, copied, out[e].tokens))
+            out[e].tokens = Tokenize(out[e].text);
     }
     return out;
 }

@@ -19,6 +19,9 @@ namespace kiln::hlsl {
 
 struct Reduced {
     std::string text;
+    // Tokenize(text), made from the whole text's tokens; they view `text`, so they hold only
+    // while it is neither changed nor moved.
+    std::vector<Token> tokens;
     // Set only when no top-level function is named like the entry point: every top-level
     // function's name, for the "did you mean" of a missing entry point.
     std::vector<std::string> functions_if_entry_missing;

@@ -216,8 +216,11 @@ std::string ApplyEdits(const std::string& text, std::vector<Edit> edits) {
 }
 
 RewriteResult RewriteForGlslang(const std::string& preprocessed) {
+    return RewriteForGlslang(preprocessed, Tokenize(preprocessed));
+}
+
+RewriteResult RewriteForGlslang(const std::string& preprocessed, std::vector<Token> tok) {
     RewriteResult r;
-    std::vector<Token> tok = Tokenize(preprocessed);
     std::vector<Edit> edits;
     // Token-local rewrites first, in one pass: non-overlapping by construction (a matrix swizzle
     // never ends in `.x`, a matrix type name is not an expression, a semantic is neither, and a

@@ -56,6 +56,8 @@ struct RewriteResult {
 };
 
 RewriteResult RewriteForGlslang(const std::string& preprocessed);
+// The same with `tokens` = Tokenize(preprocessed), made already (hlsl/reduce.h gives them).
+RewriteResult RewriteForGlslang(const std::string& preprocessed, std::vector<Token> tokens);
 
 }  // namespace kiln::hlsl
 

@@ -1,5 +1,6 @@
 #include "worker/execute.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <optional>
 #include <string_view>
@@ -9,6 +10,7 @@
 #include "hlsl/assemble.h"
 #include "hlsl/inactive_text.h"
 #include "hlsl/includer.h"
+#include "hlsl/pp_skeleton.h"
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
 #include "spirv/optimize.h"
@@ -36,6 +38,15 @@ bool StageFree(const Request& r, ExecuteContext& context, const hlsl::Includer& 
             return false;
     }
     return true;
+}
+
+// True when two token lists are the same tokens of one text.
+bool SameTokens(const std::vector<hlsl::Token>& a, const std::vector<hlsl::Token>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const hlsl::Token& x, const hlsl::Token& y) {
+                          return x.begin == y.begin && x.end == y.end && x.ident == y.ident &&
+                                 x.text.data() == y.text.data();
+                      });
 }
 
 // The check KILN_CHECK_INACTIVE_TEXT asks for: `source` preprocessed as it is must give `got`;
@@ -70,19 +81,24 @@ void CheckAgainstPlain(const Request& r,
 frontend::StageOutput PreprocessPlanned(const Request& r,
                                         ExecuteContext& context,
                                         hlsl::Includer& includer,
+                                        const hlsl::PpSkeleton& skeleton,
                                         bool& for_both) {
     hlsl::InactiveTextPlan plan;
     for_both = false;
     if (!r.second_entry.empty()) {
         hlsl::PlanOptions both;
+        both.main_skeleton = &skeleton;
         both.unknown = {hlsl::StageMacro(pack::Stage::kVertex),
                         hlsl::StageMacro(pack::Stage::kFragment)};
         both.stop_when_unknown_matters = true;  // a plan that names the stage is made again
         plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, both);
         for_both = plan.OutputIgnoresUnknown();
     }
-    if (!for_both)
-        plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files);
+    if (!for_both) {
+        hlsl::PlanOptions options;
+        options.main_skeleton = &skeleton;
+        plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, options);
+    }
     includer.UsePlan(&plan);
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
@@ -98,10 +114,11 @@ frontend::StageOutput PreprocessBlanked(const Request& r,
                                         hlsl::Includer& includer,
                                         bool& for_both,
                                         std::shared_ptr<const hlsl::Preamble>& preamble) {
+    const hlsl::PpSkeleton skeleton = hlsl::ScanSkeleton(r.source);
     std::optional<frontend::StageOutput> shared =
-        PreprocessWithPreamble(r, context, includer, for_both, &preamble);
+        PreprocessWithPreamble(r, context, includer, skeleton, for_both, &preamble);
     frontend::StageOutput out =
-        shared ? std::move(*shared) : PreprocessPlanned(r, context, includer, for_both);
+        shared ? std::move(*shared) : PreprocessPlanned(r, context, includer, skeleton, for_both);
     static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;
     if (!check)
         return out;
@@ -151,8 +168,15 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
         entries);
     bool changed = false;
     std::unordered_set<std::string> warned;  // a warning of code both entry points reach, once
+    static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;
     for (hlsl::Reduced& one : reduced) {
-        hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(one.text);
+        if (check && !SameTokens(one.tokens, hlsl::Tokenize(one.text))) {
+            resp.ok = false;
+            resp.failed_in = Component::kKilnReduction;
+            resp.info_log = "ERROR: internal: the reduced text's tokens are not its own\n";
+            return resp;
+        }
+        hlsl::RewriteResult rewritten = hlsl::RewriteForGlslang(one.text, std::move(one.tokens));
         // Unity's warnings for what the rewrite changed, in glslang's form: the one place that
         // maps messages to .shader positions (frontend/glslang_messages.h) places them.
         for (const hlsl::RewriteWarning& w : rewritten.warnings) {

@@ -148,12 +148,12 @@ std::optional<frontend::StageOutput> PreprocessWithPreamble(
     const Request& r,
     ExecuteContext& context,
     hlsl::Includer& includer,
+    const hlsl::PpSkeleton& skeleton,
     bool& for_both,
     std::shared_ptr<const hlsl::Preamble>* used) {
     for_both = false;
     if (r.pinned.empty() || !context.preambles)
         return std::nullopt;
-    const hlsl::PpSkeleton skeleton = hlsl::ScanSkeleton(r.source);
     const std::optional<hlsl::PrefixCut> cut =
         skeleton.safe ? hlsl::FindPrefixCut(r.source, skeleton) : std::nullopt;
     if (!cut)

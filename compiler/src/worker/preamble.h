@@ -9,6 +9,7 @@
 
 #include "frontend/glslang_stage.h"
 #include "hlsl/includer.h"
+#include "hlsl/pp_skeleton.h"
 #include "hlsl/preamble.h"
 #include "worker/execute.h"
 
@@ -19,11 +20,12 @@ namespace kiln::worker {
 // program gave any message (the caller then preprocesses it whole). `for_both` says whether the
 // output holds for the partner stage's source too (its prefix and the rest do not read the
 // stage). `used`, when given, receives the preamble the output starts with (its `output`, then a
-// line break).
+// line break). `skeleton` is ScanSkeleton(r.source).
 std::optional<frontend::StageOutput> PreprocessWithPreamble(
     const Request& r,
     ExecuteContext& context,
     hlsl::Includer& includer,
+    const hlsl::PpSkeleton& skeleton,
     bool& for_both,
     std::shared_ptr<const hlsl::Preamble>* used = nullptr);
 

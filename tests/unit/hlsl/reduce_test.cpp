@@ -93,6 +93,58 @@ TEST(Reduce, BothEntryPointsFromOneSplitMatchEachAlone) {
     EXPECT_EQ(both[1].text.find("Patch() {"), std::string::npos);
 }
 
+// The reduced text's tokens are made from the whole text's (the rewrite reads them): each must be
+// what tokenizing the reduced text gives, at the same bytes of it.
+void ExpectOwnTokens(const std::string& text, const std::vector<std::string>& entries) {
+    const std::vector<Reduced> reduced = ReduceToEntryPoints(text, Tokenize(text), entries);
+    for (const Reduced& r : reduced) {
+        const std::vector<Token> want = Tokenize(r.text);
+        ASSERT_EQ(r.tokens.size(), want.size()) << r.text;
+        for (size_t i = 0; i < want.size(); ++i) {
+            EXPECT_EQ(r.tokens[i].begin, want[i].begin) << i << " in " << r.text;
+            EXPECT_EQ(r.tokens[i].end, want[i].end) << i;
+            EXPECT_EQ(r.tokens[i].ident, want[i].ident) << i;
+            EXPECT_EQ(r.tokens[i].text.data(), r.text.data() + want[i].begin) << i;
+        }
+    }
+}
+
+TEST(Reduce, TokensOfTheReducedTextAreItsOwn) {
+    ExpectOwnTokens(
+        "#line 1 \"a.shader\"\n"
+        "struct V { float4 p : POSITION; };\n"
+        "float gone(float x) { return x; } float4 kept = 1;\n"
+        "  #pragma fragment frag\n"
+        "float4 vert(V v) : SV_POSITION { return v.p * kept; }\n"
+        "float onlyFrag() {\n#line 40 \"b.cginc\"\n return 3; } float4 frag() : SV_Target "
+        "{ return onlyFrag(); }",
+        {"vert", "frag"});
+    // A '#' token after a dropped function on its line would start the line once the function is
+    // gone, where the tokenizer skips the line as a directive: the tokens are made again.
+    ExpectOwnTokens("float gone() { return 1; } # x;\nfloat4 vert() : SV_POSITION { return 0; }\n",
+                    {"vert"});
+    ExpectOwnTokens("float gone() { return 1; }\t\r# x;\nfloat4 vert() { return 0; }", {"vert"});
+    // Every text of a few pieces, each kept or dropped.
+    const char* pieces[] = {"float a() { return 1; }",
+                            " ",
+                            "\n",
+                            "#line 3 \"c\"\n",
+                            "#pragma x\n",
+                            "float4 vert() { return a(); }",
+                            "int g;",
+                            "# y;",
+                            "float b() { return 2; }\n",
+                            "struct S { int i; };"};
+    for (int mask = 0; mask < 1 << 10; mask += 7) {
+        std::string text;
+        for (int p = 0; p < 10; ++p) {
+            if (mask & (1 << p))
+                text += pieces[(p * 3 + mask) % 10];
+        }
+        ExpectOwnTokens(text, {"vert", "b"});
+    }
+}
+
 }  // namespace
 }  // namespace kiln::hlsl
 

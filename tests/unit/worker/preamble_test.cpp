@@ -40,7 +40,8 @@ Both PreprocessBothWays(const ScratchDir& dir,
     hlsl::Includer includer(paths, files);
     Both b;
     std::shared_ptr<const hlsl::Preamble> used;
-    b.shared = PreprocessWithPreamble(r, context, includer, b.for_both, &used);
+    b.shared = PreprocessWithPreamble(r, context, includer, hlsl::ScanSkeleton(r.source),
+                                      b.for_both, &used);
     hlsl::Includer plain(paths, files);
     b.plain = frontend::Preprocess(r.stage, source, r.name, plain);
     if (b.shared) {
