@@ -68,6 +68,9 @@ fuzz gltf 65536 10 "$seconds" tests/fuzz/corpus/gltf
 fuzz image 65536 10 "$seconds" tests/fuzz/corpus/image
 # glslang's preprocessor in-process, as it is and with skipped text blanked: must agree.
 fuzz inactive_text 65536 10 "$((seconds / 2))" tests/fuzz/corpus/preprocess templates
+# The reduction over preprocessed text: its tokens must be the tokenizer's.
+fuzz reduce 65536 10 "$((seconds / 2))" tests/fuzz/corpus/reduce tests/fuzz/corpus/preprocess \
+    templates
 # Each compile input runs glslang in kiln-worker processes, whose own limit is 10 s a program. Its
 # seeds take about 90 s on a 2-core machine before mutation starts: the budget adds them.
 fuzz compile 16384 60 "$((seconds + 90))" tests/fuzz/corpus/compile
