@@ -284,9 +284,8 @@ bool ReducedTokens(const std::string& out,
                 ++c;
             if (c == copied.size() || t.begin < copied[c].from || t.end > copied[c].to)
                 return false;
-            const size_t shift = copied[c].at - copied[c].from;
-            t.begin += shift;
-            t.end += shift;
+            t.begin = copied[c].at + (t.begin - copied[c].from);
+            t.end = copied[c].at + (t.end - copied[c].from);
             if (out[t.begin] == '#') {
                 size_t b = t.begin;
                 while (b > 0 && out[b - 1] != '\n' &&
