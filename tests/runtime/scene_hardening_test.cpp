@@ -212,6 +212,30 @@ TEST(GltfHardening, TheJsonChunkOfABinaryFileIsCheckedToo) {
         << l.error->message;
 }
 
+// Found by the glTF fuzz target: a .glb whose first buffer declares 0 bytes made tinygltf call
+// std::vector::at(0) on an empty vector and throw out of the runtime (std::terminate).
+TEST(GltfHardening, ABinaryFileWhoseFirstBufferIsEmptyIsAnError) {
+    std::string chunk = "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"byteLength\": 0}]}";
+    while (chunk.size() % 4 != 0)
+        chunk += ' ';
+    auto u32 = [](uint32_t x) {
+        std::string s;
+        for (int i = 0; i < 4; ++i)
+            s += char(x >> (8 * i));
+        return s;
+    };
+    const std::string bin = "abcd";
+    const std::string glb = "glTF" + u32(2) + u32(uint32_t(28 + chunk.size() + bin.size())) +
+                            u32(uint32_t(chunk.size())) + "JSON" + chunk +
+                            u32(uint32_t(bin.size())) + "BIN" + std::string(1, '\0') + bin;
+    const Loaded l = LoadText(glb, ".glb");
+    ASSERT_TRUE(l.error);
+    EXPECT_EQ(l.error->code, DiagCode::kBadScene);
+    EXPECT_NE(l.error->message.find("not a glTF file Kiln reads (tinygltf failed:"),
+              std::string::npos)
+        << l.error->message;
+}
+
 // A buffer uri naming a directory was read as a file of its "size": std::bad_alloc.
 TEST(GltfHardening, BufferUrisMustNameRegularFiles) {
     const fs::path dir = ScratchDir() / "a_directory";

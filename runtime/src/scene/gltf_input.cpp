@@ -2,6 +2,7 @@
 
 #include <tiny_gltf.h>
 
+#include <exception>
 #include <filesystem>
 
 #include "kiln/base/bytes.h"
@@ -134,8 +135,18 @@ Status LoadGltfModel(const std::string& path,
     std::string err;
     const auto* p = reinterpret_cast<const unsigned char*>(data.data());
     const auto n = static_cast<unsigned int>(data.size());
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, p, n, dir)
-                           : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), n, dir);
+    bool ok = false;
+    // tinygltf throws on some malformed files (a std::vector::at past an empty list in a .glb):
+    // that is a file Kiln cannot read, never an exception out of the runtime.
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, p, n, dir)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), n, dir);
+    } catch (const std::exception& e) {
+        return Error{DiagCode::kBadScene,
+                     path + ": not a glTF file Kiln reads (tinygltf failed: " + e.what() + ")"};
+    } catch (...) {
+        return Error{DiagCode::kBadScene, path + ": not a glTF file Kiln reads (tinygltf failed)"};
+    }
     if (!ok) {
         // tinygltf fails on some required extensions (Draco's accessors have no bufferView)
         // before saying why: the extension is the better message.
