@@ -17,6 +17,14 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// A little-endian 32-bit field of a .glb header or chunk.
+std::string U32(uint32_t x) {
+    std::string s;
+    for (int i = 0; i < 4; ++i)
+        s += char(x >> (8 * i));
+    return s;
+}
+
 TEST(GltfHardening, TheTriangleLoads) {
     const Loaded l = Load(Triangle());
     ASSERT_FALSE(l.error) << l.error->message;
@@ -198,14 +206,8 @@ TEST(GltfHardening, TheJsonChunkOfABinaryFileIsCheckedToo) {
     std::string chunk = json_text;
     while (chunk.size() % 4 != 0)
         chunk += ' ';
-    auto u32 = [](uint32_t x) {
-        std::string s;
-        for (int i = 0; i < 4; ++i)
-            s += char(x >> (8 * i));
-        return s;
-    };
-    const std::string glb = "glTF" + u32(2) + u32(uint32_t(20 + chunk.size())) +
-                            u32(uint32_t(chunk.size())) + "JSON" + chunk;
+    const std::string glb = "glTF" + U32(2) + U32(uint32_t(20 + chunk.size())) +
+                            U32(uint32_t(chunk.size())) + "JSON" + chunk;
     const Loaded l = LoadText(glb, ".glb");
     ASSERT_TRUE(l.error);
     EXPECT_NE(l.error->message.find("JSON nested more than 128 deep"), std::string::npos)
@@ -218,16 +220,10 @@ TEST(GltfHardening, ABinaryFileWhoseFirstBufferIsEmptyIsAnError) {
     std::string chunk = "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"byteLength\": 0}]}";
     while (chunk.size() % 4 != 0)
         chunk += ' ';
-    auto u32 = [](uint32_t x) {
-        std::string s;
-        for (int i = 0; i < 4; ++i)
-            s += char(x >> (8 * i));
-        return s;
-    };
     const std::string bin = "abcd";
-    const std::string glb = "glTF" + u32(2) + u32(uint32_t(28 + chunk.size() + bin.size())) +
-                            u32(uint32_t(chunk.size())) + "JSON" + chunk +
-                            u32(uint32_t(bin.size())) + "BIN" + std::string(1, '\0') + bin;
+    const std::string glb = "glTF" + U32(2) + U32(uint32_t(28 + chunk.size() + bin.size())) +
+                            U32(uint32_t(chunk.size())) + "JSON" + chunk +
+                            U32(uint32_t(bin.size())) + "BIN" + std::string(1, '\0') + bin;
     const Loaded l = LoadText(glb, ".glb");
     ASSERT_TRUE(l.error);
     EXPECT_EQ(l.error->code, DiagCode::kBadScene);
