@@ -58,7 +58,9 @@ tools::AccuracyOptions Options() {
 // An order effect is systematic (on the H200 every report read 4 to 5 times more for the second
 // of two identical configurations); lavapipe's jitter is not: on this two-core machine one
 // comparison of 31 interleaved frames each exceeded 10% about once in 60 (a busy neighbour).
-// So each order gets a second report when the first disagrees; a systematic effect fails both.
+// So each order gets another report when one disagrees; a systematic effect fails them all. A
+// fresh-clone CI run beside other tests (ctest -j 2) read GPU 15% apart, then CPU 14% (0.059 ms)
+// apart, b first: each order now gets three reports, as under the sanitizers.
 // Under the sanitizers the neighbours are instrumented tests sharing the two cores (ctest -j 2),
 // and one fresh-clone CI run read 15% and then 48% apart: there the GPU medians must agree
 // within 2x over three reports, which still fails the 4-5x order effect, and Kiln's
@@ -75,7 +77,7 @@ TEST_F(RuntimeTest, IdenticalConfigurationsTimeAlikeInEitherOrder) {
             std::swap(options.configs[0], options.configs[1]);
         }
         const double tolerance = kInstrumented ? 2.0 : 1.10;
-        const int attempts = kInstrumented ? 3 : 2;
+        const int attempts = 3;
         bool agreed = false;
         for (int attempt = 0; attempt < attempts && !agreed; ++attempt) {
             Result<tools::AccuracyReport> r =
