@@ -12,18 +12,6 @@
 #include "hlsl/reduce.h"
 #include "hlsl/tokens.h"
 
-namespace {
-
-bool SameTokens(const std::vector<kiln::hlsl::Token>& a, const std::vector<kiln::hlsl::Token>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                      [](const kiln::hlsl::Token& x, const kiln::hlsl::Token& y) {
-                          return x.begin == y.begin && x.end == y.end && x.ident == y.ident &&
-                                 x.text.data() == y.text.data();
-                      });
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     const std::vector<std::string> entries = {"vert", "frag"};
@@ -36,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const kiln::hlsl::Reduced& r = both[e];
         if (std::count(r.text.begin(), r.text.end(), '\n') != lines)
             std::abort();
-        if (!SameTokens(r.tokens, kiln::hlsl::Tokenize(r.text)))
+        if (!kiln::hlsl::SameTokens(r.tokens, kiln::hlsl::Tokenize(r.text)))
             std::abort();
         if (kiln::hlsl::ReduceToEntryPoint(text, entries[e]).text != r.text)
             std::abort();

@@ -1,5 +1,6 @@
 #include "hlsl/tokens.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <unordered_set>
@@ -169,6 +170,13 @@ std::string_view Partner(std::string_view b) {
 }
 
 }  // namespace
+
+bool SameTokens(const std::vector<Token>& a, const std::vector<Token>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Token& x, const Token& y) {
+        return x.begin == y.begin && x.end == y.end && x.ident == y.ident &&
+               x.text.data() == y.text.data();
+    });
+}
 
 size_t MatchBack(const std::vector<Token>& tok, size_t close) {
     const std::string_view c = tok[close].text;

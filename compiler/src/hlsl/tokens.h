@@ -27,6 +27,10 @@ std::vector<Token> TokenizeAfter(const std::string& s,
                                  size_t head_bytes,
                                  const std::vector<Token>& head);
 
+// True when `a` and `b` are the same tokens of one text: the same byte ranges and kinds, each
+// viewing the same bytes (so two lists of two copies of a text differ).
+bool SameTokens(const std::vector<Token>& a, const std::vector<Token>& b);
+
 // A replacement of bytes [begin, end) of the text.
 struct Edit {
     size_t begin, end;

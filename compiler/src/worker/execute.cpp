@@ -1,6 +1,5 @@
 #include "worker/execute.h"
 
-#include <algorithm>
 #include <cstdlib>
 #include <optional>
 #include <string_view>
@@ -38,15 +37,6 @@ bool StageFree(const Request& r, ExecuteContext& context, const hlsl::Includer& 
             return false;
     }
     return true;
-}
-
-// True when two token lists are the same tokens of one text.
-bool SameTokens(const std::vector<hlsl::Token>& a, const std::vector<hlsl::Token>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                      [](const hlsl::Token& x, const hlsl::Token& y) {
-                          return x.begin == y.begin && x.end == y.end && x.ident == y.ident &&
-                                 x.text.data() == y.text.data();
-                      });
 }
 
 // The check KILN_CHECK_INACTIVE_TEXT asks for: `source` preprocessed as it is must give `got`;
@@ -170,7 +160,7 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     std::unordered_set<std::string> warned;  // a warning of code both entry points reach, once
     static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;
     for (hlsl::Reduced& one : reduced) {
-        if (check && !SameTokens(one.tokens, hlsl::Tokenize(one.text))) {
+        if (check && !hlsl::SameTokens(one.tokens, hlsl::Tokenize(one.text))) {
             resp.ok = false;
             resp.failed_in = Component::kKilnReduction;
             resp.info_log = "ERROR: internal: the reduced text's tokens are not its own\n";

@@ -106,6 +106,7 @@ void ExpectOwnTokens(const std::string& text, const std::vector<std::string>& en
             EXPECT_EQ(r.tokens[i].ident, want[i].ident) << i;
             EXPECT_EQ(r.tokens[i].text.data(), r.text.data() + want[i].begin) << i;
         }
+        EXPECT_TRUE(SameTokens(r.tokens, want)) << r.text;
     }
 }
 
@@ -156,23 +157,17 @@ namespace {
 TEST(Tokens, AHeadsTokensJoinTheRestsWhereALineStarts) {
     const std::string head = "float4 a = 1.5e+3;\n#line 3 \"x.h\"\nfloat b = a.x";
     const std::string text = head + "\n#pragma once\nfloat c = b >>= 2; \"s\" c.y\n";
-    auto same = [](const std::vector<Token>& x, const std::vector<Token>& y) {
-        if (x.size() != y.size())
-            return false;
-        for (size_t i = 0; i < x.size(); ++i) {
-            if (x[i].begin != y[i].begin || x[i].end != y[i].end || x[i].ident != y[i].ident ||
-                x[i].text != y[i].text)
-                return false;
-        }
-        return true;
-    };
     const std::vector<Token> whole = Tokenize(text);
-    EXPECT_TRUE(same(TokenizeAfter(text, head.size(), Tokenize(head)), whole));
+    EXPECT_TRUE(SameTokens(TokenizeAfter(text, head.size(), Tokenize(head)), whole));
+    // The same tokens of a copy of the text are not the text's own.
+    const std::string copy = text;
+    EXPECT_FALSE(SameTokens(Tokenize(copy), whole));
+    EXPECT_FALSE(SameTokens(std::vector<Token>(whole.begin(), whole.end() - 1), whole));
     // Cut inside a line: the head's tokens are not used (`a.x` and the rest would not split).
     const std::string cut = "float4 a = 1";
     const std::vector<Token> wrong = {{0, 2, true, "fl"}};
-    EXPECT_TRUE(same(TokenizeAfter(text, cut.size() - 4, wrong), whole));
-    EXPECT_TRUE(same(TokenizeAfter(text, text.size(), wrong), whole));
+    EXPECT_TRUE(SameTokens(TokenizeAfter(text, cut.size() - 4, wrong), whole));
+    EXPECT_TRUE(SameTokens(TokenizeAfter(text, text.size(), wrong), whole));
 }
 
 }  // namespace
