@@ -1,6 +1,8 @@
 // libFuzzer target: the inactive-text plan against glslang itself. The bytes are a program's main
 // text (its #includes resolve in Kiln's templates/); glslang must preprocess it alike as it is and
-// with the plan's blanked texts, text and messages, and with the first byte's low bit set the plan
+// with the plan's blanked texts, text and messages (and with the directives it needs not blanked
+// too, PlanOptions::drop_needless, where that gives no message: the worker preprocesses a program
+// with messages again without), and with the first byte's low bit set the plan
 // also takes one macro as unknown and, where it says the output does not depend on it, glslang
 // must give the same text for it defined to 0 and to 1. With its second bit set, two variants of
 // the program (one keyword each) are preprocessed with the shared include prefix
@@ -58,6 +60,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         frontend::Preprocess(pack::Stage::kFragment, plan.main_text, "main.hlsl", planned);
     Check(want.ok == got.ok && want.text == got.text && want.info_log == got.info_log,
           "blanking changed glslang's preprocessing");
+    {
+        hlsl::PlanOptions options;
+        options.drop_needless = true;
+        hlsl::Includer lean(paths, files);
+        const hlsl::InactiveTextPlan needless =
+            hlsl::PlanInactiveText(text, "main.hlsl", lean, files, options);
+        lean.UsePlan(&needless);
+        const frontend::StageOutput out =
+            frontend::Preprocess(pack::Stage::kFragment, needless.main_text, "main.hlsl", lean);
+        // A program with messages is preprocessed again without them (worker/execute.cpp).
+        if (out.ok && out.info_log.empty()) {
+            Check(want.ok && want.info_log.empty() && want.text == out.text,
+                  "blanking needless directives changed glslang's preprocessing");
+        }
+    }
     if (size > 0 && (data[0] & 1)) {
         hlsl::PlanOptions options;
         options.unknown = {"KILN_FUZZ_UNKNOWN"};

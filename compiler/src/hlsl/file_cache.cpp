@@ -1,5 +1,8 @@
 #include "hlsl/file_cache.h"
 
+#include <algorithm>
+
+#include "hlsl/needless_defines.h"
 #include "hlsl/pp_skeleton.h"
 
 namespace kiln::hlsl {
@@ -56,6 +59,26 @@ std::shared_ptr<const PpSkeleton> FileCache::Skeleton(
     std::lock_guard<std::mutex> lock(mu_);
     skeletons_[file->path()] = {file, skeleton};
     return skeleton;
+}
+
+std::shared_ptr<const IncludedDefines> FileCache::Defines(
+    const std::vector<std::shared_ptr<const PpSkeleton>>& files) {
+    std::vector<const PpSkeleton*> key;
+    for (const auto& file : files)
+        key.push_back(file.get());
+    std::sort(key.begin(), key.end());
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        if (const auto it = defines_.find(key); it != defines_.end())
+            return it->second;
+    }
+    auto made = std::make_shared<const IncludedDefines>(MakeIncludedDefines(files));
+    std::lock_guard<std::mutex> lock(mu_);
+    constexpr size_t kMaxSets = 256;  // a watch session's edits make new sets
+    if (defines_.size() >= kMaxSets)
+        defines_.clear();
+    defines_[key] = made;
+    return made;
 }
 
 std::optional<std::string> FileCache::Resolved(const std::string& key) const {

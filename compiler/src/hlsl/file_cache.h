@@ -18,6 +18,7 @@
 namespace kiln::hlsl {
 
 struct PpSkeleton;
+struct IncludedDefines;
 
 // A file's text as glslang's preprocessor is given it: glslang does not skip a UTF-8 byte-order
 // mark, so the text after it.
@@ -41,6 +42,10 @@ class FileCache {
     // The directive lines of `file`'s served text (hlsl/pp_skeleton.h), scanned once per file.
     // Thread-safe.
     std::shared_ptr<const PpSkeleton> Skeleton(const std::shared_ptr<const SourceFile>& file);
+    // What the #define names of `files` (each once) say alone (hlsl/needless_defines.h), made
+    // once per set of files. Thread-safe.
+    std::shared_ptr<const IncludedDefines> Defines(
+        const std::vector<std::shared_ptr<const PpSkeleton>>& files);
     // Include resolutions remembered (Includer::Resolve, whose answers depend only on the files
     // here and its key): the path, "" when not found, nullopt when not asked yet. Thread-safe.
     std::optional<std::string> Resolved(const std::string& key) const;
@@ -55,6 +60,8 @@ class FileCache {
              std::pair<std::shared_ptr<const SourceFile>, std::shared_ptr<const PpSkeleton>>>
         skeletons_;
     std::map<std::string, std::string> resolved_;
+    // By the files' skeletons, sorted (a file changed is scanned again, so its set is new).
+    std::map<std::vector<const PpSkeleton*>, std::shared_ptr<const IncludedDefines>> defines_;
 };
 
 }  // namespace kiln::hlsl

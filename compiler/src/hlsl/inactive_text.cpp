@@ -4,9 +4,11 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <unordered_set>
 #include <utility>
 
 #include "hlsl/identifier.h"
+#include "hlsl/needless_defines.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
 
@@ -21,12 +23,32 @@ bool IsIdentChar(std::string_view s, size_t i) {
     return IdentChar(s[i]);
 }
 
+using LineRanges = std::vector<std::pair<uint32_t, uint32_t>>;  // inclusive
+
+// A #define glslang reads, which is needless when nothing else it reads names it.
+struct DefineLine {
+    uint32_t first_line = 0, last_line = 0;
+    std::string_view name;  // in the file's skeleton
+    bool maybe = false;     // in a branch it may or may not read: kept, but counted as a read
+};
+
 // One file as the walk reads it.
 struct File {
     const std::string& name;  // as glslang names it to the Includer
     std::string_view text;
     const PpSkeleton& skeleton;
-    std::vector<std::pair<uint32_t, uint32_t>> blank;  // line ranges, inclusive
+    LineRanges blank;
+    std::vector<DefineLine> defines;  // with PlanOptions::drop_needless
+};
+
+// An inclusion whose text is made when the walk ends, once it is known which #define lines no
+// other line names.
+struct Pending {
+    size_t index = 0;  // in InactiveTextPlan::inclusions
+    std::shared_ptr<const SourceFile> file;
+    std::shared_ptr<const PpSkeleton> skeleton;
+    LineRanges blank;
+    std::vector<DefineLine> defines;
 };
 
 struct State {
@@ -42,12 +64,17 @@ struct State {
     size_t conditionals = 0;  // conditionals open around the directive walked
     std::map<std::string, std::string> table;
     bool exact = true;
+    std::vector<Pending> pending;
 };
 
 void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region);
 
-std::string Blanked(const File& f, size_t& blanked_lines) {
-    return BlankLines(f.text, f.skeleton.line_starts, f.blank, blanked_lines);
+std::string Blanked(std::string_view text,
+                    const PpSkeleton& skeleton,
+                    LineRanges& blank,
+                    size_t& blanked_lines) {
+    std::sort(blank.begin(), blank.end());
+    return BlankLines(text, skeleton.line_starts, blank, blanked_lines);
 }
 
 // The index of the directive on physical line `line`, or npos.
@@ -141,7 +168,7 @@ void Include(State& s, const File& f, const PpDirective& d) {
     const std::shared_ptr<const PpSkeleton> skeleton = s.files.Skeleton(file);
     const size_t index = s.plan.inclusions.size();
     s.plan.inclusions.push_back({path, {}});
-    File inner{path, ServedText(*file), *skeleton, {}};
+    File inner{path, ServedText(*file), *skeleton, {}, {}};
     if (!skeleton->safe || inner.text.empty()) {
         s.stopped = !skeleton->safe;
     } else {
@@ -149,11 +176,12 @@ void Include(State& s, const File& f, const PpDirective& d) {
         WalkRange(s, inner, 0, static_cast<uint32_t>(skeleton->directives.size()), Region::kRead);
         --s.depth;
     }
+    std::sort(inner.blank.begin(), inner.blank.end());
     if (!s.options.unknown.empty() && !MentionsOnlyInConditions(s, inner)) {
         s.plan.unknown_only_in_conditions = false;
         s.stopped = s.stopped || s.options.stop_when_unknown_matters;
     }
-    s.plan.inclusions[index].text = Blanked(inner, s.plan.blanked_lines);
+    s.pending.push_back({index, file, skeleton, std::move(inner.blank), std::move(inner.defines)});
 }
 
 std::optional<bool> Condition(const State& s, const PpDirective& d) {
@@ -177,9 +205,13 @@ uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
     const std::vector<PpDirective>& d = f.skeleton.directives;
     bool taken = false;        // a branch before is read for certain
     bool maybe_taken = false;  // a branch before may be read
+    // Whether every branch is decided for certain: glslang then needs none of its directives.
+    bool decided = region == Region::kRead && s.options.drop_needless;
+    LineRanges lines;
     uint32_t b = first;
     for (; d[b].kind != PpKind::kEndif && !s.stopped; b = d[b].next) {
         const uint32_t next = d[b].next;
+        lines.emplace_back(d[b].first_line, d[b].last_line);
         std::optional<Region> branch = Region::kMaybe;
         if (region == Region::kRead) {
             const std::optional<bool> c = taken ? std::optional<bool>(false) : Condition(s, d[b]);
@@ -187,6 +219,7 @@ uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
                 branch.reset();  // skipped
             } else if (!c || maybe_taken) {
                 maybe_taken = true;
+                decided = false;
                 ++s.plan.maybe_branches;
                 s.stopped = s.stopped || s.options.stop_when_unknown_matters;
             } else {
@@ -203,6 +236,10 @@ uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
             --s.conditionals;
         }
     }
+    if (decided && !s.stopped) {
+        lines.emplace_back(d[b].first_line, d[b].last_line);
+        f.blank.insert(f.blank.end(), lines.begin(), lines.end());
+    }
     return b + 1;
 }
 
@@ -218,6 +255,10 @@ void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region) {
                 continue;
             case PpKind::kDefine:
             case PpKind::kUndef:
+                if (s.options.drop_needless && at.kind == PpKind::kDefine && &f != s.main) {
+                    f.defines.push_back({at.first_line, at.last_line, DirectiveMacroName(at.rest),
+                                         region == Region::kMaybe});
+                }
                 if (region == Region::kMaybe)
                     s.macros.Forget(at.rest);
                 else if (!(at.kind == PpKind::kDefine ? s.macros.Define(at.rest)
@@ -276,6 +317,34 @@ bool PasteMayMakeUnknown(const State& s, const PpSkeleton& main) {
     return false;
 }
 
+// Blanks the #define lines of the files included that no other line of the program names
+// (hlsl/needless_defines.h), each read once for certain: only for a plan that reached the end of
+// the program (a later text could name them). The main text's own are kept.
+void BlankNeedlessDefines(State& s, const PpSkeleton& main) {
+    std::vector<std::shared_ptr<const PpSkeleton>> read;
+    for (const Pending& p : s.pending) {
+        if (std::find(read.begin(), read.end(), p.skeleton) == read.end())
+            read.push_back(p.skeleton);
+    }
+    const std::shared_ptr<const IncludedDefines> included = s.files.Defines(read);
+    NeedlessDefines needless(*included, main);
+    for (const std::string& name : s.options.unknown)
+        needless.Keep(name);
+    std::unordered_set<std::string_view> read_once;
+    for (const Pending& p : s.pending) {
+        for (const DefineLine& d : p.defines) {
+            if (needless.Needless(d.name) && !read_once.insert(d.name).second)
+                needless.Keep(d.name);  // read twice (or perhaps)
+        }
+    }
+    for (Pending& p : s.pending) {
+        for (const DefineLine& d : p.defines) {
+            if (!d.maybe && needless.Needless(d.name))
+                p.blank.emplace_back(d.first_line, d.last_line);
+        }
+    }
+}
+
 }  // namespace
 
 std::string BlankLines(std::string_view text,
@@ -309,9 +378,9 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
     InactiveTextPlan plan;
     const PpSkeleton own = options.main_skeleton ? PpSkeleton() : ScanSkeleton(main);
     const PpSkeleton& skeleton = options.main_skeleton ? *options.main_skeleton : own;
-    File f{name, main, skeleton, {}};
+    File f{name, main, skeleton, {}, {}};
     if (skeleton.safe) {
-        State s{includer, files, options, plan, {}, 0, false, &f, 0, {}, true};
+        State s{includer, files, options, plan, {}, 0, false, &f, 0, {}, true, {}};
         for (const std::string& unknown : options.unknown)
             s.macros.Pin(unknown);
         WalkRange(s, f, 0, static_cast<uint32_t>(skeleton.directives.size()), Region::kRead);
@@ -320,11 +389,18 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
             plan.macros.assign(s.table.begin(), s.table.end());
             plan.macros_exact = s.exact && plan.complete && plan.maybe_branches == 0;
         }
+        std::sort(f.blank.begin(), f.blank.end());
         if (!options.unknown.empty() &&
             (!MentionsOnlyInConditions(s, f) || PasteMayMakeUnknown(s, skeleton)))
             plan.unknown_only_in_conditions = false;
+        if (options.drop_needless && plan.complete)
+            BlankNeedlessDefines(s, skeleton);
+        for (Pending& p : s.pending) {
+            plan.inclusions[p.index].text =
+                Blanked(ServedText(*p.file), *p.skeleton, p.blank, plan.blanked_lines);
+        }
     }
-    plan.main_text = Blanked(f, plan.blanked_lines);
+    plan.main_text = Blanked(main, skeleton, f.blank, plan.blanked_lines);
     return plan;
 }
 

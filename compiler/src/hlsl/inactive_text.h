@@ -70,6 +70,11 @@ struct PlanOptions {
     // elsewhere: the plan is then incomplete, so OutputIgnoresUnknown() is false at once (for a
     // caller that wants only a plan that holds whatever they are).
     bool stop_when_unknown_matters = false;
+    // Also blanks the directives glslang does not need, where its output stays the same: the
+    // #if, #elif, #else and #endif lines of a conditional whose every branch is decided, and each
+    // #define of a macro no other line of the files read names. Only for a plan of a whole
+    // program (a text after `main` could name such a macro).
+    bool drop_needless = false;
     // ScanSkeleton(main), when the caller has made it already.
     const PpSkeleton* main_skeleton = nullptr;
 };

@@ -158,8 +158,8 @@ bool OneName(std::string_view s) {
 }
 
 // Adds the identifiers of `code` (comments already removed) to `words`.
-void AddWords(std::string_view code, std::unordered_set<std::string>& words) {
-    ForEachWord(code, [&](std::string_view word) { words.emplace(word); });
+void AddWords(std::string_view code, std::unordered_map<std::string, uint32_t>& words) {
+    ForEachWord(code, [&](std::string_view word) { ++words[std::string(word)]; });
 }
 
 // Reads characters as glslang's tStringInput::getch does: backslash-newline pairs vanish.

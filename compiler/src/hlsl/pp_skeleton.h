@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 namespace kiln::hlsl {
@@ -42,10 +42,10 @@ struct PpDirective {
 
 struct PpSkeleton {
     bool safe = true;
-    // The names of the text's code and directives (comments left out; words in string literals
-    // counted), and whether a #define's body pastes tokens (##): a paste may make a name the text
-    // never spells, whose first piece is one of these words.
-    std::unordered_set<std::string> words;
+    // The names of the text's code and directives with the times each is spelled (comments left
+    // out; words in string literals counted), and whether a #define's body pastes tokens (##): a
+    // paste may make a name the text never spells, whose first piece is one of these words.
+    std::unordered_map<std::string, uint32_t> words;
     bool pastes = false;
     uint32_t line_count = 0;            // physical lines ('\n'-separated; the last may be empty)
     std::vector<uint32_t> line_starts;  // byte offset of each physical line

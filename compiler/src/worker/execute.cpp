@@ -65,32 +65,42 @@ void CheckAgainstPlain(const Request& r,
 }
 
 // glslang's preprocessing of the program with the text it would skip blanked first
-// (hlsl/inactive_text.h). With a partner entry, the plan first takes the two stages' macros as
-// unknown: `for_both` says whether the output holds for both stages' sources then (they differ
-// only in that #define; the driver checks).
+// (hlsl/inactive_text.h), and the directives it does not need. With a partner entry, the plan
+// first takes the two stages' macros as unknown: `for_both` says whether the output holds for both
+// stages' sources then (they differ only in that #define; the driver checks). A program that
+// gives messages is preprocessed again without the needless directives blanked, as glslang's
+// messages may count the conditionals open where it stopped (an #error).
 frontend::StageOutput PreprocessPlanned(const Request& r,
                                         ExecuteContext& context,
                                         hlsl::Includer& includer,
                                         const hlsl::PpSkeleton& skeleton,
                                         bool& for_both) {
+    hlsl::PlanOptions options;
+    options.main_skeleton = &skeleton;
+    options.drop_needless = true;
     hlsl::InactiveTextPlan plan;
     for_both = false;
     if (!r.second_entry.empty()) {
-        hlsl::PlanOptions both;
-        both.main_skeleton = &skeleton;
+        hlsl::PlanOptions both = options;
         both.unknown = {hlsl::StageMacro(pack::Stage::kVertex),
                         hlsl::StageMacro(pack::Stage::kFragment)};
         both.stop_when_unknown_matters = true;  // a plan that names the stage is made again
         plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, both);
         for_both = plan.OutputIgnoresUnknown();
+        if (for_both)
+            options = both;
     }
-    if (!for_both) {
-        hlsl::PlanOptions options;
-        options.main_skeleton = &skeleton;
+    if (!for_both)
         plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, options);
-    }
     includer.UsePlan(&plan);
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
+    includer.UsePlan(nullptr);
+    if (out.ok && out.info_log.empty())
+        return out;
+    options.drop_needless = false;
+    plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, options);
+    includer.UsePlan(&plan);
+    out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
     return out;
 }
