@@ -242,8 +242,13 @@ CompileOutput Run(const std::vector<std::string>& paths,
     if (!diags.has_errors()) {
         exec = driver::MakeExecutor(st);
         st.exec = exec.get();
-        if (!options.cache_dir.empty())
-            st.modules = std::make_shared<driver::ModuleStore>(driver::Cache(options.cache_dir));
+        if (!options.cache_dir.empty()) {
+            std::vector<std::string> shaders;
+            for (const auto& shader : st.shaders)
+                shaders.push_back(shader.file->path());
+            st.modules = std::make_shared<driver::ModuleStore>(driver::Cache(options.cache_dir),
+                                                               std::move(shaders));
+        }
     }
     if (!diags.has_errors()) {
         if (options.requests) {

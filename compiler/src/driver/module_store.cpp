@@ -126,6 +126,11 @@ std::optional<std::vector<uint32_t>> ModuleStore::Load(const std::string& key,
                 return SpirvOfPayload(*payload);
             }
         }
+        if (!opened_all_) {
+            opened_all_ = true;
+            for (const std::string& other : shaders_)
+                BundleOf(other);
+        }
         for (const auto& [name, b] : bundles_) {
             if (&b == &own)
                 continue;

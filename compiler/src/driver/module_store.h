@@ -36,13 +36,17 @@ class ModuleStore {
   public:
     static constexpr const char* kExt = "kmod";
 
-    explicit ModuleStore(Cache cache) : cache_(std::move(cache)) {}
+    // `shaders`: the shader files of this compile, whose module files a lookup searches.
+    explicit ModuleStore(Cache cache, std::vector<std::string> shaders = {})
+        : cache_(std::move(cache)), shaders_(std::move(shaders)) {}
     ~ModuleStore();  // closes the files; removes a temporary file Flush did not rename
     ModuleStore(const ModuleStore&) = delete;
     ModuleStore& operator=(const ModuleStore&) = delete;
 
-    // The module stored under `key`: in the file of `shader`'s file name, in another shader's
-    // file this compile read, or in the key's own entry.
+    // The module stored under `key`: in the file of `shader`'s file name, in the file of another
+    // shader of this compile, or in the key's own entry. A program that several shaders share is
+    // stored in the file of whichever compiled it first, which depends on timing, so every
+    // shader's file is searched, not only those this compile happened to read already.
     std::optional<std::vector<uint32_t>> Load(const std::string& key, const std::string& shader);
     // Adds a module to the file of `shader`'s file name (past its bound of 512 MiB, an entry of its
     // own). Best effort.
@@ -80,6 +84,8 @@ class ModuleStore {
     void Write(Bundle& b);  // the index, the footer and the rename
 
     const Cache cache_;
+    const std::vector<std::string> shaders_;
+    bool opened_all_ = false;                // every file of shaders_ read (mu_)
     std::mutex mu_;                          // guards bundles_ and every Bundle
     std::map<std::string, Bundle> bundles_;  // by the shader's file name
 };

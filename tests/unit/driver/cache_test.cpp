@@ -118,6 +118,27 @@ TEST(CompileCache, AValidModuleUnderAnotherKeyIsAMiss) {
     c.ExpectRepaired(1);
 }
 
+TEST(CompileCache, AModuleSharedByShadersIsFoundInTheFileOfAnyOfThem) {
+    // A program two shaders share is stored in the file of whichever compiled it first, which
+    // depends on timing; the next compile finds it from either shader, whichever files it read.
+    ScratchDir dir;
+    const std::vector<uint32_t> words = {0x07230203, 0x00010300, 0, 1, 0};
+    const std::string a = dir.path() + "/A.shader", b = dir.path() + "/B.shader";
+    const std::string key = driver::HashKey({"a program A and B share"});
+    {
+        driver::ModuleStore first(driver::Cache(dir.path() + "/cache"), {a, b});
+        first.Store(key, words, a);
+        first.Flush();
+    }
+    driver::ModuleStore next(driver::Cache(dir.path() + "/cache"), {a, b});
+    const std::optional<std::vector<uint32_t>> found = next.Load(key, b);
+    ASSERT_TRUE(found.has_value());
+    EXPECT_EQ(*found, words);
+    // A store that knows only the asking shader's file misses (what timing decided before).
+    driver::ModuleStore alone(driver::Cache(dir.path() + "/cache"));
+    EXPECT_FALSE(alone.Load(key, b).has_value());
+}
+
 TEST(CompileCache, AFileThatIsADirectoryIsAMissAndReplaced) {
     CachedCompile c;
     fs::remove(c.File());
