@@ -211,7 +211,8 @@ uint32_t Conditional(State& s, File& f, uint32_t first, Region region) {
     uint32_t b = first;
     for (; d[b].kind != PpKind::kEndif && !s.stopped; b = d[b].next) {
         const uint32_t next = d[b].next;
-        lines.emplace_back(d[b].first_line, d[b].last_line);
+        if (decided)  // else never blanked: no need to keep its lines
+            lines.emplace_back(d[b].first_line, d[b].last_line);
         std::optional<Region> branch = Region::kMaybe;
         if (region == Region::kRead) {
             const std::optional<bool> c = taken ? std::optional<bool>(false) : Condition(s, d[b]);
