@@ -16,6 +16,7 @@
 
 #include "frontend/glslang_stage.h"
 #include "hlsl/inactive_text.h"
+#include "hlsl/lean_text.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
 #include "hlsl/preamble.h"
@@ -60,6 +61,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         frontend::Preprocess(pack::Stage::kFragment, plan.main_text, "main.hlsl", planned);
     Check(want.ok == got.ok && want.text == got.text && want.info_log == got.info_log,
           "blanking changed glslang's preprocessing");
+    // The program itself served lean (hlsl/lean_text.h), as the plan serves each include.
+    const hlsl::LeanText lean = hlsl::MakeLeanText(text, skeleton);
+    hlsl::Includer leaned(paths, files);
+    const frontend::StageOutput lean_out =
+        frontend::Preprocess(pack::Stage::kFragment, lean.text, "main.hlsl", leaned);
+    Check(
+        want.ok == lean_out.ok && want.text == lean_out.text && want.info_log == lean_out.info_log,
+        "leaving out what glslang reads in vain changed its preprocessing");
     {
         hlsl::PlanOptions options;
         options.drop_needless = true;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "hlsl/lean_text.h"
 #include "hlsl/needless_defines.h"
 #include "hlsl/pp_skeleton.h"
 
@@ -59,6 +60,19 @@ std::shared_ptr<const PpSkeleton> FileCache::Skeleton(
     std::lock_guard<std::mutex> lock(mu_);
     skeletons_[file->path()] = {file, skeleton};
     return skeleton;
+}
+
+std::shared_ptr<const LeanText> FileCache::Lean(const std::shared_ptr<const SourceFile>& file) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto it = leans_.find(file->path());
+        if (it != leans_.end() && it->second.first == file)
+            return it->second.second;
+    }
+    auto lean = std::make_shared<const LeanText>(MakeLeanText(ServedText(*file), *Skeleton(file)));
+    std::lock_guard<std::mutex> lock(mu_);
+    leans_[file->path()] = {file, lean};
+    return lean;
 }
 
 std::shared_ptr<const IncludedDefines> FileCache::Defines(

@@ -19,6 +19,7 @@ namespace kiln::hlsl {
 
 struct PpSkeleton;
 struct IncludedDefines;
+struct LeanText;
 
 // A file's text as glslang's preprocessor is given it: glslang does not skip a UTF-8 byte-order
 // mark, so the text after it.
@@ -42,6 +43,9 @@ class FileCache {
     // The directive lines of `file`'s served text (hlsl/pp_skeleton.h), scanned once per file.
     // Thread-safe.
     std::shared_ptr<const PpSkeleton> Skeleton(const std::shared_ptr<const SourceFile>& file);
+    // `file`'s served text without what glslang reads in vain (hlsl/lean_text.h), made once per
+    // file. Thread-safe.
+    std::shared_ptr<const LeanText> Lean(const std::shared_ptr<const SourceFile>& file);
     // What the #define names of `files` (each once) say alone (hlsl/needless_defines.h), made
     // once per set of files. Thread-safe.
     std::shared_ptr<const IncludedDefines> Defines(
@@ -59,6 +63,9 @@ class FileCache {
     std::map<std::string,
              std::pair<std::shared_ptr<const SourceFile>, std::shared_ptr<const PpSkeleton>>>
         skeletons_;
+    std::map<std::string,
+             std::pair<std::shared_ptr<const SourceFile>, std::shared_ptr<const LeanText>>>
+        leans_;
     std::map<std::string, std::string> resolved_;
     // By the files' skeletons, sorted (a file changed is scanned again, so its set is new).
     std::map<std::vector<const PpSkeleton*>, std::shared_ptr<const IncludedDefines>> defines_;

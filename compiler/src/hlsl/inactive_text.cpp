@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "hlsl/identifier.h"
+#include "hlsl/lean_text.h"
 #include "hlsl/needless_defines.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
@@ -37,6 +38,7 @@ struct File {
     const std::string& name;  // as glslang names it to the Includer
     std::string_view text;
     const PpSkeleton& skeleton;
+    const std::vector<uint32_t>& line_starts;  // of `text`: the skeleton's, or the lean text's
     LineRanges blank;
     std::vector<DefineLine> defines;  // with PlanOptions::drop_needless
 };
@@ -47,6 +49,7 @@ struct Pending {
     size_t index = 0;  // in InactiveTextPlan::inclusions
     std::shared_ptr<const SourceFile> file;
     std::shared_ptr<const PpSkeleton> skeleton;
+    std::shared_ptr<const LeanText> lean;
     LineRanges blank;
     std::vector<DefineLine> defines;
 };
@@ -70,11 +73,11 @@ struct State {
 void WalkRange(State& s, File& f, uint32_t begin, uint32_t end, Region region);
 
 std::string Blanked(std::string_view text,
-                    const PpSkeleton& skeleton,
+                    const std::vector<uint32_t>& line_starts,
                     LineRanges& blank,
                     size_t& blanked_lines) {
     std::sort(blank.begin(), blank.end());
-    return BlankLines(text, skeleton.line_starts, blank, blanked_lines);
+    return BlankLines(text, line_starts, blank, blanked_lines);
 }
 
 // The index of the directive on physical line `line`, or npos.
@@ -90,7 +93,7 @@ size_t DirectiveAt(const PpSkeleton& skeleton, uint32_t line) {
 // Whether `f`'s lines that glslang reads name PlanOptions::unknown only in conditions, in their
 // own #define and #undef, or in a #pragma.
 bool MentionsOnlyInConditions(const State& s, const File& f) {
-    const std::vector<uint32_t>& starts = f.skeleton.line_starts;
+    const std::vector<uint32_t>& starts = f.line_starts;
     for (const std::string& name : s.options.unknown) {
         for (size_t at = f.text.find(name); at != std::string_view::npos;
              at = f.text.find(name, at + 1)) {
@@ -168,7 +171,9 @@ void Include(State& s, const File& f, const PpDirective& d) {
     const std::shared_ptr<const PpSkeleton> skeleton = s.files.Skeleton(file);
     const size_t index = s.plan.inclusions.size();
     s.plan.inclusions.push_back({path, {}});
-    File inner{path, ServedText(*file), *skeleton, {}, {}};
+    // Served lean (hlsl/lean_text.h): what glslang would read in vain is left out.
+    const std::shared_ptr<const LeanText> lean = s.files.Lean(file);
+    File inner{path, lean->text, *skeleton, lean->line_starts, {}, {}};
     if (!skeleton->safe || inner.text.empty()) {
         s.stopped = !skeleton->safe;
     } else {
@@ -181,7 +186,8 @@ void Include(State& s, const File& f, const PpDirective& d) {
         s.plan.unknown_only_in_conditions = false;
         s.stopped = s.stopped || s.options.stop_when_unknown_matters;
     }
-    s.pending.push_back({index, file, skeleton, std::move(inner.blank), std::move(inner.defines)});
+    s.pending.push_back(
+        {index, file, skeleton, lean, std::move(inner.blank), std::move(inner.defines)});
 }
 
 std::optional<bool> Condition(const State& s, const PpDirective& d) {
@@ -379,7 +385,7 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
     InactiveTextPlan plan;
     const PpSkeleton own = options.main_skeleton ? PpSkeleton() : ScanSkeleton(main);
     const PpSkeleton& skeleton = options.main_skeleton ? *options.main_skeleton : own;
-    File f{name, main, skeleton, {}, {}};
+    File f{name, main, skeleton, skeleton.line_starts, {}, {}};
     if (skeleton.safe) {
         State s{includer, files, options, plan, {}, 0, false, &f, 0, {}, true, {}};
         for (const std::string& unknown : options.unknown)
@@ -398,10 +404,10 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
             BlankNeedlessDefines(s, skeleton);
         for (Pending& p : s.pending) {
             plan.inclusions[p.index].text =
-                Blanked(ServedText(*p.file), *p.skeleton, p.blank, plan.blanked_lines);
+                Blanked(p.lean->text, p.lean->line_starts, p.blank, plan.blanked_lines);
         }
     }
-    plan.main_text = Blanked(main, skeleton, f.blank, plan.blanked_lines);
+    plan.main_text = Blanked(main, skeleton.line_starts, f.blank, plan.blanked_lines);
     return plan;
 }
 
