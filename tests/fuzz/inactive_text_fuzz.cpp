@@ -72,12 +72,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     {
         hlsl::PlanOptions options;
         options.drop_needless = true;
-        hlsl::Includer lean(paths, files);
+        hlsl::Includer includer(paths, files);
         const hlsl::InactiveTextPlan needless =
-            hlsl::PlanInactiveText(text, "main.hlsl", lean, files, options);
-        lean.UsePlan(&needless);
+            hlsl::PlanInactiveText(text, "main.hlsl", includer, files, options);
+        includer.UsePlan(&needless);
         const frontend::StageOutput out =
-            frontend::Preprocess(pack::Stage::kFragment, needless.main_text, "main.hlsl", lean);
+            frontend::Preprocess(pack::Stage::kFragment, needless.main_text, "main.hlsl", includer);
         // A program with messages is preprocessed again without them (worker/execute.cpp).
         if (out.ok && out.info_log.empty()) {
             Check(want.ok && want.info_log.empty() && want.text == out.text,
