@@ -20,6 +20,7 @@
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
 #include "hlsl/preamble.h"
+#include "hlsl/splice.h"
 #include "worker/preamble.h"
 
 namespace {
@@ -69,19 +70,23 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Check(
         want.ok == lean_out.ok && want.text == lean_out.text && want.info_log == lean_out.info_log,
         "leaving out what glslang reads in vain changed its preprocessing");
-    {
+    for (const bool splice : {false, true}) {
         hlsl::PlanOptions options;
         options.drop_needless = true;
+        options.splice = splice;  // hlsl/splice.h
         hlsl::Includer includer(paths, files);
         const hlsl::InactiveTextPlan needless =
             hlsl::PlanInactiveText(text, "main.hlsl", includer, files, options);
         includer.UsePlan(&needless);
-        const frontend::StageOutput out =
+        frontend::StageOutput out =
             frontend::Preprocess(pack::Stage::kFragment, needless.main_text, "main.hlsl", includer);
-        // A program with messages is preprocessed again without them (worker/execute.cpp).
-        if (out.ok && out.info_log.empty()) {
+        // A program with messages, or whose output is not as the splicing expects, is
+        // preprocessed again without them (worker/execute.cpp).
+        if (out.ok && out.info_log.empty() &&
+            (needless.spliced_lines == 0 || hlsl::Unsplice(out.text, needless.splices))) {
             Check(want.ok && want.info_log.empty() && want.text == out.text,
-                  "blanking needless directives changed glslang's preprocessing");
+                  splice ? "serving plain lines short changed glslang's preprocessing"
+                         : "blanking needless directives changed glslang's preprocessing");
         }
     }
     if (size > 0 && (data[0] & 1)) {

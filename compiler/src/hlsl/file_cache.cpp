@@ -5,6 +5,7 @@
 #include "hlsl/lean_text.h"
 #include "hlsl/needless_defines.h"
 #include "hlsl/pp_skeleton.h"
+#include "hlsl/splice.h"
 
 namespace kiln::hlsl {
 
@@ -73,6 +74,36 @@ std::shared_ptr<const LeanText> FileCache::Lean(const std::shared_ptr<const Sour
     std::lock_guard<std::mutex> lock(mu_);
     leans_[file->path()] = {file, lean};
     return lean;
+}
+
+std::shared_ptr<const SpliceFile> FileCache::Splice(const std::shared_ptr<const SourceFile>& file) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto it = splices_.find(file->path());
+        if (it != splices_.end() && it->second.first == file)
+            return it->second.second;
+    }
+    std::shared_ptr<const SpliceFile> splice = ScanSpliceFile(Lean(file), *Skeleton(file));
+    std::lock_guard<std::mutex> lock(mu_);
+    splices_[file->path()] = {file, splice};
+    return splice;
+}
+
+std::shared_ptr<const SpliceChoice> FileCache::SpliceLines(
+    const std::shared_ptr<const SpliceFile>& file,
+    const std::shared_ptr<const IncludedDefines>& defines) {
+    const std::pair<const SpliceFile*, const IncludedDefines*> key(file.get(), defines.get());
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto it = splice_macros_.find(key);
+        if (it != splice_macros_.end())
+            return it->second.choice;
+    }
+    auto choice = std::make_shared<const SpliceChoice>(
+        ChooseSpliceLines(*file, defines->defined, defines->callable));
+    std::lock_guard<std::mutex> lock(mu_);
+    splice_macros_[key] = {file, defines, choice};
+    return choice;
 }
 
 std::shared_ptr<const IncludedDefines> FileCache::Defines(

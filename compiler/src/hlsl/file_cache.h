@@ -20,6 +20,8 @@ namespace kiln::hlsl {
 struct PpSkeleton;
 struct IncludedDefines;
 struct LeanText;
+struct SpliceFile;
+struct SpliceChoice;
 
 // A file's text as glslang's preprocessor is given it: glslang does not skip a UTF-8 byte-order
 // mark, so the text after it.
@@ -46,6 +48,14 @@ class FileCache {
     // `file`'s served text without what glslang reads in vain (hlsl/lean_text.h), made once per
     // file. Thread-safe.
     std::shared_ptr<const LeanText> Lean(const std::shared_ptr<const SourceFile>& file);
+    // What the lines of `file`'s lean text hold, for splicing (hlsl/splice.h), scanned once per
+    // file. Thread-safe.
+    std::shared_ptr<const SpliceFile> Splice(const std::shared_ptr<const SourceFile>& file);
+    // ChooseSpliceLines(*file, defines->defined, defines->callable), made once per pair.
+    // Thread-safe.
+    std::shared_ptr<const SpliceChoice> SpliceLines(
+        const std::shared_ptr<const SpliceFile>& file,
+        const std::shared_ptr<const IncludedDefines>& defines);
     // What the #define names of `files` (each once) say alone (hlsl/needless_defines.h), made
     // once per set of files. Thread-safe.
     std::shared_ptr<const IncludedDefines> Defines(
@@ -66,6 +76,16 @@ class FileCache {
     std::map<std::string,
              std::pair<std::shared_ptr<const SourceFile>, std::shared_ptr<const LeanText>>>
         leans_;
+    std::map<std::string,
+             std::pair<std::shared_ptr<const SourceFile>, std::shared_ptr<const SpliceFile>>>
+        splices_;
+    // The pair's owners are kept with the answer, so that neither address is reused meanwhile.
+    struct MacroWordsEntry {
+        std::shared_ptr<const SpliceFile> file;
+        std::shared_ptr<const IncludedDefines> defines;
+        std::shared_ptr<const SpliceChoice> choice;
+    };
+    std::map<std::pair<const SpliceFile*, const IncludedDefines*>, MacroWordsEntry> splice_macros_;
     std::map<std::string, std::string> resolved_;
     // By the files' skeletons, sorted (a file changed is scanned again, so its set is new).
     std::map<std::vector<const PpSkeleton*>, std::shared_ptr<const IncludedDefines>> defines_;

@@ -12,6 +12,7 @@
 #include "hlsl/needless_defines.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
+#include "hlsl/splice.h"
 
 namespace kiln::hlsl {
 namespace {
@@ -352,6 +353,69 @@ void BlankNeedlessDefines(State& s, const PpSkeleton& main) {
     }
 }
 
+// Per pending inclusion, the lines served short (hlsl/splice.h), each outside the inclusion's
+// blanked lines; empty where none may be. `blank`s are sorted.
+std::vector<std::vector<uint32_t>> ChooseSplices(State& s,
+                                                 const PpSkeleton& main_skeleton,
+                                                 std::string_view main) {
+    if (main.find(kSpliceMarker) != std::string_view::npos)
+        return {};
+    std::vector<std::shared_ptr<const PpSkeleton>> read;
+    for (const Pending& p : s.pending) {
+        if (std::find(read.begin(), read.end(), p.skeleton) == read.end())
+            read.push_back(p.skeleton);
+    }
+    const std::shared_ptr<const IncludedDefines> included = s.files.Defines(read);
+    // The program's own names: 2 where one may leave a macro's name last (any last word of its
+    // body taken as one).
+    std::vector<std::pair<std::string_view, char>> own;
+    for (const std::string& name : s.options.unknown)
+        own.emplace_back(name, 1);
+    for (const PpDirective& d : main_skeleton.directives) {
+        if (d.kind != PpKind::kDefine)
+            continue;
+        const DefineEnd end = EndOfDefine(d.rest);
+        own.emplace_back(DirectiveMacroName(d.rest), end.calls || !end.last_word.empty() ? 2 : 1);
+    }
+    std::vector<std::vector<uint32_t>> chosen(s.pending.size());
+    for (size_t i = 0; i < s.pending.size(); ++i) {
+        const Pending& p = s.pending[i];
+        const std::shared_ptr<const SpliceFile> file = s.files.Splice(p.file);
+        if (!file->usable)
+            return {};  // its lines are not known: a macro call may run on past its end
+        const std::shared_ptr<const SpliceChoice> choice = s.files.SpliceLines(file, included);
+        bool poisoned = choice->poisoned;
+        std::vector<uint32_t> patched;  // where one of the program's own names is a word here
+        const std::vector<uint32_t>* lines = &choice->lines;
+        std::vector<char> macro;
+        for (const auto& [name, kind] : own) {
+            const auto it = file->word_ids.find(name);
+            if (it == file->word_ids.end() || choice->macro[it->second] >= kind)
+                continue;
+            if (macro.empty())
+                macro = choice->macro;
+            macro[it->second] = kind;
+        }
+        if (!macro.empty()) {
+            poisoned = false;
+            patched = SpliceableLines(*file, macro, poisoned);
+            lines = &patched;
+        }
+        if (poisoned)
+            return {};
+        // Lines the plan blanked stay blank.
+        auto range = p.blank.begin();
+        std::vector<uint32_t>& kept = chosen[i];
+        for (const uint32_t line : *lines) {
+            while (range != p.blank.end() && range->second < line)
+                ++range;
+            if (range == p.blank.end() || line < range->first)
+                kept.push_back(line);
+        }
+    }
+    return chosen;
+}
+
 }  // namespace
 
 std::string BlankLines(std::string_view text,
@@ -402,9 +466,25 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
             plan.unknown_only_in_conditions = false;
         if (options.drop_needless && plan.complete)
             BlankNeedlessDefines(s, skeleton);
-        for (Pending& p : s.pending) {
+        for (Pending& p : s.pending)
+            std::sort(p.blank.begin(), p.blank.end());
+        std::vector<std::vector<uint32_t>> splices;
+        if (options.splice && plan.complete)
+            splices = ChooseSplices(s, skeleton, main);
+        if (!splices.empty())
+            plan.splices.resize(plan.inclusions.size());
+        for (size_t i = 0; i < s.pending.size(); ++i) {
+            Pending& p = s.pending[i];
+            if (splices.empty() || splices[i].empty()) {
+                plan.inclusions[p.index].text =
+                    Blanked(p.lean->text, p.lean->line_starts, p.blank, plan.blanked_lines);
+                continue;
+            }
+            const std::shared_ptr<const SpliceFile> file = s.files.Splice(p.file);
             plan.inclusions[p.index].text =
-                Blanked(p.lean->text, p.lean->line_starts, p.blank, plan.blanked_lines);
+                ServeSpliced(*file, p.index, p.blank, splices[i], plan.blanked_lines);
+            plan.splices[p.index] = file;
+            plan.spliced_lines += splices[i].size();
         }
     }
     plan.main_text = Blanked(main, skeleton.line_starts, f.blank, plan.blanked_lines);

@@ -15,6 +15,7 @@
 #define KILN_HLSL_INACTIVE_TEXT_H_
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -25,6 +26,7 @@
 namespace kiln::hlsl {
 
 struct PpSkeleton;
+struct SpliceFile;
 
 struct InactiveTextPlan {
     struct Inclusion {
@@ -52,6 +54,11 @@ struct InactiveTextPlan {
     bool macros_exact = false;
     std::vector<uint32_t> unknown_define_lines;  // 0-based physical lines
 
+    // With PlanOptions::splice: by inclusion, the file whose plain lines were served short
+    // (hlsl/splice.h; null where none was), for Unsplice on glslang's output; and how many.
+    std::vector<std::shared_ptr<const SpliceFile>> splices;
+    size_t spliced_lines = 0;
+
     // True when glslang's output is the same whatever PlanOptions::unknown are defined to (for
     // sources that differ only in their #define lines): the plan reached the end, and decided
     // every branch without them, and no line glslang reads expands them.
@@ -75,6 +82,9 @@ struct PlanOptions {
     // #define of a macro no other line of the files read names. Only for a plan of a whole
     // program (a text after `main` could name such a macro).
     bool drop_needless = false;
+    // Also serves the included files' plain lines short (hlsl/splice.h), where the plan reached
+    // the end of the program: glslang's output must then be given to Unsplice.
+    bool splice = false;
     // ScanSkeleton(main), when the caller has made it already.
     const PpSkeleton* main_skeleton = nullptr;
 };

@@ -7,6 +7,7 @@
 #include "hlsl/identifier.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
+#include "hlsl/splice.h"
 
 namespace kiln::hlsl {
 namespace {
@@ -125,8 +126,33 @@ IncludedDefines MakeIncludedDefines(std::vector<std::shared_ptr<const PpSkeleton
                 d.kind == PpKind::kDefine ? DirectiveMacroName(d.rest) : std::string_view();
             if (name.empty() || GlslangMayDefine(name))
                 continue;
+            out.defined.insert(name);
             std::vector<std::string_view>& w = words[name];
             ForEachWord(d.rest, [&](std::string_view word) { w.push_back(word); });
+        }
+    }
+    // Those whose expansion may end with a macro's name (hlsl/splice.h), to a fixed point.
+    std::vector<std::pair<std::string_view, std::string_view>> ends;  // name, its body's last word
+    for (const auto& file : out.skeletons) {
+        for (const PpDirective& d : file->directives) {
+            const std::string_view name =
+                d.kind == PpKind::kDefine ? DirectiveMacroName(d.rest) : std::string_view();
+            if (name.empty() || GlslangMayDefine(name))
+                continue;
+            const DefineEnd end = EndOfDefine(d.rest);
+            if (end.calls)
+                out.callable.insert(name);
+            else if (!end.last_word.empty())
+                ends.emplace_back(name, end.last_word);
+        }
+    }
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const auto& [name, last] : ends) {
+            if (!out.callable.count(name) && (out.callable.count(last) || GlslangMayDefine(last))) {
+                out.callable.insert(name);
+                grew = true;
+            }
         }
     }
     out.pieces_known = PastePieces(raw, out.pieces);

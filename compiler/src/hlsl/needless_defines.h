@@ -22,6 +22,10 @@ struct PpSkeleton;
 // What a set of included files alone says about their #define names: made once per set
 // (FileCache::Defines) and shared by every program that reads the same files.
 struct IncludedDefines {
+    // Every name the files #define (but those glslang may define itself).
+    std::unordered_set<std::string_view> defined;
+    // Those of them whose expansion may end with a macro's name (hlsl/splice.h, MayEndInCall).
+    std::unordered_set<std::string_view> callable;
     // Macros that the files spell only in their own #define lines or in those of other such
     // macros, and that no paste of the files can make.
     std::unordered_set<std::string_view> unnamed;

@@ -12,6 +12,7 @@
 #include "hlsl/pp_skeleton.h"
 #include "hlsl/reduce.h"
 #include "hlsl/rewrite.h"
+#include "hlsl/splice.h"
 #include "spirv/optimize.h"
 #include "worker/preamble.h"
 
@@ -65,11 +66,13 @@ void CheckAgainstPlain(const Request& r,
 }
 
 // glslang's preprocessing of the program with the text it would skip blanked first
-// (hlsl/inactive_text.h), and the directives it does not need. With a partner entry, the plan
+// (hlsl/inactive_text.h), the directives it does not need, and its included files' plain lines
+// served short and made whole after (hlsl/splice.h). With a partner entry, the plan
 // first takes the two stages' macros as unknown: `for_both` says whether the output holds for both
 // stages' sources then (they differ only in that #define; the driver checks). A program that
-// gives messages is preprocessed again without the needless directives blanked, as glslang's
-// messages may count the conditionals open where it stopped (an #error).
+// gives messages is preprocessed again without the needless directives blanked or lines served
+// short, as glslang's messages may count the conditionals open where it stopped (an #error); so
+// is one whose output is not as the splicing expects.
 frontend::StageOutput PreprocessPlanned(const Request& r,
                                         ExecuteContext& context,
                                         hlsl::Includer& includer,
@@ -78,6 +81,7 @@ frontend::StageOutput PreprocessPlanned(const Request& r,
     hlsl::PlanOptions options;
     options.main_skeleton = &skeleton;
     options.drop_needless = true;
+    options.splice = true;
     hlsl::InactiveTextPlan plan;
     for_both = false;
     if (!r.second_entry.empty()) {
@@ -95,9 +99,11 @@ frontend::StageOutput PreprocessPlanned(const Request& r,
     includer.UsePlan(&plan);
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
-    if (out.ok && out.info_log.empty())
+    if (out.ok && out.info_log.empty() &&
+        (plan.spliced_lines == 0 || hlsl::Unsplice(out.text, plan.splices)))
         return out;
     options.drop_needless = false;
+    options.splice = false;
     plan = hlsl::PlanInactiveText(r.source, r.name, includer, context.files, options);
     includer.UsePlan(&plan);
     out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);

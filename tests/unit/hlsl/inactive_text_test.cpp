@@ -7,6 +7,7 @@
 #include "frontend/glslang_stage.h"
 #include "hlsl/pp_macros.h"
 #include "hlsl/pp_skeleton.h"
+#include "hlsl/splice.h"
 #include "support/compile_support.h"
 #include "unit/hlsl/random_program.h"
 
@@ -30,7 +31,7 @@ InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir,
     Includer planned(paths, files);
     InactiveTextPlan plan = PlanInactiveText(main, name, planned, files, options);
     planned.UsePlan(&plan);
-    const frontend::StageOutput got =
+    frontend::StageOutput got =
         frontend::Preprocess(pack::Stage::kFragment, plan.main_text, name, planned);
     if (options.drop_needless && (!got.ok || !got.info_log.empty())) {
         // The worker preprocesses the program again without PlanOptions::drop_needless.
@@ -39,6 +40,9 @@ InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir,
     }
     if (want.ok) {  // glslang stops at its first error, and asks for no more files
         EXPECT_EQ(planned.served_from_plan(), plan.inclusions.size());
+    }
+    if (plan.spliced_lines > 0) {  // hlsl/splice.h
+        EXPECT_TRUE(Unsplice(got.text, plan.splices)) << main;
     }
     EXPECT_EQ(want.ok, got.ok);
     EXPECT_EQ(want.text, got.text) << main;
@@ -286,7 +290,7 @@ TEST(InactiveText, KnowsWhenTheOutputIsTheSameForBothStages) {
 }
 
 TEST(InactiveText, RandomProgramsPreprocessAlike) {
-    size_t blanked = 0, complete = 0, ignores = 0, stops = 0;
+    size_t blanked = 0, complete = 0, ignores = 0, stops = 0, spliced_lines = 0;
     for (uint32_t seed = 1; seed <= 300; ++seed) {
         ScratchDir dir;
         test::RandomProgram g(seed);
@@ -296,6 +300,10 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
         PlanOptions needless;
         needless.drop_needless = true;
         ExpectSamePreprocessing(dir, "#define FN(x) x\n" + body, needless);
+        PlanOptions spliced = needless;
+        spliced.splice = true;
+        spliced_lines +=
+            ExpectSamePreprocessing(dir, "#define FN(x) x\n" + body, spliced).spliced_lines;
         // With E taken as unknown: where the plan says the output does not depend on E, glslang
         // gives the same text for sources that differ only in a first line defining E to 0, to
         // 1, or not at all.
@@ -343,6 +351,7 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
     EXPECT_GT(ignores, 10u);
     EXPECT_GT(stops, 10u) << ignores;  // and stops early in some
     EXPECT_GT(blanked, 100000u) << complete;
+    EXPECT_GT(spliced_lines, 100u);  // and serves plain lines short (hlsl/splice.h)
 }
 
 }  // namespace

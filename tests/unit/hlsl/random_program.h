@@ -35,7 +35,7 @@ class RandomProgram {
         const int lines = Pick(2, 5);
         for (int i = 0; i < lines; ++i)
             s += Line(depth, files);
-        return s;
+        return s + PlainLine();  // drawing nothing from the generator: the programs stay
     }
 
   private:
@@ -93,8 +93,24 @@ class RandomProgram {
         }
     }
 
+    // Code for splicing (hlsl/splice.h): plain lines, one with a comment, and a macro call whose
+    // argument runs on to the next line.
+    std::string PlainLine() {
+        static const char* const kLines[] = {
+            "  float p%d = (0.5 + 1.0f) * .25 - 2e-3;\n",
+            "\tint p%d = (7 << 2) >= 1 ? 0x1F : 3u;\n",
+            "p%d . x :: y += z [ 1 ] , w;\n",
+            "    float p%d = q(1, 2) + r; // with a comment\n",
+            "float p%d = FN(1 +\n   2) + 3;\n",
+        };
+        const std::string line = kLines[plain_++ % 5];
+        const size_t at = line.find("%d");
+        return line.substr(0, at) + std::to_string(counter_++) + line.substr(at + 2);
+    }
+
     std::mt19937 rng_;
     int counter_ = 0;
+    int plain_ = 0;
 };
 
 }  // namespace kiln::test
