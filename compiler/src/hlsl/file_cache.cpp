@@ -106,6 +106,23 @@ std::shared_ptr<const SpliceChoice> FileCache::SpliceLines(
     return choice;
 }
 
+std::shared_ptr<const std::unordered_set<std::string_view>> FileCache::SpliceWords(
+    const std::shared_ptr<const IncludedDefines>& defines,
+    const std::vector<std::shared_ptr<const SpliceFile>>& files) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto it = splice_words_.find(defines.get());
+        if (it != splice_words_.end())
+            return it->second.words;
+    }
+    auto words = std::make_shared<std::unordered_set<std::string_view>>();
+    for (const auto& file : files)
+        words->insert(file->words.begin(), file->words.end());
+    std::lock_guard<std::mutex> lock(mu_);
+    splice_words_[defines.get()] = {defines, files, words};
+    return words;
+}
+
 std::shared_ptr<const IncludedDefines> FileCache::Defines(
     const std::vector<std::shared_ptr<const PpSkeleton>>& files) {
     std::vector<const PpSkeleton*> key;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -56,6 +57,11 @@ class FileCache {
     std::shared_ptr<const SpliceChoice> SpliceLines(
         const std::shared_ptr<const SpliceFile>& file,
         const std::shared_ptr<const IncludedDefines>& defines);
+    // The words of the code lines of `files` (the SpliceFiles of the files `defines` was made
+    // of), made once per `defines`. Thread-safe.
+    std::shared_ptr<const std::unordered_set<std::string_view>> SpliceWords(
+        const std::shared_ptr<const IncludedDefines>& defines,
+        const std::vector<std::shared_ptr<const SpliceFile>>& files);
     // What the #define names of `files` (each once) say alone (hlsl/needless_defines.h), made
     // once per set of files. Thread-safe.
     std::shared_ptr<const IncludedDefines> Defines(
@@ -86,6 +92,12 @@ class FileCache {
         std::shared_ptr<const SpliceChoice> choice;
     };
     std::map<std::pair<const SpliceFile*, const IncludedDefines*>, MacroWordsEntry> splice_macros_;
+    struct SpliceWordsEntry {
+        std::shared_ptr<const IncludedDefines> defines;
+        std::vector<std::shared_ptr<const SpliceFile>> files;  // the words are views into these
+        std::shared_ptr<const std::unordered_set<std::string_view>> words;
+    };
+    std::map<const IncludedDefines*, SpliceWordsEntry> splice_words_;
     std::map<std::string, std::string> resolved_;
     // By the files' skeletons, sorted (a file changed is scanned again, so its set is new).
     std::map<std::vector<const PpSkeleton*>, std::shared_ptr<const IncludedDefines>> defines_;

@@ -377,12 +377,22 @@ std::vector<std::vector<uint32_t>> ChooseSplices(State& s,
         const DefineEnd end = EndOfDefine(d.rest);
         own.emplace_back(DirectiveMacroName(d.rest), end.calls || !end.last_word.empty() ? 2 : 1);
     }
+    std::vector<std::shared_ptr<const SpliceFile>> files;
+    for (const Pending& p : s.pending) {
+        files.push_back(s.files.Splice(p.file));
+        if (!files.back()->usable)
+            return {};  // its lines are not known: a macro call may run on past its end
+    }
+    // Only the own names that are words of some file's code patch what the files' names say.
+    const std::shared_ptr<const std::unordered_set<std::string_view>> words =
+        s.files.SpliceWords(included, files);
+    own.erase(std::remove_if(own.begin(), own.end(),
+                             [&](const auto& name) { return !words->count(name.first); }),
+              own.end());
     std::vector<std::vector<uint32_t>> chosen(s.pending.size());
     for (size_t i = 0; i < s.pending.size(); ++i) {
         const Pending& p = s.pending[i];
-        const std::shared_ptr<const SpliceFile> file = s.files.Splice(p.file);
-        if (!file->usable)
-            return {};  // its lines are not known: a macro call may run on past its end
+        const std::shared_ptr<const SpliceFile>& file = files[i];
         const std::shared_ptr<const SpliceChoice> choice = s.files.SpliceLines(file, included);
         bool poisoned = choice->poisoned;
         std::vector<uint32_t> patched;  // where one of the program's own names is a word here

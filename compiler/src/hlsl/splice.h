@@ -54,7 +54,7 @@ struct SpliceFile {
     std::vector<Line> lines;  // one per physical line
     // Per line of code: its words (ids) and brackets ( and ) in order, outside comments.
     std::vector<int32_t> events;
-    std::vector<std::string_view> words;  // by id: views into `text`
+    std::vector<std::string_view> words;  // of code lines, by id: views into `text`
     std::unordered_map<std::string_view, uint32_t> word_ids;
     std::string middles;
 };
