@@ -89,7 +89,7 @@ std::shared_ptr<const SpliceFile> FileCache::Splice(const std::shared_ptr<const 
     return splice;
 }
 
-std::shared_ptr<const SpliceChoice> FileCache::SpliceLines(
+std::shared_ptr<const SpliceChoice> FileCache::SpliceRuns(
     const std::shared_ptr<const SpliceFile>& file,
     const std::shared_ptr<const IncludedDefines>& defines) {
     const std::pair<const SpliceFile*, const IncludedDefines*> key(file.get(), defines.get());
@@ -99,8 +99,8 @@ std::shared_ptr<const SpliceChoice> FileCache::SpliceLines(
         if (it != splice_macros_.end())
             return it->second.choice;
     }
-    auto choice = std::make_shared<const SpliceChoice>(
-        ChooseSpliceLines(*file, defines->defined, defines->callable));
+    auto choice = std::make_shared<const SpliceChoice>(ChooseSpliceRuns(
+        *file, MacroWords(*file, defines->defined, defines->callable, defines->empty)));
     std::lock_guard<std::mutex> lock(mu_);
     splice_macros_[key] = {file, defines, choice};
     return choice;

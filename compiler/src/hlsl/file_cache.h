@@ -52,9 +52,9 @@ class FileCache {
     // What the lines of `file`'s lean text hold, for splicing (hlsl/splice.h), scanned once per
     // file. Thread-safe.
     std::shared_ptr<const SpliceFile> Splice(const std::shared_ptr<const SourceFile>& file);
-    // ChooseSpliceLines(*file, defines->defined, defines->callable), made once per pair.
+    // ChooseSpliceRuns of `file` for the names of `defines` (MacroWords), made once per pair.
     // Thread-safe.
-    std::shared_ptr<const SpliceChoice> SpliceLines(
+    std::shared_ptr<const SpliceChoice> SpliceRuns(
         const std::shared_ptr<const SpliceFile>& file,
         const std::shared_ptr<const IncludedDefines>& defines);
     // The words of the code lines of `files` (the SpliceFiles of the files `defines` was made

@@ -353,79 +353,6 @@ void BlankNeedlessDefines(State& s, const PpSkeleton& main) {
     }
 }
 
-// Per pending inclusion, the lines served short (hlsl/splice.h), each outside the inclusion's
-// blanked lines; empty where none may be. `blank`s are sorted.
-std::vector<std::vector<uint32_t>> ChooseSplices(State& s,
-                                                 const PpSkeleton& main_skeleton,
-                                                 std::string_view main) {
-    if (main.find(kSpliceMarker) != std::string_view::npos)
-        return {};
-    std::vector<std::shared_ptr<const PpSkeleton>> read;
-    for (const Pending& p : s.pending) {
-        if (std::find(read.begin(), read.end(), p.skeleton) == read.end())
-            read.push_back(p.skeleton);
-    }
-    const std::shared_ptr<const IncludedDefines> included = s.files.Defines(read);
-    // The program's own names: 2 where one may leave a macro's name last (any last word of its
-    // body taken as one).
-    std::vector<std::pair<std::string_view, char>> own;
-    for (const std::string& name : s.options.unknown)
-        own.emplace_back(name, 1);
-    for (const PpDirective& d : main_skeleton.directives) {
-        if (d.kind != PpKind::kDefine)
-            continue;
-        const DefineEnd end = EndOfDefine(d.rest);
-        own.emplace_back(DirectiveMacroName(d.rest), end.calls || !end.last_word.empty() ? 2 : 1);
-    }
-    std::vector<std::shared_ptr<const SpliceFile>> files;
-    for (const Pending& p : s.pending) {
-        files.push_back(s.files.Splice(p.file));
-        if (!files.back()->usable)
-            return {};  // its lines are not known: a macro call may run on past its end
-    }
-    // Only the own names that are words of some file's code patch what the files' names say.
-    const std::shared_ptr<const std::unordered_set<std::string_view>> words =
-        s.files.SpliceWords(included, files);
-    own.erase(std::remove_if(own.begin(), own.end(),
-                             [&](const auto& name) { return !words->count(name.first); }),
-              own.end());
-    std::vector<std::vector<uint32_t>> chosen(s.pending.size());
-    for (size_t i = 0; i < s.pending.size(); ++i) {
-        const Pending& p = s.pending[i];
-        const std::shared_ptr<const SpliceFile>& file = files[i];
-        const std::shared_ptr<const SpliceChoice> choice = s.files.SpliceLines(file, included);
-        bool poisoned = choice->poisoned;
-        std::vector<uint32_t> patched;  // where one of the program's own names is a word here
-        const std::vector<uint32_t>* lines = &choice->lines;
-        std::vector<char> macro;
-        for (const auto& [name, kind] : own) {
-            const auto it = file->word_ids.find(name);
-            if (it == file->word_ids.end() || choice->macro[it->second] >= kind)
-                continue;
-            if (macro.empty())
-                macro = choice->macro;
-            macro[it->second] = kind;
-        }
-        if (!macro.empty()) {
-            poisoned = false;
-            patched = SpliceableLines(*file, macro, poisoned);
-            lines = &patched;
-        }
-        if (poisoned)
-            return {};
-        // Lines the plan blanked stay blank.
-        auto range = p.blank.begin();
-        std::vector<uint32_t>& kept = chosen[i];
-        for (const uint32_t line : *lines) {
-            while (range != p.blank.end() && range->second < line)
-                ++range;
-            if (range == p.blank.end() || line < range->first)
-                kept.push_back(line);
-        }
-    }
-    return chosen;
-}
-
 }  // namespace
 
 std::string BlankLines(std::string_view text,
@@ -478,23 +405,27 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
             BlankNeedlessDefines(s, skeleton);
         for (Pending& p : s.pending)
             std::sort(p.blank.begin(), p.blank.end());
-        std::vector<std::vector<uint32_t>> splices;
-        if (options.splice && plan.complete)
-            splices = ChooseSplices(s, skeleton, main);
+        std::vector<InclusionSplice> splices;
+        if (options.splice && plan.complete) {
+            std::vector<SpliceInclusion> inclusions;
+            for (const Pending& p : s.pending)
+                inclusions.push_back({p.file, p.skeleton, &p.blank});
+            splices = ChooseSplices(files, options.unknown, skeleton, main, inclusions);
+        }
         if (!splices.empty())
             plan.splices.resize(plan.inclusions.size());
         for (size_t i = 0; i < s.pending.size(); ++i) {
             Pending& p = s.pending[i];
-            if (splices.empty() || splices[i].empty()) {
+            if (splices.empty() || splices[i].runs.empty()) {
                 plan.inclusions[p.index].text =
                     Blanked(p.lean->text, p.lean->line_starts, p.blank, plan.blanked_lines);
                 continue;
             }
-            const std::shared_ptr<const SpliceFile> file = s.files.Splice(p.file);
+            const InclusionSplice& c = splices[i];
             plan.inclusions[p.index].text =
-                ServeSpliced(*file, p.index, p.blank, splices[i], plan.blanked_lines);
-            plan.splices[p.index] = file;
-            plan.spliced_lines += splices[i].size();
+                ServeSpliced(*c.file, *c.choice, p.index, p.blank, c.runs, plan.blanked_lines);
+            plan.splices[p.index] = c.choice;
+            plan.spliced_runs += c.runs.size();
         }
     }
     plan.main_text = Blanked(main, skeleton.line_starts, f.blank, plan.blanked_lines);

@@ -26,7 +26,7 @@
 namespace kiln::hlsl {
 
 struct PpSkeleton;
-struct SpliceFile;
+struct SpliceChoice;
 
 struct InactiveTextPlan {
     struct Inclusion {
@@ -54,10 +54,10 @@ struct InactiveTextPlan {
     bool macros_exact = false;
     std::vector<uint32_t> unknown_define_lines;  // 0-based physical lines
 
-    // With PlanOptions::splice: by inclusion, the file whose plain lines were served short
-    // (hlsl/splice.h; null where none was), for Unsplice on glslang's output; and how many.
-    std::vector<std::shared_ptr<const SpliceFile>> splices;
-    size_t spliced_lines = 0;
+    // With PlanOptions::splice: by inclusion, the runs of tokens of the file served as markers
+    // (hlsl/splice.h; null where none were), for Unsplice on glslang's output; and how many.
+    std::vector<std::shared_ptr<const SpliceChoice>> splices;
+    size_t spliced_runs = 0;
 
     // True when glslang's output is the same whatever PlanOptions::unknown are defined to (for
     // sources that differ only in their #define lines): the plan reached the end, and decided

@@ -133,6 +133,7 @@ IncludedDefines MakeIncludedDefines(std::vector<std::shared_ptr<const PpSkeleton
     }
     // Those whose expansion may end with a macro's name (hlsl/splice.h), to a fixed point.
     std::vector<std::pair<std::string_view, std::string_view>> ends;  // name, its body's last word
+    std::vector<std::pair<std::string_view, std::string_view>> only_words;  // name, body of words
     for (const auto& file : out.skeletons) {
         for (const PpDirective& d : file->directives) {
             const std::string_view name =
@@ -144,6 +145,19 @@ IncludedDefines MakeIncludedDefines(std::vector<std::shared_ptr<const PpSkeleton
                 out.callable.insert(name);
             else if (!end.last_word.empty())
                 ends.emplace_back(name, end.last_word);
+            if (!end.calls && end.words_only)
+                only_words.emplace_back(name, end.body);
+        }
+    }
+    for (bool grew = true; grew;) {  // bodies empty, or of names that may expand to nothing
+        grew = false;
+        for (const auto& [name, body] : only_words) {
+            bool all = !out.empty.count(name);
+            ForEachWord(body, [&](std::string_view w) { all = all && out.empty.count(w); });
+            if (all) {
+                out.empty.insert(name);
+                grew = true;
+            }
         }
     }
     for (bool grew = true; grew;) {

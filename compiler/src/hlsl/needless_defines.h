@@ -26,6 +26,8 @@ struct IncludedDefines {
     std::unordered_set<std::string_view> defined;
     // Those of them whose expansion may end with a macro's name (hlsl/splice.h, MayEndInCall).
     std::unordered_set<std::string_view> callable;
+    // Those whose expansion may be empty (not callable: a body of none but such words).
+    std::unordered_set<std::string_view> empty;
     // Macros that the files spell only in their own #define lines or in those of other such
     // macros, and that no paste of the files can make.
     std::unordered_set<std::string_view> unnamed;

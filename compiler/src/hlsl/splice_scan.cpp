@@ -6,7 +6,7 @@
 #include "hlsl/pp_skeleton.h"
 
 // The scan of one file's lines for splicing (hlsl/splice.h): which are plain, their words and
-// brackets, and the tokens between each plain line's ends as glslang prints them.
+// brackets, and each plain line's tokens.
 
 namespace kiln::hlsl {
 namespace {
@@ -130,22 +130,11 @@ size_t Operator(std::string_view s, size_t i) {
     }
 }
 
-// A token glslang prints no space around (`(char)token` in ";()[]").
-bool Tight(std::string_view t) {
-    return t.size() == 1 &&
-           (t[0] == ';' || t[0] == '(' || t[0] == ')' || t[0] == '[' || t[0] == ']');
-}
-
-// Whether glslang prints a space between tokens `a` and `b` of one line.
-bool SpaceBetween(std::string_view a, std::string_view b) {
-    return !Tight(a) && !Tight(b) && b != ",";
-}
-
 struct Scan {
     SpliceFile& f;
     std::string_view text;
-    bool in_comment = false;                            // a block comment open at the line's start
-    std::vector<std::pair<uint32_t, uint32_t>> tokens;  // of the line being scanned
+    bool in_comment = false;              // a block comment open at the line's start
+    std::vector<SpliceFile::Tok> tokens;  // of the line being scanned
 };
 
 uint32_t WordId(SpliceFile& f, std::string_view word) {
@@ -198,13 +187,14 @@ bool ScanCode(Scan& scan, Line& line, size_t begin, size_t end) {
             continue;
         }
         size_t len = 0;
+        int32_t word = -1;
         if (Alpha(c)) {
             while (i + len < end && WordChar(s[i + len]))
                 ++len;
             if (line.kind != Kind::kDirective) {  // a directive's words are not code's
-                const uint32_t id = WordId(f, s.substr(i, len));
-                f.events.push_back(static_cast<int32_t>(id));
-                line.last_word = static_cast<int32_t>(id);
+                word = static_cast<int32_t>(WordId(f, s.substr(i, len)));
+                f.events.push_back(word);
+                line.last_word = word;
             }
             plain = plain && len <= kMaxWord;
         } else {
@@ -226,31 +216,10 @@ bool ScanCode(Scan& scan, Line& line, size_t begin, size_t end) {
                 }
             }
         }
-        scan.tokens.emplace_back(static_cast<uint32_t>(i), static_cast<uint32_t>(i + len));
+        scan.tokens.push_back({static_cast<uint32_t>(i), static_cast<uint32_t>(i + len), word});
         i += len;
     }
     return plain;
-}
-
-// Records a plain line's ends and the tokens between as glslang prints them.
-void RecordMiddle(Scan& scan, Line& line) {
-    const auto& t = scan.tokens;
-    const auto token = [&](size_t k) {
-        return scan.text.substr(t[k].first, t[k].second - t[k].first);
-    };
-    const size_t n = t.size();
-    line.first_end = t[0].second;
-    line.last_begin = t[n - 1].first;
-    line.middle_begin = static_cast<uint32_t>(scan.f.middles.size());
-    for (size_t k = 1; k < n; ++k) {
-        if (SpaceBetween(token(k - 1), token(k)))
-            scan.f.middles += ' ';
-        if (k + 1 < n)
-            scan.f.middles += token(k);
-    }
-    line.middle_end = static_cast<uint32_t>(scan.f.middles.size());
-    line.space_after_first = !Tight(token(0));
-    line.space_before_last = SpaceBetween("w", token(n - 1));
 }
 
 }  // namespace
@@ -288,7 +257,9 @@ std::shared_ptr<const SpliceFile> ScanSpliceFile(std::shared_ptr<const LeanText>
             }
             if (plain && scan.tokens.size() >= 3) {
                 line.kind = Kind::kPlain;
-                RecordMiddle(scan, line);
+                line.toks_begin = static_cast<uint32_t>(f.toks.size());
+                f.toks.insert(f.toks.end(), scan.tokens.begin(), scan.tokens.end());
+                line.toks_end = static_cast<uint32_t>(f.toks.size());
             } else if (!scan.tokens.empty()) {
                 line.kind = Kind::kCode;
             }

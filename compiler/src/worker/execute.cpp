@@ -100,7 +100,7 @@ frontend::StageOutput PreprocessPlanned(const Request& r,
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
     if (out.ok && out.info_log.empty() &&
-        (plan.spliced_lines == 0 || hlsl::Unsplice(out.text, plan.splices)))
+        (plan.spliced_runs == 0 || hlsl::Unsplice(out.text, plan.splices)))
         return out;
     options.drop_needless = false;
     options.splice = false;

@@ -41,7 +41,7 @@ InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir,
     if (want.ok) {  // glslang stops at its first error, and asks for no more files
         EXPECT_EQ(planned.served_from_plan(), plan.inclusions.size());
     }
-    if (plan.spliced_lines > 0) {  // hlsl/splice.h
+    if (plan.spliced_runs > 0) {  // hlsl/splice.h
         EXPECT_TRUE(Unsplice(got.text, plan.splices)) << main;
     }
     EXPECT_EQ(want.ok, got.ok);
@@ -290,7 +290,7 @@ TEST(InactiveText, KnowsWhenTheOutputIsTheSameForBothStages) {
 }
 
 TEST(InactiveText, RandomProgramsPreprocessAlike) {
-    size_t blanked = 0, complete = 0, ignores = 0, stops = 0, spliced_lines = 0;
+    size_t blanked = 0, complete = 0, ignores = 0, stops = 0, spliced_runs = 0;
     for (uint32_t seed = 1; seed <= 300; ++seed) {
         ScratchDir dir;
         test::RandomProgram g(seed);
@@ -302,8 +302,8 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
         ExpectSamePreprocessing(dir, "#define FN(x) x\n" + body, needless);
         PlanOptions spliced = needless;
         spliced.splice = true;
-        spliced_lines +=
-            ExpectSamePreprocessing(dir, "#define FN(x) x\n" + body, spliced).spliced_lines;
+        spliced_runs +=
+            ExpectSamePreprocessing(dir, "#define FN(x) x\n" + body, spliced).spliced_runs;
         // With E taken as unknown: where the plan says the output does not depend on E, glslang
         // gives the same text for sources that differ only in a first line defining E to 0, to
         // 1, or not at all.
@@ -351,7 +351,7 @@ TEST(InactiveText, RandomProgramsPreprocessAlike) {
     EXPECT_GT(ignores, 10u);
     EXPECT_GT(stops, 10u) << ignores;  // and stops early in some
     EXPECT_GT(blanked, 100000u) << complete;
-    EXPECT_GT(spliced_lines, 100u);  // and serves plain lines short (hlsl/splice.h)
+    EXPECT_GT(spliced_runs, 100u);  // and serves plain lines short (hlsl/splice.h)
 }
 
 }  // namespace

@@ -34,7 +34,7 @@ InactiveTextPlan ExpectSplicedAlike(const ScratchDir& dir, const std::string& ma
     planned.UsePlan(&plan);
     frontend::StageOutput got =
         frontend::Preprocess(pack::Stage::kFragment, plan.main_text, name, planned);
-    if (plan.spliced_lines > 0) {
+    if (plan.spliced_runs > 0) {
         EXPECT_TRUE(Unsplice(got.text, plan.splices));
     }
     EXPECT_EQ(want.ok, got.ok);
@@ -60,30 +60,34 @@ TEST(Splice, ServesPlainLinesShortAndGivesThemBackAsGlslangPrintsThem) {
               "#define HALF float\n"                           // 0
               "#define CALL(x) x\n"                            // 1
               "#define TAIL CALL\n"                            // 2
-              "float a = (1.5f + 2) * b[3];\n"                 // 3: short
-              "    float c = HALF(2); // a macro\n"            // 4: whole
-              "float d = CALL(1 +\n"                           // 5: whole
-              "   2) + e;\n"                                   // 6: whole: an argument
-              "float f = 1 + TAIL\n"                           // 7: whole
-              "(3) + 4 + 5;\n"                                 // 8: whole: TAIL's argument
-              "x . y :: z <<= 1 >>= 2 && 3 || 4 ^^ 5 != 6;\n"  // 9: short
-              "int g = 0x1Fu + 10u, h = .5, i = 1e-3f;\n"      // 10: short
-              "int j = 1 /* a comment */ + k;\n"               // 11: whole: a comment
-              "\ta ( b ) [ c ] ; , d , (e);\n"                 // 12: short
-              "int l = \"s\" + m;\n"                           // 13: whole: a string
-              "int n = p;\n"                                   // 14: short
-              "f(x, y);\n"                                     // 15: short
-              "q = r;\n"                                       // 16: short
-              "};\n");                                         // 17: whole: 2 tokens
+              "#define E\n"                                    // 3
+              "#define EE E E\n"                               // 4
+              "float a = (1.5f + 2) * b[3];\n"                 // 5: short
+              "    float c = HALF(2); // a comment\n"          // 6: short (lean: no comment)
+              "HALF c2 = HALF(2) + 1 + HALF;\n"                // 7: short, around the macros
+              "float d = CALL(1 +\n"                           // 8: whole
+              "   2) + e;\n"                                   // 9: whole: an argument
+              "float f = 1 + TAIL\n"                           // 10: whole
+              "(3) + 4 + 5;\n"                                 // 11: whole: TAIL's argument
+              "x . y :: z <<= 1 >>= 2 && 3 || 4 ^^ 5 != 6;\n"  // 12: short
+              "int g = 0x1Fu + 10u, h = .5, i = 1e-3f;\n"      // 13: short
+              "int j = 1 /* a comment */ + k;\n"               // 14: whole: a comment
+              "\ta ( b ) [ c ] ; , d , (e);\n"                 // 15: short
+              "int l = \"s\" + m;\n"                           // 16: whole: a string
+              "int n = EE + p;\n"                              // 17: whole: may expand to none
+              "f(x, y);\n"                                     // 18: short
+              "q = r;\n"                                       // 19: short
+              "};\n"                                           // 20: whole: 2 tokens
+              "(HALF) (HALF) x;\n");                           // 21: short, between the macros
     const InactiveTextPlan plan = ExpectSplicedAlike(dir, "#include \"lib.h\"\nfloat z = 1 + 2;\n");
     ASSERT_EQ(plan.inclusions.size(), 1u);
     ASSERT_TRUE(plan.complete);
     const std::string& text = plan.inclusions[0].text;
-    for (size_t line : {3, 9, 10, 12, 14, 15, 16})
+    for (size_t line : {5, 6, 7, 12, 13, 15, 18, 19, 21})
         EXPECT_TRUE(ServedShort(text, line)) << line << "\n" << text;
-    for (size_t line : {4, 5, 6, 7, 8, 11, 13, 17})
+    for (size_t line : {8, 9, 10, 11, 14, 16, 17, 20})
         EXPECT_FALSE(ServedShort(text, line)) << line << "\n" << text;
-    EXPECT_EQ(plan.spliced_lines, 7u);
+    EXPECT_EQ(plan.spliced_runs, 12u);  // two on lines 6, 7 and 21
     // The main text is served as it is.
     EXPECT_EQ(plan.main_text.find(kSpliceMarker), std::string::npos);
 }
@@ -108,11 +112,11 @@ TEST(Splice, AMacroCallThatMayRunOverADirectiveStopsIt) {
             PlanInactiveText(std::string("#include \"") + file + "\"\n", dir.path() + "/main.hlsl",
                              includer, files, options);
         EXPECT_TRUE(plan.complete) << file;
-        EXPECT_EQ(plan.spliced_lines, 0u) << file;
+        EXPECT_EQ(plan.spliced_runs, 0u) << file;
     }
     // A file that spells the marker's prefix is served whole.
     dir.Write("marker.h", "float a = b + c + d;\nfloat qKsP1x1 = 1 + 2;\n");
-    EXPECT_EQ(ExpectSplicedAlike(dir, "#include \"marker.h\"\n").spliced_lines, 0u);
+    EXPECT_EQ(ExpectSplicedAlike(dir, "#include \"marker.h\"\n").spliced_runs, 0u);
 }
 
 TEST(Splice, FindsWhereAMacroMayLeaveAMacrosNameLast) {
@@ -134,13 +138,16 @@ TEST(Splice, UnspliceRefusesMarkersOutOfPlace) {
     const std::shared_ptr<const SpliceFile> file = ScanSpliceFile(lean, skeleton);
     ASSERT_TRUE(file->usable);
     ASSERT_EQ(file->lines[0].kind, SpliceFile::Kind::kPlain);
-    const std::vector<std::shared_ptr<const SpliceFile>> files = {file};
-    std::string good = "a qKsP0x0;\n";  // no space before `;`
+    auto choice = std::make_shared<const SpliceChoice>(
+        ChooseSpliceRuns(*file, MacroWords(*file, {}, {}, {})));
+    ASSERT_EQ(choice->runs.size(), 1u);  // `= b + c`, between `a` and `;`
+    const std::vector<std::shared_ptr<const SpliceChoice>> files = {choice};
+    std::string good = "a qKsP0x0;\n";  // as glslang prints `a qKsP0x0 ;`
     EXPECT_TRUE(Unsplice(good, files));
     EXPECT_EQ(good, "a = b + c;\n");
-    for (const std::string bad :
-         {"aqKsP0x0;\n", "a qKsP0x0 ;\n", "a  qKsP0x0;\n", "a qKsP1x0;\n", "a qKsP0x1;\n",
-          "a qKsP0x0; a qKsP0x0;\n", "a qKsP0x0y;\n", "a qKsPx0;\n"}) {
+    for (const std::string bad : {"aqKsP0x0;\n", "a qKsP0x0 ;\n", "a  qKsP0x0;\n", "a qKsP1x0;\n",
+                                  "a qKsP0x1;\n", "a qKsP0x0; a qKsP0x0;\n", "a qKsP0x0y;\n",
+                                  "a qKsPx0;\n", "qKsP0x0;\n", "a qKsP0x0\n", "( qKsP0x0;\n"}) {
         std::string copy = bad;
         EXPECT_FALSE(Unsplice(copy, files)) << bad;
         EXPECT_EQ(copy, bad);
