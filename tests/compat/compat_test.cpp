@@ -175,6 +175,7 @@ Outcome CompileInProcess(const ScratchDir& dir,
     o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     std::istringstream text(ReadFile(log));
+    std::string last;  // the log's last line, for a failure that gives no error line
     for (std::string line; std::getline(text, line);) {
         if (line.find(": error: ") != std::string::npos || line.find("internal") == 0) {
             o.first_error = line;
@@ -183,7 +184,11 @@ Outcome CompileInProcess(const ScratchDir& dir,
                 o.code = m[1];
             break;
         }
+        if (!line.empty())
+            last = line;
     }
+    if (o.first_error.empty() && code != 0)
+        o.first_error = "no error line; the log ends: " + last;
     if (code == 0) {
         o.kind = Outcome::kCompiled;
     } else if (code == 124) {
