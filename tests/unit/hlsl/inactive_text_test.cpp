@@ -9,46 +9,14 @@
 #include "hlsl/pp_skeleton.h"
 #include "hlsl/splice.h"
 #include "support/compile_support.h"
+#include "unit/hlsl/preprocess_alike.h"
 #include "unit/hlsl/random_program.h"
 
 namespace kiln::hlsl {
 namespace {
 
+using test::ExpectSamePreprocessing;
 using test::ScratchDir;
-
-// glslang's preprocessing of `main` as it is, and with the plan's blanked texts: they must be
-// the same, text and messages (with PlanOptions::drop_needless, only where the plan's gives no
-// message). Returns the plan.
-InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir,
-                                         const std::string& main,
-                                         const PlanOptions& options = {}) {
-    FileCache files;
-    const IncludePaths paths{{dir.path()}, "", 0};
-    const std::string name = dir.path() + "/main.hlsl";
-    Includer plain(paths, files);
-    const frontend::StageOutput want =
-        frontend::Preprocess(pack::Stage::kFragment, main, name, plain);
-    Includer planned(paths, files);
-    InactiveTextPlan plan = PlanInactiveText(main, name, planned, files, options);
-    planned.UsePlan(&plan);
-    frontend::StageOutput got =
-        frontend::Preprocess(pack::Stage::kFragment, plan.main_text, name, planned);
-    if (options.drop_needless && (!got.ok || !got.info_log.empty())) {
-        // The worker preprocesses the program again without PlanOptions::drop_needless.
-        EXPECT_TRUE(!want.ok || !want.info_log.empty()) << got.info_log;
-        return plan;
-    }
-    if (want.ok) {  // glslang stops at its first error, and asks for no more files
-        EXPECT_EQ(planned.served_from_plan(), plan.inclusions.size());
-    }
-    if (plan.spliced_runs > 0) {  // hlsl/splice.h
-        EXPECT_TRUE(Unsplice(got.text, plan.splices)) << main;
-    }
-    EXPECT_EQ(want.ok, got.ok);
-    EXPECT_EQ(want.text, got.text) << main;
-    EXPECT_EQ(want.info_log, got.info_log);
-    return plan;
-}
 
 TEST(PpSkeleton, FindsDirectivesAsGlslangSplitsLines) {
     const PpSkeleton s = ScanSkeleton(

@@ -11,6 +11,7 @@
 #include "hlsl/lean_text.h"
 #include "hlsl/pp_skeleton.h"
 #include "support/compile_support.h"
+#include "unit/hlsl/preprocess_alike.h"
 
 namespace kiln::hlsl {
 namespace {
@@ -20,27 +21,10 @@ using test::ScratchDir;
 // Preprocesses `main` plain and planned with splicing; the spliced output made whole must be
 // glslang's, text and messages. Returns the plan.
 InactiveTextPlan ExpectSplicedAlike(const ScratchDir& dir, const std::string& main) {
-    FileCache files;
-    const IncludePaths paths{{dir.path()}, "", 0};
-    const std::string name = dir.path() + "/main.hlsl";
-    Includer plain(paths, files);
-    const frontend::StageOutput want =
-        frontend::Preprocess(pack::Stage::kFragment, main, name, plain);
     PlanOptions options;
     options.drop_needless = true;
     options.splice = true;
-    Includer planned(paths, files);
-    InactiveTextPlan plan = PlanInactiveText(main, name, planned, files, options);
-    planned.UsePlan(&plan);
-    frontend::StageOutput got =
-        frontend::Preprocess(pack::Stage::kFragment, plan.main_text, name, planned);
-    if (plan.spliced_runs > 0) {
-        EXPECT_TRUE(Unsplice(got.text, plan.splices));
-    }
-    EXPECT_EQ(want.ok, got.ok);
-    EXPECT_EQ(want.text, got.text) << main;
-    EXPECT_EQ(want.info_log, got.info_log);
-    return plan;
+    return test::ExpectSamePreprocessing(dir, main, options);
 }
 
 // Whether physical line `line` of `text` was served short.
