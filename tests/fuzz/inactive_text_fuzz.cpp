@@ -7,7 +7,8 @@
 // must give the same text for it defined to 0 and to 1. With its second bit set, two variants of
 // the program (one keyword each) are preprocessed with the shared include prefix
 // (worker/preamble.h) too, and wherever it is used the output must be glslang's for the whole
-// program. Any difference aborts. The skeleton and
+// program. A second plan, which takes its walks of #includes from the first's
+// (hlsl/plan_memo.h), must be the plan made without them. Any difference aborts. The skeleton and
 // #if evaluation run on every directive line too. The corpus (corpus/preprocess, templates/) is
 // replayed by ctest in every build through fuzz_replay_main.cpp.
 #include <cstdint>
@@ -32,6 +33,20 @@ void Check(bool ok, const char* what) {
         std::fprintf(stderr, "inactive_text_fuzz: %s\n", what);
         std::abort();
     }
+}
+
+bool SamePlan(const hlsl::InactiveTextPlan& a, const hlsl::InactiveTextPlan& b) {
+    if (a.main_text != b.main_text || a.inclusions.size() != b.inclusions.size() ||
+        a.complete != b.complete || a.blanked_lines != b.blanked_lines ||
+        a.maybe_branches != b.maybe_branches ||
+        a.unknown_only_in_conditions != b.unknown_only_in_conditions)
+        return false;
+    for (size_t i = 0; i < a.inclusions.size(); ++i) {
+        if (a.inclusions[i].path != b.inclusions[i].path ||
+            a.inclusions[i].text != b.inclusions[i].text)
+            return false;
+    }
+    return true;
 }
 
 std::string Preprocess(const std::string& text, hlsl::Includer& includer) {
@@ -62,6 +77,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         frontend::Preprocess(pack::Stage::kFragment, plan.main_text, "main.hlsl", planned);
     Check(want.ok == got.ok && want.text == got.text && want.info_log == got.info_log,
           "blanking changed glslang's preprocessing");
+    // The same program again takes its walks of #includes from the memo (hlsl/plan_memo.h): it
+    // plans as a walk without the memo does.
+    {
+        hlsl::Includer again(paths, files);
+        const hlsl::InactiveTextPlan remembered =
+            hlsl::PlanInactiveText(text, "main.hlsl", again, files);
+        hlsl::PlanOptions walked;
+        walked.remember = false;
+        hlsl::Includer fresh(paths, files);
+        Check(SamePlan(remembered, hlsl::PlanInactiveText(text, "main.hlsl", fresh, files, walked)),
+              "a walk taken from the memo planned otherwise");
+    }
     // The program itself served lean (hlsl/lean_text.h), as the plan serves each include.
     const hlsl::LeanText lean = hlsl::MakeLeanText(text, skeleton);
     hlsl::Includer leaned(paths, files);

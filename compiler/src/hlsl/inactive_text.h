@@ -40,6 +40,8 @@ struct InactiveTextPlan {
     size_t blanked_lines = 0;
     // Branches glslang may or may not read, for what the plan did not know.
     size_t maybe_branches = 0;
+    // Walks of an #include taken from an earlier plan's (hlsl/plan_memo.h) instead of made.
+    size_t remembered_walks = 0;
     // Every line glslang reads that names one of PlanOptions::unknown is a condition, that
     // macro's own #define or #undef, or a #pragma (whose tokens glslang prints unexpanded), and
     // no paste (##) can make one (no proper prefix of one is a word of the files read).
@@ -85,6 +87,9 @@ struct PlanOptions {
     // Also serves the included files' plain lines short (hlsl/splice.h), where the plan reached
     // the end of the program: glslang's output must then be given to Unsplice.
     bool splice = false;
+    // Takes walks of #includes from the FileCache's memo of earlier walks, and keeps its own
+    // there (hlsl/plan_memo.h); not with record_macros.
+    bool remember = true;
     // ScanSkeleton(main), when the caller has made it already.
     const PpSkeleton* main_skeleton = nullptr;
 };

@@ -44,14 +44,19 @@ std::string Includer::Resolve(const std::string& header,
     key += '\n';
     key += includer.substr(0, includer.find_last_of('/') + 1);
     key += local ? "\nL\n" : "\nS\n";
-    for (const std::string& dir : paths_.dirs)
-        key += dir + '\n';
-    key += paths_.templates_dir + '\n' + std::to_string(paths_.unity_version);
+    key += PathsKey();
     if (std::optional<std::string> known = files_.Resolved(key))
         return *known;
     std::string path = Search(header, includer, local);
     files_.RememberResolved(key, path);
     return path;
+}
+
+std::string Includer::PathsKey() const {
+    std::string key;
+    for (const std::string& dir : paths_.dirs)
+        key += dir + '\n';
+    return key + paths_.templates_dir + '\n' + std::to_string(paths_.unity_version);
 }
 
 std::string Includer::Search(const std::string& header,

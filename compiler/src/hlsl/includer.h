@@ -41,6 +41,10 @@ class Includer : public glslang::TShader::Includer {
     // Resolution without glslang: the path `header` resolves to, or "" when not found.
     std::string Resolve(const std::string& header, const std::string& includer, bool local) const;
 
+    // What Resolve's answers depend on besides the header and the including file: the search
+    // paths (the -I directories, the library and its release).
+    std::string PathsKey() const;
+
     // Serves the plan's blanked texts (hlsl/inactive_text.h) while glslang asks for the files it
     // planned, in its order; from the first other request on, files as they are. Null: none.
     // The plan must outlive the preprocessing.

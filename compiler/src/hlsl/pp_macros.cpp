@@ -301,6 +301,7 @@ bool PpMacros::Define(std::string_view rest) {
     m.body = std::string(body);
     unknown_.erase(std::string(name));
     defined_[std::string(name)] = std::move(m);
+    Wrote(name);
     return true;
 }
 
@@ -311,6 +312,7 @@ bool PpMacros::Undef(std::string_view rest) {
         return false;
     unknown_.erase(std::string(name));
     defined_.erase(std::string(name));
+    Wrote(name);
     return true;
 }
 
@@ -319,6 +321,7 @@ void PpMacros::Forget(std::string_view rest) {
     if (Name(rest, name)) {
         defined_.erase(std::string(name));
         unknown_.insert(std::string(name));
+        Wrote(name);
     }
 }
 
@@ -326,9 +329,77 @@ MacroState PpMacros::Lookup(std::string_view name) const {
     if (GlslangOwns(name))
         return MacroState::kUnknown;
     const std::string key(name);
+    if (!logs_.empty()) {
+        MacroLog& log = *logs_.back();
+        if (log.seen.insert(key).second) {
+            log.reads.emplace_back(key, Value(key));
+            return log.reads.back().second.state;
+        }
+    }
     if (unknown_.count(key) || pinned_.count(key))
         return MacroState::kUnknown;
     return defined_.count(key) ? MacroState::kDefined : MacroState::kUndefined;
+}
+
+MacroValue PpMacros::Value(const std::string& name) const {
+    if (pinned_.count(name))
+        return {MacroState::kUnknown, false, {}};
+    return Held(name);
+}
+
+MacroValue PpMacros::Held(const std::string& name) const {
+    if (unknown_.count(name))
+        return {MacroState::kUnknown, false, {}};
+    const auto it = defined_.find(name);
+    if (it == defined_.end())
+        return {};
+    return {MacroState::kDefined, it->second.function_like, it->second.body};
+}
+
+void PpMacros::Set(const std::string& name, const MacroValue& value) {
+    if (value.state == MacroState::kDefined) {
+        unknown_.erase(name);
+        Macro& m = defined_[name];
+        m.function_like = value.function_like;
+        m.body = value.body;
+    } else {
+        defined_.erase(name);
+        if (value.state == MacroState::kUnknown)
+            unknown_.insert(name);
+        else
+            unknown_.erase(name);
+    }
+    Wrote(name);
+}
+
+void PpMacros::Wrote(std::string_view name) {
+    if (logs_.empty())
+        return;
+    MacroLog& log = *logs_.back();
+    std::string key(name);
+    log.seen.insert(key);
+    if (log.written.insert(key).second)
+        log.writes.push_back(std::move(key));
+}
+
+void PpMacros::CloseLog() {
+    MacroLog* closed = logs_.back();
+    logs_.pop_back();
+    if (logs_.empty())
+        return;
+    NoteReads(closed->reads);
+    for (const std::string& name : closed->writes)
+        Wrote(name);
+}
+
+void PpMacros::NoteReads(const std::vector<std::pair<std::string, MacroValue>>& reads) {
+    if (logs_.empty())
+        return;
+    MacroLog& log = *logs_.back();
+    for (const auto& [name, value] : reads) {
+        if (log.seen.insert(name).second)
+            log.reads.emplace_back(name, value);
+    }
 }
 
 std::optional<bool> PpMacros::Ifdef(std::string_view rest) const {

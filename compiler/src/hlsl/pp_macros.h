@@ -12,6 +12,8 @@
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
+#include <vector>
 
 namespace kiln::hlsl {
 
@@ -21,6 +23,25 @@ bool GlslangMayDefine(std::string_view name);
 std::string_view DirectiveMacroName(std::string_view rest);
 
 enum class MacroState { kUndefined, kDefined, kUnknown };
+
+// What the table holds for one name.
+struct MacroValue {
+    MacroState state = MacroState::kUndefined;
+    bool function_like = false;  // kDefined
+    std::string body;            // kDefined: the text after the name (and parameters), trimmed
+    bool operator==(const MacroValue& o) const {
+        return state == o.state && function_like == o.function_like && body == o.body;
+    }
+};
+
+// What a stretch of the walk read of the table and wrote to it (hlsl/plan_memo.h): each name
+// read before it was written there, with what it read, in order; and each name written.
+struct MacroLog {
+    std::vector<std::pair<std::string, MacroValue>> reads;
+    std::vector<std::string> writes;
+    std::unordered_set<std::string> seen;     // read or written
+    std::unordered_set<std::string> written;  // of `writes`
+};
 
 class PpMacros {
   public:
@@ -36,6 +57,21 @@ class PpMacros {
 
     MacroState Lookup(std::string_view name) const;
 
+    // What a lookup of `name` sees (Lookup with the definition), and what the table itself
+    // holds for it (pinned names included).
+    MacroValue Value(const std::string& name) const;
+    MacroValue Held(const std::string& name) const;
+    // Makes the table hold `value` for `name`, as a write.
+    void Set(const std::string& name, const MacroValue& value);
+
+    // Logs the reads and writes from now on into `log` until CloseLog; logs nest, and closing
+    // one adds what it logged to the one it was opened in. Reads of names glslang may define
+    // are not logged (Lookup does not read the table for them).
+    void OpenLog(MacroLog* log) { logs_.push_back(log); }
+    void CloseLog();
+    // Logs reads made elsewhere (a stretch replayed from a memo) into the open log, if any.
+    void NoteReads(const std::vector<std::pair<std::string, MacroValue>>& reads);
+
     // #if / #elif's expression; #ifdef's operand (#ifndef is its negation).
     std::optional<bool> If(std::string_view expression) const;
     std::optional<bool> Ifdef(std::string_view rest) const;
@@ -45,9 +81,13 @@ class PpMacros {
         bool function_like = false;
         std::string body;
     };
+    void Wrote(std::string_view name);
+
     std::unordered_map<std::string, Macro> defined_;
     std::unordered_set<std::string> unknown_;
     std::unordered_set<std::string> pinned_;
+    // Logging does not change what the table answers.
+    mutable std::vector<MacroLog*> logs_;
 };
 
 }  // namespace kiln::hlsl
