@@ -3,17 +3,18 @@
 #ifndef KILN_HLSL_IDENTIFIER_H_
 #define KILN_HLSL_IDENTIFIER_H_
 
-#include <cctype>
 #include <string_view>
 
 namespace kiln::hlsl {
 
+// ASCII letters, digits and '_' (glslang's classes; std::isalnum is a call per byte, and one the
+// locale could widen: Kiln never sets one).
 inline bool IdentStart(char c) {
-    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
 }
 
 inline bool IdentChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    return IdentStart(c) || (c >= '0' && c <= '9');
 }
 
 // Calls `f` with each identifier of `text`: each run of identifier characters that does not

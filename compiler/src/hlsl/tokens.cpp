@@ -52,7 +52,7 @@ void TokenizeFrom(const std::string& s, size_t from, std::vector<Token>& out) {
             ++i;
             continue;
         }
-        if (std::isspace(static_cast<unsigned char>(c))) {
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f') {  // std::isspace
             ++i;
             continue;
         }
@@ -68,9 +68,8 @@ void TokenizeFrom(const std::string& s, size_t from, std::vector<Token>& out) {
             while (i < s.size() && IdentChar(s[i]))
                 ++i;
             t.ident = true;
-        } else if (std::isdigit(static_cast<unsigned char>(c)) ||
-                   (c == '.' && i + 1 < s.size() &&
-                    std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
+        } else if ((c >= '0' && c <= '9') ||
+                   (c == '.' && i + 1 < s.size() && s[i + 1] >= '0' && s[i + 1] <= '9')) {
             ++i;
             while (i < s.size() &&
                    (IdentChar(s[i]) || s[i] == '.' ||
