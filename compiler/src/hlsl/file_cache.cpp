@@ -91,18 +91,23 @@ std::shared_ptr<const SpliceFile> FileCache::Splice(const std::shared_ptr<const 
 
 std::shared_ptr<const SpliceChoice> FileCache::SpliceRuns(
     const std::shared_ptr<const SpliceFile>& file,
-    const std::shared_ptr<const IncludedDefines>& defines) {
-    const std::pair<const SpliceFile*, const IncludedDefines*> key(file.get(), defines.get());
+    const std::shared_ptr<const IncludedDefines>& defines,
+    const SplicePatch& patch) {
+    auto key = std::make_tuple(file.get(), defines.get(), patch);
     {
         std::lock_guard<std::mutex> lock(mu_);
         const auto it = splice_macros_.find(key);
         if (it != splice_macros_.end())
             return it->second.choice;
     }
-    auto choice = std::make_shared<const SpliceChoice>(ChooseSpliceRuns(
-        *file, MacroWords(*file, defines->defined, defines->callable, defines->empty)));
+    std::vector<char> macro =
+        patch.empty() ? MacroWords(*file, defines->defined, defines->callable, defines->empty)
+                      : SpliceRuns(file, defines)->macro;
+    for (const auto& [word, kind] : patch)
+        macro[word] = kind;
+    auto choice = std::make_shared<const SpliceChoice>(ChooseSpliceRuns(*file, std::move(macro)));
     std::lock_guard<std::mutex> lock(mu_);
-    splice_macros_[key] = {file, defines, choice};
+    splice_macros_[std::move(key)] = {file, defines, choice};
     return choice;
 }
 

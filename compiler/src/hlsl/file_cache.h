@@ -3,6 +3,7 @@
 #ifndef KILN_HLSL_FILE_CACHE_H_
 #define KILN_HLSL_FILE_CACHE_H_
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -10,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -53,11 +55,14 @@ class FileCache {
     // What the lines of `file`'s lean text hold, for splicing (hlsl/splice.h), scanned once per
     // file. Thread-safe.
     std::shared_ptr<const SpliceFile> Splice(const std::shared_ptr<const SourceFile>& file);
-    // ChooseSpliceRuns of `file` for the names of `defines` (MacroWords), made once per pair.
-    // Thread-safe.
+    // ChooseSpliceRuns of `file` for the names of `defines` (MacroWords), with the words of
+    // `patch` (word id, kind; ascending) taken as those kinds of macro instead (a program's own
+    // names), made once per file, `defines` and patch. Thread-safe.
+    using SplicePatch = std::vector<std::pair<uint32_t, char>>;
     std::shared_ptr<const SpliceChoice> SpliceRuns(
         const std::shared_ptr<const SpliceFile>& file,
-        const std::shared_ptr<const IncludedDefines>& defines);
+        const std::shared_ptr<const IncludedDefines>& defines,
+        const SplicePatch& patch = {});
     // The words of the code lines of `files` (the SpliceFiles of the files `defines` was made
     // of), made once per `defines`. Thread-safe.
     std::shared_ptr<const std::unordered_set<std::string_view>> SpliceWords(
@@ -94,7 +99,8 @@ class FileCache {
         std::shared_ptr<const IncludedDefines> defines;
         std::shared_ptr<const SpliceChoice> choice;
     };
-    std::map<std::pair<const SpliceFile*, const IncludedDefines*>, MacroWordsEntry> splice_macros_;
+    std::map<std::tuple<const SpliceFile*, const IncludedDefines*, SplicePatch>, MacroWordsEntry>
+        splice_macros_;
     struct SpliceWordsEntry {
         std::shared_ptr<const IncludedDefines> defines;
         std::vector<std::shared_ptr<const SpliceFile>> files;  // the words are views into these

@@ -26,22 +26,21 @@ std::string Blanked(std::string_view text,
 // of a pasted name is a word of some text read (a macro body's, or an argument's), so a name none
 // of whose proper prefixes is such a word cannot be made by pasting.
 bool PasteMayMakeUnknown(const PlanWalk& s, const PpSkeleton& main) {
-    std::vector<std::shared_ptr<const PpSkeleton>> read;
+    std::vector<const PpSkeleton*> read = {&main};  // each file once
     bool pastes = main.pastes;
-    for (const InactiveTextPlan::Inclusion& inc : s.plan.inclusions) {
-        if (const std::shared_ptr<const SourceFile> file = s.files.Get(inc.path)) {
-            read.push_back(s.files.Skeleton(file));
-            pastes = pastes || read.back()->pastes;
+    for (const Pending& p : s.pending) {
+        if (std::find(read.begin(), read.end(), p.skeleton.get()) == read.end()) {
+            read.push_back(p.skeleton.get());
+            pastes = pastes || p.skeleton->pastes;
         }
     }
     if (!pastes)
         return false;
     for (const std::string& name : s.options.unknown) {
+        std::string prefix;
         for (size_t k = 1; k < name.size(); ++k) {
-            const std::string prefix = name.substr(0, k);
-            if (main.words.count(prefix))
-                return true;
-            for (const auto& skeleton : read) {
+            prefix += name[k - 1];
+            for (const PpSkeleton* skeleton : read) {
                 if (skeleton->words.count(prefix))
                     return true;
             }

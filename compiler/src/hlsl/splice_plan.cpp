@@ -66,17 +66,24 @@ std::vector<InclusionSplice> ChooseSplices(FileCache& cache,
         const SpliceInclusion& p = inclusions[i];
         InclusionSplice& c = chosen[i];
         c.choice = cache.SpliceRuns(c.file, included);
-        std::vector<char> macro;  // where one of the program's own names is a word here
+        FileCache::SplicePatch patch;  // where one of the program's own names is a word here
         for (const auto& [name, kind] : own) {
             const auto it = c.file->word_ids.find(name);
-            if (it == c.file->word_ids.end() || c.choice->macro[it->second] >= kind)
-                continue;
-            if (macro.empty())
-                macro = c.choice->macro;
-            macro[it->second] = kind;
+            if (it != c.file->word_ids.end() && c.choice->macro[it->second] < kind)
+                patch.emplace_back(it->second, kind);
         }
-        if (!macro.empty())
-            c.choice = std::make_shared<const SpliceChoice>(ChooseSpliceRuns(*c.file, macro));
+        if (!patch.empty()) {
+            std::sort(patch.begin(), patch.end());
+            // A name twice (a main text's #define and an unknown): the stronger kind.
+            for (size_t k = 1; k < patch.size(); ++k) {
+                if (patch[k].first == patch[k - 1].first)
+                    patch[k - 1].second = 0;
+            }
+            patch.erase(std::remove_if(patch.begin(), patch.end(),
+                                       [](const auto& w) { return w.second == 0; }),
+                        patch.end());
+            c.choice = cache.SpliceRuns(c.file, included, patch);
+        }
         if (c.choice->poisoned)
             return {};
         // Runs on lines the plan blanked stay blank.
