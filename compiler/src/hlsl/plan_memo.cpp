@@ -4,6 +4,14 @@
 
 namespace kiln::hlsl {
 
+PlanMemo::Node* PlanMemo::Node::Child(const MacroValue& value) const {
+    for (const auto& [seen, child] : next) {
+        if (seen == value)
+            return child.get();
+    }
+    return nullptr;
+}
+
 std::shared_ptr<const IncludeWalk> PlanMemo::Find(const std::shared_ptr<const SourceFile>& file,
                                                   const std::string& context,
                                                   const PpMacros& macros) {
@@ -15,17 +23,9 @@ std::shared_ptr<const IncludeWalk> PlanMemo::Find(const std::shared_ptr<const So
     while (!node->walk) {
         if (node->name.empty())
             return nullptr;  // nothing kept here yet
-        const MacroValue now = macros.Value(node->name);
-        const Node* next = nullptr;
-        for (const auto& [value, child] : node->next) {
-            if (value == now) {
-                next = child.get();
-                break;
-            }
-        }
-        if (!next)
+        node = node->Child(macros.Value(node->name));
+        if (!node)
             return nullptr;
-        node = next;
     }
     ++tree->second.hits;
     return node->walk;
@@ -58,13 +58,7 @@ void PlanMemo::Add(const std::shared_ptr<const SourceFile>& file,
         if (node->walk || (!node->name.empty() && node->name != name))
             return;
         node->name = name;
-        Node* next = nullptr;
-        for (auto& [seen, child] : node->next) {
-            if (seen == value) {
-                next = child.get();
-                break;
-            }
-        }
+        Node* next = node->Child(value);
         if (!next) {
             node->next.emplace_back(value, std::make_unique<Node>());
             next = node->next.back().second.get();

@@ -88,6 +88,8 @@ class PlanMemo {
         std::string name;
         std::vector<std::pair<MacroValue, std::unique_ptr<Node>>> next;
         std::shared_ptr<const IncludeWalk> walk;
+        // The child for what `name` read, or null.
+        Node* Child(const MacroValue& value) const;
     };
     struct Tree {
         std::shared_ptr<const SourceFile> file;  // kept, so its address is not reused

@@ -109,6 +109,41 @@ bool Replay(PlanWalk& s, const IncludeWalk& walk) {
     return true;
 }
 
+// What the walk did from the plan's state `before` on (its inclusions and pending texts from
+// those indices), for the memo: what it read and wrote as `log` says.
+struct Before {
+    size_t inclusions = 0, pending = 0, maybe_branches = 0;
+};
+
+std::shared_ptr<IncludeWalk> Captured(PlanWalk& s,
+                                      const Before& before,
+                                      bool names_unknown,
+                                      MacroLog& log) {
+    auto walk = std::make_shared<IncludeWalk>();
+    for (size_t i = before.inclusions; i < s.plan.inclusions.size(); ++i) {
+        walk->paths.push_back(s.plan.inclusions[i].path);
+        walk->bytes += walk->paths.back().size() + 64;
+    }
+    for (size_t i = before.pending; i < s.pending.size(); ++i) {
+        const Pending& p = walk->pending.emplace_back(s.pending[i]);
+        walk->pending.back().index -= before.inclusions;
+        walk->bytes +=
+            128 + p.blank.size() * sizeof(p.blank[0]) + p.defines.size() * sizeof(DefineLine);
+    }
+    walk->maybe_branches = s.plan.maybe_branches - before.maybe_branches;
+    walk->names_unknown = names_unknown;
+    walk->stopped = s.stopped;
+    walk->reads = std::move(log.reads);
+    for (const auto& [name, value] : walk->reads)
+        walk->bytes += name.size() + value.body.size() + 96;
+    for (std::string& name : log.writes) {
+        MacroValue value = s.macros.Held(name);
+        walk->bytes += 2 * name.size() + value.body.size() + 96;
+        walk->writes.emplace_back(std::move(name), std::move(value));
+    }
+    return walk;
+}
+
 // Walk, remembered (hlsl/plan_memo.h): a walk that would read what an earlier one read is
 // replayed.
 void WalkRemembered(PlanWalk& s,
@@ -124,8 +159,7 @@ void WalkRemembered(PlanWalk& s,
         Walk(s, path, file);
         return;
     }
-    const size_t inclusions = s.plan.inclusions.size(), pending = s.pending.size();
-    const size_t maybe = s.plan.maybe_branches;
+    const Before before{s.plan.inclusions.size(), s.pending.size(), s.plan.maybe_branches};
     // Whether this walk finds PlanOptions::unknown named elsewhere, whatever the plan found.
     const bool only = s.plan.unknown_only_in_conditions;
     s.plan.unknown_only_in_conditions = true;
@@ -135,29 +169,7 @@ void WalkRemembered(PlanWalk& s,
     s.macros.CloseLog();
     const bool names_unknown = !s.plan.unknown_only_in_conditions;
     s.plan.unknown_only_in_conditions = only && !names_unknown;
-    auto walk = std::make_shared<IncludeWalk>();
-    for (size_t i = inclusions; i < s.plan.inclusions.size(); ++i) {
-        walk->paths.push_back(s.plan.inclusions[i].path);
-        walk->bytes += walk->paths.back().size() + 64;
-    }
-    for (size_t i = pending; i < s.pending.size(); ++i) {
-        walk->pending.push_back(s.pending[i]);
-        walk->pending.back().index -= inclusions;
-        walk->bytes += 128 + s.pending[i].blank.size() * sizeof(s.pending[i].blank[0]) +
-                       s.pending[i].defines.size() * sizeof(DefineLine);
-    }
-    walk->maybe_branches = s.plan.maybe_branches - maybe;
-    walk->names_unknown = names_unknown;
-    walk->stopped = s.stopped;
-    walk->reads = std::move(log.reads);
-    for (std::string& name : log.writes) {
-        MacroValue value = s.macros.Held(name);
-        walk->bytes += 2 * name.size() + value.body.size() + 96;
-        walk->writes.emplace_back(std::move(name), std::move(value));
-    }
-    for (const auto& [name, value] : walk->reads)
-        walk->bytes += name.size() + value.body.size() + 96;
-    memo.Add(file, context, std::move(walk));
+    memo.Add(file, context, Captured(s, before, names_unknown, log));
 }
 
 void Include(PlanWalk& s, const PlanFile& f, const PpDirective& d) {

@@ -73,15 +73,14 @@ std::vector<InclusionSplice> ChooseSplices(FileCache& cache,
                 patch.emplace_back(it->second, kind);
         }
         if (!patch.empty()) {
-            std::sort(patch.begin(), patch.end());
             // A name twice (a main text's #define and an unknown): the stronger kind.
-            for (size_t k = 1; k < patch.size(); ++k) {
-                if (patch[k].first == patch[k - 1].first)
-                    patch[k - 1].second = 0;
-            }
-            patch.erase(std::remove_if(patch.begin(), patch.end(),
-                                       [](const auto& w) { return w.second == 0; }),
-                        patch.end());
+            std::sort(patch.begin(), patch.end(), [](const auto& a, const auto& b) {
+                return a.first != b.first ? a.first < b.first : a.second > b.second;
+            });
+            patch.erase(
+                std::unique(patch.begin(), patch.end(),
+                            [](const auto& a, const auto& b) { return a.first == b.first; }),
+                patch.end());
             c.choice = cache.SpliceRuns(c.file, included, patch);
         }
         if (c.choice->poisoned)
