@@ -109,8 +109,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             frontend::Preprocess(pack::Stage::kFragment, needless.main_text, "main.hlsl", includer);
         // A program with messages, or whose output is not as the splicing expects, is
         // preprocessed again without them (worker/execute.cpp).
-        if (out.ok && out.info_log.empty() &&
-            (needless.spliced_runs == 0 || hlsl::Unsplice(out.text, needless.splices))) {
+        if (out.ok && out.info_log.empty() && hlsl::MakeWhole(out.text, needless)) {
             Check(want.ok && want.info_log.empty() && want.text == out.text,
                   splice ? "serving plain lines short changed glslang's preprocessing"
                          : "blanking needless directives changed glslang's preprocessing");

@@ -5,6 +5,7 @@
 #include <unordered_set>
 #include <utility>
 
+#include "hlsl/blank_inclusions.h"
 #include "hlsl/lean_text.h"
 #include "hlsl/needless_defines.h"
 #include "hlsl/plan_walk.h"
@@ -77,7 +78,25 @@ void BlankNeedlessDefines(PlanWalk& s, const PpSkeleton& main) {
     }
 }
 
+// Each inclusion that is only line breaks served as one (hlsl/blank_inclusions.h).
+void ServeBlankInclusions(InactiveTextPlan& plan) {
+    for (size_t i = 0; i < plan.inclusions.size(); ++i) {
+        InactiveTextPlan::Inclusion& p = plan.inclusions[i];
+        if (!ServableAsBlank(p.text, p.path))
+            continue;
+        plan.blank_inclusions.resize(plan.inclusions.size());
+        plan.blank_inclusions[i] = static_cast<uint32_t>(p.text.size());
+        p.text.assign(1, '\n');
+    }
+}
+
 }  // namespace
+
+bool MakeWhole(std::string& text, const InactiveTextPlan& plan) {
+    if (!plan.blank_inclusions.empty() && !RestoreBlankInclusions(text, plan.blank_inclusions))
+        return false;
+    return plan.spliced_runs == 0 || Unsplice(text, plan.splices);
+}
 
 std::string BlankLines(std::string_view text,
                        const std::vector<uint32_t>& line_starts,
@@ -149,6 +168,9 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
             plan.splices[p.index] = c.choice;
             plan.spliced_runs += c.runs.size();
         }
+        // No text of the program spells the marker's prefix where splices were chosen.
+        if (!splices.empty())
+            ServeBlankInclusions(plan);
     }
     plan.main_text = Blanked(main, skeleton.line_starts, f.blank, plan.blanked_lines);
     return plan;

@@ -60,6 +60,9 @@ struct InactiveTextPlan {
     // (hlsl/splice.h; null where none were), for Unsplice on glslang's output; and how many.
     std::vector<std::shared_ptr<const SpliceChoice>> splices;
     size_t spliced_runs = 0;
+    // With PlanOptions::splice: by inclusion, how many line breaks a blank inclusion served as
+    // one holds (hlsl/blank_inclusions.h), 0 where it was served as it is; empty where none was.
+    std::vector<uint32_t> blank_inclusions;
 
     // True when glslang's output is the same whatever PlanOptions::unknown are defined to (for
     // sources that differ only in their #define lines): the plan reached the end, and decided
@@ -84,8 +87,9 @@ struct PlanOptions {
     // #define of a macro no other line of the files read names. Only for a plan of a whole
     // program (a text after `main` could name such a macro).
     bool drop_needless = false;
-    // Also serves the included files' plain lines short (hlsl/splice.h), where the plan reached
-    // the end of the program: glslang's output must then be given to Unsplice.
+    // Also serves the included files' plain lines short (hlsl/splice.h) and their blank
+    // inclusions as one line break (hlsl/blank_inclusions.h), where the plan reached the end of
+    // the program: glslang's output must then be given to MakeWhole.
     bool splice = false;
     // Takes walks of #includes from the FileCache's memo of earlier walks, and keeps its own
     // there (hlsl/plan_memo.h); not with record_macros.
@@ -100,6 +104,11 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
                                   const Includer& includer,
                                   FileCache& files,
                                   const PlanOptions& options = {});
+
+// glslang's output for `plan`'s texts made as it is for the program's: the blank inclusions
+// given back, then the spliced runs. False where the output is not as they expect (the program
+// is then preprocessed again without PlanOptions::splice).
+bool MakeWhole(std::string& text, const InactiveTextPlan& plan);
 
 // `text` with the physical lines of each of `ranges` (inclusive, ascending, from a PpSkeleton's
 // `line_starts`) blanked: each keeps only its line break, and a last line without one stays

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "hlsl/blank_inclusions.h"
 #include "hlsl/inactive_text.h"
 #include "hlsl/unity_versions.h"
 
@@ -104,7 +105,11 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
         if (requests_ < plan_->inclusions.size() && plan_->inclusions[requests_].path == path) {
             text = plan_->inclusions[requests_].text;
             ++from_plan_;
-            ++requests_;
+            const size_t index = requests_++;
+            if (index < plan_->blank_inclusions.size() && plan_->blank_inclusions[index] > 0) {
+                return new IncludeResult(BlankInclusionName(index, path), text.data(), text.size(),
+                                         nullptr);
+            }
         } else {
             plan_ = nullptr;  // glslang left the plan: as they are from here on
         }

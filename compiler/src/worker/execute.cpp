@@ -66,13 +66,14 @@ void CheckAgainstPlain(const Request& r,
 }
 
 // glslang's preprocessing of the program with the text it would skip blanked first
-// (hlsl/inactive_text.h), the directives it does not need, and its included files' plain lines
-// served short and made whole after (hlsl/splice.h). With a partner entry, the plan
+// (hlsl/inactive_text.h), the directives it does not need, its included files' plain lines
+// served short (hlsl/splice.h) and its blank inclusions as one line break
+// (hlsl/blank_inclusions.h), made whole after. With a partner entry, the plan
 // first takes the two stages' macros as unknown: `for_both` says whether the output holds for both
 // stages' sources then (they differ only in that #define; the driver checks). A program that
 // gives messages is preprocessed again without the needless directives blanked or lines served
 // short, as glslang's messages may count the conditionals open where it stopped (an #error); so
-// is one whose output is not as the splicing expects.
+// is one whose output is not as MakeWhole expects.
 frontend::StageOutput PreprocessPlanned(const Request& r,
                                         ExecuteContext& context,
                                         hlsl::Includer& includer,
@@ -99,8 +100,7 @@ frontend::StageOutput PreprocessPlanned(const Request& r,
     includer.UsePlan(&plan);
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
-    if (out.ok && out.info_log.empty() &&
-        (plan.spliced_runs == 0 || hlsl::Unsplice(out.text, plan.splices)))
+    if (out.ok && out.info_log.empty() && hlsl::MakeWhole(out.text, plan))
         return out;
     options.drop_needless = false;
     options.splice = false;

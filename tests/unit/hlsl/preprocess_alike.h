@@ -42,8 +42,8 @@ inline hlsl::InactiveTextPlan ExpectSamePreprocessing(const ScratchDir& dir,
     if (want.ok) {  // glslang stops at its first error, and asks for no more files
         EXPECT_EQ(planned.served_from_plan(), plan.inclusions.size());
     }
-    if (plan.spliced_runs > 0) {  // hlsl/splice.h
-        EXPECT_TRUE(hlsl::Unsplice(got.text, plan.splices)) << main;
+    if (options.splice) {  // hlsl/splice.h, hlsl/blank_inclusions.h
+        EXPECT_TRUE(hlsl::MakeWhole(got.text, plan)) << main;
     }
     EXPECT_EQ(want.ok, got.ok);
     EXPECT_EQ(want.text, got.text) << main;

@@ -1,0 +1,84 @@
+#include "hlsl/blank_inclusions.h"
+
+#include <charconv>
+
+#include "hlsl/splice.h"
+
+namespace kiln::hlsl {
+namespace {
+
+// A marked name, as the prologue's #line prints it: `"qKsPb<index>|<path>"`.
+constexpr char kBlankTag = 'b';
+constexpr char kPathStart = '|';
+
+// Whether `at` (a quote) ends a `#line <digits> ` that starts a line of `text`.
+bool InLineDirective(const std::string& text, size_t at) {
+    const size_t start = text.rfind('\n', at) + 1;  // npos + 1 = 0
+    constexpr std::string_view kLine = "#line ";
+    if (at < start + kLine.size() + 2 || text.compare(start, kLine.size(), kLine) != 0 ||
+        text[at - 1] != ' ')
+        return false;
+    for (size_t i = start + kLine.size(); i + 1 < at; ++i) {
+        if (text[i] < '0' || text[i] > '9')
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool ServableAsBlank(std::string_view text, std::string_view path) {
+    return text.size() >= kMinBlankInclusion && text.find_first_not_of('\n') == text.npos &&
+           path.find_first_of("\"\n\\") == path.npos;
+}
+
+std::string BlankInclusionName(size_t inclusion, std::string_view path) {
+    std::string name(kSpliceMarker);
+    name += kBlankTag;
+    name += std::to_string(inclusion);
+    name += kPathStart;
+    name += path;
+    return name;
+}
+
+bool RestoreBlankInclusions(std::string& text, const std::vector<uint32_t>& newlines) {
+    std::string marker = "\"" + std::string(kSpliceMarker) + kBlankTag;
+    std::string out;
+    size_t copied = 0, next = 0;  // the next inclusion served blank is at or after `next`
+    for (size_t p = text.find(marker); p != std::string::npos; p = text.find(marker, p + 1)) {
+        while (next < newlines.size() && newlines[next] == 0)
+            ++next;
+        size_t index = 0;
+        const char* digits = text.data() + p + marker.size();
+        const auto r = std::from_chars(digits, text.data() + text.size(), index);
+        if (r.ec != std::errc() || r.ptr == digits || index != next || !InLineDirective(text, p))
+            return false;
+        const size_t path = r.ptr - text.data();
+        if (path >= text.size() || text[path] != kPathStart)
+            return false;
+        const size_t end = text.find('"', path + 1);
+        constexpr std::string_view kAfter = "\"\n\n#line ";
+        if (end == std::string::npos || text.compare(end, kAfter.size(), kAfter) != 0)
+            return false;
+        if (out.empty())
+            out.reserve(text.size() + 4096);
+        out.append(text, copied, p + 1 - copied);
+        out.append(text, path + 1, end - path - 1);
+        out += "\"\n";
+        out.append(newlines[next], '\n');
+        copied = end + 3;
+        p = copied - 1;
+        ++next;
+    }
+    while (next < newlines.size() && newlines[next] == 0)
+        ++next;
+    if (next != newlines.size())
+        return false;  // one served blank was not found
+    if (copied == 0)
+        return true;
+    out.append(text, copied);
+    text = std::move(out);
+    return true;
+}
+
+}  // namespace kiln::hlsl
