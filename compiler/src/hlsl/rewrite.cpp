@@ -27,6 +27,10 @@ bool EndsDeclarator(std::string_view t) {
 
 // Names declared only with a 1-vector type (the `.x` after them is the identity).
 std::unordered_set<std::string_view> OneVectorNames(const std::vector<Token>& tok) {
+    if (std::none_of(tok.begin(), tok.end(), [](const Token& t) {
+            return t.ident && !t.text.empty() && t.text.back() == '1' && IsOneVectorType(t.text);
+        }))
+        return {};  // most programs declare none: no set of every declared name
     std::unordered_set<std::string_view> one, other;
     int decl = 0;  // inside a declaration list: 1 one-vector type, -1 another type, 0 none
     for (size_t i = 0; i + 2 < tok.size(); ++i) {
