@@ -107,7 +107,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         includer.UsePlan(&needless);
         frontend::StageOutput out =
             frontend::Preprocess(pack::Stage::kFragment, needless.main_text, "main.hlsl", includer);
-        // A program with messages, or whose output is not as the splicing expects, is
+        // A program with messages, or whose output is not as MakeWhole expects, is
         // preprocessed again without them (worker/execute.cpp).
         if (out.ok && out.info_log.empty() && hlsl::MakeWhole(out.text, needless)) {
             Check(want.ok && want.info_log.empty() && want.text == out.text,

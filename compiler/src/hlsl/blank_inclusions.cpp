@@ -42,12 +42,19 @@ std::string BlankInclusionName(size_t inclusion, std::string_view path) {
 }
 
 bool RestoreBlankInclusions(std::string& text, const std::vector<uint32_t>& newlines) {
-    std::string marker = "\"" + std::string(kSpliceMarker) + kBlankTag;
-    std::string out;
-    size_t copied = 0, next = 0;  // the next inclusion served blank is at or after `next`
-    for (size_t p = text.find(marker); p != std::string::npos; p = text.find(marker, p + 1)) {
+    const std::string marker = "\"" + std::string(kSpliceMarker) + kBlankTag;
+    size_t next = 0;  // the next inclusion served blank is at or after `next`
+    const auto skip_served_whole = [&] {
         while (next < newlines.size() && newlines[next] == 0)
             ++next;
+    };
+    size_t added = 0;  // the line breaks given back
+    for (const uint32_t n : newlines)
+        added += n;
+    std::string out;
+    size_t copied = 0;
+    for (size_t p = text.find(marker); p != std::string::npos; p = text.find(marker, p + 1)) {
+        skip_served_whole();
         size_t index = 0;
         const char* digits = text.data() + p + marker.size();
         const auto r = std::from_chars(digits, text.data() + text.size(), index);
@@ -61,7 +68,7 @@ bool RestoreBlankInclusions(std::string& text, const std::vector<uint32_t>& newl
         if (end == std::string::npos || text.compare(end, kAfter.size(), kAfter) != 0)
             return false;
         if (out.empty())
-            out.reserve(text.size() + 4096);
+            out.reserve(text.size() + added);
         out.append(text, copied, p + 1 - copied);
         out.append(text, path + 1, end - path - 1);
         out += "\"\n";
@@ -70,8 +77,7 @@ bool RestoreBlankInclusions(std::string& text, const std::vector<uint32_t>& newl
         p = copied - 1;
         ++next;
     }
-    while (next < newlines.size() && newlines[next] == 0)
-        ++next;
+    skip_served_whole();
     if (next != newlines.size())
         return false;  // one served blank was not found
     if (copied == 0)
