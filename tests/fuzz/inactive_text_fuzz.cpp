@@ -8,9 +8,10 @@
 // the program (one keyword each) are preprocessed with the shared include prefix
 // (worker/preamble.h) too, and wherever it is used the output must be glslang's for the whole
 // program. A second plan, which takes its walks of #includes from the first's
-// (hlsl/plan_memo.h), must be the plan made without them. Any difference aborts. The skeleton and
-// #if evaluation run on every directive line too. The corpus (corpus/preprocess, templates/) is
-// replayed by ctest in every build through fuzz_replay_main.cpp.
+// (hlsl/plan_memo.h), must be the plan made without them, and glslang's outputs for those walks,
+// kept and replayed (hlsl/output_memo.h), must be the program's. Any difference aborts. The
+// skeleton and #if evaluation run on every directive line too. The corpus (corpus/preprocess,
+// templates/) is replayed by ctest in every build through fuzz_replay_main.cpp.
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -97,7 +98,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Check(
         want.ok == lean_out.ok && want.text == lean_out.text && want.info_log == lean_out.info_log,
         "leaving out what glslang reads in vain changed its preprocessing");
-    for (const bool splice : {false, true}) {
+    // Spliced three times, as a worker preprocesses variants: the second keeps glslang's output
+    // for each #include whose walk the memo took (hlsl/output_memo.h), the third replays it.
+    for (const int round : {0, 1, 2, 3}) {
+        const bool splice = round > 0;
         hlsl::PlanOptions options;
         options.drop_needless = true;
         options.splice = splice;  // hlsl/splice.h
@@ -109,7 +113,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             frontend::Preprocess(pack::Stage::kFragment, needless.main_text, "main.hlsl", includer);
         // A program with messages, or whose output is not as MakeWhole expects, is
         // preprocessed again without them (worker/execute.cpp).
-        if (out.ok && out.info_log.empty() && hlsl::MakeWhole(out.text, needless)) {
+        if (out.ok && out.info_log.empty() &&
+            hlsl::MakeWhole(out.text, needless, &files.output_memo())) {
             Check(want.ok && want.info_log.empty() && want.text == out.text,
                   splice ? "serving plain lines short changed glslang's preprocessing"
                          : "blanking needless directives changed glslang's preprocessing");

@@ -11,7 +11,22 @@ namespace {
 constexpr char kBlankTag = 'b';
 constexpr char kPathStart = '|';
 
-// Whether `at` (a quote) ends a `#line <digits> ` that starts a line of `text`.
+}  // namespace
+
+bool ServableAsBlank(std::string_view text, std::string_view path) {
+    return text.size() >= kMinBlankInclusion && text.find_first_not_of('\n') == text.npos &&
+           path.find_first_of("\"\n\\") == path.npos;
+}
+
+std::string MarkedName(char tag, size_t inclusion, std::string_view path) {
+    std::string name(kSpliceMarker);
+    name += tag;
+    name += std::to_string(inclusion);
+    name += kPathStart;
+    name += path;
+    return name;
+}
+
 bool InLineDirective(const std::string& text, size_t at) {
     const size_t start = text.rfind('\n', at) + 1;  // npos + 1 = 0
     constexpr std::string_view kLine = "#line ";
@@ -25,20 +40,8 @@ bool InLineDirective(const std::string& text, size_t at) {
     return true;
 }
 
-}  // namespace
-
-bool ServableAsBlank(std::string_view text, std::string_view path) {
-    return text.size() >= kMinBlankInclusion && text.find_first_not_of('\n') == text.npos &&
-           path.find_first_of("\"\n\\") == path.npos;
-}
-
 std::string BlankInclusionName(size_t inclusion, std::string_view path) {
-    std::string name(kSpliceMarker);
-    name += kBlankTag;
-    name += std::to_string(inclusion);
-    name += kPathStart;
-    name += path;
-    return name;
+    return MarkedName(kBlankTag, inclusion, path);
 }
 
 bool RestoreBlankInclusions(std::string& text, const std::vector<uint32_t>& newlines) {

@@ -29,6 +29,13 @@ bool ServableAsBlank(std::string_view text, std::string_view path);
 // plan (the splice marker's prefix, hlsl/splice.h, which no text of a spliced program spells).
 std::string BlankInclusionName(size_t inclusion, std::string_view path);
 
+// An inclusion's name marked with `tag` and its index in the plan: `qKsP<tag><index>|<path>`
+// (blank inclusions here, remembered outputs in hlsl/output_memo.h).
+std::string MarkedName(char tag, size_t inclusion, std::string_view path);
+// Whether `at` (a quote) ends a `#line <digits> ` that starts a line of `text`: where glslang's
+// output prints a marked name.
+bool InLineDirective(const std::string& text, size_t at);
+
 // glslang's output for a program whose blank inclusions were served as one line break each,
 // given back as glslang prints them whole: `newlines` by inclusion index, 0 where the inclusion
 // was served as it is. False, with `text` unchanged, where a marked name is missing, out of

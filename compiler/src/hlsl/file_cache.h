@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "hlsl/output_memo.h"
 #include "hlsl/plan_memo.h"
 #include "kiln/source.h"
 
@@ -74,6 +75,8 @@ class FileCache {
         const std::vector<std::shared_ptr<const PpSkeleton>>& files);
     // The inactive-text plan's walks of these files, remembered (hlsl/plan_memo.h).
     PlanMemo& plan_memo() { return plan_memo_; }
+    // glslang's outputs for those walks, remembered (hlsl/output_memo.h).
+    OutputMemo& output_memo() { return output_memo_; }
     // Include resolutions remembered (Includer::Resolve, whose answers depend only on the files
     // here and its key): the path, "" when not found, nullopt when not asked yet. Thread-safe.
     std::optional<std::string> Resolved(const std::string& key) const;
@@ -109,6 +112,7 @@ class FileCache {
     std::map<const IncludedDefines*, SpliceWordsEntry> splice_words_;
     std::map<std::string, std::string> resolved_;
     PlanMemo plan_memo_;
+    OutputMemo output_memo_;
     // By the files' skeletons, sorted (a file changed is scanned again, so its set is new).
     std::map<std::vector<const PpSkeleton*>, std::shared_ptr<const IncludedDefines>> defines_;
 };

@@ -90,12 +90,55 @@ void ServeBlankInclusions(InactiveTextPlan& plan) {
     }
 }
 
+// The walks whose output is remembered (hlsl/output_memo.h), where their marks hold: by
+// inclusion, whether the file's output is replayed (it is then not served).
+std::vector<char> KeepOutputs(InactiveTextPlan& plan, OutputMemo& memo) {
+    std::vector<char> replayed(plan.inclusions.size(), 0);
+    std::vector<OutputMark> kept;
+    for (OutputMark& m : plan.outputs) {
+        if (m.count == 0 || m.inclusion + m.count > plan.inclusions.size())
+            continue;
+        if (m.output) {
+            const std::shared_ptr<const WalkWords> words = memo.Words(m.walk.get());
+            if (!words || !words->usable)
+                continue;
+            std::fill(replayed.begin() + m.inclusion, replayed.begin() + m.inclusion + m.count, 1);
+        }
+        kept.push_back(std::move(m));
+    }
+    plan.outputs = std::move(kept);
+    return replayed;
+}
+
+// After the texts are served: a replayed walk's root served as its directives, and the files it
+// includes not asked for; any other marked root served under its marked name, to be recorded,
+// unless it is served blank.
+void MarkOutputs(InactiveTextPlan& plan, OutputMemo& memo) {
+    std::vector<OutputMark> kept;
+    plan.output_marks.assign(plan.inclusions.size(), 0);
+    for (OutputMark& m : plan.outputs) {
+        if (m.output) {
+            plan.inclusions[m.inclusion].text = ReplayedText(*memo.Words(m.walk.get()), *m.output);
+        } else if (m.inclusion < plan.blank_inclusions.size() &&
+                   plan.blank_inclusions[m.inclusion] > 0) {
+            continue;
+        }
+        kept.push_back(std::move(m));
+        plan.output_marks[kept.back().inclusion] = static_cast<uint32_t>(kept.size());
+    }
+    plan.outputs = std::move(kept);
+    if (plan.outputs.empty())
+        plan.output_marks.clear();
+}
+
 }  // namespace
 
-bool MakeWhole(std::string& text, const InactiveTextPlan& plan) {
+bool MakeWhole(std::string& text, const InactiveTextPlan& plan, OutputMemo* memo) {
     if (!plan.blank_inclusions.empty() && !RestoreBlankInclusions(text, plan.blank_inclusions))
         return false;
-    return plan.spliced_runs == 0 || Unsplice(text, plan.splices);
+    if (plan.spliced_runs != 0 && !Unsplice(text, plan.splices))
+        return false;
+    return RestoreOutputs(text, plan.outputs, memo);
 }
 
 std::string BlankLines(std::string_view text,
@@ -155,8 +198,14 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
         }
         if (!splices.empty())
             plan.splices.resize(plan.inclusions.size());
+        // The files of a walk whose output is replayed are not served.
+        if (splices.empty())
+            plan.outputs.clear();
+        const std::vector<char> replayed = KeepOutputs(plan, files.output_memo());
         for (size_t i = 0; i < s.pending.size(); ++i) {
             Pending& p = s.pending[i];
+            if (replayed[p.index])
+                continue;
             if (splices.empty() || splices[i].runs.empty()) {
                 plan.inclusions[p.index].text =
                     Blanked(p.lean->text, p.lean->line_starts, p.blank, plan.blanked_lines);
@@ -169,8 +218,10 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
             plan.spliced_runs += c.runs.size();
         }
         // No text of the program spells the marker's prefix where splices were chosen.
-        if (!splices.empty())
+        if (!splices.empty()) {
             ServeBlankInclusions(plan);
+            MarkOutputs(plan, files.output_memo());
+        }
     }
     plan.main_text = Blanked(main, skeleton.line_starts, f.blank, plan.blanked_lines);
     return plan;

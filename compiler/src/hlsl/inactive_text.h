@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "hlsl/includer.h"
+#include "hlsl/output_memo.h"
 
 namespace kiln::hlsl {
 
@@ -63,6 +64,11 @@ struct InactiveTextPlan {
     // With PlanOptions::splice: by inclusion, how many line breaks a blank inclusion served as
     // one holds (hlsl/blank_inclusions.h), 0 where it was served as it is; empty where none was.
     std::vector<uint32_t> blank_inclusions;
+    // With PlanOptions::splice: the walks whose output is remembered (hlsl/output_memo.h), by
+    // inclusion, replayed or to be recorded; and by inclusion, 1 + the index of its mark there
+    // (0 where none), empty where there is none.
+    std::vector<OutputMark> outputs;
+    std::vector<uint32_t> output_marks;
 
     // True when glslang's output is the same whatever PlanOptions::unknown are defined to (for
     // sources that differ only in their #define lines): the plan reached the end, and decided
@@ -106,9 +112,10 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
                                   const PlanOptions& options = {});
 
 // glslang's output for `plan`'s texts made as it is for the program's: the blank inclusions
-// given back, then the spliced runs. False where the output is not as they expect (the program
-// is then preprocessed again without PlanOptions::splice).
-bool MakeWhole(std::string& text, const InactiveTextPlan& plan);
+// given back, then the spliced runs, then the remembered outputs; with `memo`, the outputs the
+// plan marked to be recorded are kept there. False where the output is not as they expect (the
+// program is then preprocessed again without PlanOptions::splice).
+bool MakeWhole(std::string& text, const InactiveTextPlan& plan, OutputMemo* memo = nullptr);
 
 // `text` with the physical lines of each of `ranges` (inclusive, ascending, from a PpSkeleton's
 // `line_starts`) blanked: each keeps only its line break, and a last line without one stays

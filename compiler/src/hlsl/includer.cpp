@@ -6,6 +6,8 @@
 
 #include "hlsl/blank_inclusions.h"
 #include "hlsl/inactive_text.h"
+#include "hlsl/output_memo.h"
+#include "hlsl/plan_memo.h"
 #include "hlsl/unity_versions.h"
 
 namespace kiln::hlsl {
@@ -110,6 +112,24 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
                 return new IncludeResult(BlankInclusionName(index, path), text.data(), text.size(),
                                          nullptr);
             }
+            if (index < plan_->output_marks.size() && plan_->output_marks[index] > 0) {
+                const OutputMark& m = plan_->outputs[plan_->output_marks[index] - 1];
+                if (m.output) {
+                    // Its output is given back whole: the files it includes are not asked for,
+                    // but read as far as the compile's dependencies go.
+                    requests_ = index + m.count;
+                    from_plan_ += m.count - 1;
+                    std::vector<std::shared_ptr<const SourceFile>> read(m.count);
+                    for (const Pending& p : m.walk->pending)
+                        read[std::min(p.index, m.count - 1)] = p.file;
+                    for (size_t i = 1; i < read.size(); ++i) {  // in the order glslang reads
+                        if (read[i])
+                            held_.push_back(read[i]);
+                    }
+                }
+                return new IncludeResult(OutputMarkName(index, path), text.data(), text.size(),
+                                         nullptr);
+            }
         } else {
             plan_ = nullptr;  // glslang left the plan: as they are from here on
         }
@@ -120,13 +140,14 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
 glslang::TShader::Includer::IncludeResult* Includer::includeLocal(const char* header,
                                                                   const char* includer,
                                                                   size_t depth) {
-    return Serve(Resolve(header, includer ? includer : "", true), depth);
+    return Serve(Resolve(header, std::string(UnmarkedName(includer ? includer : "")), true), depth);
 }
 
 glslang::TShader::Includer::IncludeResult* Includer::includeSystem(const char* header,
                                                                    const char* includer,
                                                                    size_t depth) {
-    return Serve(Resolve(header, includer ? includer : "", false), depth);
+    return Serve(Resolve(header, std::string(UnmarkedName(includer ? includer : "")), false),
+                 depth);
 }
 
 std::vector<std::string> Includer::Served() const {

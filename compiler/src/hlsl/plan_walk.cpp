@@ -151,9 +151,20 @@ void WalkRemembered(PlanWalk& s,
                     const std::shared_ptr<const SourceFile>& file) {
     PlanMemo& memo = s.files.plan_memo();
     const std::string context = s.memo_context + std::to_string(s.depth);
-    if (const auto walk = memo.Find(file, context, s.macros); walk && Replay(s, *walk)) {
-        ++s.plan.remembered_walks;
-        return;
+    if (const auto walk = memo.Find(file, context, s.macros)) {
+        // The key of its output is of the macros at the #include, before the replay writes.
+        const size_t root = s.plan.inclusions.size();
+        std::optional<OutputKey> key;
+        if (s.options.splice && s.options.drop_needless)
+            key = s.files.output_memo().Key(walk, s.macros);
+        if (Replay(s, *walk)) {
+            ++s.plan.remembered_walks;
+            if (key) {
+                s.plan.outputs.push_back({root, walk->paths.size(), walk, *key,
+                                          s.files.output_memo().Find(walk.get(), *key)});
+            }
+            return;
+        }
     }
     if (!memo.Open(file, context)) {
         Walk(s, path, file);

@@ -1,7 +1,10 @@
 #include "hlsl/pp_macros.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
+
+#include <xxhash.h>
 
 #include "hlsl/identifier.h"
 
@@ -292,6 +295,7 @@ bool PpMacros::Define(std::string_view rest) {
         const size_t close = body.find(')');
         if (close == std::string_view::npos)
             return false;
+        m.params = std::string(body.substr(0, close + 1));
         body.remove_prefix(close + 1);
     }
     while (!body.empty() && IsSpace(body.front()))
@@ -299,6 +303,7 @@ bool PpMacros::Define(std::string_view rest) {
     while (!body.empty() && IsSpace(body.back()))
         body.remove_suffix(1);
     m.body = std::string(body);
+    m.name_hash = WordHash(name);
     unknown_.erase(std::string(name));
     defined_[std::string(name)] = std::move(m);
     Wrote(name);
@@ -343,17 +348,17 @@ MacroState PpMacros::Lookup(std::string_view name) const {
 
 MacroValue PpMacros::Value(const std::string& name) const {
     if (pinned_.count(name))
-        return {MacroState::kUnknown, false, {}};
+        return {MacroState::kUnknown, false, {}, {}};
     return Held(name);
 }
 
 MacroValue PpMacros::Held(const std::string& name) const {
     if (unknown_.count(name))
-        return {MacroState::kUnknown, false, {}};
+        return {MacroState::kUnknown, false, {}, {}};
     const auto it = defined_.find(name);
     if (it == defined_.end())
         return {};
-    return {MacroState::kDefined, it->second.function_like, it->second.body};
+    return {MacroState::kDefined, it->second.function_like, it->second.body, it->second.params};
 }
 
 void PpMacros::Set(const std::string& name, const MacroValue& value) {
@@ -362,6 +367,8 @@ void PpMacros::Set(const std::string& name, const MacroValue& value) {
         Macro& m = defined_[name];
         m.function_like = value.function_like;
         m.body = value.body;
+        m.params = value.params;
+        m.name_hash = WordHash(name);
     } else {
         defined_.erase(name);
         if (value.state == MacroState::kUnknown)
@@ -400,6 +407,90 @@ void PpMacros::NoteReads(const std::vector<std::pair<std::string, MacroValue>>& 
         if (log.seen.insert(name).second)
             log.reads.emplace_back(name, value);
     }
+}
+
+uint64_t WordHash(std::string_view word) {
+    const uint64_t h = XXH3_64bits(word.data(), word.size());
+    return h == 0 ? 1 : h;
+}
+
+void WordHashSet::Insert(std::string_view word) {
+    if (2 * (size_ + 1) > slots_.size()) {
+        std::vector<uint64_t> old(std::max<size_t>(64, 2 * slots_.size()), 0);
+        old.swap(slots_);
+        size_ = 0;
+        for (const uint64_t h : old) {
+            if (h == 0)
+                continue;
+            size_t i = h & (slots_.size() - 1);
+            while (slots_[i] != 0)
+                i = (i + 1) & (slots_.size() - 1);
+            slots_[i] = h;
+            ++size_;
+        }
+    }
+    const uint64_t h = WordHash(word);
+    size_t i = h & (slots_.size() - 1);
+    while (slots_[i] != 0) {
+        if (slots_[i] == h)
+            return;
+        i = (i + 1) & (slots_.size() - 1);
+    }
+    slots_[i] = h;
+    ++size_;
+}
+
+bool WordHashSet::Has(uint64_t hash) const {
+    if (slots_.empty())
+        return false;
+    for (size_t i = hash & (slots_.size() - 1);; i = (i + 1) & (slots_.size() - 1)) {
+        if (slots_[i] == hash)
+            return true;
+        if (slots_[i] == 0)
+            return false;
+    }
+}
+
+std::optional<std::pair<uint64_t, uint64_t>> PpMacros::Fingerprint(const WordHashSet& words) const {
+    for (const std::unordered_set<std::string>* names : {&unknown_, &pinned_}) {
+        for (const std::string& name : *names) {
+            if (words.Has(std::string_view(name)))
+                return std::nullopt;
+        }
+    }
+    // A sum of each definition's hashes: the table's order does not matter.
+    uint64_t a = 0, b = 0;
+    std::unordered_set<uint64_t> reached;  // words of bodies outside `words`
+    std::vector<std::string_view> todo;
+    std::string one;
+    const auto add = [&](const std::string& name, const Macro& m) {
+        one.assign(name);
+        one += m.function_like ? '\1' : '\2';
+        one += m.params;
+        one += '\0';
+        one += m.body;
+        a += XXH3_64bits_withSeed(one.data(), one.size(), 1);
+        b += XXH3_64bits_withSeed(one.data(), one.size(), 2);
+        ForEachWord(m.body, [&](std::string_view w) {
+            const uint64_t h = WordHash(w);
+            if (!words.Has(h) && reached.insert(h).second)
+                todo.push_back(w);
+        });
+    };
+    for (const auto& [name, m] : defined_) {
+        if (words.Has(m.name_hash))
+            add(name, m);
+    }
+    std::string key;
+    while (!todo.empty()) {
+        key.assign(todo.back());
+        todo.pop_back();
+        if (unknown_.count(key) || pinned_.count(key))
+            return std::nullopt;
+        if (const auto it = defined_.find(key); it != defined_.end())
+            add(it->first, it->second);
+    }
+    return std::make_pair(a, b);
 }
 
 std::optional<bool> PpMacros::Ifdef(std::string_view rest) const {

@@ -7,6 +7,7 @@
 #ifndef KILN_HLSL_PP_MACROS_H_
 #define KILN_HLSL_PP_MACROS_H_
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,13 +25,32 @@ std::string_view DirectiveMacroName(std::string_view rest);
 
 enum class MacroState { kUndefined, kDefined, kUnknown };
 
+// A word's 64-bit hash, as WordHashSet keeps it.
+uint64_t WordHash(std::string_view word);
+
+// A set of words kept as their hashes (for PpMacros::Fingerprint): one probe per word asked,
+// and a false "in the set" only where two words' hashes collide.
+class WordHashSet {
+  public:
+    void Insert(std::string_view word);
+    bool Has(uint64_t hash) const;
+    bool Has(std::string_view word) const { return Has(WordHash(word)); }
+    size_t size() const { return size_; }
+
+  private:
+    std::vector<uint64_t> slots_;  // 0 is empty; a hash of 0 is kept as 1
+    size_t size_ = 0;
+};
+
 // What the table holds for one name.
 struct MacroValue {
     MacroState state = MacroState::kUndefined;
     bool function_like = false;  // kDefined
     std::string body;            // kDefined: the text after the name (and parameters), trimmed
+    std::string params;          // kDefined and function-like: the parameters, "(" to ")"
     bool operator==(const MacroValue& o) const {
-        return state == o.state && function_like == o.function_like && body == o.body;
+        return state == o.state && function_like == o.function_like && body == o.body &&
+               params == o.params;
     }
 };
 
@@ -72,6 +92,12 @@ class PpMacros {
     // Logs reads made elsewhere (a stretch replayed from a memo) into the open log, if any.
     void NoteReads(const std::vector<std::pair<std::string, MacroValue>>& reads);
 
+    // A fingerprint of what the table holds for the names in `words` (hlsl/output_memo.h): each
+    // one defined there with its definition, closed over the words of those definitions' bodies;
+    // the same table restricted to those names gives the same fingerprint, whatever its order.
+    // nullopt where one of them is not known (pinned or unknown).
+    std::optional<std::pair<uint64_t, uint64_t>> Fingerprint(const WordHashSet& words) const;
+
     // #if / #elif's expression; #ifdef's operand (#ifndef is its negation).
     std::optional<bool> If(std::string_view expression) const;
     std::optional<bool> Ifdef(std::string_view rest) const;
@@ -80,6 +106,8 @@ class PpMacros {
     struct Macro {
         bool function_like = false;
         std::string body;
+        std::string params;
+        uint64_t name_hash = 0;  // WordHash of its name
     };
     void Wrote(std::string_view name);
 

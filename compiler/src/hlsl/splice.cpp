@@ -216,6 +216,8 @@ bool Unsplice(std::string& text, const std::vector<std::shared_ptr<const SpliceC
     for (size_t p = text.find(kSpliceMarker); p != std::string::npos;
          p = text.find(kSpliceMarker, p + 1)) {
         size_t i = p + kSpliceMarker.size(), k = 0, r = 0;
+        if (i < text.size() && text[i] == kOutputMarkTag)
+            continue;  // a remembered output's marked name (hlsl/output_memo.h), given back after
         if ((p > 0 && IdentChar(text[p - 1])) || !read_number(i, k) || i >= text.size() ||
             text[i++] != 'x' || !read_number(i, r) || (i < text.size() && IdentChar(text[i])))
             return false;

@@ -147,6 +147,9 @@ std::vector<InclusionSplice> ChooseSplices(FileCache& cache,
 
 // The marker word's prefix; a program whose texts spell it is not spliced.
 inline constexpr std::string_view kSpliceMarker = "qKsP";
+// The letter after the prefix of a remembered output's marked name (hlsl/output_memo.h), which
+// Unsplice leaves to RestoreOutputs.
+inline constexpr char kOutputMarkTag = 'o';
 
 // `file`'s text served: the physical lines of `blank` (inclusive, ascending) blanked as
 // BlankLines does, and each of `runs` (indices into choice.runs, ascending, none on a blanked

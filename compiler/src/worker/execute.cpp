@@ -100,7 +100,8 @@ frontend::StageOutput PreprocessPlanned(const Request& r,
     includer.UsePlan(&plan);
     frontend::StageOutput out = frontend::Preprocess(r.stage, plan.main_text, r.name, includer);
     includer.UsePlan(nullptr);
-    if (out.ok && out.info_log.empty() && hlsl::MakeWhole(out.text, plan))
+    if (out.ok && out.info_log.empty() &&
+        hlsl::MakeWhole(out.text, plan, &context.files.output_memo()))
         return out;
     options.drop_needless = false;
     options.splice = false;
