@@ -9,7 +9,6 @@ namespace {
 
 // A marked name, as the prologue's #line prints it: `"qKsPb<index>|<path>"`.
 constexpr char kBlankTag = 'b';
-constexpr char kPathStart = '|';
 
 }  // namespace
 
@@ -22,9 +21,16 @@ std::string MarkedName(char tag, size_t inclusion, std::string_view path) {
     std::string name(kSpliceMarker);
     name += tag;
     name += std::to_string(inclusion);
-    name += kPathStart;
+    name += kMarkedPathStart;
     name += path;
     return name;
+}
+
+std::string_view UnmarkedName(std::string_view name) {
+    if (name.substr(0, kSpliceMarker.size()) != kSpliceMarker)
+        return name;
+    const size_t bar = name.find(kMarkedPathStart);
+    return bar == std::string_view::npos ? name : name.substr(bar + 1);
 }
 
 bool InLineDirective(const std::string& text, size_t at) {
@@ -64,7 +70,7 @@ bool RestoreBlankInclusions(std::string& text, const std::vector<uint32_t>& newl
         if (r.ec != std::errc() || r.ptr == digits || index != next || !InLineDirective(text, p))
             return false;
         const size_t path = r.ptr - text.data();
-        if (path >= text.size() || text[path] != kPathStart)
+        if (path >= text.size() || text[path] != kMarkedPathStart)
             return false;
         const size_t end = text.find('"', path + 1);
         constexpr std::string_view kAfter = "\"\n\n#line ";

@@ -32,6 +32,10 @@ std::string BlankInclusionName(size_t inclusion, std::string_view path);
 // An inclusion's name marked with `tag` and its index in the plan: `qKsP<tag><index>|<path>`
 // (blank inclusions here, remembered outputs in hlsl/output_memo.h).
 std::string MarkedName(char tag, size_t inclusion, std::string_view path);
+// `name` without its mark, where it is a marked name.
+std::string_view UnmarkedName(std::string_view name);
+// What ends a marked name's mark.
+inline constexpr char kMarkedPathStart = '|';
 // Whether `at` (a quote) ends a `#line <digits> ` that starts a line of `text`: where glslang's
 // output prints a marked name.
 bool InLineDirective(const std::string& text, size_t at);

@@ -99,8 +99,8 @@ std::vector<char> KeepOutputs(InactiveTextPlan& plan, OutputMemo& memo) {
         if (m.count == 0 || m.inclusion + m.count > plan.inclusions.size())
             continue;
         if (m.output) {
-            const std::shared_ptr<const WalkWords> words = memo.Words(m.walk.get());
-            if (!words || !words->usable)
+            m.words = memo.Words(m.walk.get());
+            if (!m.words || !m.words->usable)
                 continue;
             std::fill(replayed.begin() + m.inclusion, replayed.begin() + m.inclusion + m.count, 1);
         }
@@ -113,12 +113,12 @@ std::vector<char> KeepOutputs(InactiveTextPlan& plan, OutputMemo& memo) {
 // After the texts are served: a replayed walk's root served as its directives, and the files it
 // includes not asked for; any other marked root served under its marked name, to be recorded,
 // unless it is served blank.
-void MarkOutputs(InactiveTextPlan& plan, OutputMemo& memo) {
+void MarkOutputs(InactiveTextPlan& plan) {
     std::vector<OutputMark> kept;
     plan.output_marks.assign(plan.inclusions.size(), 0);
     for (OutputMark& m : plan.outputs) {
         if (m.output) {
-            plan.inclusions[m.inclusion].text = ReplayedText(*memo.Words(m.walk.get()), *m.output);
+            plan.inclusions[m.inclusion].text = ReplayedText(*m.words, *m.output);
         } else if (m.inclusion < plan.blank_inclusions.size() &&
                    plan.blank_inclusions[m.inclusion] > 0) {
             continue;
@@ -220,7 +220,7 @@ InactiveTextPlan PlanInactiveText(std::string_view main,
         // No text of the program spells the marker's prefix where splices were chosen.
         if (!splices.empty()) {
             ServeBlankInclusions(plan);
-            MarkOutputs(plan, files.output_memo());
+            MarkOutputs(plan);
         }
     }
     plan.main_text = Blanked(main, skeleton.line_starts, f.blank, plan.blanked_lines);

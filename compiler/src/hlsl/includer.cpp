@@ -7,7 +7,6 @@
 #include "hlsl/blank_inclusions.h"
 #include "hlsl/inactive_text.h"
 #include "hlsl/output_memo.h"
-#include "hlsl/plan_memo.h"
 #include "hlsl/unity_versions.h"
 
 namespace kiln::hlsl {
@@ -119,13 +118,7 @@ glslang::TShader::Includer::IncludeResult* Includer::Serve(const std::string& pa
                     // but read as far as the compile's dependencies go.
                     requests_ = index + m.count;
                     from_plan_ += m.count - 1;
-                    std::vector<std::shared_ptr<const SourceFile>> read(m.count);
-                    for (const Pending& p : m.walk->pending)
-                        read[std::min(p.index, m.count - 1)] = p.file;
-                    for (size_t i = 1; i < read.size(); ++i) {  // in the order glslang reads
-                        if (read[i])
-                            held_.push_back(read[i]);
-                    }
+                    held_.insert(held_.end(), m.words->nested.begin(), m.words->nested.end());
                 }
                 return new IncludeResult(OutputMarkName(index, path), text.data(), text.size(),
                                          nullptr);

@@ -14,10 +14,6 @@
 namespace kiln::hlsl {
 namespace {
 
-// A marked name, as a #line of glslang's output prints it: `"qKsPo<index>|<path>"`.
-constexpr char kOutputTag = kOutputMarkTag;
-constexpr char kPathStart = '|';
-
 // Whether the lines of a walk's file that glslang reads: those outside its blanked ranges.
 class ReadLines {
   public:
@@ -82,7 +78,10 @@ bool Flatten(Flattening& f, size_t index) {
                     f.out.directives += '\n';
                 break;
             case PpKind::kInclude:
-                if (f.next >= f.by_index.size() || !Flatten(f, f.next++))
+                if (f.next >= f.by_index.size())
+                    return false;
+                f.out.nested.push_back(f.by_index[f.next]->file);
+                if (!Flatten(f, f.next++))
                     return false;
                 break;
             default:
@@ -150,7 +149,7 @@ bool Spacing(std::string_view text, char& last) {
     last = 0;
     // The lines from the last: [start, end), end at a line break or the text's end.
     for (size_t end = text.size(); end > 0;) {
-        const size_t before = end > 0 ? text.rfind('\n', end - 1) : std::string_view::npos;
+        const size_t before = text.rfind('\n', end - 1);
         const size_t start = before == std::string_view::npos ? 0 : before + 1;
         const std::string_view line = text.substr(start, end - start);
         const size_t c = line.find_last_not_of(" \t\r");
@@ -229,7 +228,7 @@ void OutputMemo::Add(const OutputMark& mark, std::string output) {
     std::lock_guard<std::mutex> lock(mu_);
     const auto it = walks_.find(mark.walk.get());
     if (it == walks_.end() || it->second.outputs.size() >= kMaxOutputsPerWalk ||
-        bytes_ + output.size() > kMaxBytes)
+        bytes_ + kept->text.size() > kMaxBytes)
         return;
     for (const auto& entry : it->second.outputs) {
         if (entry.first == mark.key)
@@ -249,20 +248,13 @@ std::string ReplayedText(const WalkWords& words, const KeptOutput& output) {
 }
 
 std::string OutputMarkName(size_t inclusion, std::string_view path) {
-    return MarkedName(kOutputTag, inclusion, path);
-}
-
-std::string_view UnmarkedName(std::string_view name) {
-    if (name.substr(0, kSpliceMarker.size()) != kSpliceMarker)
-        return name;
-    const size_t bar = name.find(kPathStart);
-    return bar == std::string_view::npos ? name : name.substr(bar + 1);
+    return MarkedName(kOutputMarkTag, inclusion, path);
 }
 
 bool RestoreOutputs(std::string& text, const std::vector<OutputMark>& marks, OutputMemo* memo) {
     if (marks.empty())
         return true;
-    const std::string prefix = "\"" + std::string(kSpliceMarker) + kOutputTag;
+    const std::string prefix = "\"" + std::string(kSpliceMarker) + kOutputMarkTag;
     size_t added = 0;
     for (const OutputMark& m : marks)
         added += m.output ? m.output->text.size() : 0;
@@ -278,8 +270,9 @@ bool RestoreOutputs(std::string& text, const std::vector<OutputMark>& marks, Out
         if (r.ec != std::errc() || r.ptr == digits || !InLineDirective(text, p))
             return false;
         const size_t path = r.ptr - text.data();
-        const size_t end = path < text.size() && text[path] == kPathStart ? text.find('"', path + 1)
-                                                                          : std::string::npos;
+        const size_t end = path < text.size() && text[path] == kMarkedPathStart
+                               ? text.find('"', path + 1)
+                               : std::string::npos;
         if (end == std::string::npos || end + 1 >= text.size() || text[end + 1] != '\n')
             return false;
         const auto m =

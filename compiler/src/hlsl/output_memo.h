@@ -31,10 +31,12 @@
 #include <vector>
 
 #include "hlsl/pp_macros.h"
+#include "kiln/source.h"
 
 namespace kiln::hlsl {
 
 struct IncludeWalk;
+struct WalkWords;
 
 using OutputKey = std::pair<uint64_t, uint64_t>;
 
@@ -51,13 +53,14 @@ struct KeptOutput {
 
 // A walk whose output the plan remembers: `inclusion` is its root in the plan's inclusions, and
 // `count` the inclusions it makes (the root's own first). With `output`, the kept output is
-// replayed; without, glslang's output is kept after it runs.
+// replayed (served as `words` says); without, glslang's output is kept after it runs.
 struct OutputMark {
     size_t inclusion = 0;
     size_t count = 0;
     std::shared_ptr<const IncludeWalk> walk;
     OutputKey key;
     std::shared_ptr<const KeptOutput> output;
+    std::shared_ptr<const WalkWords> words;  // with `output`
 };
 
 // What a walk's output depends on besides the macros, made once per walk.
@@ -66,6 +69,8 @@ struct WalkWords {
     WordHashSet words;        // of its read lines
     bool names_file = false;  // __FILE__ is one
     std::string directives;   // its #define, #undef and #pragma lines, in the order read
+    // The files its root includes, in the order glslang reads them (a replay's dependencies).
+    std::vector<std::shared_ptr<const SourceFile>> nested;
 };
 
 class OutputMemo {
@@ -103,8 +108,6 @@ std::string ReplayedText(const WalkWords& words, const KeptOutput& output);
 // The name a marked root is served under: `path` marked with its inclusion index (the splice
 // marker's prefix, which no text of a spliced program spells).
 std::string OutputMarkName(size_t inclusion, std::string_view path);
-// `name` without its mark, where it is a marked name (an output's or a blank inclusion's).
-std::string_view UnmarkedName(std::string_view name);
 
 // glslang's output for a plan with `marks` (sorted by inclusion), after its blank inclusions and
 // splices were given back: each replayed walk's output put in, each marked name given back, and

@@ -161,7 +161,7 @@ void WalkRemembered(PlanWalk& s,
             ++s.plan.remembered_walks;
             if (key) {
                 s.plan.outputs.push_back({root, walk->paths.size(), walk, *key,
-                                          s.files.output_memo().Find(walk.get(), *key)});
+                                          s.files.output_memo().Find(walk.get(), *key), nullptr});
             }
             return;
         }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "frontend/glslang_stage.h"
+#include "hlsl/blank_inclusions.h"
 #include "hlsl/file_cache.h"
 #include "hlsl/inactive_text.h"
 #include "hlsl/includer.h"
