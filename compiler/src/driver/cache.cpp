@@ -3,7 +3,6 @@
 #include <sys/stat.h>
 
 #include <chrono>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
@@ -32,10 +31,13 @@ constexpr uint32_t kSpirvMagic = 0x07230203;
 constexpr int64_t kStaleTemporarySeconds = 24 * 60 * 60;
 
 std::string HexOf(const XXH128_hash_t& h) {
-    char buf[33];
-    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
-                  static_cast<unsigned long long>(h.low64));
-    return buf;
+    static constexpr char kDigits[] = "0123456789abcdef";
+    std::string out(32, '0');
+    for (int i = 0; i < 16; ++i) {
+        out[size_t(15 - i)] = kDigits[(h.high64 >> (4 * i)) & 0xf];
+        out[size_t(31 - i)] = kDigits[(h.low64 >> (4 * i)) & 0xf];
+    }
+    return out;
 }
 
 }  // namespace
@@ -75,7 +77,13 @@ void ForEachCodePiece(const std::string& reduced, Piece piece) {
     size_t at = 0;
     while (at < n) {
         // Blank lines and indentation: one tight loop over them (most of a reduced text's lines
-        // are the blank lines removed functions leave).
+        // are the blank lines removed functions leave), eight line breaks at a time.
+        constexpr uint64_t kEightBreaks = 0x0a0a0a0a0a0a0a0aull;
+        uint64_t eight = 0;
+        while (at + 8 <= n && (std::memcpy(&eight, s + at, 8), eight == kEightBreaks))
+            at += 8;
+        if (at == n)
+            break;
         const char c = s[at];
         if (c == '\n' || c == ' ' || c == '\t' || c == '\r') {
             ++at;

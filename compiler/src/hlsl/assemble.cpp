@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string_view>
 
 #include "kiln/base/text.h"
 #include "kiln/pack/engine_names.h"
@@ -32,8 +33,14 @@ bool IsCgProgram(const AssembleInput& in) {
     return !in.blocks.empty() && in.blocks.back()->kind == shaderlab::ProgramKind::kCgProgram;
 }
 
-void Define(std::string& s, const std::string& name, const std::string& value) {
-    s += "#define " + name + (value.empty() ? std::string() : " " + value) + "\n";
+void Define(std::string& s, std::string_view name, std::string_view value) {
+    s += "#define ";
+    s += name;
+    if (!value.empty()) {
+        s += ' ';
+        s += value;
+    }
+    s += '\n';
 }
 
 }  // namespace
@@ -108,7 +115,11 @@ Macros PredefinedMacros(const AssembleInput& in) {
 }
 
 std::string Prelude(const AssembleInput& in) {
-    std::string s = "#line 1 \"" + std::string(kPreludeName) + "\"\n";
+    std::string s;
+    s.reserve(2048);  // the predefined macros are about 1.2 KB
+    s += "#line 1 \"";
+    s += kPreludeName;
+    s += "\"\n";
     auto undefined = [&](const std::string& name) {
         return std::find(in.undefines.begin(), in.undefines.end(), name) != in.undefines.end();
     };
@@ -118,7 +129,7 @@ std::string Prelude(const AssembleInput& in) {
     }
     for (const auto& [name, value] : in.defines) {
         if (!undefined(name))
-            Define(s, name, value.empty() ? "1" : value);
+            Define(s, name, value.empty() ? std::string_view("1") : std::string_view(value));
     }
     for (const std::string& kw : in.keywords)
         Define(s, kw, "1");
