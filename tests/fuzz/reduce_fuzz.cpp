@@ -1,7 +1,9 @@
 // libFuzzer target: the reduction to entry points (hlsl/reduce.h) on arbitrary text, as a worker
 // runs it over glslang's output. The reduced text keeps every line break (line numbers hold), the
 // tokens it returns are the tokenizer's for it (the rewrite reads them instead of tokenizing
-// again), and reducing to both entry points at once gives what reducing to each alone gives.
+// again), reducing to both entry points at once gives what reducing to each alone gives, and
+// reducing from the split of a start of the text that ends before a line break (a pass's
+// preamble) gives what splitting the whole text gives.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +29,23 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!kiln::hlsl::SameTokens(r.tokens, kiln::hlsl::Tokenize(r.text)))
             std::abort();
         if (kiln::hlsl::ReduceToEntryPoint(text, entries[e]).text != r.text)
+            std::abort();
+    }
+    const size_t cut = text.find('\n', text.size() / 2);
+    if (cut == std::string::npos)
+        return 0;
+    const std::string start = text.substr(0, cut);
+    const std::vector<kiln::hlsl::Token> head = kiln::hlsl::Tokenize(start);
+    const std::vector<kiln::hlsl::Token> after = kiln::hlsl::TokenizeAfter(text, cut, head);
+    if (!kiln::hlsl::SameTokens(after, kiln::hlsl::Tokenize(text)))
+        return 0;  // the start ends inside a token (a comment or string across the line break)
+    const auto prefix = kiln::hlsl::MakeReducePrefix(start, head);
+    const std::vector<kiln::hlsl::Reduced> from_prefix =
+        kiln::hlsl::ReduceToEntryPoints(text, after, entries, prefix.get());
+    for (size_t e = 0; e < both.size(); ++e) {
+        if (from_prefix[e].text != both[e].text ||
+            !kiln::hlsl::SameTokens(from_prefix[e].tokens,
+                                    kiln::hlsl::Tokenize(from_prefix[e].text)))
             std::abort();
     }
     return 0;

@@ -24,6 +24,7 @@
 
 #include "hlsl/file_cache.h"
 #include "hlsl/inactive_text.h"
+#include "hlsl/reduce.h"
 #include "hlsl/tokens.h"
 
 namespace kiln::hlsl {
@@ -58,6 +59,7 @@ struct Preamble {
     bool usable = false;  // false: this prefix cannot be shared (remembered so it is tried once)
     std::string output;   // glslang's output for the prefix, through the last line it printed
     std::vector<Token> tokens;  // Tokenize(output), for each program's reduction (TokenizeAfter)
+    std::shared_ptr<const ReducePrefix> reduce_prefix;  // MakeReducePrefix(output, tokens)
     std::vector<std::string> marks;  // the lines of `output` that directives printed, in order
     InactiveTextPlan served;         // the files the prefix includes, their directives only
     // The macro table where the prefix ends as #define lines, when the plan knows it exactly

@@ -50,11 +50,16 @@ std::string_view StringWord(std::string_view t) {
     return inside;
 }
 
-// Splits the tokens into top-level items: a function ends at the `}` closing its body, a
-// cbuffer, tbuffer or namespace at its `}`, anything else at a `;` outside brackets.
-Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
+// Splits the tokens from `first` on into top-level items, after `out`'s (which close every token
+// before `first`): a function ends at the `}` closing its body, a cbuffer, tbuffer or namespace
+// at its `}`, anything else at a `;` outside brackets. `closed`: the first token after the last
+// item closed (where a split of a longer text may go on from).
+void SplitItemsFrom(const std::string& text,
+                    const std::vector<Token>& tok,
+                    size_t first,
+                    Split& out,
+                    size_t* closed = nullptr) {
     const std::string_view s(text);
-    Split out;
     Item cur;
     bool open = false;
     int depth = 0;           // {} () [] nesting
@@ -62,7 +67,7 @@ Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
     bool saw_brace = false;
     bool type_decl = false;  // struct/cbuffer/...: not a function
     std::string_view last_ident, first_word;
-    for (size_t k = 0; k < tok.size(); ++k) {
+    for (size_t k = first; k < tok.size(); ++k) {
         const Token& t = tok[k];
         const std::string_view word = s.substr(t.begin, t.end - t.begin);
         if (!open) {
@@ -113,7 +118,13 @@ Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
             cur.is_function = is_function_end;
             out.items.push_back(cur);
             open = false;
+            if (closed != nullptr)
+                *closed = k + 1;
         }
+    }
+    if (open && closed != nullptr) {
+        out.words.resize(cur.first_word);  // the open item's: a longer text may close it later
+        return;
     }
     if (open) {
         cur.end = text.size();
@@ -121,11 +132,14 @@ Split SplitItems(const std::string& text, const std::vector<Token>& tok) {
         cur.end_token = tok.size();
         out.items.push_back(cur);
     }
-    for (size_t i = 0; i < out.items.size(); ++i) {
-        if (out.items[i].is_function)
-            out.functions[out.items[i].name].items.push_back(static_cast<uint32_t>(i));
+}
+
+// Function items by name, once every item is split.
+void NameFunctions(Split& split) {
+    for (size_t i = 0; i < split.items.size(); ++i) {
+        if (split.items[i].is_function)
+            split.functions[split.items[i].name].items.push_back(static_cast<uint32_t>(i));
     }
-    return out;
 }
 
 // Which items the entry point keeps: every declaration, and the functions named by a word of a
@@ -170,22 +184,29 @@ struct DirectiveLine {
     bool pragma = false;
 };
 
-// The directive lines of a text, in order: found once for every entry point's assembly.
-std::vector<DirectiveLine> DirectiveLines(const std::string& text) {
-    std::vector<DirectiveLine> out;
+// The directive lines of a text from byte `from` (a line's start) on, after `out`'s, in order:
+// found once for every entry point's assembly. `whole`: where the line after the last line
+// break starts (and an unfinished last line is left for a longer text).
+void DirectiveLinesFrom(const std::string& text,
+                        size_t from,
+                        std::vector<DirectiveLine>& out,
+                        size_t* whole = nullptr) {
     const char* s = text.data();
     const size_t n = text.size();
-    for (size_t i = 0; i < n;) {
+    for (size_t i = from; i < n;) {
         size_t j = i;
         while (j < n && (s[j] == ' ' || s[j] == '\t'))
             ++j;
         const void* nl = std::memchr(s + j, '\n', n - j);
         const size_t eol = nl ? static_cast<size_t>(static_cast<const char*>(nl) - s) : n;
+        if (eol == n && whole != nullptr)
+            return;  // an unfinished line: a longer text may go on with it
         if (j < eol && s[j] == '#')
             out.push_back({i, eol, text.compare(j + 1, 6, "pragma") == 0});
         i = eol + 1;
+        if (whole != nullptr)
+            *whole = i;
     }
-    return out;
 }
 
 // A kept span of the text [from, to), copied to the reduced text at `at`.
@@ -303,11 +324,37 @@ bool ReducedTokens(const std::string& out,
 
 }  // namespace
 
+struct ReducePrefix {
+    std::string text;  // the prefix: `split`'s words view it
+    Split split;       // the items it closes (no functions by name yet)
+    size_t next_token = 0;
+    std::vector<DirectiveLine> directives;  // of its finished lines
+    size_t next_line = 0;                   // where its unfinished line starts
+};
+
+std::shared_ptr<const ReducePrefix> MakeReducePrefix(const std::string& text,
+                                                     const std::vector<Token>& tokens) {
+    auto p = std::make_shared<ReducePrefix>();
+    p->text = text;
+    SplitItemsFrom(p->text, tokens, 0, p->split, &p->next_token);
+    DirectiveLinesFrom(p->text, 0, p->directives, &p->next_line);
+    return p;
+}
+
 std::vector<Reduced> ReduceToEntryPoints(const std::string& text,
                                          const std::vector<Token>& tokens,
-                                         const std::vector<std::string>& entry_points) {
-    Split split = SplitItems(text, tokens);
-    const std::vector<DirectiveLine> directives = DirectiveLines(text);
+                                         const std::vector<std::string>& entry_points,
+                                         const ReducePrefix* prefix) {
+    Split split;
+    std::vector<DirectiveLine> directives;
+    if (prefix != nullptr) {
+        split.items = prefix->split.items;
+        split.words = prefix->split.words;
+        directives = prefix->directives;
+    }
+    SplitItemsFrom(text, tokens, prefix ? prefix->next_token : 0, split);
+    NameFunctions(split);
+    DirectiveLinesFrom(text, prefix ? prefix->next_line : 0, directives);
     std::vector<Reduced> out(entry_points.size());
     for (size_t e = 0; e < entry_points.size(); ++e) {
         if (!split.functions.count(entry_points[e])) {

@@ -10,6 +10,7 @@
 #ifndef KILN_HLSL_REDUCE_H_
 #define KILN_HLSL_REDUCE_H_
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,11 +30,21 @@ struct Reduced {
 
 Reduced ReduceToEntryPoint(const std::string& preprocessed, const std::string& entry_point);
 
+// The split of a text's start into items, made once for every text that starts with it (a pass's
+// preamble, hlsl/preamble.h): the items it closes, their words and its directive lines.
+struct ReducePrefix;
+// For `text` and `tokens` = Tokenize(text), where a text that starts with `text` goes on with a
+// line break and its tokens start with `tokens` (TokenizeAfter).
+std::shared_ptr<const ReducePrefix> MakeReducePrefix(const std::string& text,
+                                                     const std::vector<Token>& tokens);
+
 // The same for each entry point, from `tokens` = Tokenize(preprocessed) (only their byte ranges
-// and identifier flags are read).
+// and identifier flags are read). With `prefix`, `preprocessed` and `tokens` start as the
+// prefix's did, and its split is taken instead of made again: the same result.
 std::vector<Reduced> ReduceToEntryPoints(const std::string& preprocessed,
                                          const std::vector<Token>& tokens,
-                                         const std::vector<std::string>& entry_points);
+                                         const std::vector<std::string>& entry_points,
+                                         const ReducePrefix* prefix = nullptr);
 
 }  // namespace kiln::hlsl
 

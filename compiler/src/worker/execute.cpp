@@ -165,14 +165,16 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     std::vector<std::string> entries = {r.entry};
     if (!r.second_entry.empty() && (for_both || StageFree(r, context, includer)))
         entries.push_back(r.second_entry);
-    // The shared prefix's tokens are made once, with the preamble.
-    const bool after =
-        preamble && out.text.compare(0, preamble->output.size(), preamble->output) == 0;
+    // The shared prefix's tokens and split into items are made once, with the preamble: where
+    // the program's output goes on from it with a line break (TokenizeAfter then starts with its
+    // tokens).
+    const size_t head = preamble ? preamble->output.size() : 0;
+    const bool after = preamble && preamble->reduce_prefix && out.text.size() > head &&
+                       out.text[head] == '\n' && out.text.compare(0, head, preamble->output) == 0;
     std::vector<hlsl::Reduced> reduced = hlsl::ReduceToEntryPoints(
         out.text,
-        after ? hlsl::TokenizeAfter(out.text, preamble->output.size(), preamble->tokens)
-              : hlsl::Tokenize(out.text),
-        entries);
+        after ? hlsl::TokenizeAfter(out.text, head, preamble->tokens) : hlsl::Tokenize(out.text),
+        entries, after ? preamble->reduce_prefix.get() : nullptr);
     bool changed = false;
     std::unordered_set<std::string> warned;  // a warning of code both entry points reach, once
     static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;

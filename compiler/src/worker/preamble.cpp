@@ -65,6 +65,7 @@ std::shared_ptr<const hlsl::Preamble> Make(const Request& r,
     p->served.complete = true;
     p->usable = true;
     p->tokens = hlsl::Tokenize(p->output);
+    p->reduce_prefix = hlsl::MakeReducePrefix(p->output, p->tokens);
     std::vector<uint32_t> lines;
     for (const auto& [number, line] : hlsl::PinnedDefines(prefix, pinned))
         lines.push_back(number);

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+#include <string>
+#include <vector>
+
 namespace kiln::hlsl {
 namespace {
 
@@ -91,6 +95,64 @@ TEST(Reduce, BothEntryPointsFromOneSplitMatchEachAlone) {
               "");
     EXPECT_NE(both[1].text.find("onlyFrag() {"), std::string::npos);
     EXPECT_EQ(both[1].text.find("Patch() {"), std::string::npos);
+}
+
+// A pass's preamble splits its prefix once (MakeReducePrefix); every program whose output goes on
+// from it with a line break is reduced from that split: the same texts, tokens and names as
+// splitting the whole text, wherever the prefix ends (inside a function, a cbuffer, a directive,
+// between items), for reached and missing entry points.
+TEST(Reduce, APrefixSplitOnceReducesAsTheWholeText) {
+    const std::string text =
+        "#line 1 \"a.shader\"\n"
+        "cbuffer C {\n float4 c;\n};\n"
+        "struct V { float4 p : POSITION; };\n"
+        "float Patch() { return 1; }\n"
+        "float shared(float x)\n{\n  return x;\n}\n"
+        "  #pragma fragment frag\n"
+        "static float g = shared(4);\n"
+        "float onlyFrag() {\n#line 40 \"b.cginc\"\n return 3; }\n"
+        "[patchconstantfunc(\"Patch\")] float4 vert(V v) : SV_POSITION\n{ return v.p * shared(2); "
+        "}\n"
+        "float4 frag() : SV_Target { return onlyFrag() + shared(1) + c.x; }\n"
+        "float unused() { return 0; }";
+    const std::vector<std::vector<std::string>> entry_sets = {{"vert", "frag"}, {"main"}};
+    size_t cuts = 0;
+    for (size_t cut = 0; cut < text.size(); ++cut) {
+        if (text[cut] != '\n')
+            continue;
+        ++cuts;
+        std::shared_ptr<const ReducePrefix> prefix;
+        std::vector<Token> head;
+        {
+            const std::string start = text.substr(0, cut);  // gone before the prefix is used
+            head = Tokenize(start);
+            prefix = MakeReducePrefix(start, head);
+        }
+        for (const auto& entries : entry_sets) {
+            const std::vector<Reduced> want = ReduceToEntryPoints(text, Tokenize(text), entries);
+            const std::vector<Reduced> got =
+                ReduceToEntryPoints(text, TokenizeAfter(text, cut, head), entries, prefix.get());
+            ASSERT_EQ(got.size(), want.size());
+            for (size_t e = 0; e < want.size(); ++e) {
+                EXPECT_EQ(got[e].text, want[e].text) << "cut at " << cut;
+                ASSERT_EQ(got[e].tokens.size(), want[e].tokens.size()) << "cut at " << cut;
+                for (size_t k = 0; k < want[e].tokens.size(); ++k) {
+                    const Token& g = got[e].tokens[k];
+                    const Token& w = want[e].tokens[k];
+                    EXPECT_TRUE(g.begin == w.begin && g.end == w.end && g.ident == w.ident &&
+                                g.text.data() == got[e].text.data() + w.begin)
+                        << "cut at " << cut << ", token " << k;
+                }
+                EXPECT_EQ(got[e].functions_if_entry_missing, want[e].functions_if_entry_missing)
+                    << "cut at " << cut;
+            }
+        }
+    }
+    EXPECT_EQ(cuts, 18u);
+    // The reduction itself: frag reaches onlyFrag and shared, not Patch or unused.
+    const std::vector<Reduced> r = ReduceToEntryPoints(text, Tokenize(text), {"frag"});
+    EXPECT_NE(r[0].text.find("onlyFrag() {"), std::string::npos);
+    EXPECT_EQ(r[0].text.find("unused()"), std::string::npos);
 }
 
 // The reduced text's tokens are made from the whole text's (the rewrite reads them): each must be
