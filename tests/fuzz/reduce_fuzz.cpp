@@ -3,7 +3,8 @@
 // tokens it returns are the tokenizer's for it (the rewrite reads them instead of tokenizing
 // again), reducing to both entry points at once gives what reducing to each alone gives, and
 // reducing from the split of a start of the text that ends before a line break (a pass's
-// preamble) gives what splitting the whole text gives.
+// preamble) gives what splitting the whole text gives; keeping every declaration keeps at least
+// as much, with the same guarantees.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -29,6 +30,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!kiln::hlsl::SameTokens(r.tokens, kiln::hlsl::Tokenize(r.text)))
             std::abort();
         if (kiln::hlsl::ReduceToEntryPoint(text, entries[e]).text != r.text)
+            std::abort();
+    }
+    // Keeping every declaration (the driver's names for a suggestion) keeps at least as much.
+    const std::vector<kiln::hlsl::Reduced> kept =
+        kiln::hlsl::ReduceToEntryPoints(text, kiln::hlsl::Tokenize(text), entries, nullptr, false);
+    for (size_t e = 0; e < kept.size(); ++e) {
+        if (std::count(kept[e].text.begin(), kept[e].text.end(), '\n') != lines ||
+            kept[e].text.size() < both[e].text.size() ||
+            !kiln::hlsl::SameTokens(kept[e].tokens, kiln::hlsl::Tokenize(kept[e].text)))
             std::abort();
     }
     const size_t cut = text.find('\n', text.size() / 2);

@@ -120,7 +120,7 @@ void CompileJob(CompileState& st, Job& job) {
             return;
         }
         AppendMessages(st, OwnMessages(reduced_log, o.response.info_log), job.diags, &task.reduced,
-                       &request.source);
+                       &request.source, &task);
         if (o.response.ok || job.diags.empty()) {
             job.diags.push_back({Severity::kInternal,
                                  DiagCode::kInternalError,
@@ -201,7 +201,8 @@ void AppendMessages(CompileState& st,
                     const std::vector<frontend::GlslangMessage>& messages,
                     std::vector<Diagnostic>& out,
                     const std::string* program,
-                    const std::string* unreduced) {
+                    const std::string* unreduced,
+                    const StageTask* task) {
     if (messages.empty())
         return;
     auto lookup = [&st](const std::string& name) {
@@ -217,7 +218,16 @@ void AppendMessages(CompileState& st,
                                      hlsl::ReleaseName(paths.unity_version) + "'s files)");
     context.unity_version = paths.unity_version;
     if (program != nullptr) {
-        context.identifiers = [program] { return Identifiers(*program); };
+        context.identifiers = [&st, program, task] {
+            if (task == nullptr)
+                return Identifiers(*program);
+            worker::Request request = StageRequest(st, *task, worker::RequestKind::kPreprocess);
+            request.source = SourceOf(st, *task);
+            request.keep_declarations = true;
+            const worker::Outcome o = st.exec->Run(request);
+            const bool whole = !OutcomeDiagnostic(st, *task, o) && o.response.ok;
+            return Identifiers(whole ? o.response.text : *program);
+        };
         context.functions = [program, unreduced] {
             std::vector<std::string> names = FunctionNames(*program);
             if (unreduced != nullptr) {  // functions the reduction left out, too

@@ -135,12 +135,15 @@ void AppendGlslangLog(CompileState& st,
                       const std::string* program = nullptr);
 // The same for messages parsed already (frontend::ParseInfoLog).
 // `unreduced`, when given, is the program before reduction (its functions feed the suggestion for
-// an unknown function).
+// an unknown function). `task`, when given, is the one `program` was reduced for: the suggestion
+// for an unknown name then reads its text reduced again with every declaration kept (those the
+// reduction dropped, a cbuffer's members among them, are names the program could have meant).
 void AppendMessages(CompileState& st,
                     const std::vector<frontend::GlslangMessage>& messages,
                     std::vector<Diagnostic>& out,
                     const std::string* program = nullptr,
-                    const std::string* unreduced = nullptr);
+                    const std::string* unreduced = nullptr,
+                    const StageTask* task = nullptr);
 inline void Progress(const CompileOptions& o, const char* phase, size_t done, size_t total) {
     if (o.progress)
         o.progress(phase, done, total);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "hlsl/identifier.h"
+#include "hlsl/reduce_declarations.h"
 
 namespace kiln::hlsl {
 namespace {
@@ -18,6 +19,10 @@ struct Item {
     size_t first_word = 0, end_word = 0;    // its words: Split::words[first_word, end_word)
     size_t first_token = 0, end_token = 0;  // its tokens: [first_token, end_token)
     bool is_function = false;
+    // A declaration kept only when a kept item names it (reduce_declarations.h), by one of
+    // Split::names[first_name, end_name).
+    bool droppable = false;
+    size_t first_name = 0, end_name = 0;
     std::string_view name;  // a function's name
 };
 
@@ -26,12 +31,15 @@ struct Split {
     // Identifiers each item uses, and the identifier-like strings it holds: a hull shader's
     // [patchconstantfunc("PatchConstants")] is the function's only reference.
     std::vector<std::string_view> words;
-    // Function items by name (overloads share one entry); `reached` is per entry point.
+    std::vector<std::string_view> names;  // what droppable declarations declare
+    // Function items (overloads share one entry) and droppable declarations by name; `reached`
+    // is per entry point.
     struct Named {
         std::vector<uint32_t> items;
         bool reached = false;
+        bool function = false;
     };
-    std::unordered_map<std::string_view, Named> functions;
+    std::unordered_map<std::string_view, Named> named;
 };
 
 bool IsTypeDeclaration(std::string_view w) {
@@ -116,6 +124,10 @@ void SplitItemsFrom(const std::string& text,
             cur.end_word = out.words.size();
             cur.end_token = k + 1;
             cur.is_function = is_function_end;
+            cur.first_name = out.names.size();
+            cur.droppable = !cur.is_function &&
+                            DroppableDeclaration(s, tok, cur.first_token, cur.end_token, out.names);
+            cur.end_name = out.names.size();
             out.items.push_back(cur);
             open = false;
             if (closed != nullptr)
@@ -130,28 +142,41 @@ void SplitItemsFrom(const std::string& text,
         cur.end = text.size();
         cur.end_word = out.words.size();
         cur.end_token = tok.size();
+        cur.first_name = cur.end_name = out.names.size();
         out.items.push_back(cur);
     }
 }
 
-// Function items by name, once every item is split.
-void NameFunctions(Split& split) {
+// Function items and droppable declarations by name, once every item is split.
+void NameItems(Split& split) {
     for (size_t i = 0; i < split.items.size(); ++i) {
-        if (split.items[i].is_function)
-            split.functions[split.items[i].name].items.push_back(static_cast<uint32_t>(i));
+        const Item& item = split.items[i];
+        const auto index = static_cast<uint32_t>(i);
+        if (item.is_function) {
+            Split::Named& n = split.named[item.name];
+            n.items.push_back(index);
+            n.function = true;
+            continue;
+        }
+        for (size_t k = item.first_name; item.droppable && k < item.end_name; ++k) {
+            Split::Named& n = split.named[split.names[k]];
+            if (n.items.empty() || n.items.back() != index)
+                n.items.push_back(index);
+        }
     }
 }
 
-// Which items the entry point keeps: every declaration, and the functions named by a word of a
-// kept item or by the entry point, transitively (a worklist over names).
-std::vector<char> Reachable(Split& split, const std::string& entry_point) {
-    for (auto& [name, named] : split.functions)
+// Which items the entry point keeps: every declaration but the droppable ones, and the functions
+// and droppable declarations named by a word of a kept item or by the entry point, transitively
+// (a worklist over names).
+std::vector<char> Reachable(Split& split, const std::string& entry_point, bool drop_declarations) {
+    for (auto& [name, named] : split.named)
         named.reached = false;
     std::vector<char> keep(split.items.size(), 0);
     std::vector<uint32_t> work;
     auto reach = [&](std::string_view word) {
-        const auto it = split.functions.find(word);
-        if (it == split.functions.end() || it->second.reached)
+        const auto it = split.named.find(word);
+        if (it == split.named.end() || it->second.reached)
             return;
         it->second.reached = true;
         work.insert(work.end(), it->second.items.begin(), it->second.items.end());
@@ -162,7 +187,7 @@ std::vector<char> Reachable(Split& split, const std::string& entry_point) {
     };
     reach(entry_point);
     for (size_t i = 0; i < split.items.size(); ++i) {
-        if (!split.items[i].is_function) {
+        if (!split.items[i].is_function && (!split.items[i].droppable || !drop_declarations)) {
             keep[i] = 1;
             reach_words(split.items[i]);
         }
@@ -170,6 +195,8 @@ std::vector<char> Reachable(Split& split, const std::string& entry_point) {
     while (!work.empty()) {
         const uint32_t i = work.back();
         work.pop_back();
+        if (keep[i])
+            continue;  // named twice
         keep[i] = 1;
         reach_words(split.items[i]);
     }
@@ -344,26 +371,29 @@ std::shared_ptr<const ReducePrefix> MakeReducePrefix(const std::string& text,
 std::vector<Reduced> ReduceToEntryPoints(const std::string& text,
                                          const std::vector<Token>& tokens,
                                          const std::vector<std::string>& entry_points,
-                                         const ReducePrefix* prefix) {
+                                         const ReducePrefix* prefix,
+                                         bool drop_declarations) {
     Split split;
     std::vector<DirectiveLine> directives;
     if (prefix != nullptr) {
         split.items = prefix->split.items;
         split.words = prefix->split.words;
+        split.names = prefix->split.names;
         directives = prefix->directives;
     }
     SplitItemsFrom(text, tokens, prefix ? prefix->next_token : 0, split);
-    NameFunctions(split);
+    NameItems(split);
     DirectiveLinesFrom(text, prefix ? prefix->next_line : 0, directives);
     std::vector<Reduced> out(entry_points.size());
     for (size_t e = 0; e < entry_points.size(); ++e) {
-        if (!split.functions.count(entry_points[e])) {
+        const auto entry = split.named.find(entry_points[e]);
+        if (entry == split.named.end() || !entry->second.function) {
             for (const Item& it : split.items) {
                 if (it.is_function)
                     out[e].functions_if_entry_missing.emplace_back(it.name);
             }
         }
-        const std::vector<char> keep = Reachable(split, entry_points[e]);
+        const std::vector<char> keep = Reachable(split, entry_points[e], drop_declarations);
         std::vector<Copied> copied;
         out[e].text = Assemble(text, split, keep, directives, copied);
         if (!ReducedTokens(out[e].text, tokens, split, keep, copied, out[e].tokens))

@@ -1,9 +1,11 @@
 // Reduces preprocessed HLSL to what one entry point can reach, so that stages that do not depend
 // on a keyword give the same text in every variant and are compiled once (dedup). Top-level
 // functions that the entry point does not reach (transitively) are removed, keeping their
-// newlines so line numbers hold; every other declaration (structs, globals, cbuffers, textures)
-// is kept, so uniform block layouts match between the stages of a variant. `#pragma` lines are
-// blanked (they were read from the .shader already) and `#line` directives kept.
+// newlines so line numbers hold, and so are the structs, cbuffers, resources and static
+// variables nothing reached names (reduce_declarations.h); every other declaration (a loose
+// uniform above all) is kept, so the `$Global` block's layout matches between the stages of a
+// variant, and a cbuffer is kept or dropped whole. `#pragma` lines are blanked (they were read
+// from the .shader already) and `#line` directives kept.
 //
 // It runs before the rewrite (rewrite.h), which then reads only what an entry point reaches; a
 // variant's two entry points are reduced from one split of the text into items.
@@ -40,11 +42,14 @@ std::shared_ptr<const ReducePrefix> MakeReducePrefix(const std::string& text,
 
 // The same for each entry point, from `tokens` = Tokenize(preprocessed) (only their byte ranges
 // and identifier flags are read). With `prefix`, `preprocessed` and `tokens` start as the
-// prefix's did, and its split is taken instead of made again: the same result.
+// prefix's did, and its split is taken instead of made again: the same result. Without
+// `drop_declarations`, only functions go (every declaration stays, as before
+// reduce_declarations.h).
 std::vector<Reduced> ReduceToEntryPoints(const std::string& preprocessed,
                                          const std::vector<Token>& tokens,
                                          const std::vector<std::string>& entry_points,
-                                         const ReducePrefix* prefix = nullptr);
+                                         const ReducePrefix* prefix = nullptr,
+                                         bool drop_declarations = true);
 
 }  // namespace kiln::hlsl
 

@@ -174,7 +174,7 @@ Response Preprocess(const Request& r, ExecuteContext& context, hlsl::Includer& i
     std::vector<hlsl::Reduced> reduced = hlsl::ReduceToEntryPoints(
         out.text,
         after ? hlsl::TokenizeAfter(out.text, head, preamble->tokens) : hlsl::Tokenize(out.text),
-        entries, after ? preamble->reduce_prefix.get() : nullptr);
+        entries, after ? preamble->reduce_prefix.get() : nullptr, !r.keep_declarations);
     bool changed = false;
     std::unordered_set<std::string> warned;  // a warning of code both entry points reach, once
     static const bool check = std::getenv("KILN_CHECK_INACTIVE_TEXT") != nullptr;

@@ -53,6 +53,7 @@ enum Tag : uint8_t {
     kContent = 34,
     kComponent = 35,
     kPinned = 36,
+    kKeepDeclarations = 37,
 };
 
 // Builds a whole frame: the length is patched in when it is taken.
@@ -192,6 +193,8 @@ std::string EncodeRequest(const Request& r) {
     w.U8(kOptLevel, r.opt_level);
     w.U8(kOptimize, r.optimize);
     w.U8(kHalfArithmetic, r.half_arithmetic);
+    if (r.keep_declarations)
+        w.U8(kKeepDeclarations, true);
     w.Words(kWords, r.words);
     return w.Take();
 }
@@ -331,6 +334,8 @@ std::optional<Request> DecodeRequest(std::string_view fields) {
                 return ToBool(b, r.optimize);
             case kHalfArithmetic:
                 return ToBool(b, r.half_arithmetic);
+            case kKeepDeclarations:
+                return ToBool(b, r.keep_declarations);
             case kWords:
                 return ToWords(b, r.words);
             default:

@@ -75,7 +75,10 @@ struct Request {
     uint8_t opt_level = 1;    // kCompile: spirv::OptLevel
     bool optimize = true;     // kCompile: run SPIRV-Tools after glslang
     bool half_arithmetic = false;  // kCompile: RelaxedPrecision arithmetic as binary16
-    std::vector<uint32_t> words;   // kFinish/kValidate
+    // kPreprocess: reduce to what the entry point reaches but keep every declaration (the
+    // names a "did you mean" after an error reads; hlsl/reduce.h).
+    bool keep_declarations = false;
+    std::vector<uint32_t> words;  // kFinish/kValidate
 };
 
 struct Response {

@@ -421,6 +421,28 @@ TEST(Compile, ErrorInCgIncludeIsReportedAtItsOwnLine) {
     EXPECT_EQ(Brief(run.diags), "inc.shader:4:20 K5001 unknown variable 'missing_factor'\n");
 }
 
+// The reduction drops a cbuffer nothing reached names (hlsl/reduce.h); a misspelt member is still
+// a name the program could have meant.
+TEST(Compile, AnUnknownNameSuggestsAMemberOfACbufferTheReductionDropped) {
+    ScratchDir dir;
+    const std::string path =
+        dir.Write("cb.shader",
+                  "Shader \"Test/Cb\" {\n"
+                  "    SubShader { Pass {\n"
+                  "        CGPROGRAM\n"
+                  "        #pragma vertex vert\n"
+                  "        #pragma fragment frag\n"
+                  "        cbuffer Timing { float4 _Timestep; float4 _Other; };\n"
+                  "        float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n"
+                  "        float4 frag() : SV_Target { return _Timestap; }\n"
+                  "        ENDCG\n"
+                  "    } }\n"
+                  "}\n");
+    CompileRun run = Compile({path});
+    EXPECT_EQ(Brief(run.diags),
+              "cb.shader:8:44 K5001 unknown variable '_Timestap'; did you mean '_Timestep'?\n");
+}
+
 TEST(Compile, ErrorInIncludedFileIsReportedInThatFile) {
     ScratchDir dir;
     dir.Write("lib/helpers.cginc",

@@ -64,6 +64,78 @@ TEST(Reduce, AMissingEntryPointListsTheFunctionsThatExist) {
     EXPECT_EQ(r.functions_if_entry_missing, (std::vector<std::string>{"vert", "frag"}));
 }
 
+// Unity's includes declare cbuffers, textures and structs most programs never read: those nothing
+// reached names go as unreached functions do (their line breaks stay). A cbuffer goes or stays
+// whole, by its name or any member's; a loose uniform stays (the $Global block's layout).
+TEST(Reduce, DropsTheStructsCbuffersResourcesAndStaticsNothingReachedNames) {
+    const std::string text =
+        "struct Unused { float4 a; };\n"
+        "struct V { float4 p : POSITION; };\n"
+        "cbuffer UnityPerCamera { float4 _Time; float4 _SinTime; };\n"
+        "cbuffer Other : register(b3) {\n float4x4 m;\n float4 arr[4] : packoffset(c4);\n"
+        " row_major float3 a1, a2;\n}\n"
+        "[[vk::push_constant]] cbuffer Push { float4 q; };\n"
+        "Texture2D _MainTex; SamplerState sampler_MainTex;\n"
+        "Texture2D<float4> _Unused : register(t3);\n"
+        "uniform sampler2D _Dx9[2];\n"
+        "static const float kUnused = 2, kUnused2[2] = {1, 2};\n"
+        "static float3 kUsed = float3(1, 2, 3);\n"
+        "float4 _Color;\n"
+        "float4 vert(V v) : SV_POSITION {\n"
+        "  return v.p * _Time.y + _MainTex.SampleLevel(sampler_MainTex, 0, 0) * arr[2] + kUsed.x;\n"
+        "}\n";
+    EXPECT_EQ(ReduceToEntryPoint(text, "vert").text,
+              "\n"
+              "struct V { float4 p : POSITION; };\n"
+              "cbuffer UnityPerCamera { float4 _Time; float4 _SinTime; };\n"
+              "cbuffer Other : register(b3) {\n float4x4 m;\n float4 arr[4] : packoffset(c4);\n"
+              " row_major float3 a1, a2;\n}\n"
+              "\n"
+              "Texture2D _MainTex; SamplerState sampler_MainTex;\n"
+              "\n"
+              "\n"
+              "\n"
+              "static float3 kUsed = float3(1, 2, 3);\n"
+              "float4 _Color;\n"
+              "float4 vert(V v) : SV_POSITION {\n"
+              "  return v.p * _Time.y + _MainTex.SampleLevel(sampler_MainTex, 0, 0) * arr[2] + "
+              "kUsed.x;\n"
+              "}\n");
+    // By a member of the second declarator, and through a kept static's type and a function.
+    const std::string chain =
+        "cbuffer Other { float3 a1, a2; };\n"
+        "struct Light { float3 dir; };\n"
+        "static Light gLight;\n"
+        "float3 L() { return gLight.dir * a2; }\n"
+        "float4 frag() : SV_Target { return float4(L(), 1); }\n"
+        "float4 vert() : SV_POSITION { return 0; }\n";
+    EXPECT_EQ(ReduceToEntryPoint(chain, "frag").text,
+              chain.substr(0, chain.find("float4 vert")) + "\n");
+    // (A cbuffer ends at its brace: the `;` after it is an empty declaration, kept.)
+    EXPECT_EQ(ReduceToEntryPoint(chain, "vert").text,
+              ";\n\n\n\n\nfloat4 vert() : SV_POSITION { return 0; }\n");
+    // Without dropping declarations (the names a "did you mean" reads), only functions go.
+    EXPECT_EQ(ReduceToEntryPoints(chain, Tokenize(chain), {"vert"}, nullptr, false)[0].text,
+              chain.substr(0, chain.find("float3 L()")) +
+                  "\n\nfloat4 vert() : SV_POSITION { return 0; }\n");
+}
+
+// What is not one of those shapes exactly stays, named or not: a cbuffer holding a struct, an
+// anonymous struct's variable, a typedef, a prototype, a sampler with a state block, a resource
+// declared twice in one statement.
+TEST(Reduce, DeclarationsNotReadWithCertaintyAreKept) {
+    const std::string text =
+        "cbuffer I { struct { float4 c; } arr[2]; };\n"
+        "struct { float a; } g;\n"
+        "typedef float4 T;\n"
+        "static float f(float x);\n"
+        "SamplerState s { Filter = MIN_MAG_MIP_LINEAR; };\n"
+        "Texture2D t1, t2;\n"
+        "static struct S2 { float b; } h;\n"
+        "float4 frag() : SV_Target { return 1; }\n";
+    EXPECT_EQ(ReduceToEntryPoint(text, "frag").text, text);
+}
+
 // The worker reduces a variant's two stages from the rewrite's tokens, splitting the text once:
 // the same texts as reducing each alone.
 TEST(Reduce, BothEntryPointsFromOneSplitMatchEachAlone) {

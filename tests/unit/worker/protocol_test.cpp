@@ -34,6 +34,7 @@ Request SampleRequest() {
     r.opt_level = 2;
     r.optimize = false;
     r.half_arithmetic = true;
+    r.keep_declarations = true;
     r.words = {0x07230203, 0x00010300, 7, 42, 0};
     return r;
 }
@@ -59,6 +60,7 @@ TEST(WorkerProtocol, RequestsRoundTrip) {
     EXPECT_EQ(back->opt_level, r.opt_level);
     EXPECT_EQ(back->optimize, r.optimize);
     EXPECT_EQ(back->half_arithmetic, r.half_arithmetic);
+    EXPECT_EQ(back->keep_declarations, r.keep_declarations);
     EXPECT_EQ(back->words, r.words);
 }
 
@@ -111,9 +113,9 @@ TEST(WorkerProtocol, EveryTruncatedPrefixIsRejectedUnlessItEndsBetweenFields) {
     for (size_t n = 0; n < full->payload.size(); ++n)
         accepted += DecodeRequest(full->payload.substr(0, n)) ? 1 : 0;
     // Fields: kind, stage, name, source, entry, second entry, 2 include dirs, templates, Unity
-    // version, debug, opt level, optimize, half arithmetic, words: 15 boundaries before the end,
-    // the empty prefix included.
-    EXPECT_EQ(accepted, 15u);
+    // version, debug, opt level, optimize, half arithmetic, keep declarations, words: 16
+    // boundaries before the end, the empty prefix included.
+    EXPECT_EQ(accepted, 16u);
     for (size_t n = 0; n < 4; ++n)
         EXPECT_FALSE(SplitFrame(Payload(bytes).substr(0, n)));
 }
