@@ -61,10 +61,15 @@ void DropTexts(StageTask& t) {
     std::string().swap(t.rewritten);
 }
 
+// What the reduction keeps (hlsl/reduce.h) decides a module's ids: a key holds its rules'
+// version, so that the direct mode's entries of a build with other rules (which map a source to
+// that build's reduced text and module) are not taken. 2: declarations nothing reaches go.
+constexpr std::string_view kReductionRules = "reduction 2";
+
 // The options that change a module: part of every key.
 std::vector<std::string> KeyParts(const CompileState& st, const StageTask& t) {
     const CompileOptions& o = st.options;
-    return {ProducerVersion(),
+    return {ProducerVersion() + "; " + std::string(kReductionRules),
             OptimizationKey(o) + (o.debug_info ? "g" : "") +
                 (o.precision == Precision::kRelaxed ? "r"
                  : o.precision == Precision::kHalf  ? "h"
