@@ -94,6 +94,22 @@ size_t AfterAngles(const Reader& r, size_t k) {
     return kNone;
 }
 
+// Past every `[...]` group from k on (attributes, array sizes); kNone when one does not close.
+size_t AfterBrackets(const Reader& r, size_t k) {
+    while (k != kNone && r.At(k) == "[")
+        k = AfterGroup(r, k);
+    return k;
+}
+
+// Past a `: register(...)` starting at k (k itself without one); kNone when it is not that shape.
+size_t AfterRegister(const Reader& r, size_t k) {
+    if (r.At(k) != ":")
+        return k;
+    if (!r.Ident(k + 1) || r.At(k + 2) != "(")
+        return kNone;
+    return AfterGroup(r, k + 2);
+}
+
 bool EndsDeclarator(std::string_view w) {
     return w == ";" || w == "," || w == "[" || w == ":" || w == "=";
 }
@@ -138,23 +154,12 @@ bool Struct(const Reader& r, size_t k, std::vector<std::string_view>& names) {
 
 // [attributes] cbuffer NAME [: register(...)] { members } [;]
 bool Cbuffer(const Reader& r, size_t k, std::vector<std::string_view>& names) {
-    while (r.At(k) == "[") {
-        k = AfterGroup(r, k);
-        if (k == kNone)
-            return false;
-    }
-    if ((r.At(k) != "cbuffer" && r.At(k) != "tbuffer") || !r.Ident(k + 1))
+    k = AfterBrackets(r, k);
+    if (k == kNone || (r.At(k) != "cbuffer" && r.At(k) != "tbuffer") || !r.Ident(k + 1))
         return false;
     const std::string_view name = r.At(k + 1);
-    k += 2;
-    if (r.At(k) == ":") {
-        if (!r.Ident(k + 1) || r.At(k + 2) != "(")
-            return false;
-        k = AfterGroup(r, k + 2);
-        if (k == kNone)
-            return false;
-    }
-    if (r.At(k) != "{")
+    k = AfterRegister(r, k + 2);
+    if (k == kNone || r.At(k) != "{")
         return false;
     const size_t close = AfterGroup(r, k);
     if (close == kNone || !(close == r.end || (close + 1 == r.end && r.At(close) == ";")))
@@ -183,19 +188,10 @@ bool Resource(const Reader& r, size_t k, std::vector<std::string_view>& names) {
     if (!r.Ident(k))
         return false;
     const std::string_view name = r.At(k++);
-    while (r.At(k) == "[") {
-        k = AfterGroup(r, k);
-        if (k == kNone)
-            return false;
-    }
-    if (r.At(k) == ":") {
-        if (!r.Ident(k + 1) || r.At(k + 2) != "(")
-            return false;
-        k = AfterGroup(r, k + 2);
-        if (k == kNone)
-            return false;
-    }
-    if (r.At(k) != ";" || k + 1 != r.end)
+    k = AfterBrackets(r, k);
+    if (k != kNone)
+        k = AfterRegister(r, k);
+    if (k == kNone || r.At(k) != ";" || k + 1 != r.end)
         return false;
     names.push_back(name);
     return true;
