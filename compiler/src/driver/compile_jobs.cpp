@@ -2,6 +2,7 @@
 // worker (or taken from the cache once spirv-val accepts the entry), and glslang's messages
 // turned into diagnostics.
 #include <atomic>
+#include <optional>
 #include <regex>
 #include <set>
 
@@ -218,15 +219,22 @@ void AppendMessages(CompileState& st,
                                      hlsl::ReleaseName(paths.unity_version) + "'s files)");
     context.unity_version = paths.unity_version;
     if (program != nullptr) {
-        context.identifiers = [&st, program, task] {
-            if (task == nullptr)
-                return Identifiers(*program);
+        // Read once for every unknown name of the log (with `task`, a worker's round trip).
+        context.identifiers = [&st, program, task,
+                               names = std::optional<std::vector<std::string>>()]() mutable {
+            if (names)
+                return *names;
+            if (task == nullptr) {
+                names = Identifiers(*program);
+                return *names;
+            }
             worker::Request request = StageRequest(st, *task, worker::RequestKind::kPreprocess);
             request.source = SourceOf(st, *task);
             request.keep_declarations = true;
             const worker::Outcome o = st.exec->Run(request);
             const bool whole = !OutcomeDiagnostic(st, *task, o) && o.response.ok;
-            return Identifiers(whole ? o.response.text : *program);
+            names = Identifiers(whole ? o.response.text : *program);
+            return *names;
         };
         context.functions = [program, unreduced] {
             std::vector<std::string> names = FunctionNames(*program);

@@ -158,7 +158,9 @@ void NameItems(Split& split) {
             n.function = true;
             continue;
         }
-        for (size_t k = item.first_name; item.droppable && k < item.end_name; ++k) {
+        if (!item.droppable)
+            continue;
+        for (size_t k = item.first_name; k < item.end_name; ++k) {
             Split::Named& n = split.named[split.names[k]];
             if (n.items.empty() || n.items.back() != index)
                 n.items.push_back(index);

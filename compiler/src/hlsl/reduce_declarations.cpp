@@ -110,31 +110,30 @@ size_t AfterRegister(const Reader& r, size_t k) {
     return AfterGroup(r, k + 2);
 }
 
-bool EndsDeclarator(std::string_view w) {
-    return w == ";" || w == "," || w == "[" || w == ":" || w == "=";
-}
-
-// In a cbuffer, also before `<`: a member's annotation (`float4 x < string n = "X"; >;`); a
-// template type's name read as a name is only one more name that keeps the cbuffer.
-bool EndsMember(std::string_view w) {
-    return EndsDeclarator(w) || w == "<";
-}
-
-// The names cbuffer members [b, e) declare at their own nesting level: each identifier followed
-// by one of ; , [ : = < (or by e). Groups in ( ) and [ ] are skipped; false at a `{` (a nested
-// definition or a brace initializer, not read here).
-bool Declarators(const Reader& r, size_t b, size_t e, std::vector<std::string_view>& names) {
+// The names tokens [b, e) declare at their own nesting level: each identifier followed by one of
+// ; , [ : = < (or by e); `<` for a cbuffer member's annotation (`float4 x < string n = "X"; >;`).
+// Groups in ( ) and [ ] are skipped, and so are { } groups where `braces` (a static's brace
+// initializer); elsewhere a `{` (a nested definition) gives false. A word read as a name that is
+// not one (a template type's, a word of an initializer) is only one more name that keeps the
+// item.
+bool Declarators(const Reader& r,
+                 size_t b,
+                 size_t e,
+                 bool braces,
+                 std::vector<std::string_view>& names) {
     for (size_t k = b; k < e;) {
         const std::string_view w = r.At(k);
-        if (w == "{")
+        if (w == "{" && !braces)
             return false;
-        if (w == "(" || w == "[") {
+        if (w == "(" || w == "[" || w == "{") {
             k = AfterGroup(r, k);
             if (k == kNone || k > e)
                 return false;
             continue;
         }
-        if (r.Ident(k) && (k + 1 == e || EndsMember(r.At(k + 1))))
+        const std::string_view next = k + 1 < e ? r.At(k + 1) : ";";
+        if (r.Ident(k) && (next == ";" || next == "," || next == "[" || next == ":" ||
+                           next == "=" || next == "<"))
             names.push_back(w);
         ++k;
     }
@@ -166,7 +165,7 @@ bool Cbuffer(const Reader& r, size_t k, std::vector<std::string_view>& names) {
         return false;
     const size_t before = names.size();
     names.push_back(name);
-    if (!Declarators(r, k + 1, close - 1, names)) {
+    if (!Declarators(r, k + 1, close - 1, false, names)) {
         names.resize(before);
         return false;
     }
@@ -206,21 +205,10 @@ bool Static(const Reader& r, size_t k, std::vector<std::string_view>& names) {
         if (w == "{" || w == "(" || w == "struct")
             return false;  // a definition or a function's declaration
     }
-    // Initializers hold groups and braces: only their own level is read.
     const size_t before = names.size();
-    for (size_t i = k + 1; i < r.end;) {
-        const std::string_view w = r.At(i);
-        if (w == "(" || w == "[" || w == "{") {
-            i = AfterGroup(r, i);
-            if (i == kNone) {
-                names.resize(before);
-                return false;
-            }
-            continue;
-        }
-        if (r.Ident(i) && EndsDeclarator(r.At(i + 1)))
-            names.push_back(w);
-        ++i;
+    if (!Declarators(r, k + 1, r.end, true, names)) {
+        names.resize(before);
+        return false;
     }
     return names.size() > before;
 }
